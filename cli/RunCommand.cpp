@@ -1,0 +1,124 @@
+#include "cli/RunCommand.h"
+
+#include "common/FrameSet.h"
+#include "common/KeyValue.h"
+#include "common/Log.h"
+#include "styles/StyleSettings.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <unistd.h>
+
+namespace nprgl::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int fail(const std::string& message)
+{
+    std::fprintf(stderr, "nprgl: %s\n", message.c_str());
+    return 2;
+}
+
+std::string joined(const std::vector<std::string>& items, const char* separator)
+{
+    std::string out;
+    for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+    return out;
+}
+
+bool checkScreenshot(const std::string& spec, std::string& error)
+{
+    KeyValueList pairs;
+    if (!parseKeyValues(spec, ';', pairs, error)) return false;
+    bool haveFrames = false;
+    for (const auto& [key, value] : pairs) {
+        FrameSet frames;
+        if (key == "frames") {
+            if (!FrameSet::parse(value, frames, error)) return false;
+            haveFrames = true;
+        } else if (key != "dir") {
+            error = "unknown key '" + key + "'";
+            return false;
+        }
+    }
+    if (!haveFrames) error = "frames=LIST is missing";
+    return haveFrames;
+}
+
+} // namespace
+
+std::string findLibrary(std::string& error)
+{
+    if (const char* env = std::getenv("NPRGL_LIBRARY"); env && *env) {
+        if (fs::exists(env)) return fs::absolute(env).string();
+        error = std::string("NPRGL_LIBRARY=") + env + " does not exist";
+        return {};
+    }
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    for (const char* rel : {"../lib/libnprgl.so", "../lib/nprgl/libnprgl.so", "libnprgl.so"}) {
+        fs::path candidate = exe.parent_path() / rel;
+        if (!ec && fs::exists(candidate)) return fs::canonical(candidate).string();
+    }
+    error = "cannot find libnprgl.so next to " + exe.string() + " (set NPRGL_LIBRARY)";
+    return {};
+}
+
+int runProgram(const RunOptions& options)
+{
+    if (options.command.empty()) return fail("no program to run (see nprgl --help)");
+
+    // Refuse bad settings here, before the program starts, rather than in the library where
+    // the only safe answer is to fall back to passthrough.
+    std::string config = joined(options.settings, ",");
+    if (const char* env = std::getenv("NPRGL_CONFIG"); env && *env && !config.empty()) {
+        config = std::string(env) + "," + config;
+    } else if (config.empty() && std::getenv("NPRGL_CONFIG")) {
+        config = std::getenv("NPRGL_CONFIG");
+    }
+    std::string style = options.style;
+    if (style.empty() && std::getenv("NPRGL_STYLE")) style = std::getenv("NPRGL_STYLE");
+    StyleSettings settings;
+    std::string error;
+    if (!StyleSettings::parse(style, config, settings, error)) return fail(error);
+    if (!options.screenshot.empty() && !checkScreenshot(options.screenshot, error)) {
+        return fail("--screenshot: " + error + " (expected frames=LIST;dir=DIR)");
+    }
+    LogLevel level;
+    if (!options.logLevel.empty() && !parseLogLevel(options.logLevel.c_str(), level)) {
+        return fail("--log-level: unknown level '" + options.logLevel +
+                    "' (use error, warn, info or debug)");
+    }
+    std::string library = findLibrary(error);
+    if (library.empty()) return fail(error);
+
+    setenv("NPRGL_STYLE", settings.chainName().c_str(), 1);
+    setenv("NPRGL_CONFIG", config.c_str(), 1);
+    if (!options.screenshot.empty()) setenv("NPRGL_SCREENSHOT", options.screenshot.c_str(), 1);
+    if (!options.logLevel.empty()) setenv("NPRGL_LOG_LEVEL", options.logLevel.c_str(), 1);
+    if (!options.logFile.empty()) setenv("NPRGL_LOG_FILE", options.logFile.c_str(), 1);
+    std::string preload = library;
+    if (const char* old = std::getenv("LD_PRELOAD"); old && *old) {
+        if (std::strstr(old, library.c_str())) {
+            preload = old;
+        } else {
+            preload += std::string(":") + old;
+        }
+    }
+    setenv("LD_PRELOAD", preload.c_str(), 1);
+
+    std::vector<char*> argv;
+    for (const std::string& arg : options.command) argv.push_back(const_cast<char*>(arg.c_str()));
+    argv.push_back(nullptr);
+    execvp(argv[0], argv.data());
+    int err = errno;
+    std::fprintf(stderr, "nprgl: cannot run '%s': %s\n", argv[0], std::strerror(err));
+    return err == ENOENT ? 127 : 126;
+}
+
+} // namespace nprgl::cli

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace nprgl::cli {
+
+struct RunOptions {
+    std::string style;
+    std::vector<std::string> settings; // key=value
+    std::string screenshot;
+    std::string logLevel;
+    std::string logFile;
+    std::vector<std::string> command; // program and its arguments
+};
+
+// Checks the options, sets up the environment and replaces this process with the program
+// (so its exit code, pid and signals are the program's own). Returns only on failure, with
+// the exit code to use.
+int runProgram(const RunOptions& options);
+
+// The absolute path of libnprgl.so: NPRGL_LIBRARY, else next to this executable.
+std::string findLibrary(std::string& error);
+
+} // namespace nprgl::cli

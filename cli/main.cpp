@@ -1,0 +1,66 @@
+// nprgl: run a legacy OpenGL program through the NPR interposer.
+//
+//   nprgl [run] [--style S] [--set key=value]... [--] PROGRAM ARGS...
+//   nprgl styles
+
+#include "cli/RunCommand.h"
+#include "cli/StylesCommand.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstring>
+
+namespace {
+
+constexpr const char* kFooter = R"(Usage: nprgl [run] [OPTIONS] [--] PROGRAM [ARGS...]
+       nprgl styles
+
+Commands:
+  run (default)   run PROGRAM with libnprgl.so preloaded
+  styles          list the styles, their parameters, defaults and ranges
+
+Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM reads them too):
+  NPRGL_STYLE       style chain, e.g. none
+  NPRGL_CONFIG      style parameters, key=value,key=value
+  NPRGL_SCREENSHOT  frames=1,10,100;dir=out writes <program>_<frame>.png before each swap
+  NPRGL_LOG_LEVEL   error, warn, info (default) or debug
+  NPRGL_LOG_FILE    log to this file instead of stderr
+  NPRGL_REAL_LIBGL  the OpenGL library to forward to instead of libGL.so.1
+  NPRGL_LIBRARY     the libnprgl.so this command preloads)";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc > 1 && std::strcmp(argv[1], "styles") == 0) {
+        CLI::App app{"List nprgl's styles", "nprgl styles"};
+        CLI11_PARSE(app, argc - 1, argv + 1);
+        return nprgl::cli::listStyles();
+    }
+    // "run" is the default command and may be left out.
+    int skip = argc > 1 && std::strcmp(argv[1], "run") == 0 ? 1 : 0;
+
+    nprgl::cli::RunOptions options;
+    CLI::App app{"nprgl renders unmodified legacy OpenGL programs in non-photorealistic styles.",
+                 "nprgl"};
+    app.footer(kFooter);
+    app.set_version_flag("--version", std::string("nprgl ") + NPRGL_VERSION);
+    app.add_option("-s,--style", options.style, "style chain (default: the best-looking one)");
+    app.add_option("--set", options.settings, "style parameter, style.param=value (repeatable)")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_option("--screenshot", options.screenshot,
+                   "write frames as PNG: frames=1,10,100;dir=out");
+    app.add_option("--log-level", options.logLevel, "error, warn, info or debug");
+    app.add_option("--log-file", options.logFile, "log to this file instead of stderr");
+    app.add_option("command", options.command, "the program and its arguments");
+    app.prefix_command();
+    try {
+        app.parse(argc - skip, argv + skip);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    // prefix_command leaves everything after the program name unparsed.
+    for (const std::string& arg : app.remaining()) options.command.push_back(arg);
+    return nprgl::cli::runProgram(options);
+}

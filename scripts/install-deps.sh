@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages nprgl needs to build, test and benchmark.
+set -euo pipefail
+pkgs=(
+    build-essential cmake ninja-build pkg-config python3
+    khronos-api libgl-dev libegl-dev libx11-dev libosmesa6-dev libgl1-mesa-dri
+    libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
+    libcli11-dev
+    mesa-utils xvfb xauth
+)
+sudo=""
+if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi
+if ! dpkg -s "${pkgs[@]}" >/dev/null 2>&1; then
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${pkgs[@]}"
+fi

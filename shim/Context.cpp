@@ -1,0 +1,88 @@
+#include "shim/Context.h"
+
+#include "common/Log.h"
+#include "shim/FrameGrabber.h"
+#include "shim/RealGl.h"
+#include "shim/Settings.h"
+#include "shim/ThreadState.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace nprgl {
+
+namespace {
+
+// OSMesa has no SwapBuffers; a program's glFinish closes its frame.
+void APIENTRY osmesaFinish()
+{
+    if (Context* ctx = tThread.context) {
+        static auto getIntegerv =
+            reinterpret_cast<void (*)(GLint, GLint*)>(realProcAddress("OSMesaGetIntegerv"));
+        GLint w = 0, h = 0;
+        if (getIntegerv) {
+            getIntegerv(OSMESA_WIDTH, &w);
+            getIntegerv(OSMESA_HEIGHT, &h);
+        }
+        ctx->endFrame(w, h);
+    }
+    gRealGl.glFinish();
+}
+
+} // namespace
+
+Context::Context(WindowSystem ws, const void* handle, uint32_t serial)
+    : mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial)
+{
+    if (ws == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
+}
+
+void Context::onMakeCurrent()
+{
+    if (mInitialized) return;
+    mInitialized = true;
+    queryCaps();
+}
+
+void Context::queryCaps()
+{
+    resolveReal();
+    const char* version = reinterpret_cast<const char*>(gRealGl.glGetString(GL_VERSION));
+    if (!version) return;
+    const char* numbers = version;
+    if (std::strncmp(version, "OpenGL ES", 9) == 0) {
+        mCaps.es = true;
+        numbers = std::strpbrk(version, "0123456789");
+        if (!numbers) return;
+    }
+    std::sscanf(numbers, "%d.%d", &mCaps.major, &mCaps.minor);
+    if (!mCaps.es && mCaps.atLeast(3, 2)) {
+        GLint mask = 0;
+        gRealGl.glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+        mCaps.core = (mask & GL_CONTEXT_CORE_PROFILE_BIT) != 0;
+    }
+    // Asked now, while the default framebuffer is bound (the answer follows the binding).
+    GLboolean db = GL_FALSE;
+    gRealGl.glGetBooleanv(GL_DOUBLEBUFFER, &db);
+    mCaps.doubleBuffered = db == GL_TRUE;
+    NPRGL_DEBUG("context %u: %s (%s%s)", mSerial, version, mCaps.core ? "core" : "compatibility",
+                mCaps.doubleBuffered ? ", double-buffered" : "");
+}
+
+void Context::endFrame(int width, int height)
+{
+    ++mFrame;
+    const Settings& settings = Settings::get();
+    if (!settings.screenshots || !settings.screenshotFrames.contains(mFrame)) return;
+    char name[64];
+    if (mSerial == 1) {
+        std::snprintf(name, sizeof name, "_%llu.png", static_cast<unsigned long long>(mFrame));
+    } else {
+        std::snprintf(name, sizeof name, "_ctx%u_%llu.png", mSerial,
+                      static_cast<unsigned long long>(mFrame));
+    }
+    std::string path = settings.screenshotDir + "/" + settings.programName + name;
+    FrameGrabber::writeFrame(mCaps, width, height, path);
+}
+
+} // namespace nprgl

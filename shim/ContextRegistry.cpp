@@ -1,0 +1,50 @@
+#include "shim/ContextRegistry.h"
+
+#include "shim/RealGl.h"
+#include "shim/Settings.h"
+#include "shim/ThreadState.h"
+
+namespace nprgl {
+
+namespace {
+
+// Keeps the thread's current Context alive while the program destroys it on another thread.
+thread_local std::shared_ptr<Context> tCurrent;
+
+} // namespace
+
+ContextRegistry& ContextRegistry::instance()
+{
+    static ContextRegistry* registry = new ContextRegistry; // never destroyed: exit-safe
+    return *registry;
+}
+
+void ContextRegistry::makeCurrent(WindowSystem ws, const void* handle)
+{
+    if (!handle) {
+        tCurrent.reset();
+        tThread.context = nullptr;
+        tThread.dispatch = &gRealGl;
+        return;
+    }
+    Settings::get(); // read (and report) the configuration once, at the first context
+    std::shared_ptr<Context> ctx;
+    {
+        std::lock_guard lock(mMutex);
+        auto& slot = mContexts[Key{ws, handle}];
+        if (!slot) slot = std::make_shared<Context>(ws, handle, mNextSerial++);
+        ctx = slot;
+    }
+    tCurrent = ctx;
+    tThread.context = ctx.get();
+    tThread.dispatch = &ctx->dispatch();
+    ctx->onMakeCurrent();
+}
+
+void ContextRegistry::destroy(WindowSystem ws, const void* handle)
+{
+    std::lock_guard lock(mMutex);
+    mContexts.erase(Key{ws, handle});
+}
+
+} // namespace nprgl

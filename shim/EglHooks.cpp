@@ -1,0 +1,51 @@
+#include "shim/ContextRegistry.h"
+#include "shim/ProcAddress.h"
+#include "shim/RealGl.h"
+#include "shim/ThreadState.h"
+
+// EGL: context life and frames, as for GLX.
+
+namespace nprgl::hooks {
+
+EGLBoolean eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLContext ctx)
+{
+    EGLBoolean ok = gRealWs.eglMakeCurrent(dpy, draw, read, ctx);
+    if (ok) {
+        ContextRegistry::instance().makeCurrent(WindowSystem::Egl,
+                                                ctx == EGL_NO_CONTEXT ? nullptr : ctx);
+    }
+    return ok;
+}
+
+EGLBoolean eglDestroyContext(EGLDisplay dpy, EGLContext ctx)
+{
+    EGLBoolean ok = gRealWs.eglDestroyContext(dpy, ctx);
+    if (ok) ContextRegistry::instance().destroy(WindowSystem::Egl, ctx);
+    return ok;
+}
+
+EGLBoolean eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
+{
+    Context* ctx = tThread.context;
+    if (ctx && ctx->windowSystem() == WindowSystem::Egl) {
+        using QuerySurface = EGLBoolean (*)(EGLDisplay, EGLSurface, EGLint, EGLint*);
+        static auto query = reinterpret_cast<QuerySurface>(realProcAddress("eglQuerySurface"));
+        EGLint width = 0, height = 0;
+        if (query) {
+            query(dpy, surface, EGL_WIDTH, &width);
+            query(dpy, surface, EGL_HEIGHT, &height);
+        }
+        ctx->endFrame(width, height);
+    }
+    return gRealWs.eglSwapBuffers(dpy, surface);
+}
+
+__eglMustCastToProperFunctionPointerType eglGetProcAddress(const char* name)
+{
+    if (void* thunk = ourProcAddress(name)) {
+        return reinterpret_cast<__eglMustCastToProperFunctionPointerType>(thunk);
+    }
+    return gRealWs.eglGetProcAddress(name);
+}
+
+} // namespace nprgl::hooks

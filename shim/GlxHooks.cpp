@@ -1,0 +1,77 @@
+#include "shim/ContextRegistry.h"
+#include "shim/ProcAddress.h"
+#include "shim/RealGl.h"
+#include "shim/ThreadState.h"
+
+// GLX: context life and frames. Every hook calls the driver first (or last, for the swap) and
+// never changes what the driver answers.
+
+namespace nprgl::hooks {
+
+GLXContext glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext share, Bool direct)
+{
+    return gRealWs.glXCreateContext(dpy, vis, share, direct);
+}
+
+GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int renderType,
+                               GLXContext share, Bool direct)
+{
+    return gRealWs.glXCreateNewContext(dpy, config, renderType, share, direct);
+}
+
+GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config, GLXContext share,
+                                      Bool direct, const int* attribs)
+{
+    return gRealWs.glXCreateContextAttribsARB(dpy, config, share, direct, attribs);
+}
+
+void glXDestroyContext(Display* dpy, GLXContext ctx)
+{
+    gRealWs.glXDestroyContext(dpy, ctx);
+    ContextRegistry::instance().destroy(WindowSystem::Glx, ctx);
+}
+
+Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx)
+{
+    Bool ok = gRealWs.glXMakeCurrent(dpy, drawable, ctx);
+    if (ok) ContextRegistry::instance().makeCurrent(WindowSystem::Glx, ctx);
+    return ok;
+}
+
+Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx)
+{
+    Bool ok = gRealWs.glXMakeContextCurrent(dpy, draw, read, ctx);
+    if (ok) ContextRegistry::instance().makeCurrent(WindowSystem::Glx, ctx);
+    return ok;
+}
+
+void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
+{
+    Context* ctx = tThread.context;
+    if (ctx && ctx->windowSystem() == WindowSystem::Glx &&
+        gRealWs.glXGetCurrentDrawable() == drawable) {
+        unsigned width = 0, height = 0;
+        gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
+        gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
+        ctx->endFrame(int(width), int(height));
+    }
+    gRealWs.glXSwapBuffers(dpy, drawable);
+}
+
+__GLXextFuncPtr glXGetProcAddress(const GLubyte* name)
+{
+    if (void* thunk = ourProcAddress(reinterpret_cast<const char*>(name))) {
+        return reinterpret_cast<__GLXextFuncPtr>(thunk);
+    }
+    return gRealWs.glXGetProcAddress(name);
+}
+
+__GLXextFuncPtr glXGetProcAddressARB(const GLubyte* name)
+{
+    if (void* thunk = ourProcAddress(reinterpret_cast<const char*>(name))) {
+        return reinterpret_cast<__GLXextFuncPtr>(thunk);
+    }
+    return gRealWs.glXGetProcAddressARB(name);
+}
+
+} // namespace nprgl::hooks

@@ -1,0 +1,10 @@
+// Library start-up: only what must happen before the program's first call. Nothing is
+// printed and nothing is resolved here, so programs that never use GL see no difference.
+
+#include "common/Log.h"
+
+namespace {
+
+__attribute__((constructor)) void nprglInit() { nprgl::initLog(); }
+
+} // namespace

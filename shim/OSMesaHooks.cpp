@@ -1,0 +1,29 @@
+#include "shim/ContextRegistry.h"
+#include "shim/ProcAddress.h"
+#include "shim/RealGl.h"
+
+// OSMesa: context life. Its frames end at glFinish (see Context).
+
+namespace nprgl::hooks {
+
+GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenum type, GLsizei width,
+                            GLsizei height)
+{
+    GLboolean ok = gRealWs.OSMesaMakeCurrent(ctx, buffer, type, width, height);
+    if (ok) ContextRegistry::instance().makeCurrent(WindowSystem::OSMesa, ctx);
+    return ok;
+}
+
+void OSMesaDestroyContext(OSMesaContext ctx)
+{
+    gRealWs.OSMesaDestroyContext(ctx);
+    ContextRegistry::instance().destroy(WindowSystem::OSMesa, ctx);
+}
+
+OSMESAproc OSMesaGetProcAddress(const char* name)
+{
+    if (void* thunk = ourProcAddress(name)) return reinterpret_cast<OSMESAproc>(thunk);
+    return gRealWs.OSMesaGetProcAddress(name);
+}
+
+} // namespace nprgl::hooks

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "styles/StyleRegistry.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace nprgl {
+
+// A checked style chain plus its parameter values: what NPRGL_STYLE and NPRGL_CONFIG say.
+class StyleSettings {
+public:
+    // Checks the chain and every "style.param=value" against the registry: unknown names,
+    // values that are not numbers and values out of range are refused with a message that
+    // names the parameter.
+    static bool parse(const std::string& chain, const std::string& config,
+                      StyleSettings& out, std::string& error);
+
+    const std::vector<const StyleInfo*>& chain() const { return mChain; }
+    std::string chainName() const;
+    // The value of style.param: the configured one, else the registry default.
+    double value(const std::string& style, const std::string& param) const;
+
+private:
+    std::vector<const StyleInfo*> mChain;
+    std::map<std::string, double> mValues;
+};
+
+} // namespace nprgl
