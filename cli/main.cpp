@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstring>
+#include <vector>
 
 namespace {
 
@@ -27,6 +28,22 @@ Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM read
   NPRGL_LOG_FILE    log to this file instead of stderr
   NPRGL_REAL_LIBGL  the OpenGL library to forward to instead of libGL.so.1
   NPRGL_LIBRARY     the libnprgl.so this command preloads)";
+
+// Index of the program name: after "--", or the first word that is not an option or an
+// option's value. CLI11 only sees what comes before, so the program's own arguments are
+// passed on untouched and in order.
+int programIndex(int argc, char** argv, int first)
+{
+    for (int i = first; i < argc; ++i) {
+        const char* arg = argv[i];
+        if (std::strcmp(arg, "--") == 0) return i + 1;
+        if (arg[0] != '-') return i;
+        bool flag = std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0 ||
+                    std::strcmp(arg, "--version") == 0;
+        if (!flag && !std::strchr(arg, '=')) ++i; // skip the option's value
+    }
+    return argc;
+}
 
 } // namespace
 
@@ -53,14 +70,18 @@ int main(int argc, char** argv)
                    "write frames as PNG: frames=1,10,100;dir=out");
     app.add_option("--log-level", options.logLevel, "error, warn, info or debug");
     app.add_option("--log-file", options.logFile, "log to this file instead of stderr");
-    app.add_option("command", options.command, "the program and its arguments");
-    app.prefix_command();
+    int program = programIndex(argc, argv, 1 + skip);
+    // The options end where the program begins; a "--" in between is not an option.
+    int optionsEnd = program > 1 + skip && std::strcmp(argv[program - 1], "--") == 0
+                         ? program - 1
+                         : program;
+    std::vector<char*> ours(argv + skip, argv + optionsEnd);
+    ours[0] = argv[0];
     try {
-        app.parse(argc - skip, argv + skip);
+        app.parse(int(ours.size()), ours.data());
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
-    // prefix_command leaves everything after the program name unparsed.
-    for (const std::string& arg : app.remaining()) options.command.push_back(arg);
+    options.command.assign(argv + program, argv + argc);
     return nprgl::cli::runProgram(options);
 }

@@ -14,6 +14,10 @@
 #undef Status
 #undef Success
 #undef Always
+#undef Bool
+#undef True
+#undef False
+using Bool = int; // Xlib's Bool, as a type rather than a macro
 
 #include <cstddef>
 

@@ -3,6 +3,8 @@
 // We let the real library load (its handle joins the real-function search) and hand the
 // program a handle to nprgl instead, whose exports forward to it.
 
+#include "shim/DlopenHook.h"
+
 #include "common/Log.h"
 #include "shim/RealGl.h"
 
@@ -14,24 +16,16 @@ namespace nprgl {
 
 namespace {
 
-using DlopenFn = void* (*)(const char*, int);
-
-DlopenFn realDlopen()
-{
-    static DlopenFn fn = reinterpret_cast<DlopenFn>(dlsym(RTLD_NEXT, "dlopen"));
-    return fn;
-}
-
 const char* baseName(const char* path)
 {
     const char* slash = std::strrchr(path, '/');
     return slash ? slash + 1 : path;
 }
 
-// libGL.so, libGL.so.1, libGLX.so.0, libOpenGL.so.0.0.0 ...
+// libGL.so, libGL.so.1, libGLX.so.0, libOpenGL.so.0.0.0, libOSMesa.so.8 ...
 bool isGlLibrary(const char* path)
 {
-    static const std::regex kPattern("lib(GL|GLX|OpenGL)\\.so(\\.[0-9]+)*");
+    static const std::regex kPattern("lib(GL|GLX|OpenGL|OSMesa)\\.so(\\.[0-9]+)*");
     return std::regex_match(baseName(path), kPattern);
 }
 
@@ -53,10 +47,17 @@ void* selfHandle()
 {
     Dl_info info{};
     dladdr(reinterpret_cast<void*>(&realDlopen), &info);
-    return info.dli_fname ? realDlopen()(info.dli_fname, RTLD_NOW | RTLD_NOLOAD) : nullptr;
+    return info.dli_fname ? realDlopen(info.dli_fname, RTLD_NOW | RTLD_NOLOAD) : nullptr;
 }
 
 } // namespace
+
+void* realDlopen(const char* file, int mode)
+{
+    using DlopenFn = void* (*)(const char*, int);
+    static DlopenFn fn = reinterpret_cast<DlopenFn>(dlsym(RTLD_NEXT, "dlopen"));
+    return fn(file, mode);
+}
 
 } // namespace nprgl
 
@@ -64,7 +65,7 @@ extern "C" __attribute__((visibility("default"))) void* dlopen(const char* file,
 {
     using namespace nprgl;
     const void* caller = __builtin_return_address(0);
-    void* handle = realDlopen()(file, mode);
+    void* handle = realDlopen(file, mode);
     if (!handle || !file || !isGlLibrary(file) || callerIsGlStack(caller)) return handle;
     addRealLibrary(handle);
     void* self = selfHandle();

@@ -1,6 +1,7 @@
 #include "shim/RealGl.h"
 
 #include "common/Log.h"
+#include "shim/DlopenHook.h"
 
 #include <atomic>
 #include <cstdlib>
@@ -128,7 +129,7 @@ void openDefaultLibraries()
         static bool tried = false;
         if (!tried) {
             tried = true;
-            gOverrideLibrary = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+            gOverrideLibrary = realDlopen(path, RTLD_NOW | RTLD_LOCAL);
             static bool tried = false;
         if (!tried) {
             tried = true;
@@ -151,7 +152,7 @@ void* findReal(const char* name, bool glCommand)
     }
     // Last resort, as the design says; not when the user named another library.
     if (!gDefaultLibrary && !std::getenv("NPRGL_REAL_LIBGL")) {
-        gDefaultLibrary = dlopen("libGL.so.1", RTLD_NOW | RTLD_LOCAL);
+        gDefaultLibrary = realDlopen("libGL.so.1", RTLD_NOW | RTLD_LOCAL);
     }
     return lookupIn(gDefaultLibrary, name);
 }

@@ -34,13 +34,35 @@ EGL_CMDS = [
      [("const char *", "procname")]),
     ("EGLBoolean", "eglDestroyContext", [("EGLDisplay", "dpy"), ("EGLContext", "ctx")]),
 ]
+# (hooked, ret, name, params): the whole OSMesa API, so that a program that dlopens
+# libOSMesa and is handed nprgl still finds every function.
 OSMESA_CMDS = [
-    ("GLboolean", "OSMesaMakeCurrent",
+    (1, "GLboolean", "OSMesaMakeCurrent",
      [("OSMesaContext", "ctx"), ("void *", "buffer"), ("GLenum", "type"), ("GLsizei", "width"),
       ("GLsizei", "height")]),
-    ("OSMESAproc", "OSMesaGetProcAddress", [("const char *", "funcName")]),
-    ("void", "OSMesaDestroyContext", [("OSMesaContext", "ctx")]),
+    (1, "OSMESAproc", "OSMesaGetProcAddress", [("const char *", "funcName")]),
+    (1, "void", "OSMesaDestroyContext", [("OSMesaContext", "ctx")]),
+    (0, "OSMesaContext", "OSMesaCreateContext",
+     [("GLenum", "format"), ("OSMesaContext", "sharelist")]),
+    (0, "OSMesaContext", "OSMesaCreateContextExt",
+     [("GLenum", "format"), ("GLint", "depthBits"), ("GLint", "stencilBits"),
+      ("GLint", "accumBits"), ("OSMesaContext", "sharelist")]),
+    (0, "OSMesaContext", "OSMesaCreateContextAttribs",
+     [("const int *", "attribList"), ("OSMesaContext", "sharelist")]),
+    (0, "OSMesaContext", "OSMesaGetCurrentContext", []),
+    (0, "void", "OSMesaPixelStore", [("GLint", "pname"), ("GLint", "value")]),
+    (0, "void", "OSMesaGetIntegerv", [("GLint", "pname"), ("GLint *", "value")]),
+    (0, "GLboolean", "OSMesaGetDepthBuffer",
+     [("OSMesaContext", "c"), ("GLint *", "width"), ("GLint *", "height"),
+      ("GLint *", "bytesPerValue"), ("void **", "buffer")]),
+    (0, "GLboolean", "OSMesaGetColorBuffer",
+     [("OSMesaContext", "c"), ("GLint *", "width"), ("GLint *", "height"),
+      ("GLint *", "format"), ("void **", "buffer")]),
+    (0, "void", "OSMesaColorClamp", [("GLboolean", "enable")]),
+    (0, "void", "OSMesaPostprocess",
+     [("OSMesaContext", "osmesa"), ("const char *", "filter"), ("unsigned", "enable_value")]),
 ]
+
 
 
 def paramText(elem):
@@ -114,10 +136,12 @@ def main():
         ret, name, params, args = fmtEntry(*glxCmds[name])
         hooked = 1 if name in GLX_HOOKED else 0
         lines.append(f"NPRGL_WS(Glx, {hooked}, {ret}, {name}, {params}, {args})")
-    for api, cmds in (("Egl", EGL_CMDS), ("OSMesa", OSMESA_CMDS)):
-        for ret, name, params in cmds:
-            ret, name, params, args = fmtEntry(ret, name, params)
-            lines.append(f"NPRGL_WS({api}, 1, {ret}, {name}, {params}, {args})")
+    for ret, name, params in EGL_CMDS:
+        ret, name, params, args = fmtEntry(ret, name, params)
+        lines.append(f"NPRGL_WS(Egl, 1, {ret}, {name}, {params}, {args})")
+    for hooked, ret, name, params in OSMESA_CMDS:
+        ret, name, params, args = fmtEntry(ret, name, params)
+        lines.append(f"NPRGL_WS(OSMesa, {hooked}, {ret}, {name}, {params}, {args})")
     lines += ["#undef NPRGL_GL", "#undef NPRGL_WS", ""]
 
     with open(opts.output, "w", encoding="utf-8") as out:

@@ -1,0 +1,235 @@
+// demo_displaylist: three gears compiled once into display lists (like glxgears); each frame
+// only sets transforms and calls the lists.
+
+#include "Demo.h"
+
+#include <GL/gl.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace {
+
+constexpr float pi = std::numbers::pi_v<float>;
+
+// Offsets from the base returned by glGenLists.
+enum ListOffset : GLubyte {
+    stateList,
+    plateList,
+    axleList,
+    gear1List,
+    gear2List,
+    gear3List,
+    listCount
+};
+
+void setMaterial(float r, float g, float b)
+{
+    const float colour[] = {r, g, b, 1.0f};
+    glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, colour);
+}
+
+// A gear in the z = 0 plane centred on the origin, flat shaded.
+void drawGear(float innerRadius, float outerRadius, float width, int teeth, float toothDepth)
+{
+    float r0 = innerRadius;
+    float r1 = outerRadius - toothDepth / 2.0f;
+    float r2 = outerRadius + toothDepth / 2.0f;
+    float da = 2.0f * pi / teeth / 4.0f;
+    float hw = width / 2.0f;
+
+    glShadeModel(GL_FLAT);
+    for (float side : {1.0f, -1.0f}) {
+        glNormal3f(0.0f, 0.0f, side);
+        // Face between the hole and the tooth roots; the back face is wound the other way.
+        glBegin(GL_QUAD_STRIP);
+        for (int i = 0; i <= teeth; ++i) {
+            float a = i * 2.0f * pi / teeth;
+            if (side > 0) {
+                glVertex3f(r0 * std::cos(a), r0 * std::sin(a), hw);
+                glVertex3f(r1 * std::cos(a), r1 * std::sin(a), hw);
+                if (i < teeth) {
+                    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), hw);
+                    glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), hw);
+                }
+            } else {
+                glVertex3f(r1 * std::cos(a), r1 * std::sin(a), -hw);
+                glVertex3f(r0 * std::cos(a), r0 * std::sin(a), -hw);
+                if (i < teeth) {
+                    glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), -hw);
+                    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), -hw);
+                }
+            }
+        }
+        glEnd();
+        // Faces of the teeth.
+        glBegin(GL_QUADS);
+        for (int i = 0; i < teeth; ++i) {
+            float a = i * 2.0f * pi / teeth;
+            float z = side * hw;
+            float p[4][2] = {{r1 * std::cos(a), r1 * std::sin(a)},
+                             {r2 * std::cos(a + da), r2 * std::sin(a + da)},
+                             {r2 * std::cos(a + 2 * da), r2 * std::sin(a + 2 * da)},
+                             {r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da)}};
+            for (int k = 0; k < 4; ++k) {
+                int j = side > 0 ? k : 3 - k;
+                glVertex3f(p[j][0], p[j][1], z);
+            }
+        }
+        glEnd();
+    }
+
+    // Outward faces of the teeth.
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i < teeth; ++i) {
+        float a = i * 2.0f * pi / teeth;
+        glVertex3f(r1 * std::cos(a), r1 * std::sin(a), hw);
+        glVertex3f(r1 * std::cos(a), r1 * std::sin(a), -hw);
+        float u = r2 * std::cos(a + da) - r1 * std::cos(a);
+        float v = r2 * std::sin(a + da) - r1 * std::sin(a);
+        float length = std::sqrt(u * u + v * v);
+        glNormal3f(v / length, -u / length, 0.0f);
+        glVertex3f(r2 * std::cos(a + da), r2 * std::sin(a + da), hw);
+        glVertex3f(r2 * std::cos(a + da), r2 * std::sin(a + da), -hw);
+        glNormal3f(std::cos(a), std::sin(a), 0.0f);
+        glVertex3f(r2 * std::cos(a + 2 * da), r2 * std::sin(a + 2 * da), hw);
+        glVertex3f(r2 * std::cos(a + 2 * da), r2 * std::sin(a + 2 * da), -hw);
+        u = r1 * std::cos(a + 3 * da) - r2 * std::cos(a + 2 * da);
+        v = r1 * std::sin(a + 3 * da) - r2 * std::sin(a + 2 * da);
+        glNormal3f(v, -u, 0.0f);
+        glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), hw);
+        glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), -hw);
+        glNormal3f(std::cos(a), std::sin(a), 0.0f);
+    }
+    glVertex3f(r1, 0.0f, hw);
+    glVertex3f(r1, 0.0f, -hw);
+    glEnd();
+}
+
+// A grey hexagonal axle through a gear's hole, sticking out on both sides.
+void drawAxle(float radius, float length)
+{
+    setMaterial(0.6f, 0.6f, 0.62f);
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i <= 6; ++i) {
+        float a = i * 2.0f * pi / 6.0f;
+        float mid = a + pi / 6.0f;
+        glNormal3f(std::cos(mid), std::sin(mid), 0.0f);
+        glVertex3f(radius * std::cos(a), radius * std::sin(a), length / 2);
+        glVertex3f(radius * std::cos(a), radius * std::sin(a), -length / 2);
+    }
+    glEnd();
+    glNormal3f(0.0f, 0.0f, 1.0f);
+    glBegin(GL_POLYGON);
+    for (int i = 0; i < 6; ++i) {
+        float a = i * 2.0f * pi / 6.0f;
+        glVertex3f(radius * std::cos(a), radius * std::sin(a), length / 2);
+    }
+    glEnd();
+}
+
+class DisplayListScene : public demo::Scene {
+public:
+    bool init(const demo::Options& options, std::string& error) override
+    {
+        base_ = glGenLists(listCount);
+        if (base_ == 0) {
+            error = "glGenLists failed";
+            return false;
+        }
+        glViewport(0, 0, options.width, options.height);
+        // Keep the whole unit square in view whichever side is longer.
+        double aspect = static_cast<double>(options.width) / options.height;
+        double halfWidth = aspect >= 1.0 ? aspect : 1.0;
+        double halfHeight = aspect >= 1.0 ? 1.0 : 1.0 / aspect;
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glFrustum(-halfWidth, halfWidth, -halfHeight, halfHeight, 5.0, 60.0);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+
+        // The state list is also executed now, so the context is set up as it is compiled.
+        glNewList(base_ + stateList, GL_COMPILE_AND_EXECUTE);
+        const float lightPosition[] = {5.0f, 5.0f, 10.0f, 0.0f};
+        glLightfv(GL_LIGHT0, GL_POSITION, lightPosition);
+        glEnable(GL_CULL_FACE);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_NORMALIZE);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glEndList();
+
+        glNewList(base_ + plateList, GL_COMPILE);
+        setMaterial(0.25f, 0.25f, 0.3f);
+        glNormal3f(0.0f, 0.0f, 1.0f);
+        glBegin(GL_QUADS);
+        glVertex3f(-7.5f, -6.5f, -2.0f);
+        glVertex3f(7.0f, -6.5f, -2.0f);
+        glVertex3f(7.0f, 7.5f, -2.0f);
+        glVertex3f(-7.5f, 7.5f, -2.0f);
+        glEnd();
+        glEndList();
+
+        glNewList(base_ + axleList, GL_COMPILE);
+        drawAxle(0.45f, 3.0f);
+        glEndList();
+
+        compileGear(gear1List, 0.8f, 0.1f, 0.0f, 1.0f, 4.0f, 1.0f, 20);
+        compileGear(gear2List, 0.0f, 0.8f, 0.2f, 0.5f, 2.0f, 2.0f, 10);
+        compileGear(gear3List, 0.2f, 0.2f, 1.0f, 1.3f, 2.0f, 0.5f, 10);
+        return true;
+    }
+
+    void draw(int frame) override
+    {
+        float angle = frame * 2.0f;
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glLoadIdentity();
+        glTranslatef(0.0f, 0.0f, -40.0f);
+        glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+        glRotatef(30.0f + frame * 0.25f, 0.0f, 1.0f, 0.0f);
+
+        const GLubyte sceneLists[] = {stateList, plateList};
+        glListBase(base_);
+        glCallLists(2, GL_UNSIGNED_BYTE, sceneLists);
+        glListBase(0);
+
+        drawGearAt(gear1List, -3.0f, -2.0f, angle);
+        drawGearAt(gear2List, 3.1f, -2.0f, -2.0f * angle - 9.0f);
+        drawGearAt(gear3List, -3.1f, 4.2f, -2.0f * angle - 25.0f);
+    }
+
+    void shutdown() override { glDeleteLists(base_, listCount); }
+
+private:
+    void compileGear(GLuint offset, float r, float g, float b, float inner, float outer,
+                     float width, int teeth)
+    {
+        glNewList(base_ + offset, GL_COMPILE);
+        // Nested call: the axle list is shared by all gears.
+        glCallList(base_ + axleList);
+        setMaterial(r, g, b);
+        drawGear(inner, outer, width, teeth, 0.7f);
+        glEndList();
+    }
+
+    void drawGearAt(GLuint offset, float x, float y, float angle)
+    {
+        glPushMatrix();
+        glTranslatef(x, y, 0.0f);
+        glRotatef(angle, 0.0f, 0.0f, 1.0f);
+        glCallList(base_ + offset);
+        glPopMatrix();
+    }
+
+    GLuint base_ = 0;
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    DisplayListScene scene;
+    return demo::run(argc, argv, "displaylist", scene);
+}

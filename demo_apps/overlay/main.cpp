@@ -1,0 +1,264 @@
+// demo_overlay: a lit 3D scene, then a 2D HUD drawn over it in an orthographic projection:
+// a translucent panel, GL_LINES and glBitmap text from a tiny built-in font.
+
+#include "Demo.h"
+
+#include <GL/gl.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <numbers>
+#include <string_view>
+
+namespace {
+
+constexpr float pi = std::numbers::pi_v<float>;
+
+// 5x7 glyphs, top row first; drawn at double size.
+struct Glyph {
+    char character;
+    std::array<const char*, 7> rows;
+};
+
+constexpr Glyph font[] = {
+    {'0', {".###.", "#...#", "#..##", "#.#.#", "##..#", "#...#", ".###."}},
+    {'1', {"..#..", ".##..", "..#..", "..#..", "..#..", "..#..", ".###."}},
+    {'2', {".###.", "#...#", "....#", "...#.", "..#..", ".#...", "#####"}},
+    {'3', {"####.", "....#", "....#", ".###.", "....#", "....#", "####."}},
+    {'4', {"...#.", "..##.", ".#.#.", "#..#.", "#####", "...#.", "...#."}},
+    {'5', {"#####", "#....", "####.", "....#", "....#", "#...#", ".###."}},
+    {'6', {"..##.", ".#...", "#....", "####.", "#...#", "#...#", ".###."}},
+    {'7', {"#####", "....#", "...#.", "..#..", ".#...", ".#...", ".#..."}},
+    {'8', {".###.", "#...#", "#...#", ".###.", "#...#", "#...#", ".###."}},
+    {'9', {".###.", "#...#", "#...#", ".####", "....#", "...#.", ".##.."}},
+    {'A', {".###.", "#...#", "#...#", "#####", "#...#", "#...#", "#...#"}},
+    {'D', {"####.", "#...#", "#...#", "#...#", "#...#", "#...#", "####."}},
+    {'E', {"#####", "#....", "#....", "####.", "#....", "#....", "#####"}},
+    {'F', {"#####", "#....", "#....", "####.", "#....", "#....", "#...."}},
+    {'L', {"#....", "#....", "#....", "#....", "#....", "#....", "#####"}},
+    {'M', {"#...#", "##.##", "#.#.#", "#.#.#", "#...#", "#...#", "#...#"}},
+    {'O', {".###.", "#...#", "#...#", "#...#", "#...#", "#...#", ".###."}},
+    {'R', {"####.", "#...#", "#...#", "####.", "#.#..", "#..#.", "#...#"}},
+    {'V', {"#...#", "#...#", "#...#", "#...#", "#...#", ".#.#.", "..#.."}},
+    {'Y', {"#...#", "#...#", ".#.#.", "..#..", "..#..", "..#..", "..#.."}},
+    {':', {".....", "..#..", "..#..", ".....", "..#..", "..#..", "....."}},
+    {' ', {".....", ".....", ".....", ".....", ".....", ".....", "....."}},
+};
+constexpr int glyphCount = sizeof(font) / sizeof(font[0]);
+constexpr int glyphWidth = 10; // pixels after doubling
+constexpr int glyphHeight = 14;
+constexpr int glyphAdvance = 12;
+
+// Glyph bitmaps for glBitmap: bottom row first, two bytes per row, most significant bit left.
+using GlyphBitmap = std::array<uint8_t, glyphHeight * 2>;
+
+GlyphBitmap makeBitmap(const Glyph& glyph)
+{
+    GlyphBitmap bitmap{};
+    for (int row = 0; row < glyphHeight; ++row) {
+        const char* source = glyph.rows[6 - row / 2];
+        uint16_t bits = 0;
+        for (int x = 0; x < glyphWidth; ++x) {
+            if (source[x / 2] == '#') {
+                bits |= static_cast<uint16_t>(0x8000u >> x);
+            }
+        }
+        bitmap[row * 2] = static_cast<uint8_t>(bits >> 8);
+        bitmap[row * 2 + 1] = static_cast<uint8_t>(bits & 0xff);
+    }
+    return bitmap;
+}
+
+void drawSphere(float radius, int stacks, int slices)
+{
+    for (int i = 0; i < stacks; ++i) {
+        glBegin(GL_TRIANGLE_STRIP);
+        for (int j = 0; j <= slices; ++j) {
+            float lon = 2.0f * pi * j / slices;
+            for (int k = 0; k <= 1; ++k) {
+                float lat = pi * (i + k) / stacks - pi / 2.0f;
+                float n[3] = {std::cos(lat) * std::cos(lon), std::sin(lat),
+                              -std::cos(lat) * std::sin(lon)};
+                glNormal3f(n[0], n[1], n[2]);
+                glVertex3f(radius * n[0], radius * n[1], radius * n[2]);
+            }
+        }
+        glEnd();
+    }
+}
+
+void drawTorus(float major, float minor, int rings, int sides)
+{
+    for (int i = 0; i < rings; ++i) {
+        glBegin(GL_QUAD_STRIP);
+        for (int j = 0; j <= sides; ++j) {
+            float v = 2.0f * pi * j / sides;
+            for (int k = 1; k >= 0; --k) {
+                float u = 2.0f * pi * (i + k) / rings;
+                float r = major + minor * std::cos(v);
+                glNormal3f(std::cos(u) * std::cos(v), std::sin(u) * std::cos(v), std::sin(v));
+                glVertex3f(r * std::cos(u), r * std::sin(u), minor * std::sin(v));
+            }
+        }
+        glEnd();
+    }
+}
+
+class OverlayScene : public demo::Scene {
+public:
+    bool init(const demo::Options& options, std::string&) override
+    {
+        width_ = options.width;
+        height_ = options.height;
+        for (int i = 0; i < glyphCount; ++i) {
+            bitmaps_[i] = makeBitmap(font[i]);
+        }
+        glViewport(0, 0, width_, height_);
+        glClearColor(0.12f, 0.1f, 0.14f, 1.0f);
+        glEnable(GL_NORMALIZE);
+        glEnable(GL_LIGHT0);
+        const float specular[] = {0.5f, 0.5f, 0.5f, 1.0f};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, specular);
+        glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 32.0f);
+        return true;
+    }
+
+    void draw(int frame) override
+    {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        drawScene(frame);
+        drawOverlay(frame);
+    }
+
+private:
+    void drawScene(int frame)
+    {
+        demo::setPerspective(45.0, static_cast<double>(width_) / height_, 1.0, 50.0);
+        glLoadIdentity();
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        const float lightDirection[] = {0.5f, 0.7f, 1.0f, 0.0f};
+        glLightfv(GL_LIGHT0, GL_POSITION, lightDirection);
+        glTranslatef(0.0f, -0.6f, -7.5f);
+        glRotatef(30.0f, 1.0f, 0.0f, 0.0f);
+
+        glPushMatrix();
+        glRotatef(frame * 2.0f, 0.0f, 1.0f, 0.0f);
+        glRotatef(90.0f, 1.0f, 0.0f, 0.0f);
+        setColour(0.85f, 0.75f, 0.3f);
+        drawTorus(1.3f, 0.3f, 40, 20);
+        glPopMatrix();
+
+        const float colours[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.2f, 0.4f, 0.9f},
+                                     {0.9f, 0.5f, 0.1f}, {0.7f, 0.2f, 0.8f}, {0.2f, 0.8f, 0.8f}};
+        for (int i = 0; i < 6; ++i) {
+            glPushMatrix();
+            glRotatef(-frame * 1.0f + i * 60.0f, 0.0f, 1.0f, 0.0f);
+            glTranslatef(2.4f, 0.4f * std::sin(frame * 0.1f + i), 0.0f);
+            setColour(colours[i][0], colours[i][1], colours[i][2]);
+            drawSphere(0.35f, 12, 16);
+            glPopMatrix();
+        }
+    }
+
+    void drawOverlay(int frame)
+    {
+        // Pixel coordinates with the origin at the bottom left.
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glOrtho(0.0, width_, 0.0, height_, -1.0, 1.0);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_LIGHTING);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+
+        const int left = 12;
+        const int bottom = 12;
+        const int right = width_ - 12;
+        const int top = bottom + 64;
+        glColor4f(0.0f, 0.0f, 0.0f, 0.55f);
+        glBegin(GL_QUADS);
+        glVertex2i(left, bottom);
+        glVertex2i(right, bottom);
+        glVertex2i(right, top);
+        glVertex2i(left, top);
+        glEnd();
+        // Progress bar filling up every 100 frames.
+        float progress = (frame % 100) / 100.0f;
+        glColor4f(0.2f, 0.9f, 0.3f, 0.7f);
+        glBegin(GL_QUADS);
+        glVertex2f(left + 10.0f, bottom + 10.0f);
+        glVertex2f(left + 10.0f + 170.0f * progress, bottom + 10.0f);
+        glVertex2f(left + 10.0f + 170.0f * progress, bottom + 18.0f);
+        glVertex2f(left + 10.0f, bottom + 18.0f);
+        glEnd();
+        glDisable(GL_BLEND);
+
+        // Panel frame and a crosshair at the centre of the view, as GL_LINES.
+        glColor3f(0.9f, 0.9f, 0.9f);
+        float cx = width_ / 2.0f;
+        float cy = height_ / 2.0f;
+        const float frameLines[][4] = {
+            {left + 0.5f, bottom + 0.5f, right - 0.5f, bottom + 0.5f},
+            {right - 0.5f, bottom + 0.5f, right - 0.5f, top - 0.5f},
+            {right - 0.5f, top - 0.5f, left + 0.5f, top - 0.5f},
+            {left + 0.5f, top - 0.5f, left + 0.5f, bottom + 0.5f},
+            {cx - 12.0f, cy + 0.5f, cx - 4.0f, cy + 0.5f},
+            {cx + 4.0f, cy + 0.5f, cx + 12.0f, cy + 0.5f},
+            {cx + 0.5f, cy - 12.0f, cx + 0.5f, cy - 4.0f},
+            {cx + 0.5f, cy + 4.0f, cx + 0.5f, cy + 12.0f},
+        };
+        glBegin(GL_LINES);
+        for (const auto& line : frameLines) {
+            glVertex2f(line[0], line[1]);
+            glVertex2f(line[2], line[3]);
+        }
+        glEnd();
+
+        char frameText[32];
+        std::snprintf(frameText, sizeof(frameText), "FRAME %04d", frame % 10000);
+        glColor3f(1.0f, 1.0f, 0.4f);
+        drawText(left + 10, bottom + 28, frameText);
+        glColor3f(0.7f, 0.85f, 1.0f);
+        drawText(12, height_ - 26, "OVERLAY DEMO");
+    }
+
+    void drawText(int x, int y, std::string_view text)
+    {
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        // The raster colour is latched here from the current colour.
+        glRasterPos2i(x, y);
+        for (char c : text) {
+            int index = glyphCount - 1; // unknown characters draw as a space
+            for (int i = 0; i < glyphCount; ++i) {
+                if (font[i].character == c) {
+                    index = i;
+                }
+            }
+            glBitmap(glyphWidth, glyphHeight, 0.0f, 0.0f, glyphAdvance, 0.0f,
+                     bitmaps_[index].data());
+        }
+    }
+
+    static void setColour(float r, float g, float b)
+    {
+        const float colour[] = {r, g, b, 1.0f};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, colour);
+    }
+
+    int width_ = 0;
+    int height_ = 0;
+    std::array<GlyphBitmap, glyphCount> bitmaps_{};
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    OverlayScene scene;
+    return demo::run(argc, argv, "overlay", scene);
+}

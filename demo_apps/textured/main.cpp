@@ -1,0 +1,198 @@
+// demo_textured: a lit cube, sphere and floor with procedurally generated textures
+// (GL_MODULATE, no mipmaps, glTexCoord2f per vertex).
+
+#include "Demo.h"
+
+#include <GL/gl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+namespace {
+
+constexpr float pi = std::numbers::pi_v<float>;
+constexpr int textureSize = 64;
+
+// Two-colour checkerboard with a thin darker border per cell.
+std::vector<uint8_t> makeChecker(const uint8_t* a, const uint8_t* b, int cells)
+{
+    std::vector<uint8_t> pixels(textureSize * textureSize * 3);
+    int cell = textureSize / cells;
+    for (int y = 0; y < textureSize; ++y) {
+        for (int x = 0; x < textureSize; ++x) {
+            const uint8_t* colour = ((x / cell) + (y / cell)) % 2 == 0 ? a : b;
+            bool border = x % cell == 0 || y % cell == 0;
+            for (int c = 0; c < 3; ++c) {
+                pixels[(y * textureSize + x) * 3 + c] =
+                    static_cast<uint8_t>(border ? colour[c] * 3 / 4 : colour[c]);
+            }
+        }
+    }
+    return pixels;
+}
+
+// Diagonal stripes blending from orange to white, for the sphere.
+std::vector<uint8_t> makeStripes()
+{
+    std::vector<uint8_t> pixels(textureSize * textureSize * 3);
+    for (int y = 0; y < textureSize; ++y) {
+        for (int x = 0; x < textureSize; ++x) {
+            bool stripe = ((x + y) / 8) % 2 == 0;
+            uint8_t* p = &pixels[(y * textureSize + x) * 3];
+            p[0] = 255;
+            p[1] = stripe ? 140 : 240;
+            p[2] = stripe ? 20 : 220;
+        }
+    }
+    return pixels;
+}
+
+GLuint uploadTexture(const std::vector<uint8_t>& pixels)
+{
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, textureSize, textureSize, 0, GL_RGB,
+                 GL_UNSIGNED_BYTE, pixels.data());
+    return texture;
+}
+
+void drawCube(float half)
+{
+    // Each face: normal, then the in-face s and t axes.
+    const float faces[6][3][3] = {
+        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+    };
+    const float corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    glBegin(GL_QUADS);
+    for (const auto& face : faces) {
+        glNormal3f(face[0][0], face[0][1], face[0][2]);
+        for (const auto& st : corners) {
+            float s = (2.0f * st[0] - 1.0f) * half;
+            float t = (2.0f * st[1] - 1.0f) * half;
+            glTexCoord2f(st[0], st[1]);
+            glVertex3f(face[0][0] * half + face[1][0] * s + face[2][0] * t,
+                       face[0][1] * half + face[1][1] * s + face[2][1] * t,
+                       face[0][2] * half + face[1][2] * s + face[2][2] * t);
+        }
+    }
+    glEnd();
+}
+
+void drawSphere(float radius, int stacks, int slices)
+{
+    for (int i = 0; i < stacks; ++i) {
+        glBegin(GL_TRIANGLE_STRIP);
+        for (int j = 0; j <= slices; ++j) {
+            float lon = 2.0f * pi * j / slices;
+            for (int k = 0; k <= 1; ++k) {
+                float lat = pi * (i + k) / stacks - pi / 2.0f;
+                float n[3] = {std::cos(lat) * std::cos(lon), std::sin(lat),
+                              -std::cos(lat) * std::sin(lon)};
+                // Two texture repeats around so the stripes stay square-ish.
+                glTexCoord2f(2.0f * j / slices, static_cast<float>(i + k) / stacks);
+                glNormal3f(n[0], n[1], n[2]);
+                glVertex3f(radius * n[0], radius * n[1], radius * n[2]);
+            }
+        }
+        glEnd();
+    }
+}
+
+class TexturedScene : public demo::Scene {
+public:
+    bool init(const demo::Options& options, std::string&) override
+    {
+        const uint8_t white[] = {235, 235, 235};
+        const uint8_t red[] = {200, 40, 40};
+        const uint8_t blue[] = {60, 90, 200};
+        const uint8_t grey[] = {150, 150, 160};
+        cubeTexture_ = uploadTexture(makeChecker(white, red, 4));
+        floorTexture_ = uploadTexture(makeChecker(grey, blue, 2));
+        sphereTexture_ = uploadTexture(makeStripes());
+
+        glViewport(0, 0, options.width, options.height);
+        demo::setPerspective(45.0, static_cast<double>(options.width) / options.height, 1.0,
+                             50.0);
+        glClearColor(0.15f, 0.15f, 0.18f, 1.0f);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glEnable(GL_TEXTURE_2D);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        const float material[] = {1.0f, 1.0f, 1.0f, 1.0f};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, material);
+        const float ambient[] = {0.25f, 0.25f, 0.25f, 1.0f};
+        glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+        return true;
+    }
+
+    void draw(int frame) override
+    {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        const float lightDirection[] = {-0.5f, 0.8f, 0.7f, 0.0f};
+        glLightfv(GL_LIGHT0, GL_POSITION, lightDirection);
+        glTranslatef(0.0f, -0.3f, -8.0f);
+        glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
+        glRotatef(frame * 0.5f, 0.0f, 1.0f, 0.0f);
+
+        // Floor with the texture repeated four times each way.
+        glBindTexture(GL_TEXTURE_2D, floorTexture_);
+        glNormal3f(0.0f, 1.0f, 0.0f);
+        glBegin(GL_QUADS);
+        glTexCoord2f(0.0f, 0.0f);
+        glVertex3f(-3.0f, -1.0f, 3.0f);
+        glTexCoord2f(4.0f, 0.0f);
+        glVertex3f(3.0f, -1.0f, 3.0f);
+        glTexCoord2f(4.0f, 4.0f);
+        glVertex3f(3.0f, -1.0f, -3.0f);
+        glTexCoord2f(0.0f, 4.0f);
+        glVertex3f(-3.0f, -1.0f, -3.0f);
+        glEnd();
+
+        glBindTexture(GL_TEXTURE_2D, cubeTexture_);
+        glPushMatrix();
+        glTranslatef(-1.3f, 0.0f, 0.0f);
+        glRotatef(frame * 2.0f, 0.3f, 1.0f, 0.2f);
+        drawCube(0.8f);
+        glPopMatrix();
+
+        glBindTexture(GL_TEXTURE_2D, sphereTexture_);
+        glPushMatrix();
+        glTranslatef(1.3f, 0.0f, 0.0f);
+        glRotatef(frame * 2.0f, 0.0f, 1.0f, 0.0f);
+        glRotatef(20.0f, 0.0f, 0.0f, 1.0f);
+        drawSphere(0.95f, 24, 32);
+        glPopMatrix();
+    }
+
+    void shutdown() override
+    {
+        const GLuint textures[] = {cubeTexture_, floorTexture_, sphereTexture_};
+        glDeleteTextures(3, textures);
+    }
+
+private:
+    GLuint cubeTexture_ = 0;
+    GLuint floorTexture_ = 0;
+    GLuint sphereTexture_ = 0;
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    TexturedScene scene;
+    return demo::run(argc, argv, "textured", scene);
+}

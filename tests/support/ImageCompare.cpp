@@ -1,0 +1,36 @@
+#include "tests/support/ImageCompare.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace nprgl::test {
+
+ImageDiff compareImages(const std::string& a, const std::string& b)
+{
+    ImageDiff diff;
+    PngImage ia, ib;
+    if (!PngImage::read(a, ia, diff.error) || !PngImage::read(b, ib, diff.error)) return diff;
+    if (ia.width != ib.width || ia.height != ib.height) {
+        diff.error = "sizes differ";
+        return diff;
+    }
+    diff.comparable = true;
+    for (size_t i = 0; i < ia.rgba.size(); i += 4) {
+        int delta = 0;
+        for (int c = 0; c < 3; ++c) delta = std::max(delta, std::abs(ia.rgba[i + c] - ib.rgba[i + c]));
+        if (delta) ++diff.differingPixels;
+        diff.maxChannelDelta = std::max(diff.maxChannelDelta, delta);
+    }
+    return diff;
+}
+
+double coveredFraction(const PngImage& image)
+{
+    size_t covered = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        if (image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2] > 24) ++covered;
+    }
+    return image.rgba.empty() ? 0.0 : double(covered) / (image.rgba.size() / 4);
+}
+
+} // namespace nprgl::test

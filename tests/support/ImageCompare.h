@@ -1,0 +1,22 @@
+#pragma once
+
+#include "common/PngImage.h"
+
+#include <string>
+
+namespace nprgl::test {
+
+struct ImageDiff {
+    bool comparable = false; // both read, same size
+    std::string error;
+    size_t differingPixels = 0;
+    int maxChannelDelta = 0;
+};
+
+// Compares two PNG files pixel by pixel (RGB only: GLX visuals may lack alpha).
+ImageDiff compareImages(const std::string& a, const std::string& b);
+
+// Share of pixels that are not (near) black: a picture that is all background is suspect.
+double coveredFraction(const PngImage& image);
+
+} // namespace nprgl::test

@@ -1,0 +1,98 @@
+#include "tests/support/Process.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <spawn.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace nprgl::test {
+
+namespace {
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+} // namespace
+
+ProcessResult runProcess(const std::vector<std::string>& argv,
+                         const std::map<std::string, std::string>& env, int timeoutSeconds)
+{
+    ProcessResult result;
+    std::map<std::string, std::string> merged;
+    for (char** e = environ; *e; ++e) {
+        const char* eq = std::strchr(*e, '=');
+        if (eq) merged[std::string(*e, size_t(eq - *e))] = eq + 1;
+    }
+    for (const auto& [key, value] : env) {
+        if (value.empty()) {
+            merged.erase(key);
+        } else {
+            merged[key] = value;
+        }
+    }
+    std::vector<std::string> envStrings;
+    for (const auto& [key, value] : merged) envStrings.push_back(key + "=" + value);
+    std::vector<char*> envp, args;
+    for (auto& s : envStrings) envp.push_back(s.data());
+    envp.push_back(nullptr);
+    std::vector<std::string> argCopy = argv;
+    for (auto& s : argCopy) args.push_back(s.data());
+    args.push_back(nullptr);
+
+    std::string dir = freshDir("proc");
+    std::string outPath = dir + "/out", errPath = dir + "/err";
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT, 0644);
+    posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT, 0644);
+    pid_t pid = 0;
+    int rc = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), envp.data());
+    posix_spawn_file_actions_destroy(&actions);
+    if (rc != 0) {
+        result.err = std::string("spawn failed: ") + std::strerror(rc);
+        return result;
+    }
+    int status = 0;
+    for (int waited = 0;; ++waited) {
+        pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (timeoutSeconds > 0 && waited == timeoutSeconds * 20) kill(pid, SIGTERM);
+        usleep(50000);
+    }
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = slurp(outPath);
+    result.err = slurp(errPath);
+    return result;
+}
+
+std::string binDir() { return NPRGL_TEST_BIN_DIR; }
+
+std::string libPath() { return NPRGL_TEST_LIB_PATH; }
+
+std::string freshDir(const std::string& name)
+{
+    static int counter = 0;
+    auto base = std::filesystem::temp_directory_path() /
+                ("nprgl-test-" + std::to_string(getpid()));
+    auto dir = base / (name + "-" + std::to_string(++counter));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+} // namespace nprgl::test

@@ -1,0 +1,46 @@
+#include "styles/StyleRegistry.h"
+#include "styles/StyleSettings.h"
+
+#include <gtest/gtest.h>
+
+using namespace nprgl;
+
+TEST(StyleRegistry, KnowsNoneAndTheDefault)
+{
+    const StyleRegistry& registry = StyleRegistry::instance();
+    ASSERT_NE(registry.find("none"), nullptr);
+    EXPECT_NE(registry.find(registry.defaultStyle()), nullptr);
+    EXPECT_EQ(registry.find("nonesuch"), nullptr);
+}
+
+TEST(StyleRegistry, ParsesChainsAndNamesTheUnknownStyle)
+{
+    const StyleRegistry& registry = StyleRegistry::instance();
+    std::vector<const StyleInfo*> chain;
+    std::string error;
+    ASSERT_TRUE(registry.parseChain("none+none", chain, error)) << error;
+    EXPECT_EQ(chain.size(), 2u);
+    EXPECT_FALSE(registry.parseChain("none+sparkles", chain, error));
+    EXPECT_NE(error.find("'sparkles'"), std::string::npos) << error;
+    EXPECT_FALSE(registry.parseChain("", chain, error));
+    EXPECT_FALSE(registry.parseChain("none+", chain, error));
+}
+
+TEST(StyleSettings, EmptyStyleMeansTheDefault)
+{
+    StyleSettings settings;
+    std::string error;
+    ASSERT_TRUE(StyleSettings::parse("", "", settings, error)) << error;
+    EXPECT_EQ(settings.chainName(), StyleRegistry::instance().defaultStyle());
+}
+
+TEST(StyleSettings, RefusesUnknownParametersNamingThem)
+{
+    StyleSettings settings;
+    std::string error;
+    EXPECT_FALSE(StyleSettings::parse("none", "none.width=3", settings, error));
+    EXPECT_NE(error.find("none.width"), std::string::npos) << error;
+    EXPECT_FALSE(StyleSettings::parse("none", "width", settings, error));
+    EXPECT_FALSE(StyleSettings::parse("bogus", "", settings, error));
+    EXPECT_NE(error.find("bogus"), std::string::npos) << error;
+}
