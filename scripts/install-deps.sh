@@ -6,7 +6,7 @@ pkgs=(
     khronos-api libgl-dev libegl-dev libx11-dev libosmesa6-dev libgl1-mesa-dri
     libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
     libcli11-dev
-    mesa-utils xvfb xauth
+    mesa-utils x11-utils xvfb xauth
 )
 sudo=""
 if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi

@@ -84,11 +84,26 @@ std::string binDir() { return NPRGL_TEST_BIN_DIR; }
 
 std::string libPath() { return NPRGL_TEST_LIB_PATH; }
 
+namespace {
+
+// Removes this process's scratch files at exit, unless NPRGL_KEEP_TEST_FILES is set.
+struct ScratchArea {
+    std::filesystem::path base = std::filesystem::temp_directory_path() /
+                                 ("nprgl-test-" + std::to_string(getpid()));
+    ~ScratchArea()
+    {
+        std::error_code ec;
+        if (!std::getenv("NPRGL_KEEP_TEST_FILES")) std::filesystem::remove_all(base, ec);
+    }
+};
+
+} // namespace
+
 std::string freshDir(const std::string& name)
 {
     static int counter = 0;
-    auto base = std::filesystem::temp_directory_path() /
-                ("nprgl-test-" + std::to_string(getpid()));
+    static ScratchArea scratch;
+    const auto& base = scratch.base;
     auto dir = base / (name + "-" + std::to_string(++counter));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
