@@ -16,15 +16,11 @@ namespace {
 // OSMesa has no SwapBuffers; a program's glFinish closes its frame.
 void APIENTRY osmesaFinish()
 {
-    if (Context* ctx = tThread.context) {
-        static auto getIntegerv =
-            reinterpret_cast<void (*)(GLint, GLint*)>(realProcAddress("OSMesaGetIntegerv"));
+    if (Context* ctx = tThread.context; ctx && ctx->endFrame()) {
         GLint w = 0, h = 0;
-        if (getIntegerv) {
-            getIntegerv(OSMESA_WIDTH, &w);
-            getIntegerv(OSMESA_HEIGHT, &h);
-        }
-        ctx->endFrame(w, h);
+        gRealWs.OSMesaGetIntegerv(OSMESA_WIDTH, &w);
+        gRealWs.OSMesaGetIntegerv(OSMESA_HEIGHT, &h);
+        ctx->writeScreenshot(w, h);
     }
     gRealGl.glFinish();
 }
@@ -69,11 +65,16 @@ void Context::queryCaps()
                 mCaps.doubleBuffered ? ", double-buffered" : "");
 }
 
-void Context::endFrame(int width, int height)
+bool Context::endFrame()
 {
     ++mFrame;
     const Settings& settings = Settings::get();
-    if (!settings.screenshots || !settings.screenshotFrames.contains(mFrame)) return;
+    return settings.screenshots && settings.screenshotFrames.contains(mFrame);
+}
+
+void Context::writeScreenshot(int width, int height)
+{
+    const Settings& settings = Settings::get();
     char name[64];
     if (mSerial == 1) {
         std::snprintf(name, sizeof name, "_%llu.png", static_cast<unsigned long long>(mFrame));

@@ -29,7 +29,11 @@ public:
     // Called on every MakeCurrent to this context, after the driver's.
     void onMakeCurrent();
     // The end of a frame: just before SwapBuffers (or glFinish for swap-less OSMesa).
-    void endFrame(int width, int height);
+    // Returns true when this frame is to be written as a screenshot; the caller then asks
+    // the window system for the size (a server round trip on GLX, so not every frame) and
+    // calls writeScreenshot.
+    bool endFrame();
+    void writeScreenshot(int width, int height);
 
     const GlDispatch& dispatch() const { return mDispatch; }
     const ContextCaps& caps() const { return mCaps; }

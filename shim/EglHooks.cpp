@@ -27,7 +27,7 @@ EGLBoolean eglDestroyContext(EGLDisplay dpy, EGLContext ctx)
 EGLBoolean eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
 {
     Context* ctx = tThread.context;
-    if (ctx && ctx->windowSystem() == WindowSystem::Egl) {
+    if (ctx && ctx->windowSystem() == WindowSystem::Egl && ctx->endFrame()) {
         using QuerySurface = EGLBoolean (*)(EGLDisplay, EGLSurface, EGLint, EGLint*);
         static auto query = reinterpret_cast<QuerySurface>(realProcAddress("eglQuerySurface"));
         EGLint width = 0, height = 0;
@@ -35,7 +35,7 @@ EGLBoolean eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
             query(dpy, surface, EGL_WIDTH, &width);
             query(dpy, surface, EGL_HEIGHT, &height);
         }
-        ctx->endFrame(width, height);
+        ctx->writeScreenshot(width, height);
     }
     return gRealWs.eglSwapBuffers(dpy, surface);
 }

@@ -49,11 +49,11 @@ void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
 {
     Context* ctx = tThread.context;
     if (ctx && ctx->windowSystem() == WindowSystem::Glx &&
-        gRealWs.glXGetCurrentDrawable() == drawable) {
+        gRealWs.glXGetCurrentDrawable() == drawable && ctx->endFrame()) {
         unsigned width = 0, height = 0;
         gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
         gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
-        ctx->endFrame(int(width), int(height));
+        ctx->writeScreenshot(int(width), int(height));
     }
     gRealWs.glXSwapBuffers(dpy, drawable);
 }

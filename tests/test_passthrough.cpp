@@ -39,6 +39,12 @@ std::string caseName(const ::testing::TestParamInfo<DemoCase>& info)
     return name;
 }
 
+void PrintTo(const DemoCase& c, std::ostream* os)
+{
+    *os << c.app << (c.offscreen ? " offscreen" : " glx");
+    for (const std::string& a : c.extraArgs) *os << " " << a;
+}
+
 class DemoPassthrough : public ::testing::TestWithParam<DemoCase> {};
 
 } // namespace
