@@ -96,6 +96,21 @@ int runProgram(const RunOptions& options)
     }
     std::string library = findLibrary(error);
     if (library.empty()) return fail(error);
+    if (options.record) {
+        FrameSet frames;
+        if (!options.recordFrames.empty() &&
+            !FrameSet::parse(options.recordFrames, frames, error)) {
+            return fail("--frames: " + error);
+        }
+        std::string file = options.recordFile.empty()
+                               ? fs::path(options.command[0]).filename().string() + ".nprgl"
+                               : options.recordFile;
+        // Absolute: the program may change its directory before its first frame.
+        setenv("NPRGL_RECORD", fs::absolute(file).c_str(), 1);
+        if (!options.recordFrames.empty()) {
+            setenv("NPRGL_RECORD_FRAMES", options.recordFrames.c_str(), 1);
+        }
+    }
 
     setenv("NPRGL_STYLE", settings.chainName().c_str(), 1);
     setenv("NPRGL_CONFIG", config.c_str(), 1);

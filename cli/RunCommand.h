@@ -12,6 +12,9 @@ struct RunOptions {
     std::string logLevel;
     std::string logFile;
     std::vector<std::string> command; // program and its arguments
+    bool record = false;
+    std::string recordFile;   // default: <program>.nprgl in the current directory
+    std::string recordFrames; // A-B
 };
 
 // Checks the options, sets up the environment and replaces this process with the program

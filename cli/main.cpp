@@ -3,6 +3,7 @@
 //   nprgl [run] [--style S] [--set key=value]... [--] PROGRAM ARGS...
 //   nprgl styles
 
+#include "cli/CaptureCommands.h"
 #include "cli/RunCommand.h"
 #include "cli/StylesCommand.h"
 
@@ -18,6 +19,12 @@ constexpr const char* kFooter = R"(Usage: nprgl [run] [OPTIONS] [--] PROGRAM [AR
 
 Commands:
   run (default)   run PROGRAM with libnprgl.so preloaded
+  record          run PROGRAM and record its GL stream: nprgl record [-o FILE] [--frames A-B]
+                  [--] PROGRAM ARGS... (default FILE: <program>.nprgl)
+  replay          render a capture headless into PNGs: nprgl replay FILE -o DIR [--style S]
+                  [--set k=v]... [--frames A-B] [--size WxH] [--context N]
+  dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
+  info            print a capture's metadata, frames, calls and what was not captured
   styles          list the styles, their parameters, defaults and ranges
 
 Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM reads them too):
@@ -40,6 +47,8 @@ int programIndex(int argc, char** argv, int first)
         if (arg[0] != '-') return i;
         bool flag = std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0 ||
                     std::strcmp(arg, "--version") == 0;
+        // -ofile style short options carry their value.
+        if (arg[1] != '-' && arg[1] && arg[2]) flag = true;
         if (!flag && !std::strchr(arg, '=')) ++i; // skip the option's value
     }
     return argc;
@@ -47,15 +56,58 @@ int programIndex(int argc, char** argv, int first)
 
 } // namespace
 
+int replayMain(int argc, char** argv)
+{
+    nprgl::cli::ReplayCommandOptions o;
+    CLI::App app{"Render a capture headless (OSMesa) into PNGs frame_0000000042.png",
+                 "nprgl replay"};
+    app.add_option("file", o.file, "the capture")->required();
+    app.add_option("-o,--output", o.outDir, "directory for the PNGs")->required();
+    app.add_option("-s,--style", o.style, "style chain");
+    app.add_option("--set", o.settings, "style parameter, style.param=value (repeatable)")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_option("--frames", o.frames, "frames to write, e.g. 1-10");
+    app.add_option("--size", o.size, "render size WxH (default: the recorded size)");
+    app.add_option("--context", o.context, "which context's stream (default: the longest)");
+    CLI11_PARSE(app, argc, argv);
+    return nprgl::cli::replayCommand(o);
+}
+
+int dumpMain(int argc, char** argv)
+{
+    std::string file, frames, grep;
+    CLI::App app{"Print a capture's calls, one per line", "nprgl dump"};
+    app.add_option("file", file, "the capture")->required();
+    app.add_option("--frames", frames, "frames to print, e.g. 1-10");
+    app.add_option("--grep", grep, "only calls whose name contains NAME");
+    CLI11_PARSE(app, argc, argv);
+    return nprgl::cli::dumpCommand(file, frames, grep);
+}
+
+int infoMain(int argc, char** argv)
+{
+    std::string file;
+    CLI::App app{"Print a capture's metadata, frames and calls", "nprgl info"};
+    app.add_option("file", file, "the capture")->required();
+    CLI11_PARSE(app, argc, argv);
+    return nprgl::cli::infoCommand(file);
+}
+
 int main(int argc, char** argv)
 {
-    if (argc > 1 && std::strcmp(argv[1], "styles") == 0) {
+    const char* command = argc > 1 ? argv[1] : "";
+    if (std::strcmp(command, "styles") == 0) {
         CLI::App app{"List nprgl's styles", "nprgl styles"};
         CLI11_PARSE(app, argc - 1, argv + 1);
         return nprgl::cli::listStyles();
     }
-    // "run" is the default command and may be left out.
-    int skip = argc > 1 && std::strcmp(argv[1], "run") == 0 ? 1 : 0;
+    if (std::strcmp(command, "replay") == 0) return replayMain(argc - 1, argv + 1);
+    if (std::strcmp(command, "dump") == 0) return dumpMain(argc - 1, argv + 1);
+    if (std::strcmp(command, "info") == 0) return infoMain(argc - 1, argv + 1);
+    // "run" is the default command and may be left out; "record" is run plus a capture.
+    const bool record = std::strcmp(command, "record") == 0;
+    int skip = record || std::strcmp(command, "run") == 0 ? 1 : 0;
 
     nprgl::cli::RunOptions options;
     CLI::App app{"nprgl renders unmodified legacy OpenGL programs in non-photorealistic styles.",
@@ -70,6 +122,11 @@ int main(int argc, char** argv)
                    "write frames as PNG: frames=1,10,100;dir=out");
     app.add_option("--log-level", options.logLevel, "error, warn, info or debug");
     app.add_option("--log-file", options.logFile, "log to this file instead of stderr");
+    options.record = record;
+    if (record) {
+        app.add_option("-o,--output", options.recordFile, "the capture file");
+        app.add_option("--frames", options.recordFrames, "frames to record, e.g. 1-100");
+    }
     int program = programIndex(argc, argv, 1 + skip);
     // The options end where the program begins; a "--" in between is not an option.
     int optionsEnd = program > 1 + skip && std::strcmp(argv[program - 1], "--") == 0

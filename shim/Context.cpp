@@ -1,8 +1,11 @@
 #include "shim/Context.h"
 
 #include "common/Log.h"
+#include "shim/CaptureSession.h"
 #include "shim/FrameGrabber.h"
 #include "shim/RealGl.h"
+#include "shim/RecordingDispatch.h"
+#include "shim/Recorder.h"
 #include "shim/Settings.h"
 #include "shim/ThreadState.h"
 
@@ -13,16 +16,19 @@ namespace nprgl {
 
 namespace {
 
-// OSMesa has no SwapBuffers; a program's glFinish closes its frame.
+// OSMesa has no SwapBuffers; a program's glFinish closes its frame (the glFinish itself
+// belongs to the frame it closes).
 void APIENTRY osmesaFinish()
 {
-    if (Context* ctx = tThread.context; ctx && ctx->endFrame()) {
+    Context* ctx = tThread.context;
+    if (!ctx) return gRealGl.glFinish();
+    ctx->finishBelowHook();
+    if (ctx->endFrame()) {
         GLint w = 0, h = 0;
         gRealWs.OSMesaGetIntegerv(OSMESA_WIDTH, &w);
         gRealWs.OSMesaGetIntegerv(OSMESA_HEIGHT, &h);
         ctx->writeScreenshot(w, h);
     }
-    gRealGl.glFinish();
 }
 
 } // namespace
@@ -30,7 +36,20 @@ void APIENTRY osmesaFinish()
 Context::Context(WindowSystem ws, const void* handle, uint32_t serial)
     : mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial)
 {
+    if (CaptureSession* session = CaptureSession::instance()) {
+        mRecorder = std::make_unique<Recorder>(*this, *session);
+        installRecording(mDispatch);
+    }
+    mFinish = mDispatch.glFinish;
     if (ws == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
+}
+
+Context::~Context() = default;
+
+void Context::setDrawableSize(int width, int height)
+{
+    mWidth = width;
+    mHeight = height;
 }
 
 void Context::onMakeCurrent()
@@ -45,6 +64,13 @@ void Context::queryCaps()
     resolveReal();
     const char* version = reinterpret_cast<const char*>(gRealGl.glGetString(GL_VERSION));
     if (!version) return;
+    auto text = [](GLenum name) {
+        const GLubyte* s = gRealGl.glGetString(name);
+        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string();
+    };
+    mVendor = text(GL_VENDOR);
+    mRenderer = text(GL_RENDERER);
+    mVersion = version;
     const char* numbers = version;
     if (std::strncmp(version, "OpenGL ES", 9) == 0) {
         mCaps.es = true;
@@ -68,6 +94,7 @@ void Context::queryCaps()
 bool Context::endFrame()
 {
     ++mFrame;
+    if (mRecorder) mRecorder->endFrame(mFrame);
     const Settings& settings = Settings::get();
     return settings.screenshots && settings.screenshotFrames.contains(mFrame);
 }

@@ -3,9 +3,12 @@
 #include "shim/Api.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace nprgl {
+
+class Recorder;
 
 enum class WindowSystem { Glx, Egl, OSMesa };
 
@@ -25,6 +28,7 @@ struct ContextCaps {
 class Context {
 public:
     Context(WindowSystem ws, const void* handle, uint32_t serial);
+    ~Context();
 
     // Called on every MakeCurrent to this context, after the driver's.
     void onMakeCurrent();
@@ -34,6 +38,13 @@ public:
     // calls writeScreenshot.
     bool endFrame();
     void writeScreenshot(int width, int height);
+    // The size of the drawable it was last made current with (0 when not known).
+    void setDrawableSize(int width, int height);
+
+    // Null unless the process records (NPRGL_RECORD).
+    Recorder* recorder() const { return mRecorder.get(); }
+    // The glFinish below our OSMesa frame hook (the recording one or the driver's).
+    void finishBelowHook() const { mFinish(); }
 
     const GlDispatch& dispatch() const { return mDispatch; }
     const ContextCaps& caps() const { return mCaps; }
@@ -41,11 +52,20 @@ public:
     const void* handle() const { return mHandle; }
     uint32_t serial() const { return mSerial; }
     uint64_t frame() const { return mFrame; }
+    const std::string& vendor() const { return mVendor; }
+    const std::string& renderer() const { return mRenderer; }
+    const std::string& version() const { return mVersion; }
+    int drawableWidth() const { return mWidth; }
+    int drawableHeight() const { return mHeight; }
 
 private:
     void queryCaps();
 
     GlDispatch mDispatch;
+    void(APIENTRY* mFinish)() = nullptr;
+    std::unique_ptr<Recorder> mRecorder;
+    std::string mVendor, mRenderer, mVersion;
+    int mWidth = 0, mHeight = 0;
     ContextCaps mCaps;
     WindowSystem mWs;
     const void* mHandle;

@@ -31,17 +31,33 @@ void glXDestroyContext(Display* dpy, GLXContext ctx)
     ContextRegistry::instance().destroy(WindowSystem::Glx, ctx);
 }
 
+namespace {
+
+void onMakeCurrent(Display* dpy, GLXDrawable draw, GLXContext ctx)
+{
+    ContextRegistry::instance().makeCurrent(WindowSystem::Glx, ctx);
+    // The size goes into capture files; asking costs a server round trip, so only then.
+    if (Context* c = tThread.context; c && c->recorder() && draw) {
+        unsigned width = 0, height = 0;
+        gRealWs.glXQueryDrawable(dpy, draw, GLX_WIDTH, &width);
+        gRealWs.glXQueryDrawable(dpy, draw, GLX_HEIGHT, &height);
+        c->setDrawableSize(int(width), int(height));
+    }
+}
+
+} // namespace
+
 Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx)
 {
     Bool ok = gRealWs.glXMakeCurrent(dpy, drawable, ctx);
-    if (ok) ContextRegistry::instance().makeCurrent(WindowSystem::Glx, ctx);
+    if (ok) onMakeCurrent(dpy, drawable, ctx);
     return ok;
 }
 
 Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx)
 {
     Bool ok = gRealWs.glXMakeContextCurrent(dpy, draw, read, ctx);
-    if (ok) ContextRegistry::instance().makeCurrent(WindowSystem::Glx, ctx);
+    if (ok) onMakeCurrent(dpy, draw, ctx);
     return ok;
 }
 

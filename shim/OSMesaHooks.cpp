@@ -1,6 +1,7 @@
 #include "shim/ContextRegistry.h"
 #include "shim/ProcAddress.h"
 #include "shim/RealGl.h"
+#include "shim/ThreadState.h"
 
 // OSMesa: context life. Its frames end at glFinish (see Context).
 
@@ -10,7 +11,10 @@ GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenum type, GLsize
                             GLsizei height)
 {
     GLboolean ok = gRealWs.OSMesaMakeCurrent(ctx, buffer, type, width, height);
-    if (ok) ContextRegistry::instance().makeCurrent(WindowSystem::OSMesa, ctx);
+    if (ok) {
+        ContextRegistry::instance().makeCurrent(WindowSystem::OSMesa, ctx);
+        if (Context* c = tThread.context) c->setDrawableSize(width, height);
+    }
     return ok;
 }
 

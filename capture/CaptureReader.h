@@ -1,0 +1,108 @@
+#pragma once
+
+#include "capture/Metadata.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace nprgl::capture {
+
+// Reads a capture file (docs/capture-format.md). The file is untrusted: every length and
+// offset is checked against the file size and the format's limits before anything is
+// allocated, and every chunk's checksum before its content is believed. Errors are one line
+// naming the file and the byte offset. Never throws. After open, the const members may be
+// called from several threads at once (reads use pread).
+class CaptureReader {
+public:
+    struct FrameInfo {
+        uint32_t contextId;
+        uint64_t frameNumber;
+        uint64_t offset;         // of the frame's chunk in the file
+        uint64_t compressedSize; // stored body size
+        uint64_t rawSize;
+    };
+    struct BlobInfo {
+        BlobHash hash;
+        uint64_t offset; // of the blob's chunk in the file
+        uint64_t compressedSize;
+        uint64_t rawSize;
+    };
+
+    CaptureReader() = default;
+    ~CaptureReader();
+    CaptureReader(const CaptureReader&) = delete;
+    CaptureReader& operator=(const CaptureReader&) = delete;
+
+    // Validates magic and version, reads metadata, loads the index from the footer, or, when
+    // the footer is missing or damaged, scans chunk by chunk and stops cleanly at the first
+    // incomplete or corrupt chunk (the file then ends at its last whole frame).
+    bool open(const std::string& path, std::string& error);
+    // The same on a copy of bytes already in memory; name stands for the path in messages.
+    bool openMemory(const void* data, size_t size, const std::string& name, std::string& error);
+
+    const Metadata& metadata() const { return mMeta; }
+    const std::vector<FrameInfo>& frames() const { return mFrames; }
+    // Decompresses frame index (in file order) alone, after checking its chunk's checksum.
+    bool readFrame(size_t index, std::vector<uint8_t>& calls, std::string& error) const;
+    // Checks the chunk's checksum and that the content hashes to hash.
+    bool readBlob(BlobHash hash, std::vector<uint8_t>& out, std::string& error) const;
+    bool hasBlob(BlobHash hash) const { return mBlobIndex.count(hash) != 0; }
+    const std::vector<BlobInfo>& blobs() const { return mBlobs; }
+    size_t blobCount() const { return mBlobs.size(); }
+    uint64_t blobBytes() const { return mBlobBytes; } // uncompressed total
+    uint64_t fileBytes() const { return mFileSize; }
+    const std::vector<std::pair<std::string, uint64_t>>& callCounts() const
+    {
+        return mCallCounts;
+    }
+    bool recovered() const { return mRecovered; } // true when the index was missing and the
+                                                  // file scanned
+    // Why the scan stopped before the end of the file, or why the index was not used; empty
+    // when the file was whole.
+    const std::string& warning() const { return mWarning; }
+    uint32_t version() const { return mVersion; }
+    const std::string& path() const { return mPath; }
+
+private:
+    struct ChunkSpan; // a checked chunk header and where it lies
+
+    bool openSource(std::string& error);
+    void reset();
+    bool readAt(uint64_t offset, void* dst, size_t size) const;
+    std::string at(uint64_t offset, const std::string& message) const;
+    // Checks that a whole chunk header, and the payload it declares, lie before limit.
+    bool chunkAt(uint64_t offset, uint64_t limit, ChunkSpan& span, std::string& why) const;
+    // Reads the payload in pieces to check the checksum without holding it all in memory.
+    bool checksumMatches(const ChunkSpan& span, std::string& why) const;
+    bool readPayload(const ChunkSpan& span, uint64_t maxSize, std::vector<uint8_t>& payload,
+                     std::string& why) const;
+    bool readMetadata(std::string& error);
+    bool loadIndex(std::string& why);
+    void scan();
+    bool addBlob(const BlobInfo& blob);
+    bool readBody(uint64_t offset, uint32_t type, uint64_t storedSize, uint64_t rawSize,
+                  std::vector<uint8_t>& bodyHeader, std::vector<uint8_t>& out,
+                  std::string& error) const;
+
+    std::string mPath;
+    int mFd = -1;
+    std::vector<uint8_t> mMemory; // the file, for openMemory
+    bool mInMemory = false;
+    uint64_t mFileSize = 0;
+    uint32_t mVersion = 0;
+    uint64_t mFirstChunk = 0; // the chunk after META
+    Metadata mMeta;
+    std::vector<FrameInfo> mFrames;
+    std::vector<BlobInfo> mBlobs;
+    std::unordered_map<BlobHash, size_t> mBlobIndex;
+    uint64_t mBlobBytes = 0;
+    std::vector<std::pair<std::string, uint64_t>> mCallCounts;
+    bool mRecovered = false;
+    std::string mWarning;
+};
+
+} // namespace nprgl::capture

@@ -1,0 +1,420 @@
+#include "capture/CaptureWriter.h"
+
+#include "capture/ByteWriter.h"
+#include "capture/Format.h"
+
+#include <zstd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <exception>
+#include <new>
+
+#include <fcntl.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+namespace nprgl::capture {
+
+namespace {
+
+// Pending blobs are written early once they add up to this much, to bound memory.
+constexpr size_t kPendingFlushBytes = size_t(8) << 20;
+// A buffer that grew for one huge frame is given back rather than kept for the whole run.
+constexpr size_t kPendingKeepCapacity = size_t(64) << 20;
+
+// Returns 0 or the errno of the failure.
+int writeAll(int fd, const uint8_t* data, size_t size)
+{
+    while (size > 0) {
+        ssize_t n = ::write(fd, data, size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        if (n == 0) return ENOSPC;
+        data += n;
+        size -= size_t(n);
+    }
+    return 0;
+}
+
+void store32(uint8_t* p, uint32_t v)
+{
+    for (int i = 0; i < 4; ++i) p[i] = uint8_t(v >> (8 * i));
+}
+
+// Empty when everything fits the limits a reader enforces.
+std::string checkString(const std::string& s, const char* what)
+{
+    if (s.size() <= kMaxStringSize) return {};
+    return std::string(what) + " is " + std::to_string(s.size()) + " bytes, over the limit of " +
+           std::to_string(kMaxStringSize);
+}
+
+std::string checkMetadata(const Metadata& meta)
+{
+    std::string why = checkString(meta.program, "program name");
+    for (const std::string& arg : meta.commandLine)
+        if (why.empty()) why = checkString(arg, "a command line argument");
+    if (why.empty()) why = checkString(meta.glVendor, "GL vendor");
+    if (why.empty()) why = checkString(meta.glRenderer, "GL renderer");
+    if (why.empty()) why = checkString(meta.glVersion, "GL version");
+    for (const auto& [key, value] : meta.extra) {
+        if (why.empty()) why = checkString(key, "an extra key");
+        if (why.empty()) why = checkString(value, "an extra value");
+    }
+    return why;
+}
+
+} // namespace
+
+CaptureWriter::CaptureWriter() = default;
+
+CaptureWriter::~CaptureWriter()
+{
+    if (ownedByOtherProcess()) {
+        dropInheritedFile();
+    } else if (mFd >= 0) {
+        std::string ignored;
+        close(ignored);
+    }
+    ZSTD_freeCCtx(mCctx);
+}
+
+bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::string& error)
+{
+    if (ownedByOtherProcess()) dropInheritedFile();
+    std::lock_guard lock(mMutex);
+    if (mFd >= 0) {
+        error = path + ": cannot open: this writer still has " + mPath + " open";
+        return false;
+    }
+    try {
+        resetLocked();
+        std::string why = checkMetadata(meta);
+        std::vector<uint8_t> head(kMagic, kMagic + sizeof kMagic);
+        ByteWriter w(head);
+        w.u32(kFormatVersion);
+        w.u32(0);
+        size_t start = beginChunk(head, kChunkMeta);
+        if (why.empty()) encodeMetadata(meta, head);
+        if (why.empty() && head.size() - start - kChunkHeaderSize > kMaxSmallChunk)
+            why = "the metadata is over the limit of " + std::to_string(kMaxSmallChunk) + " bytes";
+        if (!why.empty()) {
+            error = path + ": cannot record: " + why;
+            return false;
+        }
+        finishChunk(head, start);
+        if (!mCctx) mCctx = ZSTD_createCCtx();
+        if (!mCctx) {
+            error = path + ": cannot create a zstd context";
+            return false;
+        }
+
+        int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        if (fd < 0) {
+            error = path + ": cannot create: " + std::strerror(errno);
+            return false;
+        }
+        if (int err = writeAll(fd, head.data(), head.size())) {
+            error = path + ": cannot write the header: " + std::strerror(err);
+            ::close(fd);
+            return false;
+        }
+        mFd = fd;
+        mPath = path;
+        mOffset = head.size();
+        mOwnerPid = int(::getpid());
+        return true;
+    } catch (const std::exception& e) {
+        error = path + ": cannot open: " + e.what();
+        return false;
+    }
+}
+
+BlobHash CaptureWriter::putBlob(const void* data, size_t size)
+{
+    BlobHash hash = hashBlob(data, size);
+    std::lock_guard lock(mMutex);
+    if (mKnownBlobs.count(hash) || !usable("store a blob")) return hash;
+    if (size > kMaxRawSize) {
+        setError(mPath + ": blob of " + std::to_string(size) + " bytes not stored (limit " +
+                 std::to_string(kMaxRawSize) + ")");
+        return hash;
+    }
+    size_t before = mPending.size();
+    size_t blobsBefore = mPendingBlobs.size();
+    try {
+        size_t start = beginChunk(mPending, kChunkBlob);
+        ByteWriter w(mPending);
+        w.u64(hash);
+        w.u64(size);
+        size_t codecAt = mPending.size();
+        w.u32(0);
+        w.u32(0);
+        uint32_t codec = kCodecStored;
+        uint64_t stored = appendBody(data, size, codec);
+        store32(mPending.data() + codecAt, codec);
+        finishChunk(mPending, start);
+        mPendingBlobs.push_back(BlobEntry{hash, mOffset + start, stored, size});
+        mKnownBlobs.insert(hash);
+    } catch (const std::exception& e) {
+        mPending.resize(before);
+        mPendingBlobs.resize(blobsBefore);
+        setError(mPath + ": blob not stored: " + e.what());
+        return hash;
+    }
+    if (mPending.size() >= kPendingFlushBytes) flushPending();
+    return hash;
+}
+
+bool CaptureWriter::hasBlob(BlobHash hash) const
+{
+    std::lock_guard lock(mMutex);
+    return mKnownBlobs.count(hash) != 0;
+}
+
+bool CaptureWriter::writeFrame(uint32_t contextId, uint64_t frameNumber, const void* calls,
+                               size_t size)
+{
+    std::lock_guard lock(mMutex);
+    if (!usable("write a frame")) return false;
+    if (size > kMaxRawSize || (size > 0 && !calls)) {
+        setError(mPath + ": frame " + std::to_string(frameNumber) + " of " +
+                 std::to_string(size) + " bytes not written (limit " +
+                 std::to_string(kMaxRawSize) + ")");
+        return false;
+    }
+    size_t before = mPending.size();
+    try {
+        size_t start = beginChunk(mPending, kChunkFrame);
+        ByteWriter w(mPending);
+        w.u32(contextId);
+        size_t codecAt = mPending.size();
+        w.u32(0);
+        w.u64(frameNumber);
+        w.u64(size);
+        uint32_t codec = kCodecStored;
+        uint64_t stored = appendBody(calls, size, codec);
+        store32(mPending.data() + codecAt, codec);
+        finishChunk(mPending, start);
+        mFrames.reserve(mFrames.size() + 1); // nothing may fail once the frame is on disk
+        FrameEntry entry{mOffset + start, contextId, frameNumber, stored, size};
+        if (!flushPending()) return false;
+        mFrames.push_back(entry);
+        return true;
+    } catch (const std::exception& e) {
+        mPending.resize(before);
+        setError(mPath + ": frame " + std::to_string(frameNumber) + " not written: " + e.what());
+        return false;
+    }
+}
+
+bool CaptureWriter::writeCallCounts(const std::vector<std::pair<std::string, uint64_t>>& counts)
+{
+    std::lock_guard lock(mMutex);
+    if (!usable("write call counts")) return false;
+    size_t before = mPending.size();
+    try {
+        for (const auto& entry : counts) {
+            std::string why = checkString(entry.first, "a call name");
+            if (!why.empty()) {
+                setError(mPath + ": call counts not written: " + why);
+                return false;
+            }
+        }
+        size_t start = beginChunk(mPending, kChunkCounts);
+        encodeCallCounts(counts, mPending);
+        if (mPending.size() - start - kChunkHeaderSize > kMaxSmallChunk) {
+            mPending.resize(before);
+            setError(mPath + ": call counts not written: over the limit of " +
+                     std::to_string(kMaxSmallChunk) + " bytes");
+            return false;
+        }
+        finishChunk(mPending, start);
+        uint64_t offset = mOffset + start;
+        if (!flushPending()) return false;
+        mCountsOffset = offset;
+        return true;
+    } catch (const std::exception& e) {
+        mPending.resize(before);
+        setError(mPath + ": call counts not written: " + e.what());
+        return false;
+    }
+}
+
+bool CaptureWriter::close(std::string& error)
+{
+    if (ownedByOtherProcess()) {
+        error = mPath + ": not closed: the file belongs to process " +
+                std::to_string(mOwnerPid.load()) + "; this forked child leaves it alone";
+        dropInheritedFile();
+        return false;
+    }
+    std::lock_guard lock(mMutex);
+    if (mFd < 0) {
+        error = "no capture file is open";
+        return false;
+    }
+    bool ok = !mFailed;
+    if (!ok) error = mError;
+    if (ok) {
+        try {
+            size_t start = beginChunk(mPending, kChunkIndex);
+            uint64_t indexOffset = mOffset + start;
+            ByteWriter w(mPending);
+            w.u64(mFrames.size());
+            w.u64(mBlobs.size() + mPendingBlobs.size());
+            w.u64(mCountsOffset);
+            for (const FrameEntry& f : mFrames) {
+                w.u64(f.offset);
+                w.u32(f.contextId);
+                w.u32(0);
+                w.u64(f.frameNumber);
+                w.u64(f.storedSize);
+                w.u64(f.rawSize);
+            }
+            for (const auto* list : {&mBlobs, &mPendingBlobs}) {
+                for (const BlobEntry& b : *list) {
+                    w.u64(b.hash);
+                    w.u64(b.offset);
+                    w.u64(b.storedSize);
+                    w.u64(b.rawSize);
+                }
+            }
+            finishChunk(mPending, start);
+            start = beginChunk(mPending, kChunkFooter);
+            w.u64(indexOffset);
+            finishChunk(mPending, start);
+            ok = flushPending();
+            if (!ok) error = mError;
+        } catch (const std::exception& e) {
+            ok = false;
+            error = mPath + ": index not written: " + e.what();
+        }
+    }
+    if (::close(mFd) != 0 && ok) {
+        ok = false;
+        error = mPath + ": close failed: " + std::strerror(errno);
+    }
+    mFd = -1;
+    resetLocked();
+    return ok;
+}
+
+bool CaptureWriter::ownedByOtherProcess() const
+{
+    int owner = mOwnerPid.load();
+    return owner != 0 && owner != int(::getpid());
+}
+
+bool CaptureWriter::isOpen() const
+{
+    std::lock_guard lock(mMutex);
+    return mFd >= 0 && !ownedByOtherProcess();
+}
+
+void CaptureWriter::setCompressionLevel(int level)
+{
+    std::lock_guard lock(mMutex);
+    mLevel = level;
+}
+
+std::string CaptureWriter::lastError() const
+{
+    std::lock_guard lock(mMutex);
+    return mError;
+}
+
+uint64_t CaptureWriter::bytesWritten() const
+{
+    std::lock_guard lock(mMutex);
+    return mOffset;
+}
+
+uint64_t CaptureWriter::appendBody(const void* data, size_t size, uint32_t& codec)
+{
+    size_t at = mPending.size();
+    size_t bound = ZSTD_compressBound(size);
+    mPending.resize(at + bound);
+    size_t n = ZSTD_compressCCtx(mCctx, mPending.data() + at, bound, data, size, mLevel);
+    if (!ZSTD_isError(n) && n < size) {
+        mPending.resize(at + n);
+        codec = kCodecZstd;
+        return n;
+    }
+    // Incompressible (or empty): storing it is smaller and faster to read.
+    mPending.resize(at + size);
+    if (size > 0) std::memcpy(mPending.data() + at, data, size);
+    codec = kCodecStored;
+    return size;
+}
+
+bool CaptureWriter::flushPending()
+{
+    if (mPending.empty()) return true;
+    if (int err = writeAll(mFd, mPending.data(), mPending.size())) {
+        // Cut off the partial chunk so that nothing written later can follow garbage.
+        if (::ftruncate(mFd, off_t(mOffset)) == 0) ::lseek(mFd, off_t(mOffset), SEEK_SET);
+        mFailed = true;
+        mError = mPath + ": write failed at offset " + std::to_string(mOffset) + ": " +
+                 std::strerror(err) + "; recording stopped";
+        for (const BlobEntry& b : mPendingBlobs) mKnownBlobs.erase(b.hash);
+        mPendingBlobs.clear();
+        mPending.clear();
+        return false;
+    }
+    mOffset += mPending.size();
+    mBlobs.insert(mBlobs.end(), mPendingBlobs.begin(), mPendingBlobs.end());
+    mPendingBlobs.clear();
+    mPending.clear();
+    if (mPending.capacity() > kPendingKeepCapacity) std::vector<uint8_t>().swap(mPending);
+    return true;
+}
+
+bool CaptureWriter::usable(const char* what)
+{
+    if (mFd < 0) {
+        mError = std::string("cannot ") + what + ": no capture file is open";
+        return false;
+    }
+    if (ownedByOtherProcess()) {
+        mError = mPath + ": cannot " + what + ": the file belongs to process " +
+                 std::to_string(mOwnerPid.load()) + "; a forked child must open its own";
+        return false;
+    }
+    return !mFailed;
+}
+
+void CaptureWriter::setError(std::string message)
+{
+    mError = std::move(message);
+}
+
+void CaptureWriter::resetLocked()
+{
+    mOwnerPid = 0;
+    mFailed = false;
+    mPath.clear();
+    mError.clear();
+    mOffset = 0;
+    mPending.clear();
+    mPendingBlobs.clear();
+    mFrames.clear();
+    mBlobs.clear();
+    mKnownBlobs.clear();
+    mCountsOffset = 0;
+}
+
+void CaptureWriter::dropInheritedFile()
+{
+    // Only the forking thread survives fork(); a lock another thread held at that moment is
+    // never released, so the child builds a fresh mutex instead of taking the old one.
+    new (&mMutex) std::mutex;
+    if (mFd >= 0) ::close(mFd);
+    mFd = -1;
+    resetLocked();
+}
+
+} // namespace nprgl::capture

@@ -1,0 +1,100 @@
+#pragma once
+
+#include "capture/Metadata.h"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+typedef struct ZSTD_CCtx_s ZSTD_CCtx;
+
+namespace nprgl::capture {
+
+// Writes a capture file (docs/capture-format.md). Every frame reaches the file with write(2)
+// before writeFrame returns, so a file whose program was killed still reads back. Calls are
+// serialised by an internal mutex, so several recording threads may share one writer.
+// Never throws; failures return false (or, for putBlob, leave hasBlob false) and lastError()
+// says why. After an I/O error the writer refuses everything until it is reopened, so the
+// file keeps ending at its last whole frame.
+class CaptureWriter {
+public:
+    CaptureWriter();
+    ~CaptureWriter();
+    CaptureWriter(const CaptureWriter&) = delete;
+    CaptureWriter& operator=(const CaptureWriter&) = delete;
+
+    // Creates/truncates path and writes the header (magic, format version, metadata).
+    bool open(const std::string& path, const Metadata& meta, std::string& error);
+    // Stores a blob once per file: returns its hash; a blob already stored writes nothing.
+    // Blobs are written (compressed) before the next frame chunk that may reference them.
+    BlobHash putBlob(const void* data, size_t size);
+    bool hasBlob(BlobHash hash) const;
+    // Appends one complete frame of stream contextId (1, 2, ...), zstd-compressed. When it
+    // returns true, the frame and the blobs before it are on disk (write(2), no buffering).
+    bool writeFrame(uint32_t contextId, uint64_t frameNumber, const void* calls, size_t size);
+    // Cumulative counts of calls the recorder did not capture, by name; the reader keeps the
+    // last chunk written.
+    bool writeCallCounts(const std::vector<std::pair<std::string, uint64_t>>& counts);
+    // Writes pending blobs, the index and the footer, and closes the file. Optional: a file
+    // without it is still readable by scanning. In a forked child it writes nothing, closes
+    // the inherited descriptor and returns false.
+    bool close(std::string& error);
+    // True if this process is not the one that opened the file (after fork(): the child must
+    // open its own file, never append to the parent's).
+    bool ownedByOtherProcess() const;
+
+    bool isOpen() const;
+    // zstd level for frames and blobs; the default (1) favours recording speed.
+    void setCompressionLevel(int level);
+    std::string lastError() const;
+    // Bytes written so far (header, chunks), not counting blobs still pending.
+    uint64_t bytesWritten() const;
+
+private:
+    struct FrameEntry {
+        uint64_t offset;
+        uint32_t contextId;
+        uint64_t frameNumber;
+        uint64_t storedSize;
+        uint64_t rawSize;
+    };
+    struct BlobEntry {
+        BlobHash hash;
+        uint64_t offset;
+        uint64_t storedSize;
+        uint64_t rawSize;
+    };
+
+    // Appends data to mPending, zstd-compressed when that makes it smaller. Returns the stored
+    // size; codec says how it was stored.
+    uint64_t appendBody(const void* data, size_t size, uint32_t& codec);
+    // Writes mPending at the end of the file; on failure cuts the file back and stops.
+    bool flushPending();
+    bool usable(const char* what);
+    void setError(std::string message);
+    void resetLocked();
+    void dropInheritedFile();
+
+    mutable std::mutex mMutex;
+    int mFd = -1;
+    std::atomic<int> mOwnerPid{0}; // read without the lock: a forked child may not take it
+    bool mFailed = false;
+    int mLevel = 1;
+    std::string mPath;
+    std::string mError;
+    uint64_t mOffset = 0; // end of what is safely in the file
+    ZSTD_CCtx* mCctx = nullptr;
+    std::vector<uint8_t> mPending; // chunks not yet written, starting at mOffset
+    std::vector<BlobEntry> mPendingBlobs;
+    std::vector<FrameEntry> mFrames;
+    std::vector<BlobEntry> mBlobs;
+    std::unordered_set<BlobHash> mKnownBlobs;
+    uint64_t mCountsOffset = 0;
+};
+
+} // namespace nprgl::capture

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace nprgl::capture {
+
+// What a capture file says about the program that was recorded.
+struct Metadata {
+    std::string program; // e.g. "glxgears"
+    std::vector<std::string> commandLine;
+    std::string glVendor, glRenderer, glVersion;
+    int width = 0, height = 0; // drawable size at first MakeCurrent
+    uint32_t pid = 0;
+    uint64_t startTimeUnix = 0;
+    std::vector<std::pair<std::string, std::string>> extra; // free-form key/values
+
+    bool operator==(const Metadata&) const = default;
+};
+
+// XXH3_64bits of the blob bytes.
+using BlobHash = uint64_t;
+
+BlobHash hashBlob(const void* data, size_t size);
+
+} // namespace nprgl::capture

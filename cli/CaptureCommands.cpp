@@ -1,0 +1,167 @@
+#include "cli/CaptureCommands.h"
+
+#include "capture/CaptureReader.h"
+#include "shim/Replayer.h"
+#include "stream/CallPrinter.h"
+#include "styles/StyleSettings.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <unistd.h>
+
+namespace nprgl::cli {
+
+namespace {
+
+int fail(const std::string& message)
+{
+    std::fprintf(stderr, "nprgl: %s\n", message.c_str());
+    return 1;
+}
+
+bool parseFrames(const std::string& text, FrameSet& out, std::string& error)
+{
+    return text.empty() || FrameSet::parse(text, out, error);
+}
+
+class ReaderBlobs : public BlobSource {
+public:
+    explicit ReaderBlobs(const capture::CaptureReader& reader) : mReader(reader) {}
+    const std::vector<uint8_t>* blob(uint64_t hash, std::string& error) override
+    {
+        auto it = mCache.find(hash);
+        if (it != mCache.end()) return &it->second;
+        std::vector<uint8_t> data;
+        if (!mReader.readBlob(hash, data, error)) return nullptr;
+        return &mCache.emplace(hash, std::move(data)).first->second;
+    }
+
+private:
+    const capture::CaptureReader& mReader;
+    std::map<uint64_t, std::vector<uint8_t>> mCache;
+};
+
+} // namespace
+
+int replayCommand(const ReplayCommandOptions& options)
+{
+    // A replay must never record itself, whatever the environment says.
+    unsetenv("NPRGL_RECORD");
+    std::string error;
+    StyleSettings style;
+    std::string config;
+    for (const std::string& s : options.settings) config += (config.empty() ? "" : ",") + s;
+    if (!StyleSettings::parse(options.style, config, style, error)) return fail(error);
+    setenv("NPRGL_STYLE", style.chainName().c_str(), 1);
+    setenv("NPRGL_CONFIG", config.c_str(), 1);
+
+    ReplayOptions replay;
+    if (!parseFrames(options.frames, replay.frames, error)) return fail("--frames: " + error);
+    if (!options.size.empty() &&
+        std::sscanf(options.size.c_str(), "%dx%d", &replay.width, &replay.height) != 2) {
+        return fail("--size: expected WxH, got '" + options.size + "'");
+    }
+    replay.outDir = options.outDir;
+    replay.contextId = options.context;
+    replay.progress = isatty(STDERR_FILENO);
+    std::error_code ec;
+    std::filesystem::create_directories(replay.outDir, ec);
+    if (ec) return fail("cannot create " + replay.outDir + ": " + ec.message());
+    uint64_t written = 0;
+    if (!Replayer::run(options.file, replay, error, &written)) return fail(error);
+    std::fprintf(stderr, "nprgl: wrote %llu frames to %s\n",
+                 static_cast<unsigned long long>(written), replay.outDir.c_str());
+    return 0;
+}
+
+int dumpCommand(const std::string& file, const std::string& framesText, const std::string& grep)
+{
+    std::string error;
+    FrameSet frames;
+    if (!parseFrames(framesText, frames, error)) return fail("--frames: " + error);
+    capture::CaptureReader reader;
+    if (!reader.open(file, error)) return fail(error);
+    ReaderBlobs blobs(reader);
+    std::vector<uint8_t> calls;
+    const auto& list = reader.frames();
+    for (size_t i = 0; i < list.size(); ++i) {
+        if (!frames.empty() && !frames.contains(list[i].frameNumber)) continue;
+        if (!reader.readFrame(i, calls, error)) return fail(error);
+        std::string out = "== context " + std::to_string(list[i].contextId) + " frame " +
+                          std::to_string(list[i].frameNumber) + " ==\n";
+        bool ok = CallPrinter::printFrame(calls.data(), calls.size(), &blobs, grep, out, error);
+        std::fwrite(out.data(), 1, out.size(), stdout);
+        if (!ok) {
+            return fail(file + ": frame " + std::to_string(list[i].frameNumber) + " at " +
+                        std::to_string(list[i].offset) + ": " + error);
+        }
+    }
+    return 0;
+}
+
+int infoCommand(const std::string& file)
+{
+    std::string error;
+    capture::CaptureReader reader;
+    if (!reader.open(file, error)) return fail(error);
+    const capture::Metadata& m = reader.metadata();
+    std::string cmd;
+    for (const std::string& a : m.commandLine) cmd += (cmd.empty() ? "" : " ") + a;
+    std::printf("file:        %s (%llu bytes, format version %u%s)\n", file.c_str(),
+                static_cast<unsigned long long>(reader.fileBytes()), reader.version(),
+                reader.recovered() ? ", recovered: the recording did not close the file" : "");
+    std::printf("program:     %s\ncommand:     %s\npid:         %u\n", m.program.c_str(),
+                cmd.c_str(), m.pid);
+    std::printf("GL:          %s | %s | %s\nsize:        %dx%d\n", m.glVendor.c_str(),
+                m.glRenderer.c_str(), m.glVersion.c_str(), m.width, m.height);
+    for (const auto& [k, v] : m.extra) std::printf("%-12s %s\n", (k + ":").c_str(), v.c_str());
+
+    std::map<uint32_t, uint64_t> perContext;
+    std::map<std::string, uint64_t> calls;
+    ReaderBlobs blobs(reader);
+    std::vector<uint8_t> data;
+    uint64_t rawBytes = 0;
+    const auto& list = reader.frames();
+    for (size_t i = 0; i < list.size(); ++i) {
+        ++perContext[list[i].contextId];
+        rawBytes += list[i].rawSize;
+        if (!reader.readFrame(i, data, error)) return fail(error);
+        std::string text;
+        if (!CallPrinter::printFrame(data.data(), data.size(), &blobs, "", text, error)) {
+            return fail(file + ": frame " + std::to_string(list[i].frameNumber) + ": " + error);
+        }
+        for (size_t pos = 0; pos < text.size();) {
+            size_t eol = text.find('\n', pos);
+            size_t paren = text.find('(', pos);
+            if (paren < eol && text.compare(pos, 2, "--") != 0) {
+                ++calls[text.substr(pos, paren - pos)];
+            }
+            pos = eol == std::string::npos ? text.size() : eol + 1;
+        }
+    }
+    std::printf("frames:      %zu", list.size());
+    for (const auto& [ctx, n] : perContext) {
+        std::printf("  (context %u: %llu)", ctx, static_cast<unsigned long long>(n));
+    }
+    std::printf("\nframe bytes: %llu uncompressed\nblobs:       %zu, %llu bytes uncompressed\n",
+                static_cast<unsigned long long>(rawBytes), reader.blobCount(),
+                static_cast<unsigned long long>(reader.blobBytes()));
+    std::vector<std::pair<std::string, uint64_t>> sorted(calls.begin(), calls.end());
+    std::sort(sorted.begin(), sorted.end(),
+              [](const auto& a, const auto& b) { return a.second > b.second; });
+    std::printf("calls by name:\n");
+    for (const auto& [name, n] : sorted) {
+        std::printf("  %10llu  %s\n", static_cast<unsigned long long>(n), name.c_str());
+    }
+    std::printf("not captured:\n");
+    if (reader.callCounts().empty()) std::printf("  (none)\n");
+    for (const auto& [name, n] : reader.callCounts()) {
+        std::printf("  %10llu  %s\n", static_cast<unsigned long long>(n), name.c_str());
+    }
+    return 0;
+}
+
+} // namespace nprgl::cli

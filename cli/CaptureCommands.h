@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace nprgl::cli {
+
+struct ReplayCommandOptions {
+    std::string file;
+    std::string style;
+    std::vector<std::string> settings;
+    std::string frames;
+    std::string size;
+    std::string outDir;
+    unsigned context = 0;
+};
+
+int replayCommand(const ReplayCommandOptions& options);
+int dumpCommand(const std::string& file, const std::string& frames, const std::string& grep);
+int infoCommand(const std::string& file);
+
+} // namespace nprgl::cli

@@ -1,0 +1,154 @@
+#include "shim/CaptureSession.h"
+
+#include "common/Log.h"
+#include "shim/Context.h"
+
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <unistd.h>
+
+namespace nprgl {
+
+namespace {
+
+std::vector<std::string> commandLine()
+{
+    std::vector<std::string> args;
+    std::ifstream in("/proc/self/cmdline", std::ios::binary);
+    std::string arg;
+    while (std::getline(in, arg, '\0')) args.push_back(arg);
+    return args;
+}
+
+void finishAtExit()
+{
+    if (CaptureSession* session = CaptureSession::instance()) session->finish();
+}
+
+} // namespace
+
+CaptureSession* CaptureSession::instance()
+{
+    static CaptureSession* session = []() -> CaptureSession* {
+        const char* path = std::getenv("NPRGL_RECORD");
+        if (!path || !*path) return nullptr;
+        FrameSet frames;
+        std::string error;
+        const char* range = std::getenv("NPRGL_RECORD_FRAMES");
+        if (range && *range && !FrameSet::parse(range, frames, error)) {
+            NPRGL_ERROR("NPRGL_RECORD_FRAMES: %s; recording every frame", error.c_str());
+            frames = FrameSet();
+        }
+        auto* s = new CaptureSession(path, frames); // lives until exit, after atexit runs
+        std::atexit(finishAtExit);
+        return s;
+    }();
+    return session;
+}
+
+CaptureSession::CaptureSession(std::string path, FrameSet frames)
+    : mBasePath(std::move(path)), mFrames(std::move(frames)),
+      mLastFrame(mFrames.empty() ? UINT64_MAX : mFrames.last())
+{
+}
+
+bool CaptureSession::ensureOpenLocked(const Context& ctx)
+{
+    if (mWriter.isOpen() && !mWriter.ownedByOtherProcess()) return true;
+    if (mWriter.isOpen()) {
+        // A forked child: leave the parent's file alone and start one of our own.
+        std::string ignored;
+        mWriter.close(ignored);
+        mOpenFailed = false;
+        mFramesWritten = 0;
+        mUncaptured.clear();
+        std::string base = mBasePath;
+        if (base.size() > 6 && base.compare(base.size() - 6, 6, ".nprgl") == 0) {
+            base.resize(base.size() - 6);
+        }
+        mPath = base + "." + std::to_string(getpid()) + ".nprgl";
+    } else if (mPath.empty()) {
+        mPath = mBasePath;
+    }
+    if (mOpenFailed) return false;
+    capture::Metadata meta;
+    meta.program = program_invocation_short_name;
+    meta.commandLine = commandLine();
+    meta.glVendor = ctx.vendor();
+    meta.glRenderer = ctx.renderer();
+    meta.glVersion = ctx.version();
+    meta.width = ctx.drawableWidth();
+    meta.height = ctx.drawableHeight();
+    meta.pid = uint32_t(getpid());
+    meta.startTimeUnix = uint64_t(std::time(nullptr));
+    if (!mFrames.empty()) meta.extra.emplace_back("frames", std::getenv("NPRGL_RECORD_FRAMES"));
+    std::string error;
+    if (!mWriter.open(mPath, meta, error)) {
+        NPRGL_ERROR("cannot record: %s", error.c_str());
+        mOpenFailed = true;
+        return false;
+    }
+    NPRGL_INFO("recording to %s", mPath.c_str());
+    return true;
+}
+
+uint64_t CaptureSession::putBlob(const void* data, size_t size)
+{
+    return mWriter.putBlob(data, size);
+}
+
+bool CaptureSession::writeFrame(const Context& ctx, uint64_t frame, const uint8_t* calls,
+                                size_t size)
+{
+    std::lock_guard lock(mMutex);
+    if (frame > mLastFrame || !ensureOpenLocked(ctx)) return false;
+    if (!mWriter.writeFrame(ctx.serial(), frame, calls, size)) {
+        NPRGL_ERROR("recording stopped at frame %llu: %s",
+                    static_cast<unsigned long long>(frame), mWriter.lastError().c_str());
+        mOpenFailed = true;
+        return false;
+    }
+    ++mFramesWritten;
+    if (mUncapturedChanged) {
+        mWriter.writeCallCounts(mUncaptured);
+        mUncapturedChanged = false;
+    }
+    if (frame == mLastFrame) {
+        NPRGL_INFO("recorded the last requested frame (%llu)",
+                   static_cast<unsigned long long>(frame));
+    }
+    return true;
+}
+
+void CaptureSession::addUncaptured(const char* name, uint64_t count)
+{
+    std::lock_guard lock(mMutex);
+    for (auto& [n, c] : mUncaptured) {
+        if (n == name) {
+            c += count;
+            mUncapturedChanged = true;
+            return;
+        }
+    }
+    mUncaptured.emplace_back(name, count);
+    mUncapturedChanged = true;
+}
+
+void CaptureSession::finish()
+{
+    std::lock_guard lock(mMutex);
+    if (!mWriter.isOpen() || mWriter.ownedByOtherProcess()) return;
+    if (mUncapturedChanged) mWriter.writeCallCounts(mUncaptured);
+    std::string error;
+    if (!mWriter.close(error)) NPRGL_ERROR("closing %s: %s", mPath.c_str(), error.c_str());
+    std::string report;
+    for (const auto& [name, count] : mUncaptured) {
+        report += (report.empty() ? "" : ", ") + name + " x" + std::to_string(count);
+    }
+    NPRGL_INFO("recorded %llu frames to %s; not captured: %s",
+               static_cast<unsigned long long>(mFramesWritten), mPath.c_str(),
+               report.empty() ? "nothing" : report.c_str());
+}
+
+} // namespace nprgl

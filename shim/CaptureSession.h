@@ -1,0 +1,50 @@
+#pragma once
+
+#include "capture/CaptureWriter.h"
+#include "common/FrameSet.h"
+
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace nprgl {
+
+class Context;
+
+// The process's capture file (NPRGL_RECORD): opened when the first recording context becomes
+// current, written at every frame end, closed with its index at exit. A forked child that
+// records opens its own file, `<name>.<pid>.nprgl`, never the parent's.
+class CaptureSession {
+public:
+    // Null when the process is not recording.
+    static CaptureSession* instance();
+
+    uint64_t putBlob(const void* data, size_t size);
+    // Writes one frame of a context if it is inside the recorded range (frames before the
+    // range are kept too: they create the lists, textures and buffers later frames use).
+    // Returns false once the range is over: recording stops.
+    bool writeFrame(const Context& ctx, uint64_t frame, const uint8_t* calls, size_t size);
+    void addUncaptured(const char* name, uint64_t count);
+    bool wantsFrame(uint64_t frame) const { return frame <= mLastFrame; }
+
+    // Closes the file with its index and reports what was not captured.
+    void finish();
+
+private:
+    CaptureSession(std::string path, FrameSet frames);
+    bool ensureOpenLocked(const Context& ctx);
+
+    std::mutex mMutex;
+    std::string mBasePath;
+    std::string mPath;
+    FrameSet mFrames;
+    uint64_t mLastFrame;
+    capture::CaptureWriter mWriter;
+    bool mOpenFailed = false;
+    uint64_t mFramesWritten = 0;
+    std::vector<std::pair<std::string, uint64_t>> mUncaptured;
+    bool mUncapturedChanged = false;
+};
+
+} // namespace nprgl

@@ -1,0 +1,397 @@
+#include "shim/Recorder.h"
+
+#include "common/Log.h"
+#include "shim/CaptureSession.h"
+#include "shim/Context.h"
+#include "shim/RealGl.h"
+#include "shim/ThreadState.h"
+#include "stream/Opcodes.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace nprgl {
+
+Recorder::Recorder(Context& ctx, CaptureSession& session)
+    : mContext(ctx), mSession(session), mUncaptured(op::kCount, 0),
+      mUncapturedReported(op::kCount, 0)
+{
+    mWriter.setBlobSink(
+        [&session](const void* data, size_t size) { return session.putBlob(data, size); });
+}
+
+Recorder& Recorder::current() { return *tThread.context->recorder(); }
+
+void Recorder::endFrame(uint64_t frame)
+{
+    mWriter.op(op::kFrameEnd);
+    mWriter.put<uint64_t>(frame);
+    for (uint16_t i = 0; i < op::kCount; ++i) {
+        if (mUncaptured[i] != mUncapturedReported[i]) {
+            mSession.addUncaptured(kOpcodeNames[i], mUncaptured[i] - mUncapturedReported[i]);
+            mUncapturedReported[i] = mUncaptured[i];
+        }
+    }
+    if (!mStopped && !mSession.writeFrame(mContext, frame, mWriter.data(), mWriter.size())) {
+        mStopped = true;
+    }
+    mWriter.clear();
+}
+
+UnpackState Recorder::unpackState() const
+{
+    UnpackState s;
+    gRealGl.glGetIntegerv(GL_UNPACK_ALIGNMENT, &s.alignment);
+    gRealGl.glGetIntegerv(GL_UNPACK_ROW_LENGTH, &s.rowLength);
+    gRealGl.glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &s.imageHeight);
+    gRealGl.glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &s.skipPixels);
+    gRealGl.glGetIntegerv(GL_UNPACK_SKIP_ROWS, &s.skipRows);
+    gRealGl.glGetIntegerv(GL_UNPACK_SKIP_IMAGES, &s.skipImages);
+    return s;
+}
+
+// Image arguments: u8 mode (0 null, 1 bytes, 2 offset into the pixel-unpack buffer).
+void Recorder::putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type,
+                        GLsizei width, GLsizei height, GLsizei depth)
+{
+    if (mState.unpackBuffer) {
+        w.put<uint8_t>(2);
+        w.put<uint64_t>(reinterpret_cast<uintptr_t>(pixels));
+    } else if (!pixels) {
+        w.put<uint8_t>(0);
+    } else {
+        w.put<uint8_t>(1);
+        w.putBytes(pixels, imageBytes(format, type, width, height, depth, unpackState()));
+    }
+}
+
+void Recorder::putIndices(CallWriter& w, const void* indices, GLsizei count, GLenum type)
+{
+    if (mState.elementBuffer) {
+        w.put<uint8_t>(2);
+        w.put<uint64_t>(reinterpret_cast<uintptr_t>(indices));
+    } else if (!indices || count <= 0) {
+        w.put<uint8_t>(0);
+    } else {
+        w.put<uint8_t>(1);
+        w.putBytes(indices, size_t(count) * indexBytes(type));
+    }
+}
+
+bool Recorder::anyClientArray() const
+{
+    return std::any_of(mState.arrays.begin(), mState.arrays.end(),
+                       [](const ClientArray& a) { return a.enabled && !a.inBuffer; });
+}
+
+void Recorder::emitArrays(size_t first, size_t end)
+{
+    if (end <= first) return;
+    for (int slot = 0; slot < kArraySlotCount; ++slot) {
+        const ClientArray& a = mState.arrays[slot];
+        if (!a.enabled || a.inBuffer || !a.pointer || !a.elementBytes()) continue;
+        const size_t stride = a.effectiveStride();
+        const size_t offset = first * stride;
+        const size_t bytes = (end - first - 1) * stride + a.elementBytes();
+        mWriter.op(op::kArrayData);
+        const size_t mark = mWriter.beginPayload();
+        mWriter.put<uint8_t>(static_cast<uint8_t>(slot));
+        mWriter.put<uint64_t>(offset);
+        mWriter.putBytes(a.pointer + offset, bytes);
+        mWriter.endPayload(mark);
+    }
+}
+
+void Recorder::before_glDrawArrays(GLenum, GLint first, GLsizei count)
+{
+    if (first >= 0 && count > 0 && anyClientArray()) emitArrays(size_t(first), size_t(first) + count);
+}
+
+void Recorder::before_glDrawElements(GLenum, GLsizei count, GLenum type, const void* indices)
+{
+    const size_t width = indexBytes(type);
+    if (count <= 0 || !width || !anyClientArray()) return;
+    const uint8_t* data = static_cast<const uint8_t*>(indices);
+    if (mState.elementBuffer) {
+        auto it = mBufferShadow.find(mState.elementBuffer);
+        size_t offset = reinterpret_cast<uintptr_t>(indices);
+        if (it == mBufferShadow.end() || offset + size_t(count) * width > it->second.size()) {
+            return; // the driver refuses this draw
+        }
+        data = it->second.data() + offset;
+    }
+    if (!data) return;
+    size_t lo = std::numeric_limits<size_t>::max(), hi = 0;
+    for (GLsizei i = 0; i < count; ++i) {
+        size_t index = width == 1   ? data[i]
+                       : width == 2 ? reinterpret_cast<const uint16_t*>(data)[i]
+                                    : reinterpret_cast<const uint32_t*>(data)[i];
+        lo = std::min(lo, index);
+        hi = std::max(hi, index);
+    }
+    emitArrays(lo, hi + 1);
+}
+
+void Recorder::before_glDrawRangeElements(GLenum mode, GLuint, GLuint, GLsizei count,
+                                          GLenum type, const void* indices)
+{
+    // The range is only a hint the program may get wrong; the indices are the truth.
+    before_glDrawElements(mode, count, type, indices);
+}
+
+void Recorder::before_glArrayElement(GLint i)
+{
+    if (i >= 0 && anyClientArray()) emitArrays(size_t(i), size_t(i) + 1);
+}
+
+void Recorder::before_glMultiDrawArrays(GLenum, const GLint* first, const GLsizei* count,
+                                        GLsizei drawcount)
+{
+    if (!first || !count || drawcount <= 0 || !anyClientArray()) return;
+    size_t lo = std::numeric_limits<size_t>::max(), hi = 0;
+    for (GLsizei i = 0; i < drawcount; ++i) {
+        if (first[i] < 0 || count[i] <= 0) continue;
+        lo = std::min(lo, size_t(first[i]));
+        hi = std::max(hi, size_t(first[i]) + count[i]);
+    }
+    if (hi > lo) emitArrays(lo, hi);
+}
+
+void Recorder::before_glEnableClientState(GLenum cap)
+{
+    int slot = arraySlotForCap(cap, mState.clientActiveTexture);
+    if (slot >= 0) mState.arrays[slot].enabled = true;
+}
+
+void Recorder::before_glDisableClientState(GLenum cap)
+{
+    int slot = arraySlotForCap(cap, mState.clientActiveTexture);
+    if (slot >= 0) mState.arrays[slot].enabled = false;
+}
+
+void Recorder::before_glClientActiveTexture(GLenum texture)
+{
+    if (texture >= GL_TEXTURE0 && texture < GL_TEXTURE0 + 8) {
+        mState.clientActiveTexture = int(texture - GL_TEXTURE0);
+    }
+}
+
+void Recorder::before_glEnableVertexAttribArray(GLuint index)
+{
+    if (index < 16) mState.arrays[kAttribArray0 + index].enabled = true;
+}
+
+void Recorder::before_glDisableVertexAttribArray(GLuint index)
+{
+    if (index < 16) mState.arrays[kAttribArray0 + index].enabled = false;
+}
+
+GLuint* Recorder::bindingFor(GLenum target)
+{
+    switch (target) {
+    case GL_ARRAY_BUFFER: return &mState.arrayBuffer;
+    case GL_ELEMENT_ARRAY_BUFFER: return &mState.elementBuffer;
+    case GL_PIXEL_UNPACK_BUFFER: return &mState.unpackBuffer;
+    default: return nullptr;
+    }
+}
+
+void Recorder::before_glBindBuffer(GLenum target, GLuint buffer)
+{
+    if (GLuint* binding = bindingFor(target)) *binding = buffer;
+}
+
+namespace {
+
+GLuint boundBuffer(GLenum target)
+{
+    GLenum query = target == GL_ARRAY_BUFFER           ? GL_ARRAY_BUFFER_BINDING
+                   : target == GL_ELEMENT_ARRAY_BUFFER ? GL_ELEMENT_ARRAY_BUFFER_BINDING
+                   : target == GL_PIXEL_UNPACK_BUFFER  ? GL_PIXEL_UNPACK_BUFFER_BINDING
+                   : target == GL_PIXEL_PACK_BUFFER    ? GL_PIXEL_PACK_BUFFER_BINDING
+                                                       : 0;
+    GLint id = 0;
+    if (query) gRealGl.glGetIntegerv(query, &id);
+    return GLuint(id);
+}
+
+} // namespace
+
+void Recorder::before_glBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum)
+{
+    GLuint buffer = boundBuffer(target);
+    if (!buffer || size < 0) return;
+    std::vector<uint8_t>& shadow = mBufferShadow[buffer];
+    if (data) {
+        shadow.assign(static_cast<const uint8_t*>(data), static_cast<const uint8_t*>(data) + size);
+    } else {
+        shadow.assign(size_t(size), 0);
+    }
+}
+
+void Recorder::before_glBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size,
+                                      const void* data)
+{
+    auto it = mBufferShadow.find(boundBuffer(target));
+    if (it == mBufferShadow.end() || !data || offset < 0 || size < 0 ||
+        size_t(offset) + size_t(size) > it->second.size()) {
+        return;
+    }
+    std::copy_n(static_cast<const uint8_t*>(data), size, it->second.begin() + offset);
+}
+
+void Recorder::before_glDeleteBuffers(GLsizei n, const GLuint* buffers)
+{
+    for (GLsizei i = 0; buffers && i < n; ++i) {
+        mBufferShadow.erase(buffers[i]);
+        for (GLuint* b : {&mState.arrayBuffer, &mState.elementBuffer, &mState.unpackBuffer}) {
+            if (*b == buffers[i]) *b = 0;
+        }
+    }
+}
+
+void Recorder::before_glPushClientAttrib(GLbitfield) { mClientStack.push_back(mState); }
+
+void Recorder::before_glPopClientAttrib()
+{
+    if (mClientStack.empty()) return; // the driver raises GL_STACK_UNDERFLOW
+    mState = mClientStack.back();
+    mClientStack.pop_back();
+}
+
+void Recorder::setArray(int slot, GLint size, GLenum type, GLsizei stride, const void* p)
+{
+    ClientArray& a = mState.arrays[slot];
+    a.size = size;
+    a.type = type;
+    a.stride = stride;
+    a.pointer = static_cast<const uint8_t*>(p);
+    a.inBuffer = mState.arrayBuffer != 0;
+}
+
+void Recorder::before_glVertexPointer(GLint size, GLenum type, GLsizei stride, const void* p)
+{
+    setArray(kVertexArray, size, type, stride, p);
+}
+
+void Recorder::before_glNormalPointer(GLenum type, GLsizei stride, const void* p)
+{
+    setArray(kNormalArray, 3, type, stride, p);
+}
+
+void Recorder::before_glColorPointer(GLint size, GLenum type, GLsizei stride, const void* p)
+{
+    setArray(kColorArray, size, type, stride, p);
+}
+
+void Recorder::before_glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride,
+                                              const void* p)
+{
+    setArray(kSecondaryColorArray, size, type, stride, p);
+}
+
+void Recorder::before_glFogCoordPointer(GLenum type, GLsizei stride, const void* p)
+{
+    setArray(kFogCoordArray, 1, type, stride, p);
+}
+
+void Recorder::before_glIndexPointer(GLenum type, GLsizei stride, const void* p)
+{
+    setArray(kIndexArray, 1, type, stride, p);
+}
+
+void Recorder::before_glEdgeFlagPointer(GLsizei stride, const void* p)
+{
+    setArray(kEdgeFlagArray, 1, GL_UNSIGNED_BYTE, stride, p);
+}
+
+void Recorder::before_glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const void* p)
+{
+    setArray(kTexCoordArray0 + mState.clientActiveTexture, size, type, stride, p);
+}
+
+void Recorder::before_glVertexAttribPointer(GLuint index, GLint size, GLenum type, GLboolean,
+                                            GLsizei stride, const void* p)
+{
+    if (index < 16) setArray(kAttribArray0 + index, size, type, stride, p);
+}
+
+void* Recorder::glMapBuffer(GLenum target, GLenum access)
+{
+    void* p = gRealGl.glMapBuffer(target, access);
+    if (p) {
+        GLint size = 0;
+        gRealGl.glGetBufferParameteriv(target, GL_BUFFER_SIZE, &size);
+        mMappings[target] = Mapping{boundBuffer(target), static_cast<uint8_t*>(p), size_t(size),
+                                    access != GL_READ_ONLY};
+    }
+    return p;
+}
+
+GLboolean Recorder::glUnmapBuffer(GLenum target)
+{
+    // Replay cannot map: what the program wrote is recorded as glBufferSubData instead.
+    auto it = mMappings.find(target);
+    if (it != mMappings.end()) {
+        const Mapping m = it->second;
+        mMappings.erase(it);
+        if (m.writable && m.pointer) {
+            before_glBufferSubData(target, 0, GLsizeiptr(m.size), m.pointer);
+            mWriter.op(op::glBufferSubData);
+            const size_t mark = mWriter.beginPayload();
+            mWriter.put<GLenum>(target);
+            mWriter.put<GLintptr>(0);
+            mWriter.put<GLsizeiptr>(GLsizeiptr(m.size));
+            mWriter.putBytes(m.pointer, m.size);
+            mWriter.endPayload(mark);
+        }
+    }
+    return gRealGl.glUnmapBuffer(target);
+}
+
+void Recorder::glInterleavedArrays(GLenum format, GLsizei stride, const void* pointer)
+{
+    // The driver is the oracle: let it set the arrays, then record the equivalent calls.
+    gRealGl.glInterleavedArrays(format, stride, pointer);
+    struct Fixed {
+        GLenum cap;
+        GLenum sizeQuery, typeQuery, strideQuery, pointerQuery;
+        uint16_t pointerOp;
+    };
+    static const Fixed kArrays[] = {
+        {GL_VERTEX_ARRAY, GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE,
+         GL_VERTEX_ARRAY_POINTER, op::glVertexPointer},
+        {GL_NORMAL_ARRAY, 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE,
+         GL_NORMAL_ARRAY_POINTER, op::glNormalPointer},
+        {GL_COLOR_ARRAY, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE,
+         GL_COLOR_ARRAY_POINTER, op::glColorPointer},
+        {GL_TEXTURE_COORD_ARRAY, GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
+         GL_TEXTURE_COORD_ARRAY_STRIDE, GL_TEXTURE_COORD_ARRAY_POINTER, op::glTexCoordPointer},
+        {GL_INDEX_ARRAY, 0, 0, 0, 0, 0},
+        {GL_EDGE_FLAG_ARRAY, 0, 0, 0, 0, 0},
+    };
+    for (const Fixed& f : kArrays) {
+        bool enabled = gRealGl.glIsEnabled(f.cap);
+        (enabled ? before_glEnableClientState(f.cap) : before_glDisableClientState(f.cap));
+        mWriter.op(enabled ? op::glEnableClientState : op::glDisableClientState);
+        mWriter.put<GLenum>(f.cap);
+        if (!enabled || !f.pointerOp) continue;
+        GLint size = 3, type = 0, arrayStride = 0;
+        void* p = nullptr;
+        if (f.sizeQuery) gRealGl.glGetIntegerv(f.sizeQuery, &size);
+        gRealGl.glGetIntegerv(f.typeQuery, &type);
+        gRealGl.glGetIntegerv(f.strideQuery, &arrayStride);
+        gRealGl.glGetPointerv(f.pointerQuery, &p);
+        mWriter.op(f.pointerOp);
+        const size_t mark = mWriter.beginPayload();
+        if (f.pointerOp != op::glNormalPointer) mWriter.put<GLint>(size);
+        mWriter.put<GLenum>(GLenum(type));
+        mWriter.put<GLsizei>(arrayStride);
+        mWriter.put<uint64_t>(reinterpret_cast<uintptr_t>(p));
+        mWriter.endPayload(mark);
+        int slot = arraySlotForCap(f.cap, mState.clientActiveTexture);
+        if (slot >= 0) setArray(slot, size, GLenum(type), arrayStride, p);
+    }
+}
+
+} // namespace nprgl

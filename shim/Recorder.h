@@ -1,0 +1,98 @@
+#pragma once
+
+#include "shim/ClientArrays.h"
+#include "stream/CallWriter.h"
+#include "stream/GlSizes.h"
+
+#include <unordered_map>
+#include <vector>
+
+namespace nprgl {
+
+class CaptureSession;
+class Context;
+
+// Turns one context's calls into the Stream: the generated recording functions encode each
+// call into writer() and call the driver; the hooks below follow the state needed to copy
+// client memory that a draw reads (client arrays, index data, mapped buffers).
+class Recorder {
+public:
+    Recorder(Context& ctx, CaptureSession& session);
+
+    // The recorder of the current context (recording functions only run when it exists).
+    static Recorder& current();
+
+    CallWriter& writer() { return mWriter; }
+    void countUncaptured(uint16_t opcode) { ++mUncaptured[opcode]; }
+    // Closes the frame: marks its end and hands it to the capture file.
+    void endFrame(uint64_t frame);
+
+    // Encodes an image or bitmap argument laid out by the current unpack state.
+    void putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type, GLsizei width,
+                  GLsizei height, GLsizei depth);
+    void putIndices(CallWriter& w, const void* indices, GLsizei count, GLenum type);
+
+    // State hooks, called before the call is recorded.
+    void before_glDrawArrays(GLenum mode, GLint first, GLsizei count);
+    void before_glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices);
+    void before_glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                    GLenum type, const void* indices);
+    void before_glArrayElement(GLint i);
+    void before_glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
+                                  GLsizei drawcount);
+    void before_glEnableClientState(GLenum cap);
+    void before_glDisableClientState(GLenum cap);
+    void before_glClientActiveTexture(GLenum texture);
+    void before_glEnableVertexAttribArray(GLuint index);
+    void before_glDisableVertexAttribArray(GLuint index);
+    void before_glBindBuffer(GLenum target, GLuint buffer);
+    void before_glBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum usage);
+    void before_glBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size,
+                                const void* data);
+    void before_glDeleteBuffers(GLsizei n, const GLuint* buffers);
+    void before_glPushClientAttrib(GLbitfield mask);
+    void before_glPopClientAttrib();
+    void before_glVertexPointer(GLint size, GLenum type, GLsizei stride, const void* p);
+    void before_glNormalPointer(GLenum type, GLsizei stride, const void* p);
+    void before_glColorPointer(GLint size, GLenum type, GLsizei stride, const void* p);
+    void before_glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const void* p);
+    void before_glFogCoordPointer(GLenum type, GLsizei stride, const void* p);
+    void before_glIndexPointer(GLenum type, GLsizei stride, const void* p);
+    void before_glEdgeFlagPointer(GLsizei stride, const void* p);
+    void before_glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const void* p);
+    void before_glVertexAttribPointer(GLuint index, GLint size, GLenum type,
+                                      GLboolean normalized, GLsizei stride, const void* p);
+
+    // Calls recorded by hand: they are replaced by equivalent recorded calls.
+    void* glMapBuffer(GLenum target, GLenum access);
+    GLboolean glUnmapBuffer(GLenum target);
+    void glInterleavedArrays(GLenum format, GLsizei stride, const void* pointer);
+
+private:
+    void setArray(int slot, GLint size, GLenum type, GLsizei stride, const void* p);
+    // Copies the elements [first, end) of every enabled client-memory array into the stream.
+    void emitArrays(size_t first, size_t end);
+    bool anyClientArray() const;
+    GLuint* bindingFor(GLenum target);
+    UnpackState unpackState() const;
+
+    struct Mapping {
+        GLuint buffer = 0;
+        uint8_t* pointer = nullptr;
+        size_t size = 0;
+        bool writable = false;
+    };
+
+    Context& mContext;
+    CaptureSession& mSession;
+    CallWriter mWriter;
+    ClientArrayState mState;
+    std::vector<ClientArrayState> mClientStack;
+    std::unordered_map<GLuint, std::vector<uint8_t>> mBufferShadow; // for index ranges
+    std::unordered_map<GLenum, Mapping> mMappings;
+    std::vector<uint64_t> mUncaptured;
+    std::vector<uint64_t> mUncapturedReported;
+    bool mStopped = false;
+};
+
+} // namespace nprgl

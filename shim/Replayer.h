@@ -1,0 +1,29 @@
+#pragma once
+
+#include "capture/CaptureReader.h"
+#include "common/FrameSet.h"
+
+#include <functional>
+#include <string>
+
+namespace nprgl {
+
+struct ReplayOptions {
+    std::string outDir;    // PNGs frame_0000000042.png; empty: render only
+    FrameSet frames;       // frames to write (empty: all)
+    int width = 0;         // 0: the recorded size
+    int height = 0;
+    uint32_t contextId = 0; // 0: the stream with the most frames
+    bool progress = false;  // a progress bar on stderr
+};
+
+// Replays a capture headless on OSMesa through the same pipeline the library runs inside an
+// application (the context's dispatch table), writing the frames as PNG.
+class Replayer {
+public:
+    // Returns false with a one-line message naming the file and the offset on bad input.
+    static bool run(const std::string& path, const ReplayOptions& options, std::string& error,
+                    uint64_t* framesWritten = nullptr);
+};
+
+} // namespace nprgl

@@ -1,0 +1,382 @@
+#!/usr/bin/env python3
+"""Generates the call codec of the Stream from the Khronos registry.
+
+From the same GL 1.0-2.1 command list as gen_api.py, it classifies every parameter (scalar,
+fixed or counted array, image, string, client-array pointer, index buffer, output) using the
+registry's `len` attributes, and emits C++ for the build tree:
+
+  nprgl_record.inc  one recording function per command: encode, then call the driver
+  nprgl_decode.inc  decodeAndReplay() and decodeAndDump(): one switch over every opcode
+  nprgl_enums.inc   enum names (by group where the registry gives one) for the dump
+
+Commands that query state or write through pointers are not recorded; their recording
+function only counts them (reported by name at the end of a recording).
+"""
+import argparse
+import re
+import sys
+import xml.etree.ElementTree as ET
+
+import gen_api
+
+# Queries and calls whose effects cannot be replayed from their arguments: counted only.
+QUERY_PREFIXES = ("glGet", "glIs", "glAreTexturesResident")
+UNCAPTURED = {
+    "glRenderMode", "glReadPixels", "glFeedbackBuffer", "glSelectBuffer", "glMap1d",
+    "glMap1f", "glMap2d", "glMap2f", "glMultiDrawElements",
+}
+# Output-only commands that are replayed with scratch memory (names come back the same).
+GEN_COMMANDS = {"glGenTextures", "glGenQueries", "glGenBuffers"}
+# Handled entirely by hand in Recorder (they touch client memory or mapped buffers).
+SPECIAL = {"glMapBuffer", "glUnmapBuffer", "glInterleavedArrays"}
+# Recorder hooks called before recording (state the recorder must follow).
+HOOK_BEFORE = {
+    "glDrawArrays", "glDrawElements", "glDrawRangeElements", "glArrayElement",
+    "glMultiDrawArrays", "glEnableClientState", "glDisableClientState",
+    "glClientActiveTexture", "glEnableVertexAttribArray", "glDisableVertexAttribArray",
+    "glBindBuffer", "glBufferData", "glBufferSubData", "glPushClientAttrib",
+    "glPopClientAttrib", "glDeleteBuffers", "glVertexPointer", "glNormalPointer",
+    "glColorPointer", "glSecondaryColorPointer", "glFogCoordPointer", "glIndexPointer",
+    "glEdgeFlagPointer", "glTexCoordPointer", "glVertexAttribPointer",
+}
+CLIENT_POINTERS = {
+    "glVertexPointer", "glNormalPointer", "glColorPointer", "glSecondaryColorPointer",
+    "glFogCoordPointer", "glIndexPointer", "glEdgeFlagPointer", "glTexCoordPointer",
+    "glVertexAttribPointer",
+}
+
+SCALAR_TYPES = {
+    "GLenum", "GLint", "GLfloat", "GLdouble", "GLsizei", "GLuint", "GLshort", "GLboolean",
+    "GLubyte", "GLbyte", "GLushort", "GLbitfield", "GLsizeiptr", "GLintptr", "GLclampf",
+    "GLclampd",
+}
+
+FRAME_END_OPCODE = 0xFF00
+
+
+class Param:
+    def __init__(self, ctype, name, length, group):
+        self.ctype, self.name, self.len, self.group = ctype, name, length, group
+        self.const = ctype.startswith("const")
+        self.pointer = "*" in ctype
+        base = ctype.replace("const", "").replace("*", "").strip()
+        self.base = base
+        self.kind = None  # scalar | array | image | string | clientptr | indices | out
+        self.count = None  # C++ expression (elements), with {a} standing for the arg prefix
+
+
+def elemType(p):
+    return "uint8_t" if p.base in ("void", "GLvoid") else p.base
+
+
+def countExpr(p, params):
+    """Element count of a const array parameter as a C++ expression over {a}name, or None."""
+    length = p.len
+    if length is None:
+        return None
+    if re.fullmatch(r"\d+", length):
+        return length
+    names = {q.name for q in params}
+    m = re.fullmatch(r"(\w+)(\*(\d+))?", length)
+    if m and m.group(1) in names:
+        expr = f"size_t({{a}}{m.group(1)})"
+        return f"{expr} * {m.group(3)}" if m.group(3) else expr
+    if length == "COMPSIZE(pname)":
+        return "pnameCount({a}pname)"
+    if length == "COMPSIZE(n,type)":
+        return "callListsBytes({a}n, {a}type)"
+    return None
+
+
+def classify(cmd, params):
+    """Returns 'record', 'count' or 'special', and sets each param's kind."""
+    if cmd in SPECIAL:
+        return "special"
+    if cmd in UNCAPTURED or cmd.startswith(QUERY_PREFIXES):
+        return "count"
+    for p in params:
+        if not p.pointer:
+            if p.base not in SCALAR_TYPES:
+                return "count"
+            p.kind = "scalar"
+        elif not p.const:
+            if cmd in GEN_COMMANDS:
+                p.kind = "out"
+                p.count = "size_t({a}n)"
+            else:
+                return "count"
+        elif cmd in CLIENT_POINTERS and p.name == "pointer":
+            p.kind = "clientptr"
+        elif p.len and p.len.startswith("COMPSIZE(format,type,width"):
+            p.kind = "image"
+            dims = p.len[len("COMPSIZE(format,type,"):-1].split(",")
+            args = ", ".join(f"{{a}}{d}" for d in dims) + ", 1" * (3 - len(dims))
+            p.count = f"{{a}}format, {{a}}type, {args}"
+        elif p.len in ("COMPSIZE(width,height)", "COMPSIZE()"):
+            # glBitmap, glPolygonStipple: bitmaps laid out by the unpack state, like images.
+            p.kind = "image"
+            dims = "{a}width, {a}height" if p.len == "COMPSIZE(width,height)" else "32, 32"
+            p.count = f"GL_COLOR_INDEX, GL_BITMAP, {dims}, 1"
+        elif p.len == "COMPSIZE(count,type)":
+            p.kind = "indices"
+        elif p.base == "GLchar" and p.len is None and p.ctype.count("*") == 1:
+            p.kind = "string"
+        elif p.ctype.count("*") > 1:
+            if cmd == "glShaderSource":
+                p.kind = "sources"
+            else:
+                return "count"
+        else:
+            p.count = countExpr(p, params)
+            if p.count is None:
+                return "count"
+            p.kind = "array"
+    return "record"
+
+
+def encodingOrder(params):
+    """Scalars first: array lengths may name a parameter declared after the array."""
+    first = [p for p in params if p.kind in ("scalar", "clientptr")]
+    return first + [p for p in params if p not in first]
+
+
+def sub(expr, prefix):
+    return expr.replace("{a}", prefix)
+
+
+def emitRecord(cmds):
+    out = ["// Generated by shim/gen_codec.py. Do not edit.", "namespace rec {"]
+    for op, (ret, name, params, mode) in enumerate(cmds):
+        plist = ", ".join(f"{p.ctype} {p.name}" if not p.ctype.endswith("*")
+                          else f"{p.ctype}{p.name}" for p in params) or "void"
+        args = ", ".join(p.name for p in params)
+        call = f"gRealGl.{name}({args})"
+        body = []
+        if mode == "special":
+            body.append(f"    return Recorder::current().{name}({args});")
+        elif mode == "count":
+            body.append(f"    Recorder::current().countUncaptured({op});")
+            body.append(f"    return {call};")
+        else:
+            body.append("    Recorder& rec_ = Recorder::current();")
+            if name in HOOK_BEFORE:
+                body.append(f"    rec_.before_{name}({args});")
+            body.append("    CallWriter& w_ = rec_.writer();")
+            variable = any(p.kind != "scalar" for p in params)
+            body.append(f"    w_.op({op});")
+            if variable:
+                body.append("    const size_t mark_ = w_.beginPayload();")
+            for p in encodingOrder(params):
+                if p.kind == "scalar":
+                    body.append(f"    w_.put<{p.base}>({p.name});")
+                elif p.kind == "array":
+                    body.append(f"    w_.putBytes({p.name}, {p.name} ? "
+                                f"({sub(p.count, '')}) * sizeof({elemType(p)}) : 0);")
+                elif p.kind == "image":
+                    body.append(f"    rec_.putImage(w_, {p.name}, {sub(p.count, '')});")
+                elif p.kind == "indices":
+                    body.append(f"    rec_.putIndices(w_, {p.name}, count, type);")
+                elif p.kind == "string":
+                    body.append(f"    w_.putString({p.name});")
+                elif p.kind == "sources":
+                    body.append(f"    w_.putSources(count, {p.name}, length);")
+                elif p.kind == "clientptr":
+                    body.append(f"    w_.put<uint64_t>(reinterpret_cast<uintptr_t>({p.name}));")
+                elif p.kind == "out":
+                    pass
+            if variable:
+                body.append("    w_.endPayload(mark_);")
+            body.append(f"    return {call};")
+        out.append(f"{ret} {name}({plist})\n{{")
+        out += body
+        out.append("}")
+    out.append("} // namespace rec")
+    out.append("inline void fillRecordingDispatch(GlDispatch& d)\n{")
+    for ret, name, params, mode in cmds:
+        out.append(f"    d.{name} = &rec::{name};")
+    out.append("}")
+    return "\n".join(out) + "\n"
+
+
+def emitOpcodes(cmds):
+    out = ["// Generated by shim/gen_codec.py. Do not edit.", "namespace op {"]
+    out += [f"constexpr uint16_t {name} = {i};" for i, (_, name, _, _) in enumerate(cmds)]
+    out += [f"constexpr uint16_t kFrameEnd = 0x{FRAME_END_OPCODE:X};",
+            f"constexpr uint16_t kArrayData = 0x{FRAME_END_OPCODE + 1:X};",
+            f"constexpr uint16_t kCount = {len(cmds)};",
+            "} // namespace op"]
+    out.append("constexpr const char* kOpcodeNames[] = {")
+    out += [f'    "{name}",' for _, name, _, _ in cmds]
+    out.append("};")
+    out.append("constexpr bool kOpcodeRecorded[] = {")
+    out += [f"    {'true' if mode == 'record' else 'false'}," for _, _, _, mode in cmds]
+    out.append("};")
+    return "\n".join(out) + "\n"
+
+
+def emitDecode(cmds, groups):
+    """decodeCall<Visitor>: decodes one call's arguments and hands them to the visitor as
+    replay(...) (typed) and dump (named, printed)."""
+    out = ["// Generated by shim/gen_codec.py. Do not edit.",
+           "// Returns false (with r.error()) on malformed input.",
+           "template <typename Sink>",
+           "bool decodeCall(CallReader& r, uint16_t op, Sink& sink)",
+           "{",
+           "    switch (op) {"]
+    for op, (ret, name, params, mode) in enumerate(cmds):
+        if mode != "record":
+            continue
+        variable = any(p.kind != "scalar" for p in params)
+        out.append(f"    case {op}: {{")
+        if variable:
+            out.append("        CallReader::Payload payload(r);")
+        for p in encodingOrder(params):
+            n = f"a_{p.name}"
+            if p.kind == "scalar":
+                out.append(f"        const {p.base} {n} = r.get<{p.base}>();")
+            elif p.kind == "array":
+                expected = sub(p.count, "a_")
+                out.append(f"        const {elemType(p)}* {n} = r.getArray<{elemType(p)}>"
+                           f"({expected});")
+            elif p.kind == "image":
+                out.append(f"        const void* {n} = r.getImage();")
+            elif p.kind == "indices":
+                out.append(f"        const void* {n} = r.getIndices(a_count, a_type);")
+            elif p.kind == "string":
+                out.append(f"        const GLchar* {n} = r.getString();")
+            elif p.kind == "sources":
+                out.append(f"        const CallReader::Sources {n} = r.getSources(a_count);")
+            elif p.kind == "clientptr":
+                out.append(f"        const uint64_t {n} = r.get<uint64_t>();")
+            elif p.kind == "out":
+                out.append(f"        auto {n} = sink.template scratch<{p.base}>"
+                           f"({sub(p.count, 'a_')});")
+        out.append("        if (!r.ok()) return false;")
+        # Replay: typed call through the sink (which owns the dispatch and the substitutions).
+        cargs = []
+        for p in params:
+            n = f"a_{p.name}"
+            if p.kind == "clientptr":
+                index = "a_index" if name == "glVertexAttribPointer" else "-1"
+                cargs.append(f"sink.clientPointer({n}, {index})")
+            elif p.kind == "sources":
+                cargs.append(f"{n}.strings, {n}.lengths")
+            elif p.kind == "out":
+                cargs.append(f"{n}")
+            elif p.kind in ("image", "indices") and p.base not in ("void", "GLvoid"):
+                cargs.append(f"static_cast<const {p.base}*>({n})")
+            else:
+                cargs.append(n)
+        # glShaderSource consumes two params with one decoded value.
+        if any(p.kind == "sources" for p in params):
+            cargs = [c for p, c in zip(params, cargs) if p.name != "length"]
+        out.append("        if constexpr (Sink::kReplays) {")
+        out.append(f"            if (!sink.before({op})) return false;")
+        out.append(f"            sink.gl().{name}({', '.join(cargs)});")
+        out.append(f"            sink.after({op});")
+        out.append("        } else {")
+        out.append(f'            sink.begin("{name}");')
+        for p in params:
+            n = f"a_{p.name}"
+            if p.kind == "scalar":
+                if p.base == "GLenum":
+                    gid = groups.get(p.group, 0)
+                    out.append(f'            sink.argEnum("{p.name}", {n}, {gid});')
+                else:
+                    out.append(f'            sink.arg("{p.name}", {n});')
+            elif p.kind == "array":
+                out.append(f'            sink.argArray("{p.name}", {n}, {sub(p.count, "a_")});')
+            elif p.kind == "image" or p.kind == "indices":
+                out.append(f'            sink.argBlob("{p.name}", {n});')
+            elif p.kind == "string":
+                out.append(f'            sink.argString("{p.name}", {n});')
+            elif p.kind == "sources":
+                out.append(f'            sink.argSources("{p.name}", {n});')
+            elif p.kind == "clientptr":
+                out.append(f'            sink.argPointer("{p.name}", {n});')
+        out.append("            sink.end();")
+        out.append("        }")
+        if variable:
+            out.append("        if (!payload.finish()) return false;")
+        out.append("        return true;")
+        out.append("    }")
+    out.append("    default:")
+    out.append("        return sink.pseudo(r, op);")
+    out.append("    }")
+    out.append("}")
+    return "\n".join(out) + "\n"
+
+
+def emitEnums(gl, groups):
+    """Enum names per group (group 0: any), for GL <= 2.1 features."""
+    wanted = set()
+    for feature in gl.findall("feature"):
+        if feature.get("api") == "gl" and gen_api.glVersion(feature) <= gen_api.GL_MAX_VERSION:
+            for req in feature.findall("require"):
+                for e in req.findall("enum"):
+                    wanted.add(e.get("name"))
+    rows = {}
+    for enums in gl.findall("enums"):
+        for e in enums.findall("enum"):
+            name, value = e.get("name"), e.get("value")
+            if name not in wanted or value is None or e.get("api") not in (None, "gl"):
+                continue
+            try:
+                v = int(value, 0)
+            except ValueError:
+                continue
+            if v > 0xFFFFFFFF:
+                continue
+            rows.setdefault((0, v), name)
+            for g in (e.get("group") or "").split(","):
+                if g in groups:
+                    rows.setdefault((groups[g], v), name)
+    out = ["// Generated by shim/gen_codec.py. Do not edit.",
+           "struct EnumName { uint16_t group; uint32_t value; const char* name; };",
+           "constexpr EnumName kEnumNames[] = {"]
+    for (g, v), name in sorted(rows.items()):
+        out.append(f'    {{{g}, 0x{v:X}u, "{name}"}},')
+    out.append("};")
+    return "\n".join(out) + "\n"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--gl-xml", required=True)
+    ap.add_argument("--out-dir", required=True)
+    opts = ap.parse_args()
+    gl = ET.parse(opts.gl_xml).getroot()
+    elems = {}
+    for c in gl.find("commands"):
+        elems[gen_api.command(c)[1]] = c
+    names = gen_api.requiredCommands(
+        gl, lambda f: f.get("api") == "gl" and gen_api.glVersion(f) <= gen_api.GL_MAX_VERSION)
+    cmds = []
+    groups = {}
+    for name in names:
+        c = elems[name]
+        ret, _ = gen_api.paramText(c.find("proto"))
+        params = []
+        for pe in c.findall("param"):
+            ctype, pname = gen_api.paramText(pe)
+            params.append(Param(ctype, pname, pe.get("len"), pe.get("group")))
+            if pe.get("group") and pe.get("group") not in groups:
+                groups[pe.get("group")] = len(groups) + 1
+        mode = classify(name, params)
+        cmds.append((ret, name, params, mode))
+    files = {
+        "nprgl_record.inc": emitRecord(cmds),
+        "nprgl_opcodes.inc": emitOpcodes(cmds),
+        "nprgl_decode.inc": emitDecode(cmds, groups),
+        "nprgl_enums.inc": emitEnums(gl, groups),
+    }
+    for fname, text in files.items():
+        with open(f"{opts.out_dir}/{fname}", "w", encoding="utf-8") as f:
+            f.write(text)
+    recorded = sum(1 for c in cmds if c[3] == "record")
+    print(f"gen_codec: {recorded} of {len(cmds)} commands recorded", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,162 @@
+#include "stream/CallPrinter.h"
+
+#include "stream/CallDecoder.h"
+#include "stream/Opcodes.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+
+namespace nprgl {
+
+namespace {
+
+#include "nprgl_enums.inc"
+
+const char* enumName(uint32_t value, int group)
+{
+    auto find = [value](int g) -> const char* {
+        auto it = std::lower_bound(std::begin(kEnumNames), std::end(kEnumNames),
+                                   std::pair<int, uint32_t>(g, value),
+                                   [](const EnumName& e, const std::pair<int, uint32_t>& key) {
+                                       return std::pair<int, uint32_t>(e.group, e.value) < key;
+                                   });
+        return it != std::end(kEnumNames) && it->group == g && it->value == value ? it->name
+                                                                                   : nullptr;
+    };
+    const char* name = group ? find(group) : nullptr;
+    return name ? name : find(0);
+}
+
+const char* kSlotNames[] = {"vertex", "normal", "color", "secondary_color", "fog_coord",
+                            "index", "edge_flag"};
+
+} // namespace
+
+bool CallPrinter::printFrame(const uint8_t* data, size_t size, BlobSource* blobs,
+                             const std::string& grep, std::string& out, std::string& error,
+                             uint64_t* callCount)
+{
+    CallReader reader(data, size, blobs);
+    CallPrinter printer;
+    printer.mOut = &out;
+    printer.mGrep = grep;
+    while (!reader.atEnd()) {
+        uint16_t opcode = reader.get<uint16_t>();
+        if (!reader.ok() || !decodeCall(reader, opcode, printer)) {
+            error = reader.ok() ? "offset " + std::to_string(reader.offset()) +
+                                      ": unknown opcode " + std::to_string(opcode)
+                                : reader.error();
+            return false;
+        }
+    }
+    if (callCount) *callCount = printer.mCalls;
+    return true;
+}
+
+void CallPrinter::begin(const char* name)
+{
+    mLine = name;
+    mLine += '(';
+    mFirstArg = true;
+}
+
+void CallPrinter::startArg(const char* name)
+{
+    if (!mFirstArg) mLine += ", ";
+    mFirstArg = false;
+    mLine += name;
+    mLine += '=';
+}
+
+void CallPrinter::appendNumber(double value)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", value);
+    mLine += buf;
+}
+
+void CallPrinter::arg(const char* name, double value)
+{
+    startArg(name);
+    appendNumber(value);
+}
+
+void CallPrinter::argEnum(const char* name, uint32_t value, int group)
+{
+    startArg(name);
+    if (const char* e = enumName(value, group)) {
+        mLine += e;
+    } else {
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "0x%x", value);
+        mLine += buf;
+    }
+}
+
+void CallPrinter::argBlob(const char* name, const void* data)
+{
+    startArg(name);
+    mLine += data ? "<data>" : "NULL";
+}
+
+void CallPrinter::argString(const char* name, const char* text)
+{
+    startArg(name);
+    mLine += text ? "\"" + std::string(text) + "\"" : "NULL";
+}
+
+void CallPrinter::argSources(const char* name, const CallReader::Sources& sources)
+{
+    startArg(name);
+    size_t bytes = 0;
+    for (int i = 0; i < sources.count; ++i) bytes += size_t(sources.lengths[i]);
+    mLine += "<" + std::to_string(sources.count) + " strings, " + std::to_string(bytes) +
+             " bytes>";
+}
+
+void CallPrinter::argPointer(const char* name, uint64_t value)
+{
+    startArg(name);
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "0x%" PRIx64, value);
+    mLine += buf;
+}
+
+void CallPrinter::end()
+{
+    mLine += ")\n";
+    ++mCalls;
+    if (mGrep.empty() || mLine.find(mGrep) < mLine.find('(')) *mOut += mLine;
+}
+
+bool CallPrinter::pseudo(CallReader& r, uint16_t opcode)
+{
+    if (opcode == op::kFrameEnd) {
+        uint64_t frame = r.get<uint64_t>();
+        if (!r.ok()) return false;
+        ++mCalls;
+        if (mGrep.empty()) *mOut += "-- end of frame " + std::to_string(frame) + " --\n";
+        return true;
+    }
+    if (opcode == op::kArrayData) {
+        CallReader::Payload payload(r);
+        uint8_t slot = r.get<uint8_t>();
+        uint64_t offset = r.get<uint64_t>();
+        size_t size = 0;
+        r.getBytes(size);
+        if (!payload.finish()) return false;
+        begin("ArrayData");
+        startArg("array");
+        mLine += slot < 7    ? kSlotNames[slot]
+                 : slot < 15 ? "texcoord" + std::to_string(slot - 7)
+                             : "attrib" + std::to_string(slot - 15);
+        arg("offset", double(offset));
+        arg("bytes", double(size));
+        end();
+        return true;
+    }
+    return false;
+}
+
+} // namespace nprgl

@@ -1,0 +1,67 @@
+#pragma once
+
+#include "stream/CallReader.h"
+
+#include <cstdint>
+#include <string>
+
+namespace nprgl {
+
+// Prints decoded calls, one per line, with named arguments: glVertex3f(x=1, y=0, z=0.5).
+class CallPrinter {
+public:
+    static constexpr bool kReplays = false;
+
+    // Decodes and prints every call of one frame into out; returns false (with the offset in
+    // error) on malformed input, keeping what was printed. grep, when not empty, keeps only
+    // calls whose name contains it.
+    static bool printFrame(const uint8_t* data, size_t size, BlobSource* blobs,
+                           const std::string& grep, std::string& out, std::string& error,
+                           uint64_t* callCount = nullptr);
+
+    // The sink interface of decodeCall.
+    void begin(const char* name);
+    void arg(const char* name, double value);
+    void argEnum(const char* name, uint32_t value, int group);
+    template <typename T>
+    void argArray(const char* name, const T* values, size_t count)
+    {
+        startArg(name);
+        if (!values) {
+            mLine += "NULL";
+            return;
+        }
+        mLine += '[';
+        for (size_t i = 0; i < count && i < kMaxShown; ++i) {
+            if (i) mLine += ", ";
+            appendNumber(double(values[i]));
+        }
+        if (count > kMaxShown) mLine += ", ... " + std::to_string(count) + " values";
+        mLine += ']';
+    }
+    void argBlob(const char* name, const void* data);
+    void argString(const char* name, const char* text);
+    void argSources(const char* name, const CallReader::Sources& sources);
+    void argPointer(const char* name, uint64_t value);
+    void end();
+    template <typename T>
+    T* scratch(size_t)
+    {
+        return nullptr;
+    }
+    bool pseudo(CallReader& r, uint16_t op);
+
+private:
+    static constexpr size_t kMaxShown = 16;
+
+    void startArg(const char* name);
+    void appendNumber(double value);
+
+    std::string* mOut = nullptr;
+    std::string mLine;
+    std::string mGrep;
+    bool mFirstArg = true;
+    uint64_t mCalls = 0;
+};
+
+} // namespace nprgl
