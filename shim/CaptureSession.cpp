@@ -93,8 +93,12 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
     return true;
 }
 
-uint64_t CaptureSession::putBlob(const void* data, size_t size)
+uint64_t CaptureSession::putBlob(const Context& ctx, const void* data, size_t size)
 {
+    {
+        std::lock_guard lock(mMutex);
+        ensureOpenLocked(ctx);
+    }
     return mWriter.putBlob(data, size);
 }
 

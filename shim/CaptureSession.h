@@ -20,7 +20,8 @@ public:
     // Null when the process is not recording.
     static CaptureSession* instance();
 
-    uint64_t putBlob(const void* data, size_t size);
+    // Opens the file first if needed (blobs come before the first frame that uses them).
+    uint64_t putBlob(const Context& ctx, const void* data, size_t size);
     // Writes one frame of a context if it is inside the recorded range (frames before the
     // range are kept too: they create the lists, textures and buffers later frames use).
     // Returns false once the range is over: recording stops.

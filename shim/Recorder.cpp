@@ -16,8 +16,9 @@ Recorder::Recorder(Context& ctx, CaptureSession& session)
     : mContext(ctx), mSession(session), mUncaptured(op::kCount, 0),
       mUncapturedReported(op::kCount, 0)
 {
-    mWriter.setBlobSink(
-        [&session](const void* data, size_t size) { return session.putBlob(data, size); });
+    mWriter.setBlobSink([&session, &ctx](const void* data, size_t size) {
+        return session.putBlob(ctx, data, size);
+    });
 }
 
 Recorder& Recorder::current() { return *tThread.context->recorder(); }

@@ -64,7 +64,8 @@ const void* CallReader::getImage()
     if (mode != 1 && mode != 0) fail("bad image mode");
     if (mode != 1) return nullptr;
     size_t size = 0;
-    return alignedCopy(getBytes(size), size);
+    const void* bytes = getBytes(size); // before size is read: argument order is unspecified
+    return alignedCopy(bytes, size);
 }
 
 const void* CallReader::getIndices(int, uint32_t)
