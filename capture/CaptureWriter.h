@@ -48,6 +48,8 @@ public:
     // open its own file, never append to the parent's).
     bool ownedByOtherProcess() const;
 
+    // True while a file is open, also in a forked child that inherited the parent's (check
+    // ownedByOtherProcess). Takes no lock, so it is safe in such a child.
     bool isOpen() const;
     // zstd level for frames and blobs; the default (1) favours recording speed.
     void setCompressionLevel(int level);
@@ -81,7 +83,7 @@ private:
     void dropInheritedFile();
 
     mutable std::mutex mMutex;
-    int mFd = -1;
+    std::atomic<int> mFd{-1}; // read without the lock by isOpen
     std::atomic<int> mOwnerPid{0}; // read without the lock: a forked child may not take it
     bool mFailed = false;
     int mLevel = 1;

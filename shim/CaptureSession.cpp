@@ -82,7 +82,7 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
     meta.height = ctx.drawableHeight();
     meta.pid = uint32_t(getpid());
     meta.startTimeUnix = uint64_t(std::time(nullptr));
-    if (!mFrames.empty()) meta.extra.emplace_back("frames", std::getenv("NPRGL_RECORD_FRAMES"));
+    if (!mFrames.empty()) meta.extra.emplace_back("recorded_frames", std::getenv("NPRGL_RECORD_FRAMES"));
     std::string error;
     if (!mWriter.open(mPath, meta, error)) {
         NPRGL_ERROR("cannot record: %s", error.c_str());
@@ -118,10 +118,7 @@ bool CaptureSession::writeFrame(const Context& ctx, uint64_t frame, const uint8_
         mWriter.writeCallCounts(mUncaptured);
         mUncapturedChanged = false;
     }
-    if (frame == mLastFrame) {
-        NPRGL_INFO("recorded the last requested frame (%llu)",
-                   static_cast<unsigned long long>(frame));
-    }
+    if (frame == mLastFrame) finishLocked(); // complete with its index, whatever comes next
     return true;
 }
 
@@ -142,6 +139,11 @@ void CaptureSession::addUncaptured(const char* name, uint64_t count)
 void CaptureSession::finish()
 {
     std::lock_guard lock(mMutex);
+    finishLocked();
+}
+
+void CaptureSession::finishLocked()
+{
     if (!mWriter.isOpen() || mWriter.ownedByOtherProcess()) return;
     if (mUncapturedChanged) mWriter.writeCallCounts(mUncaptured);
     std::string error;

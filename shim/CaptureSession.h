@@ -35,6 +35,7 @@ public:
 private:
     CaptureSession(std::string path, FrameSet frames);
     bool ensureOpenLocked(const Context& ctx);
+    void finishLocked();
 
     std::mutex mMutex;
     std::string mBasePath;

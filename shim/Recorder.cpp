@@ -8,6 +8,7 @@
 #include "stream/Opcodes.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 namespace nprgl {
@@ -94,13 +95,58 @@ void Recorder::emitArrays(size_t first, size_t end)
         const size_t stride = a.effectiveStride();
         const size_t offset = first * stride;
         const size_t bytes = (end - first - 1) * stride + a.elementBytes();
-        mWriter.op(op::kArrayData);
-        const size_t mark = mWriter.beginPayload();
-        mWriter.put<uint8_t>(static_cast<uint8_t>(slot));
-        mWriter.put<uint64_t>(offset);
-        mWriter.putBytes(a.pointer + offset, bytes);
-        mWriter.endPayload(mark);
+        sendArray(slot, a.pointer, offset, bytes);
     }
+}
+
+void Recorder::sendArray(int slot, const uint8_t* base, size_t offset, size_t bytes)
+{
+    Mirror& m = mMirrors[slot];
+    if (m.base != base) m = Mirror{base, 0, 0, {}};
+    const size_t end = offset + bytes;
+    if (m.hi <= m.lo || offset > m.hi || end < m.lo) {
+        // Nothing known near this range: send it all and remember only it.
+        emitArrayRange(slot, base, offset, bytes);
+        m.bytes.assign(base + offset, base + end);
+        m.lo = offset;
+        m.hi = end;
+        return;
+    }
+    // Inside the known span, send only what changed since the replayer last saw it (often
+    // nothing: several draws of one array, or static geometry drawn every frame).
+    const size_t in0 = std::max(offset, m.lo), in1 = std::min(end, m.hi);
+    const uint8_t* now = base + in0;
+    uint8_t* seen = m.bytes.data() + (in0 - m.lo);
+    size_t lo = 0, hi = in1 - in0;
+    while (lo < hi && now[lo] == seen[lo]) ++lo;
+    while (hi > lo && now[hi - 1] == seen[hi - 1]) --hi;
+    if (lo < hi) {
+        emitArrayRange(slot, base, in0 + lo, hi - lo);
+        std::memcpy(seen + lo, now + lo, hi - lo);
+    }
+    // Outside it, send everything and grow the known span.
+    if (offset < m.lo) emitArrayRange(slot, base, offset, m.lo - offset);
+    if (end > m.hi) emitArrayRange(slot, base, m.hi, end - m.hi);
+    if (offset < m.lo || end > m.hi) {
+        const size_t lo2 = std::min(offset, m.lo), hi2 = std::max(end, m.hi);
+        std::vector<uint8_t> merged(hi2 - lo2);
+        std::memcpy(merged.data() + (m.lo - lo2), m.bytes.data(), m.hi - m.lo);
+        if (offset < m.lo) std::memcpy(merged.data(), base + offset, m.lo - offset);
+        if (end > m.hi) std::memcpy(merged.data() + (m.hi - lo2), base + m.hi, end - m.hi);
+        m.bytes.swap(merged);
+        m.lo = lo2;
+        m.hi = hi2;
+    }
+}
+
+void Recorder::emitArrayRange(int slot, const uint8_t* base, size_t offset, size_t bytes)
+{
+    mWriter.op(op::kArrayData);
+    const size_t mark = mWriter.beginPayload();
+    mWriter.put<uint8_t>(static_cast<uint8_t>(slot));
+    mWriter.put<uint64_t>(offset);
+    mWriter.putBytes(base + offset, bytes);
+    mWriter.endPayload(mark);
 }
 
 void Recorder::before_glDrawArrays(GLenum, GLint first, GLsizei count)

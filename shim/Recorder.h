@@ -4,6 +4,7 @@
 #include "stream/CallWriter.h"
 #include "stream/GlSizes.h"
 
+#include <array>
 #include <unordered_map>
 #include <vector>
 
@@ -72,6 +73,9 @@ private:
     void setArray(int slot, GLint size, GLenum type, GLsizei stride, const void* p);
     // Copies the elements [first, end) of every enabled client-memory array into the stream.
     void emitArrays(size_t first, size_t end);
+    // Sends [offset, offset + bytes) of an array, minus what the replayer already has.
+    void sendArray(int slot, const uint8_t* base, size_t offset, size_t bytes);
+    void emitArrayRange(int slot, const uint8_t* base, size_t offset, size_t bytes);
     bool anyClientArray() const;
     GLuint* bindingFor(GLenum target);
     UnpackState unpackState() const;
@@ -90,6 +94,14 @@ private:
     std::vector<ClientArrayState> mClientStack;
     std::unordered_map<GLuint, std::vector<uint8_t>> mBufferShadow; // for index ranges
     std::unordered_map<GLenum, Mapping> mMappings;
+    // What the replayer's copy of each client array holds: bytes sent from
+    // [mirrorBase + lo, mirrorBase + hi). Unchanged bytes are not sent again.
+    struct Mirror {
+        const uint8_t* base = nullptr;
+        size_t lo = 0, hi = 0;
+        std::vector<uint8_t> bytes; // indexed from lo
+    };
+    std::array<Mirror, kArraySlotCount> mMirrors;
     std::vector<uint64_t> mUncaptured;
     std::vector<uint64_t> mUncapturedReported;
     bool mStopped = false;

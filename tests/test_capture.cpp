@@ -521,6 +521,66 @@ TEST(Capture, BitFlipsAreRefusedOrYieldAPrefix)
     EXPECT_GT(refusedFrame, 100);
 }
 
+TEST(Capture, ScanStopsAtTheFirstDamagedChunk)
+{
+    std::string dir = test::freshDir("capture");
+    std::string path = dir + "/whole.nprgl";
+    Sample s = writeClosedSample(path, 8, 300);
+    CaptureReader whole;
+    std::string error;
+    ASSERT_TRUE(whole.open(path, error)) << error;
+    std::vector<uint8_t> file = readFile(path);
+    // What a killed program leaves: everything before the index.
+    uint64_t indexAt = whole.frames().back().offset + kChunkHeaderSize + kBodyHeaderSize +
+                       whole.frames().back().compressedSize;
+    file.resize(size_t(indexAt));
+    uint64_t at = whole.frames()[3].offset;
+    file[at + kChunkHeaderSize + kBodyHeaderSize + 7] ^= 0x01;
+    path = dir + "/damaged.nprgl";
+    writeFile(path, file);
+
+    CaptureReader reader;
+    ASSERT_TRUE(reader.open(path, error)) << error;
+    EXPECT_TRUE(reader.recovered());
+    EXPECT_EQ(reader.warning(), path + ": offset " + std::to_string(at) +
+                                    ": checksum mismatch in 'FRAM' chunk (damaged file); the " +
+                                    "capture ends before this chunk");
+    Sample prefix = s;
+    prefix.frames.resize(3);
+    expectSameFrames(reader, prefix);
+}
+
+TEST(Capture, BitFlipsInAFileWithoutIndexLeaveNoHoles)
+{
+    std::string path = test::freshDir("capture") + "/open.nprgl";
+    CaptureWriter writer;
+    Sample s = writeSample(writer, path, 6, 150);
+    std::vector<uint8_t> file = readFile(path); // before close: no index, no footer
+    CaptureReader whole;
+    std::string error;
+    ASSERT_TRUE(whole.openMemory(file.data(), file.size(), "open.nprgl", error)) << error;
+    ASSERT_EQ(whole.frames().size(), s.frames.size());
+    for (size_t at = 0; at < file.size(); ++at) {
+        std::vector<uint8_t> copy = file;
+        copy[at] ^= uint8_t(1 << (at % 8));
+        CaptureReader reader;
+        std::string where = "flip at " + std::to_string(at);
+        bool ok = reader.openMemory(copy.data(), copy.size(), "open.nprgl", error);
+        expectPrefixOrRefusal(reader, ok, error, s, where);
+        // A scanned file lists only chunks whose checksum held: every frame must read.
+        for (size_t i = 0; ok && i < reader.frames().size(); ++i) {
+            std::vector<uint8_t> calls;
+            EXPECT_TRUE(reader.readFrame(i, calls, error)) << where << ": " << error;
+        }
+        if (ok) {
+            size_t before = 0; // frames that end before the flipped byte survive
+            for (const auto& f : whole.frames())
+                before += f.offset + kChunkHeaderSize + kBodyHeaderSize + f.compressedSize <= at;
+            EXPECT_GE(reader.frames().size(), before) << where;
+        }
+    }
+}
+
 TEST(Capture, RefusesWrongMagicFutureVersionAndEmptyFiles)
 {
     std::string dir = test::freshDir("capture");
@@ -677,19 +737,25 @@ TEST(Capture, ChildAfterForkOpensItsOwnFile)
     pid_t child = fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-        int failures = 0;
+        // No gtest assertions in the child: it exits with the number of the first failed check.
+        int step = 0, failed = 0;
+        auto check = [&](bool ok) {
+            ++step;
+            if (!ok && !failed) failed = step;
+        };
         std::string e;
-        failures |= writer.ownedByOtherProcess() ? 0 : 1;
-        failures |= writer.writeFrame(1, 2, calls, sizeof calls) ? 2 : 0;
-        BlobHash h = writer.putBlob(calls, 2);
-        failures |= writer.hasBlob(h) ? 4 : 0;
-        failures |= writer.close(e) ? 8 : 0; // leaves the parent's file alone
-        failures |= e.find("belongs to process") == std::string::npos ? 16 : 0;
-        failures |= writer.open(childPath, sampleMetadata(), e) ? 0 : 32;
-        failures |= writer.ownedByOtherProcess() ? 64 : 0;
-        failures |= writer.writeFrame(1, 1, calls, sizeof calls) ? 0 : 128;
-        failures |= writer.close(e) ? 0 : 128;
-        _exit(failures);
+        check(writer.isOpen());
+        check(writer.ownedByOtherProcess());
+        check(!writer.writeFrame(1, 2, calls, sizeof calls));
+        check(!writer.hasBlob(writer.putBlob(calls, 2)));
+        check(!writer.close(e)); // leaves the parent's file alone
+        check(e.find("belongs to process") != std::string::npos);
+        check(!writer.isOpen());
+        check(writer.open(childPath, sampleMetadata(), e));
+        check(!writer.ownedByOtherProcess());
+        check(writer.writeFrame(1, 1, calls, sizeof calls));
+        check(writer.close(e));
+        _exit(failed);
     }
     int status = 0;
     ASSERT_EQ(waitpid(child, &status, 0), child);
