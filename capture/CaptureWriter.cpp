@@ -135,6 +135,11 @@ bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::str
 
 BlobHash CaptureWriter::putBlob(const void* data, size_t size)
 {
+    if (!data && size > 0) {
+        std::lock_guard lock(mMutex);
+        setError("blob not stored: null data of " + std::to_string(size) + " bytes");
+        return 0;
+    }
     BlobHash hash = hashBlob(data, size);
     std::lock_guard lock(mMutex);
     if (mKnownBlobs.count(hash) || !usable("store a blob")) return hash;

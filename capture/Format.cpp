@@ -4,6 +4,7 @@
 
 #define XXH_STATIC_LINKING_ONLY // XXH3_state_t on the stack
 #include <xxhash.h>
+#include <zstd.h>
 
 #include <cstdio>
 #include <cstring>
@@ -100,7 +101,9 @@ bool plausibleBody(uint32_t codec, uint64_t storedSize, uint64_t rawSize)
     if (rawSize > kMaxRawSize) return false;
     if (codec == kCodecStored) return storedSize == rawSize;
     // Divides rather than multiplies: storedSize comes from the file and may be huge.
-    if (codec == kCodecZstd) return (rawSize + kMaxZstdRatio - 1) / kMaxZstdRatio <= storedSize;
+    if (codec == kCodecZstd)
+        return (rawSize + kMaxZstdRatio - 1) / kMaxZstdRatio <= storedSize &&
+               storedSize <= ZSTD_COMPRESSBOUND(rawSize);
     return false;
 }
 

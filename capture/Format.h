@@ -47,7 +47,8 @@ constexpr uint64_t kMaxRawSize = uint64_t(1) << 30;   // a frame or blob, uncomp
 constexpr uint32_t kMaxStringSize = uint32_t(1) << 20; // any string in META or CNTS
 constexpr uint64_t kMaxSmallChunk = uint64_t(16) << 20; // META and CNTS payloads
 // A zstd block (at most 128 KiB of output) costs at least 4 bytes, so no valid zstd data
-// expands further than this; a larger declared raw size is a lie.
+// expands further than this; a larger declared raw size is a lie. (The other way, zstd data
+// is never larger than ZSTD_COMPRESSBOUND of its content.)
 constexpr uint64_t kMaxZstdRatio = 32768;
 
 struct ChunkHeader {

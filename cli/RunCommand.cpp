@@ -107,6 +107,8 @@ int runProgram(const RunOptions& options)
                                : options.recordFile;
         // Absolute: the program may change its directory before its first frame.
         setenv("NPRGL_RECORD", fs::absolute(file).c_str(), 1);
+        // exec keeps the pid: this process becomes the program that owns the file.
+        setenv("NPRGL_RECORD_PID", std::to_string(getpid()).c_str(), 1);
         if (!options.recordFrames.empty()) {
             setenv("NPRGL_RECORD_FRAMES", options.recordFrames.c_str(), 1);
         }

@@ -7,6 +7,7 @@ pkgs=(
     libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
     libcli11-dev
     mesa-utils x11-utils xvfb xauth
+    clang libclang-rt-14-dev
 )
 sudo=""
 if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi

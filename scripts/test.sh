@@ -15,3 +15,6 @@ cd "$root/build-asan"
 # Mesa's llvmpipe leaks at exit by design; leaks are not what this run looks for.
 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --output-on-failure -j 2 -L unit
+
+# The capture reader's libFuzzer target (clang, ASan + UBSan) on a generated seed corpus.
+"$root/scripts/fuzz.sh" 20000

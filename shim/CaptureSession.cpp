@@ -21,6 +21,27 @@ std::vector<std::string> commandLine()
     return args;
 }
 
+// The process `nprgl record` started (it execs the program, so the pid is the same) writes
+// the file it was asked for; any other process (a forked or spawned child) its own
+// <name>.<pid>.nprgl. Without the command, the process that loaded the library first is it.
+bool isMainRecordingProcess()
+{
+    static const pid_t loadPid = getpid(); // first use is before any fork: see instance()
+    const char* env = std::getenv("NPRGL_RECORD_PID");
+    pid_t owner = env && *env ? pid_t(std::atol(env)) : loadPid;
+    return getpid() == owner;
+}
+
+std::string pathForThisProcess(const std::string& base)
+{
+    if (isMainRecordingProcess()) return base;
+    std::string stem = base;
+    if (stem.size() > 6 && stem.compare(stem.size() - 6, 6, ".nprgl") == 0) {
+        stem.resize(stem.size() - 6);
+    }
+    return stem + "." + std::to_string(getpid()) + ".nprgl";
+}
+
 void finishAtExit()
 {
     if (CaptureSession* session = CaptureSession::instance()) session->finish();
@@ -40,6 +61,7 @@ CaptureSession* CaptureSession::instance()
             NPRGL_ERROR("NPRGL_RECORD_FRAMES: %s; recording every frame", error.c_str());
             frames = FrameSet();
         }
+        isMainRecordingProcess();
         auto* s = new CaptureSession(path, frames); // lives until exit, after atexit runs
         std::atexit(finishAtExit);
         return s;
@@ -63,13 +85,9 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
         mOpenFailed = false;
         mFramesWritten = 0;
         mUncaptured.clear();
-        std::string base = mBasePath;
-        if (base.size() > 6 && base.compare(base.size() - 6, 6, ".nprgl") == 0) {
-            base.resize(base.size() - 6);
-        }
-        mPath = base + "." + std::to_string(getpid()) + ".nprgl";
+        mPath = pathForThisProcess(mBasePath);
     } else if (mPath.empty()) {
-        mPath = mBasePath;
+        mPath = pathForThisProcess(mBasePath);
     }
     if (mOpenFailed) return false;
     capture::Metadata meta;

@@ -52,8 +52,10 @@ class DemoPassthrough : public ::testing::TestWithParam<DemoCase> {};
 TEST_P(DemoPassthrough, FramesArePixelIdenticalToNative)
 {
     const DemoCase& c = GetParam();
-    if (!c.offscreen) ASSERT_TRUE(haveDisplay()) << "no DISPLAY: run the tests through "
-                                                    "scripts/test.sh, which starts Xvfb";
+    if (!c.offscreen) {
+        ASSERT_TRUE(haveDisplay()) << "no DISPLAY: run the tests through scripts/test.sh, "
+                                      "which starts Xvfb";
+    }
     std::vector<std::string> args = {demo(c.app), "--frames", std::to_string(kFrames),
                                      "--size", "160x120", "--save-frames", "1-4"};
     args.insert(args.end(), c.extraArgs.begin(), c.extraArgs.end());

@@ -1,0 +1,344 @@
+// End to end: `nprgl record`, `replay`, `dump` and `info` on the demo apps, glxgears and the
+// committed fixtures; programs stopped by signals or _exit; damaged files.
+
+#include "common/PngImage.h"
+#include "tests/support/ImageCompare.h"
+#include "tests/support/Process.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <fcntl.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace nprgl;
+using namespace nprgl::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string nprglCommand() { return binDir() + "/nprgl"; }
+std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
+std::string fixture(const std::string& name)
+{
+    return std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
+}
+std::string framePng(const std::string& dir, int frame)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%010d.png", frame);
+    return dir + name;
+}
+
+bool haveDisplay()
+{
+    const char* d = std::getenv("DISPLAY");
+    return d && *d;
+}
+
+void expectSameFrames(const std::string& liveDir, const std::string& app,
+                      const std::string& replayDir, int frames)
+{
+    for (int f = 1; f <= frames; ++f) {
+        ImageDiff diff = compareImages(liveDir + "/" + app + "_" + std::to_string(f) + ".png",
+                                       framePng(replayDir, f));
+        ASSERT_TRUE(diff.comparable) << diff.error;
+        EXPECT_EQ(diff.differingPixels, 0u) << app << " frame " << f;
+    }
+}
+
+struct RecordCase {
+    std::string app;
+    std::vector<std::string> args;
+    bool offscreen;
+};
+
+void PrintTo(const RecordCase& c, std::ostream* os)
+{
+    *os << c.app << (c.offscreen ? " offscreen" : " glx");
+    for (const std::string& a : c.args) *os << " " << a;
+}
+
+class RecordReplay : public ::testing::TestWithParam<RecordCase> {};
+
+std::string recordName(const ::testing::TestParamInfo<RecordCase>& info)
+{
+    std::string name = info.param.app + (info.param.offscreen ? "_offscreen" : "_glx");
+    for (const std::string& a : info.param.args) name += "_" + a.substr(2);
+    return name;
+}
+
+} // namespace
+
+TEST_P(RecordReplay, ReplayIsPixelIdenticalToTheLiveFrames)
+{
+    const RecordCase& c = GetParam();
+    if (!c.offscreen) {
+        ASSERT_TRUE(haveDisplay()) << "run through scripts/test.sh (Xvfb)";
+    }
+    std::string dir = freshDir("rec"), live = dir + "/live", replay = dir + "/replay";
+    std::string file = dir + "/capture.nprgl";
+    std::vector<std::string> cmd = {nprglCommand(), "record", "-o", file, "--", demo(c.app),
+                                    "--frames", "3", "--size", "96x72", "--save-dir", live,
+                                    "--save-frames", "1-3"};
+    cmd.insert(cmd.end(), c.args.begin(), c.args.end());
+    if (c.offscreen) cmd.push_back("--offscreen");
+    ProcessResult r = runProcess(cmd);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ProcessResult p = runProcess({nprglCommand(), "replay", file, "-o", replay});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    expectSameFrames(live, c.app, replay, 3);
+    EXPECT_FALSE(fs::exists(framePng(replay, 4)));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Demos, RecordReplay,
+    ::testing::Values(RecordCase{"immediate", {}, true}, RecordCase{"immediate", {}, false},
+                      RecordCase{"arrays", {}, true}, RecordCase{"arrays", {"--vbo"}, true},
+                      RecordCase{"arrays", {"--vbo"}, false},
+                      RecordCase{"displaylist", {}, true},
+                      RecordCase{"displaylist", {}, false}, RecordCase{"textured", {}, true},
+                      RecordCase{"overlay", {}, true}, RecordCase{"overlay", {}, false},
+                      RecordCase{"dlopen", {}, true}, RecordCase{"dlopen", {}, false}),
+    recordName);
+
+TEST(Fixtures, EveryDemoFixtureReplaysAsTheDemoDrawsToday)
+{
+    const std::vector<std::pair<std::string, std::vector<std::string>>> fixtures = {
+        {"immediate", {}},   {"arrays", {}},  {"arrays_vbo", {"--vbo"}}, {"displaylist", {}},
+        {"textured", {}},    {"overlay", {}}, {"dlopen", {}}};
+    for (const auto& [name, args] : fixtures) {
+        std::string app = name.substr(0, name.find('_'));
+        std::string dir = freshDir("fixture"), live = dir + "/live", replay = dir + "/replay";
+        std::vector<std::string> cmd = {demo(app), "--offscreen", "--frames", "3", "--size",
+                                        "160x120", "--save-dir", live};
+        cmd.insert(cmd.end(), args.begin(), args.end());
+        ProcessResult r = runProcess(cmd);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        ProcessResult p = runProcess({nprglCommand(), "replay", fixture(name), "-o", replay});
+        ASSERT_EQ(p.exitCode, 0) << name << ": " << p.err;
+        expectSameFrames(live, app, replay, 3);
+    }
+}
+
+TEST(Fixtures, GlxgearsReplaysAsGlxgears)
+{
+    std::string replay = freshDir("gears");
+    ProcessResult p = runProcess({nprglCommand(), "replay", fixture("glxgears"), "-o", replay});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(framePng(replay, 3), image, error)) << error;
+    EXPECT_EQ(image.width, 300);
+    size_t red = 0, green = 0, blue = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        int r8 = image.rgba[i], g8 = image.rgba[i + 1], b8 = image.rgba[i + 2];
+        red += r8 > 120 && g8 < 60 && b8 < 60;
+        green += g8 > 120 && r8 < 60 && b8 < 60;
+        blue += b8 > 120 && r8 < 60 && g8 < 60;
+    }
+    EXPECT_GT(red, 1000u);
+    EXPECT_GT(green, 300u);
+    EXPECT_GT(blue, 300u);
+}
+
+TEST(Dump, PrintsOneCallPerLineWithNamedArguments)
+{
+    ProcessResult d = runProcess({nprglCommand(), "dump", fixture("immediate"), "--frames",
+                                  "2"});
+    ASSERT_EQ(d.exitCode, 0) << d.err;
+    EXPECT_NE(d.out.find("== context 1 frame 2 =="), std::string::npos);
+    EXPECT_EQ(d.out.find("frame 1 =="), std::string::npos);
+    EXPECT_NE(d.out.find("-- end of frame 2 --"), std::string::npos);
+    EXPECT_NE(d.out.find("glBegin(mode=GL_QUAD_STRIP)"), std::string::npos);
+    EXPECT_NE(d.out.find("glMaterialfv(face=GL_FRONT"), std::string::npos) << d.out.substr(0, 2000);
+    std::regex vertex(R"(glVertex3f\(x=-?[0-9.e+-]+, y=-?[0-9.e+-]+, z=-?[0-9.e+-]+\))");
+    EXPECT_TRUE(std::regex_search(d.out, vertex));
+
+    ProcessResult g = runProcess({nprglCommand(), "dump", fixture("immediate"), "--grep",
+                                  "glBegin"});
+    ASSERT_EQ(g.exitCode, 0) << g.err;
+    std::istringstream lines(g.out);
+    std::string line;
+    size_t calls = 0;
+    while (std::getline(lines, line)) {
+        if (line.rfind("==", 0) == 0) continue;
+        EXPECT_EQ(line.rfind("glBegin(", 0), 0u) << line;
+        ++calls;
+    }
+    EXPECT_GT(calls, 3u);
+}
+
+TEST(Info, ReportsProgramFramesCallsAndWhatWasNotCaptured)
+{
+    std::string dir = freshDir("info"), file = dir + "/d.nprgl";
+    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--", demo("displaylist"),
+                                  "--offscreen", "--frames", "4", "--size", "64x64",
+                                  "--save-dir", dir + "/live"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("not captured: glReadPixels"), std::string::npos) << r.err;
+    ProcessResult i = runProcess({nprglCommand(), "info", file});
+    ASSERT_EQ(i.exitCode, 0) << i.err;
+    EXPECT_NE(i.out.find("program:     demo_displaylist"), std::string::npos) << i.out;
+    EXPECT_NE(i.out.find("frames:      4"), std::string::npos) << i.out;
+    EXPECT_NE(i.out.find("glCallList"), std::string::npos) << i.out;
+    EXPECT_NE(i.out.find("glNewList"), std::string::npos) << i.out;
+    EXPECT_NE(i.out.find("size:        64x64"), std::string::npos) << i.out;
+    size_t notCaptured = i.out.find("not captured:");
+    ASSERT_NE(notCaptured, std::string::npos);
+    EXPECT_NE(i.out.find("glReadPixels", notCaptured), std::string::npos) << i.out;
+}
+
+TEST(Record, DefaultFileIsNamedAfterTheProgramAndFramesLimitTheRecording)
+{
+    std::string dir = freshDir("default");
+    std::string cmd = "cd " + dir + " && " + nprglCommand() + " record --frames 2-3 -- " +
+                      demo("immediate") + " --offscreen --frames 6 --size 32x32";
+    ProcessResult r = runProcess({"sh", "-c", cmd});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string file = dir + "/demo_immediate.nprgl";
+    ASSERT_TRUE(fs::exists(file));
+    ProcessResult i = runProcess({nprglCommand(), "info", file});
+    ASSERT_EQ(i.exitCode, 0) << i.err;
+    // Frame 1 is kept (it sets up state frames 2 and 3 need); nothing after frame 3.
+    EXPECT_NE(i.out.find("frames:      3"), std::string::npos) << i.out;
+    EXPECT_EQ(i.out.find("recovered"), std::string::npos) << i.out;
+}
+
+namespace {
+
+// Starts a recording of an endless offscreen demo, lets it draw, then stops it.
+ProcessResult recordAndStop(const std::string& file, int signal)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        int null = open("/dev/null", O_WRONLY);
+        dup2(null, 2);
+        execl(nprglCommand().c_str(), "nprgl", "record", "-o", file.c_str(), "--",
+              demo("immediate").c_str(), "--offscreen", "--frames", "0", "--size", "64x64",
+              static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    ProcessResult result;
+    for (int i = 0; i < 200 && (!fs::exists(file) || fs::file_size(file) < 20000); ++i) {
+        usleep(20000);
+    }
+    kill(pid, signal);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return result;
+}
+
+} // namespace
+
+TEST(Record, ProgramsStoppedBySignalsOrUnderscoreExitLeaveReadableFiles)
+{
+    for (int signal : {SIGINT, SIGTERM}) {
+        std::string dir = freshDir("signal"), file = dir + "/s.nprgl";
+        ProcessResult stopped = recordAndStop(file, signal);
+        EXPECT_EQ(stopped.exitCode, 128 + signal);
+        ProcessResult i = runProcess({nprglCommand(), "info", file});
+        ASSERT_EQ(i.exitCode, 0) << i.err;
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(i.out, m, std::regex(R"(frames:\s+(\d+))"))) << i.out;
+        EXPECT_GE(std::stoi(m[1]), 1);
+        ProcessResult p = runProcess({nprglCommand(), "replay", file, "-o", dir + "/r"});
+        EXPECT_EQ(p.exitCode, 0) << p.err;
+        EXPECT_TRUE(fs::exists(framePng(dir + "/r", 1)));
+    }
+    std::string dir = freshDir("uexit"), file = dir + "/u.nprgl";
+    ProcessResult u = runProcess({nprglCommand(), "record", "-o", file, "--",
+                                  binDir() + "/probe_fork", "underscore-exit"});
+    EXPECT_EQ(u.exitCode, 5);
+    ProcessResult i = runProcess({nprglCommand(), "info", file});
+    ASSERT_EQ(i.exitCode, 0) << i.err;
+    EXPECT_NE(i.out.find("frames:      1"), std::string::npos) << i.out;
+}
+
+TEST(Record, AForkedChildWritesItsOwnFile)
+{
+    std::string dir = freshDir("fork"), file = dir + "/f.nprgl";
+    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--",
+                                  binDir() + "/probe_fork", "fork"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path().string());
+    ASSERT_EQ(files.size(), 2u);
+    for (const std::string& f : files) {
+        ProcessResult i = runProcess({nprglCommand(), "info", f});
+        EXPECT_EQ(i.exitCode, 0) << f << ": " << i.err;
+        // The parent drew two frames, the child one.
+        EXPECT_NE(i.out.find(f == file ? "frames:      2" : "frames:      1"),
+                  std::string::npos)
+            << f << "\n" << i.out;
+    }
+}
+
+namespace {
+
+std::string readAll(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeAll(const std::string& path, const std::string& data)
+{
+    std::ofstream(path, std::ios::binary) << data;
+}
+
+// Every command refuses a damaged file with one line naming it, never crashes.
+void expectRefusedOrPrefix(const std::string& path, bool mustRefuse)
+{
+    for (const char* command : {"info", "dump", "replay"}) {
+        std::vector<std::string> cmd = {nprglCommand(), command, path};
+        if (std::string(command) == "replay") cmd.insert(cmd.end(), {"-o", path + ".out"});
+        ProcessResult r = runProcess(cmd, {}, 60);
+        ASSERT_LT(r.exitCode, 128) << command << " crashed on " << path << ": " << r.err;
+        if (r.exitCode != 0) {
+            EXPECT_NE(r.err.find("nprgl: "), std::string::npos) << r.err;
+            EXPECT_NE(r.err.find(fs::path(path).filename().string()), std::string::npos)
+                << command << ": " << r.err;
+        } else {
+            EXPECT_FALSE(mustRefuse) << command << " accepted " << path;
+        }
+    }
+}
+
+} // namespace
+
+TEST(DamagedFiles, AreRefusedCleanly)
+{
+    std::string dir = freshDir("damaged");
+    const std::string good = readAll(fixture("displaylist"));
+    ASSERT_GT(good.size(), 1000u);
+
+    writeAll(dir + "/empty.nprgl", "");
+    expectRefusedOrPrefix(dir + "/empty.nprgl", true);
+    std::string magic = good;
+    magic[0] ^= 0x55;
+    writeAll(dir + "/magic.nprgl", magic);
+    expectRefusedOrPrefix(dir + "/magic.nprgl", true);
+    writeAll(dir + "/text.nprgl", "this is not a capture file at all\n");
+    expectRefusedOrPrefix(dir + "/text.nprgl", true);
+    expectRefusedOrPrefix(dir + "/missing.nprgl", true);
+
+    for (size_t cut : {size_t(9), size_t(40), good.size() / 3, good.size() / 2, good.size() - 5}) {
+        std::string path = dir + "/cut" + std::to_string(cut) + ".nprgl";
+        writeAll(path, good.substr(0, cut));
+        expectRefusedOrPrefix(path, cut < 64);
+    }
+    for (size_t at = 16; at < good.size(); at += good.size() / 7) {
+        std::string flipped = good;
+        flipped[at] ^= 0x10;
+        std::string path = dir + "/flip" + std::to_string(at) + ".nprgl";
+        writeAll(path, flipped);
+        expectRefusedOrPrefix(path, false);
+    }
+}

@@ -1,0 +1,142 @@
+#include "stream/CallPrinter.h"
+#include "stream/CallReader.h"
+#include "stream/CallWriter.h"
+#include "stream/GlSizes.h"
+#include "stream/Opcodes.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace nprgl;
+
+namespace {
+
+// Encodes calls as the generated recorder does (same layout), for the decoder to read.
+std::vector<uint8_t> sampleFrame()
+{
+    CallWriter w;
+    w.op(op::glBegin);
+    w.put<GLenum>(GL_TRIANGLES);
+    for (int i = 0; i < 3; ++i) {
+        w.op(op::glVertex3f);
+        w.put<GLfloat>(float(i));
+        w.put<GLfloat>(0.5f);
+        w.put<GLfloat>(-1.0f);
+    }
+    w.op(op::glEnd);
+    w.op(op::glLightfv);
+    size_t mark = w.beginPayload();
+    w.put<GLenum>(GL_LIGHT0);
+    w.put<GLenum>(GL_POSITION);
+    const float position[4] = {1, 2, 3, 0};
+    w.putBytes(position, sizeof position);
+    w.endPayload(mark);
+    w.op(op::kFrameEnd);
+    w.put<uint64_t>(7);
+    return std::vector<uint8_t>(w.data(), w.data() + w.size());
+}
+
+} // namespace
+
+TEST(CallCodec, PrintsWhatWasEncoded)
+{
+    std::vector<uint8_t> frame = sampleFrame();
+    std::string out, error;
+    uint64_t calls = 0;
+    ASSERT_TRUE(CallPrinter::printFrame(frame.data(), frame.size(), nullptr, "", out, error,
+                                        &calls))
+        << error;
+    EXPECT_EQ(out, "glBegin(mode=GL_TRIANGLES)\n"
+                   "glVertex3f(x=0, y=0.5, z=-1)\n"
+                   "glVertex3f(x=1, y=0.5, z=-1)\n"
+                   "glVertex3f(x=2, y=0.5, z=-1)\n"
+                   "glEnd()\n"
+                   "glLightfv(light=GL_LIGHT0, pname=GL_POSITION, params=[1, 2, 3, 0])\n"
+                   "-- end of frame 7 --\n");
+    EXPECT_EQ(calls, 7u);
+}
+
+TEST(CallCodec, AnArrayOfTheWrongLengthIsRefused)
+{
+    CallWriter w;
+    w.op(op::glLightfv);
+    size_t mark = w.beginPayload();
+    w.put<GLenum>(GL_LIGHT0);
+    w.put<GLenum>(GL_POSITION); // needs 4 floats
+    const float two[2] = {1, 2};
+    w.putBytes(two, sizeof two);
+    w.endPayload(mark);
+    std::string out, error;
+    EXPECT_FALSE(CallPrinter::printFrame(w.data(), w.size(), nullptr, "", out, error));
+    EXPECT_NE(error.find("expected"), std::string::npos) << error;
+}
+
+TEST(CallCodec, TruncatedAndMutatedFramesNeverCrash)
+{
+    std::vector<uint8_t> frame = sampleFrame();
+    std::string out, error;
+    for (size_t cut = 0; cut < frame.size(); ++cut) {
+        out.clear();
+        bool ok = CallPrinter::printFrame(frame.data(), cut, nullptr, "", out, error);
+        // A cut on a call boundary is a shorter valid frame; anywhere else an error.
+        if (!ok) {
+            EXPECT_NE(error.find("offset"), std::string::npos) << error;
+        }
+    }
+    // Random damage: the decoder must notice most of it and read out of bounds never (the
+    // sanitizer build checks the latter).
+    std::mt19937 rng(42);
+    int refused = 0;
+    for (int round = 0; round < 2000; ++round) {
+        std::vector<uint8_t> mutated = frame;
+        for (int k = 0; k < 3; ++k) mutated[rng() % mutated.size()] = uint8_t(rng());
+        out.clear();
+        refused += !CallPrinter::printFrame(mutated.data(), mutated.size(), nullptr, "", out,
+                                            error);
+    }
+    EXPECT_GT(refused, 1000);
+}
+
+TEST(CallCodec, BlobReferencesNeedASource)
+{
+    CallWriter w;
+    std::vector<uint8_t> big(4096, 7);
+    w.setBlobSink([](const void*, size_t) { return uint64_t(0x1234); });
+    w.op(op::glBufferData);
+    size_t mark = w.beginPayload();
+    w.put<GLenum>(GL_ARRAY_BUFFER);
+    w.put<GLsizeiptr>(GLsizeiptr(big.size()));
+    w.put<GLenum>(GL_STATIC_DRAW);
+    w.putBytes(big.data(), big.size());
+    w.endPayload(mark);
+    EXPECT_LT(w.size(), 64u); // the bytes went to the blob sink
+    std::string out, error;
+    EXPECT_FALSE(CallPrinter::printFrame(w.data(), w.size(), nullptr, "", out, error));
+    EXPECT_NE(error.find("blob"), std::string::npos) << error;
+}
+
+TEST(GlSizes, ImagesFollowTheUnpackState)
+{
+    UnpackState tight;
+    tight.alignment = 1;
+    EXPECT_EQ(imageBytes(GL_RGB, GL_UNSIGNED_BYTE, 3, 2, 1, tight), 18u);
+    UnpackState aligned; // alignment 4: rows of 9 bytes padded to 12
+    EXPECT_EQ(imageBytes(GL_RGB, GL_UNSIGNED_BYTE, 3, 2, 1, aligned), 12u + 9u);
+    UnpackState rows;
+    rows.alignment = 1;
+    rows.rowLength = 10;
+    rows.skipRows = 1;
+    rows.skipPixels = 2;
+    EXPECT_EQ(imageBytes(GL_RGBA, GL_UNSIGNED_BYTE, 4, 2, 1, rows), (1 + 1) * 40u + (2 + 4) * 4u);
+    EXPECT_EQ(imageBytes(GL_COLOR_INDEX, GL_BITMAP, 10, 14, 1, tight), 28u);
+    EXPECT_EQ(imageBytes(GL_RGBA, GL_UNSIGNED_INT_8_8_8_8_REV, 2, 2, 2, tight), 32u);
+    EXPECT_EQ(imageBytes(GL_RGBA, 0x1234, 2, 2, 1, tight), 0u);
+    EXPECT_EQ(pnameCount(GL_POSITION), 4u);
+    EXPECT_EQ(pnameCount(GL_SPOT_DIRECTION), 3u);
+    EXPECT_EQ(pnameCount(GL_SHININESS), 1u);
+    EXPECT_EQ(callListsBytes(5, GL_3_BYTES), 15u);
+    EXPECT_EQ(callListsBytes(-1, GL_INT), 0u);
+}
