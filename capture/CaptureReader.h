@@ -59,8 +59,8 @@ public:
     {
         return mCallCounts;
     }
-    bool recovered() const { return mRecovered; } // true when the index was missing and the
-                                                  // file scanned
+    // True when the index was missing (or damaged) and the file was scanned.
+    bool recovered() const { return mRecovered; }
     // Why the scan stopped before the end of the file, or why the index was not used; empty
     // when the file was whole.
     const std::string& warning() const { return mWarning; }

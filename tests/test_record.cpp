@@ -280,6 +280,30 @@ TEST(Record, AForkedChildWritesItsOwnFile)
     }
 }
 
+TEST(Record, EachContextHasItsOwnStream)
+{
+    std::string dir = freshDir("threads"), file = dir + "/t.nprgl";
+    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--",
+                                  binDir() + "/probe_threads"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ProcessResult i = runProcess({nprglCommand(), "info", file});
+    ASSERT_EQ(i.exitCode, 0) << i.err;
+    EXPECT_NE(i.out.find("(context 1: 2)  (context 2: 2)"), std::string::npos) << i.out;
+    // Context 1 cleared to red, context 2 to blue.
+    for (int ctx : {1, 2}) {
+        std::string out = dir + "/ctx" + std::to_string(ctx);
+        ProcessResult p = runProcess({nprglCommand(), "replay", file, "--context",
+                                      std::to_string(ctx), "-o", out});
+        ASSERT_EQ(p.exitCode, 0) << p.err;
+        PngImage image;
+        std::string error;
+        ASSERT_TRUE(PngImage::read(framePng(out, 2), image, error)) << error;
+        EXPECT_EQ(image.width, 48);
+        EXPECT_EQ(image.rgba[0], ctx == 1 ? 255 : 0);
+        EXPECT_EQ(image.rgba[2], ctx == 1 ? 0 : 255);
+    }
+}
+
 namespace {
 
 std::string readAll(const std::string& path)
