@@ -5,6 +5,7 @@
 #include "shim/Api.h"
 #include "shim/ClientArrays.h"
 #include "shim/RealGl.h"
+#include "shim/ShadowArrays.h"
 #include "shim/ThreadState.h"
 #include "stream/CallDecoder.h"
 #include "stream/Opcodes.h"
@@ -12,7 +13,6 @@
 #include <cstdio>
 #include <map>
 #include <memory>
-#include <sys/mman.h>
 #include <unistd.h>
 #include <vector>
 
@@ -20,7 +20,6 @@ namespace nprgl {
 
 namespace {
 
-constexpr size_t kArrayReserve = size_t(1) << 30; // address space per client array
 constexpr size_t kMaxScratch = size_t(1) << 24;
 
 // Blobs of the capture, read once and kept for the replay.
@@ -39,30 +38,6 @@ public:
 private:
     const capture::CaptureReader& mReader;
     std::map<uint64_t, std::vector<uint8_t>> mCache;
-};
-
-// Memory standing in for the program's client arrays. Reserved once (address space only) so
-// pointers handed to the driver never move when more data arrives.
-class ShadowArrays {
-public:
-    ~ShadowArrays()
-    {
-        for (uint8_t* p : mBase) {
-            if (p) munmap(p, kArrayReserve);
-        }
-    }
-    uint8_t* base(int slot)
-    {
-        if (!mBase[slot]) {
-            void* p = mmap(nullptr, kArrayReserve, PROT_READ | PROT_WRITE,
-                           MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
-            mBase[slot] = p == MAP_FAILED ? nullptr : static_cast<uint8_t*>(p);
-        }
-        return mBase[slot];
-    }
-
-private:
-    uint8_t* mBase[kArraySlotCount] = {};
 };
 
 // The replaying sink of decodeCall.
@@ -124,17 +99,10 @@ public:
             size_t size = 0;
             const void* data = r.getBytes(size);
             if (!payload.finish()) return false;
-            if (slot >= kArraySlotCount || offset > kArrayReserve ||
-                size > kArrayReserve - offset) {
+            if (slot >= kArraySlotCount || !mArrays.write(slot, offset, data, size)) {
                 r.fail("client array data out of range");
                 return false;
             }
-            uint8_t* base = mArrays.base(slot);
-            if (!base) {
-                r.fail("cannot reserve memory for a client array");
-                return false;
-            }
-            if (data) std::memcpy(base + offset, data, size);
             return true;
         }
         r.fail("unknown opcode " + std::to_string(opcode));

@@ -1,0 +1,35 @@
+#include "shim/ShadowArrays.h"
+
+#include <cstring>
+#include <sys/mman.h>
+
+namespace nprgl {
+
+ShadowArrays::~ShadowArrays()
+{
+    for (uint8_t* p : mBase) {
+        if (p) munmap(p, kReserve);
+    }
+}
+
+uint8_t* ShadowArrays::base(int slot)
+{
+    if (slot < 0 || slot >= kArraySlotCount) return nullptr;
+    if (!mBase[slot]) {
+        void* p = mmap(nullptr, kReserve, PROT_READ | PROT_WRITE,
+                       MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+        mBase[slot] = p == MAP_FAILED ? nullptr : static_cast<uint8_t*>(p);
+    }
+    return mBase[slot];
+}
+
+bool ShadowArrays::write(int slot, uint64_t offset, const void* data, size_t size)
+{
+    if (offset > kReserve || size > kReserve - offset) return false;
+    uint8_t* b = base(slot);
+    if (!b) return false;
+    if (data && size) std::memcpy(b + offset, data, size);
+    return true;
+}
+
+} // namespace nprgl

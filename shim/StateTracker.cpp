@@ -1,0 +1,687 @@
+#include "shim/StateTracker.h"
+
+#include "stream/CallDecoder.h"
+#include "stream/Opcodes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace nprgl {
+
+namespace {
+
+thread_local StateTracker* tTracker = nullptr;
+
+template <typename T>
+T zeroValue()
+{
+    return T{};
+}
+template <>
+void zeroValue<void>()
+{
+}
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#include "nprgl_track.inc"
+#pragma GCC diagnostic pop
+
+StateTracker& T() { return *tTracker; }
+
+template <typename F>
+glm::mat4 toMat(const F* m)
+{
+    glm::mat4 out;
+    for (int i = 0; i < 16; ++i) glm::value_ptr(out)[i] = float(m[i]);
+    return out;
+}
+
+// Hand-written tracking functions: state that decides where and how geometry is drawn.
+void APIENTRY tBegin(GLenum mode) { T().begin(mode); }
+void APIENTRY tEnd() { T().end(); }
+void APIENTRY tMatrixMode(GLenum mode) { T().matrixMode(mode); }
+void APIENTRY tLoadIdentity() { T().topMatrix() = glm::mat4(1.0f); }
+void APIENTRY tLoadMatrixf(const GLfloat* m) { T().topMatrix() = toMat(m); }
+void APIENTRY tLoadMatrixd(const GLdouble* m) { T().topMatrix() = toMat(m); }
+void APIENTRY tMultMatrixf(const GLfloat* m) { T().topMatrix() *= toMat(m); }
+void APIENTRY tMultMatrixd(const GLdouble* m) { T().topMatrix() *= toMat(m); }
+void APIENTRY tLoadTransposeMatrixf(const GLfloat* m) { T().topMatrix() = glm::transpose(toMat(m)); }
+void APIENTRY tLoadTransposeMatrixd(const GLdouble* m) { T().topMatrix() = glm::transpose(toMat(m)); }
+void APIENTRY tMultTransposeMatrixf(const GLfloat* m) { T().topMatrix() *= glm::transpose(toMat(m)); }
+void APIENTRY tMultTransposeMatrixd(const GLdouble* m) { T().topMatrix() *= glm::transpose(toMat(m)); }
+void rotate(float angle, float x, float y, float z)
+{
+    glm::vec3 axis(x, y, z);
+    if (glm::length(axis) > 0.0f) {
+        T().topMatrix() = glm::rotate(T().topMatrix(), glm::radians(angle), glm::normalize(axis));
+    }
+}
+void APIENTRY tRotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); }
+void APIENTRY tRotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z)
+{
+    rotate(float(a), float(x), float(y), float(z));
+}
+void APIENTRY tTranslatef(GLfloat x, GLfloat y, GLfloat z)
+{
+    T().topMatrix() = glm::translate(T().topMatrix(), glm::vec3(x, y, z));
+}
+void APIENTRY tTranslated(GLdouble x, GLdouble y, GLdouble z) { tTranslatef(GLfloat(x), GLfloat(y), GLfloat(z)); }
+void APIENTRY tScalef(GLfloat x, GLfloat y, GLfloat z)
+{
+    T().topMatrix() = glm::scale(T().topMatrix(), glm::vec3(x, y, z));
+}
+void APIENTRY tScaled(GLdouble x, GLdouble y, GLdouble z) { tScalef(GLfloat(x), GLfloat(y), GLfloat(z)); }
+void APIENTRY tFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f)
+{
+    T().topMatrix() *= glm::frustum(float(l), float(r), float(b), float(t), float(n), float(f));
+}
+void APIENTRY tOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f)
+{
+    T().topMatrix() *= glm::ortho(float(l), float(r), float(b), float(t), float(n), float(f));
+}
+void APIENTRY tPushMatrix() { T().pushMatrix(); }
+void APIENTRY tPopMatrix() { T().popMatrix(); }
+void APIENTRY tEnable(GLenum cap) { T().setEnabled(cap, true); }
+void APIENTRY tDisable(GLenum cap) { T().setEnabled(cap, false); }
+void APIENTRY tMaterialfv(GLenum face, GLenum pname, const GLfloat* v) { T().material(face, pname, v); }
+void APIENTRY tMaterialf(GLenum face, GLenum pname, GLfloat v) { T().material(face, pname, &v); }
+void APIENTRY tMaterialiv(GLenum face, GLenum pname, const GLint* v)
+{
+    float f[4];
+    for (size_t i = 0; i < pnameCount(pname) && i < 4; ++i) f[i] = float(v[i]) / 2147483647.0f;
+    T().material(face, pname, f);
+}
+void APIENTRY tNewList(GLuint list, GLenum mode) { T().newList(list, mode); }
+void APIENTRY tEndList() { T().endList(); }
+void APIENTRY tCallList(GLuint list) { T().callList(list); }
+void APIENTRY tListBase(GLuint base) { T().listBase(base); }
+void APIENTRY tDeleteLists(GLuint list, GLsizei range) { T().deleteLists(list, range); }
+void APIENTRY tBindTexture(GLenum target, GLuint texture) { T().bindTexture(target, texture); }
+void APIENTRY tEnableClientState(GLenum cap) { T().enableArray(cap, true); }
+void APIENTRY tDisableClientState(GLenum cap) { T().enableArray(cap, false); }
+void APIENTRY tClientActiveTexture(GLenum unit) { T().clientActiveTexture(unit); }
+void APIENTRY tVertexPointer(GLint size, GLenum type, GLsizei stride, const void* p)
+{
+    T().arrayPointer(kVertexArray, size, type, stride, p);
+}
+void APIENTRY tNormalPointer(GLenum type, GLsizei stride, const void* p)
+{
+    T().arrayPointer(kNormalArray, 3, type, stride, p);
+}
+void APIENTRY tColorPointer(GLint size, GLenum type, GLsizei stride, const void* p)
+{
+    T().arrayPointer(kColorArray, size, type, stride, p);
+}
+void APIENTRY tTexCoordPointer(GLint size, GLenum type, GLsizei stride, const void* p)
+{
+    T().arrayPointer(T().texCoordSlot(), size, type, stride, p);
+}
+void APIENTRY tBindBuffer(GLenum target, GLuint buffer) { T().bindBuffer(target, buffer); }
+void APIENTRY tBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum)
+{
+    T().bufferData(target, size, data);
+}
+void APIENTRY tBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, const void* data)
+{
+    T().bufferSubData(target, offset, size, data);
+}
+void APIENTRY tDrawArrays(GLenum mode, GLint first, GLsizei count)
+{
+    T().drawArrays(mode, first, count);
+}
+void APIENTRY tDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices)
+{
+    T().drawElements(mode, count, type, indices);
+}
+void APIENTRY tDrawRangeElements(GLenum mode, GLuint, GLuint, GLsizei count, GLenum type,
+                                 const void* indices)
+{
+    T().drawElements(mode, count, type, indices);
+}
+void APIENTRY tMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count, GLsizei n)
+{
+    for (GLsizei i = 0; first && count && i < n; ++i) T().drawArrays(mode, first[i], count[i]);
+}
+void APIENTRY tArrayElement(GLint i) { T().arrayElement(i); }
+void APIENTRY tRectf(GLfloat a, GLfloat b, GLfloat c, GLfloat d) { T().rect(a, b, c, d); }
+void APIENTRY tRectd(GLdouble a, GLdouble b, GLdouble c, GLdouble d)
+{
+    T().rect(float(a), float(b), float(c), float(d));
+}
+void APIENTRY tRecti(GLint a, GLint b, GLint c, GLint d) { T().rect(float(a), float(b), float(c), float(d)); }
+void APIENTRY tRects(GLshort a, GLshort b, GLshort c, GLshort d)
+{
+    T().rect(float(a), float(b), float(c), float(d));
+}
+
+GLuint listId(GLenum type, const uint8_t* p, GLsizei i)
+{
+    switch (type) {
+    case GL_BYTE: return GLuint(GLint(reinterpret_cast<const int8_t*>(p)[i]));
+    case GL_UNSIGNED_BYTE: return p[i];
+    case GL_SHORT: { int16_t v; std::memcpy(&v, p + 2 * i, 2); return GLuint(GLint(v)); }
+    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * i, 2); return v; }
+    case GL_INT:
+    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * i, 4); return v; }
+    case GL_FLOAT: { float v; std::memcpy(&v, p + 4 * i, 4); return GLuint(v); }
+    case GL_2_BYTES: return GLuint(p[2 * i]) * 256 + p[2 * i + 1];
+    case GL_3_BYTES: return (GLuint(p[3 * i]) << 16) + (GLuint(p[3 * i + 1]) << 8) + p[3 * i + 2];
+    case GL_4_BYTES:
+        return (GLuint(p[4 * i]) << 24) + (GLuint(p[4 * i + 1]) << 16) +
+               (GLuint(p[4 * i + 2]) << 8) + p[4 * i + 3];
+    default: return 0;
+    }
+}
+
+void APIENTRY tCallLists(GLsizei n, GLenum type, const void* lists)
+{
+    const uint8_t* p = static_cast<const uint8_t*>(lists);
+    for (GLsizei i = 0; p && i < n; ++i) T().callList(T().listBaseValue() + listId(type, p, i));
+}
+
+bool isPolygonMode(GLenum mode) { return mode >= GL_TRIANGLES && mode <= GL_POLYGON; }
+
+} // namespace
+
+StateTracker& currentTracker() { return *tTracker; }
+
+StateTracker::StateTracker()
+{
+    fillTrackingDispatch(mCompileOnly);
+    fillTrackingDispatch(mDispatch);
+    GlDispatch& d = mDispatch;
+    d.glBegin = tBegin;
+    d.glEnd = tEnd;
+    d.glMatrixMode = tMatrixMode;
+    d.glLoadIdentity = tLoadIdentity;
+    d.glLoadMatrixf = tLoadMatrixf;
+    d.glLoadMatrixd = tLoadMatrixd;
+    d.glMultMatrixf = tMultMatrixf;
+    d.glMultMatrixd = tMultMatrixd;
+    d.glLoadTransposeMatrixf = tLoadTransposeMatrixf;
+    d.glLoadTransposeMatrixd = tLoadTransposeMatrixd;
+    d.glMultTransposeMatrixf = tMultTransposeMatrixf;
+    d.glMultTransposeMatrixd = tMultTransposeMatrixd;
+    d.glRotatef = tRotatef;
+    d.glRotated = tRotated;
+    d.glTranslatef = tTranslatef;
+    d.glTranslated = tTranslated;
+    d.glScalef = tScalef;
+    d.glScaled = tScaled;
+    d.glFrustum = tFrustum;
+    d.glOrtho = tOrtho;
+    d.glPushMatrix = tPushMatrix;
+    d.glPopMatrix = tPopMatrix;
+    d.glEnable = tEnable;
+    d.glDisable = tDisable;
+    d.glMaterialfv = tMaterialfv;
+    d.glMaterialf = tMaterialf;
+    d.glMaterialiv = tMaterialiv;
+    d.glNewList = tNewList;
+    d.glEndList = tEndList;
+    d.glCallList = tCallList;
+    d.glCallLists = tCallLists;
+    d.glListBase = tListBase;
+    d.glDeleteLists = tDeleteLists;
+    d.glBindTexture = tBindTexture;
+    d.glEnableClientState = tEnableClientState;
+    d.glDisableClientState = tDisableClientState;
+    d.glClientActiveTexture = tClientActiveTexture;
+    d.glVertexPointer = tVertexPointer;
+    d.glNormalPointer = tNormalPointer;
+    d.glColorPointer = tColorPointer;
+    d.glTexCoordPointer = tTexCoordPointer;
+    d.glBindBuffer = tBindBuffer;
+    d.glBufferData = tBufferData;
+    d.glBufferSubData = tBufferSubData;
+    d.glDrawArrays = tDrawArrays;
+    d.glDrawElements = tDrawElements;
+    d.glDrawRangeElements = tDrawRangeElements;
+    d.glMultiDrawArrays = tMultiDrawArrays;
+    d.glArrayElement = tArrayElement;
+    d.glRectf = tRectf;
+    d.glRectd = tRectd;
+    d.glRecti = tRecti;
+    d.glRects = tRects;
+}
+
+StateTracker::~StateTracker() = default;
+
+bool StateTracker::runFrame(const uint8_t* data, size_t size, BlobSource* blobs,
+                            std::string& error)
+{
+    StateTracker* previous = tTracker;
+    tTracker = this;
+    mBlobs = blobs;
+    if (mFrameDone) {
+        mFrameBatches.clear();
+        mFrameDone = false;
+    }
+    bool ok = runCalls(data, size, true, error);
+    tTracker = previous;
+    return ok;
+}
+
+bool StateTracker::isVertexCall(uint16_t opcode) const
+{
+    switch (opcode) {
+    case op::glBegin:
+    case op::glEnd:
+    case op::glDrawArrays:
+    case op::glDrawElements:
+    case op::glDrawRangeElements:
+    case op::glMultiDrawArrays:
+    case op::glArrayElement:
+    case op::glRectf:
+    case op::glRectd:
+    case op::glRecti:
+    case op::glRects:
+    case op::kArrayData:
+        return true;
+    default:
+        return opcode < op::kCount && (mInBegin || std::strncmp(kOpcodeNames[opcode], "glVertex", 8) == 0);
+    }
+}
+
+bool StateTracker::runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error)
+{
+    CallReader r(data, size, mBlobs);
+    while (!r.atEnd()) {
+        const size_t start = r.offset();
+        const uint16_t opcode = r.get<uint16_t>();
+        if (!r.ok()) break;
+        // While a list compiles (GL_COMPILE), state calls are kept for glCallList and not
+        // run; geometry is run so that its batches are captured into the list.
+        const bool listControl = opcode == op::glNewList || opcode == op::glEndList;
+        const bool keep = mCompiling && !listControl && !isVertexCall(opcode);
+        const bool skip = keep && !mCompileAndExecute;
+        mSkipping = skip; // decoded (for its bytes and checks) but not followed
+        const bool ok = decodeCall(r, opcode, *this);
+        mSkipping = false;
+        if (!ok) break;
+        if (keep) {
+            ListItem item;
+            item.call.assign(data + start, data + r.offset());
+            mCompiled.items.push_back(std::move(item));
+        }
+        if (opcode == op::kFrameEnd && !topLevel) {
+            r.fail("frame end inside a display list");
+        }
+    }
+    if (!r.ok()) {
+        error = r.error();
+        return false;
+    }
+    return true;
+}
+
+bool StateTracker::before(uint16_t opcode)
+{
+    mOpcode = opcode;
+    return true;
+}
+
+const void* StateTracker::clientPointer(uint64_t value, int attribIndex)
+{
+    if (mArrayBuffer) return reinterpret_cast<const void*>(uintptr_t(value));
+    if (attribIndex >= 0) return nullptr; // generic attributes are not followed
+    switch (mOpcode) {
+    case op::glVertexPointer: return mArrays.base(kVertexArray);
+    case op::glNormalPointer: return mArrays.base(kNormalArray);
+    case op::glColorPointer: return mArrays.base(kColorArray);
+    case op::glTexCoordPointer: return mArrays.base(texCoordSlot());
+    default: return nullptr;
+    }
+}
+
+bool StateTracker::pseudo(CallReader& r, uint16_t opcode)
+{
+    if (opcode == op::kFrameEnd) {
+        mLastFrame = r.get<uint64_t>();
+        mFrameDone = true;
+        return r.ok();
+    }
+    if (opcode == op::kArrayData) {
+        CallReader::Payload payload(r);
+        uint8_t slot = r.get<uint8_t>();
+        uint64_t offset = r.get<uint64_t>();
+        size_t size = 0;
+        const void* data = r.getBytes(size);
+        if (!payload.finish()) return false;
+        if (slot >= kArraySlotCount || !mArrays.write(slot, offset, data, size)) {
+            r.fail("client array data out of range");
+            return false;
+        }
+        return true;
+    }
+    r.fail("unknown opcode " + std::to_string(opcode));
+    return false;
+}
+
+void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
+{
+    switch (kind) {
+    case Attrib::Normal:
+        mCurrent.normal = {x, y, z};
+        mNormalSet = true;
+        break;
+    case Attrib::Color: mCurrent.color = {x, y, z, w}; break;
+    case Attrib::TexCoord: mCurrent.texcoord = {x, y}; break;
+    case Attrib::Vertex:
+        if (!mInBegin) return;
+        TrackedVertex v = mCurrent;
+        v.position = w != 0.0f && w != 1.0f ? glm::vec3(x, y, z) / w : glm::vec3(x, y, z);
+        mBatch.vertices.push_back(v);
+        break;
+    }
+}
+
+void StateTracker::begin(GLenum mode)
+{
+    mInBegin = true;
+    mBatch = TrackedBatch();
+    mBatch.mode = mode;
+    mBatch.hasNormals = mNormalSet;
+}
+
+void StateTracker::end()
+{
+    if (!mInBegin) return;
+    mInBegin = false;
+    mBatch.hasNormals = mBatch.hasNormals || mNormalSet;
+    emit(std::move(mBatch));
+    mBatch = TrackedBatch();
+}
+
+uint32_t StateTracker::currentMaterialId()
+{
+    std::vector<float> key = {float(mLighting), float(mColorMaterial),
+                              float(mTexture2D ? mBoundTexture : 0)};
+    if (mLighting && !mColorMaterial) {
+        key.insert(key.end(), {mMaterialDiffuse.r, mMaterialDiffuse.g, mMaterialDiffuse.b,
+                               mMaterialDiffuse.a});
+    }
+    auto it = mMaterialIds.find(key);
+    if (it != mMaterialIds.end()) return it->second;
+    uint32_t id = uint32_t(mMaterialIds.size()) + 1;
+    mMaterialIds.emplace(std::move(key), id);
+    return id;
+}
+
+void StateTracker::emit(TrackedBatch batch)
+{
+    if (!isPolygonMode(batch.mode) || batch.vertices.empty()) return;
+    if (mCompiling) {
+        mCompiled.batches.push_back(batch);
+        ListItem item;
+        item.batch = int(mCompiled.batches.size()) - 1;
+        mCompiled.items.push_back(std::move(item));
+        if (!mCompileAndExecute) return;
+    }
+    batch.modelview = mModelview.back();
+    batch.projection = mProjection.back();
+    batch.materialId = currentMaterialId();
+    // What the program's picture shows: lit surfaces take the material's colour.
+    if (mLighting && !mColorMaterial) {
+        for (TrackedVertex& v : batch.vertices) v.color = mMaterialDiffuse;
+    }
+    batch.is3D = mDepthTest || batch.projection[3][3] == 0.0f;
+    mFrameBatches.push_back(std::move(batch));
+}
+
+glm::mat4& StateTracker::topMatrix()
+{
+    switch (mMatrixMode) {
+    case GL_PROJECTION: return mProjection.back();
+    case GL_TEXTURE: return mTexture.back();
+    default: return mModelview.back();
+    }
+}
+
+void StateTracker::pushMatrix()
+{
+    auto& stack = mMatrixMode == GL_PROJECTION ? mProjection
+                  : mMatrixMode == GL_TEXTURE  ? mTexture
+                                               : mModelview;
+    if (stack.size() < 64) stack.push_back(stack.back()); // the driver's stack overflow
+}
+
+void StateTracker::popMatrix()
+{
+    auto& stack = mMatrixMode == GL_PROJECTION ? mProjection
+                  : mMatrixMode == GL_TEXTURE  ? mTexture
+                                               : mModelview;
+    if (stack.size() > 1) stack.pop_back();
+}
+
+void StateTracker::setEnabled(GLenum cap, bool on)
+{
+    switch (cap) {
+    case GL_LIGHTING: mLighting = on; break;
+    case GL_COLOR_MATERIAL: mColorMaterial = on; break;
+    case GL_DEPTH_TEST: mDepthTest = on; break;
+    case GL_TEXTURE_2D: mTexture2D = on; break;
+    default: break;
+    }
+}
+
+void StateTracker::material(GLenum face, GLenum pname, const float* v)
+{
+    if (face == GL_BACK || !v) return;
+    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
+        mMaterialDiffuse = {v[0], v[1], v[2], v[3]};
+    }
+}
+
+void StateTracker::newList(GLuint list, GLenum mode)
+{
+    if (mCompiling || list == 0) return; // GL_INVALID_OPERATION / GL_INVALID_VALUE
+    mCompiling = true;
+    mCompileAndExecute = mode == GL_COMPILE_AND_EXECUTE;
+    mCompilingList = list;
+    mCompiled = List();
+}
+
+void StateTracker::endList()
+{
+    if (!mCompiling) return;
+    mCompiling = false;
+    mLists[mCompilingList] = std::move(mCompiled);
+    mCompiled = List();
+}
+
+void StateTracker::callList(GLuint list)
+{
+    auto it = mLists.find(list);
+    // GL_MAX_LIST_NESTING is 64: a list that calls itself stops there, as in the driver.
+    if (it == mLists.end() || mCallDepth >= 64) return;
+    ++mCallDepth;
+    const List& body = it->second;
+    for (const ListItem& item : body.items) {
+        if (item.batch >= 0) {
+            emit(body.batches[size_t(item.batch)]);
+        } else {
+            std::string ignored;
+            runCalls(item.call.data(), item.call.size(), false, ignored);
+        }
+    }
+    --mCallDepth;
+}
+
+void StateTracker::deleteLists(GLuint list, GLsizei range)
+{
+    for (GLsizei i = 0; i < range; ++i) mLists.erase(list + GLuint(i));
+}
+
+void StateTracker::bindTexture(GLenum target, GLuint texture)
+{
+    if (target == GL_TEXTURE_2D) mBoundTexture = texture;
+}
+
+void StateTracker::enableArray(GLenum cap, bool on)
+{
+    int slot = arraySlotForCap(cap, mClientActiveTexture);
+    if (slot >= 0) mArrayState[slot].array.enabled = on;
+}
+
+void StateTracker::clientActiveTexture(GLenum unit)
+{
+    if (unit >= GL_TEXTURE0 && unit < GL_TEXTURE0 + 8) mClientActiveTexture = int(unit - GL_TEXTURE0);
+}
+
+void StateTracker::arrayPointer(int slot, GLint size, GLenum type, GLsizei stride,
+                                const void* pointer)
+{
+    ArrayBinding& b = mArrayState[slot];
+    b.array.size = size;
+    b.array.type = type;
+    b.array.stride = stride;
+    b.array.pointer = static_cast<const uint8_t*>(pointer);
+    b.buffer = mArrayBuffer;
+    b.array.inBuffer = mArrayBuffer != 0;
+}
+
+void StateTracker::bindBuffer(GLenum target, GLuint buffer)
+{
+    if (target == GL_ARRAY_BUFFER) mArrayBuffer = buffer;
+    if (target == GL_ELEMENT_ARRAY_BUFFER) mElementBuffer = buffer;
+}
+
+void StateTracker::bufferData(GLenum target, GLsizeiptr size, const void* data)
+{
+    GLuint id = target == GL_ARRAY_BUFFER ? mArrayBuffer
+                : target == GL_ELEMENT_ARRAY_BUFFER ? mElementBuffer
+                                                    : 0;
+    if (!id || size < 0 || size > (GLsizeiptr(1) << 31)) return;
+    auto& bytes = mBuffers[id];
+    bytes.assign(size_t(size), 0);
+    if (data) std::memcpy(bytes.data(), data, size_t(size));
+}
+
+void StateTracker::bufferSubData(GLenum target, GLintptr offset, GLsizeiptr size,
+                                 const void* data)
+{
+    GLuint id = target == GL_ARRAY_BUFFER ? mArrayBuffer
+                : target == GL_ELEMENT_ARRAY_BUFFER ? mElementBuffer
+                                                    : 0;
+    auto it = mBuffers.find(id);
+    if (it == mBuffers.end() || !data || offset < 0 || size < 0 ||
+        size_t(offset) + size_t(size) > it->second.size()) {
+        return;
+    }
+    std::memcpy(it->second.data() + offset, data, size_t(size));
+}
+
+bool StateTracker::fetch(int slot, size_t index, float out[4]) const
+{
+    const ArrayBinding& b = mArrayState[slot];
+    const ClientArray& a = b.array;
+    const size_t elem = a.elementBytes(), stride = a.effectiveStride();
+    if (!a.enabled || !elem) return false;
+    const uint8_t* p = nullptr;
+    if (a.inBuffer) {
+        auto it = mBuffers.find(b.buffer);
+        size_t offset = reinterpret_cast<uintptr_t>(a.pointer) + index * stride;
+        if (it == mBuffers.end() || offset + elem > it->second.size()) return false;
+        p = it->second.data() + offset;
+    } else {
+        if (!a.pointer || index * stride + elem > ShadowArrays::kReserve) return false;
+        p = a.pointer + index * stride;
+    }
+    const bool normalize = slot == kColorArray || slot == kNormalArray;
+    const int n = std::min(a.size == GL_BGRA ? 4 : a.size, 4);
+    for (int i = 0; i < n; ++i) {
+        double v = 0;
+        switch (a.type) {
+        case GL_FLOAT: { float f; std::memcpy(&f, p + 4 * i, 4); v = f; break; }
+        case GL_DOUBLE: { double d; std::memcpy(&d, p + 8 * i, 8); v = d; break; }
+        case GL_INT: { int32_t x; std::memcpy(&x, p + 4 * i, 4); v = normalize ? x / 2147483647.0 : x; break; }
+        case GL_UNSIGNED_INT: { uint32_t x; std::memcpy(&x, p + 4 * i, 4); v = normalize ? x / 4294967295.0 : x; break; }
+        case GL_SHORT: { int16_t x; std::memcpy(&x, p + 2 * i, 2); v = normalize ? x / 32767.0 : x; break; }
+        case GL_UNSIGNED_SHORT: { uint16_t x; std::memcpy(&x, p + 2 * i, 2); v = normalize ? x / 65535.0 : x; break; }
+        case GL_BYTE: v = normalize ? int8_t(p[i]) / 127.0 : int8_t(p[i]); break;
+        case GL_UNSIGNED_BYTE: v = normalize ? p[i] / 255.0 : p[i]; break;
+        default: return false;
+        }
+        out[i] = float(v);
+    }
+    if (a.size == GL_BGRA) std::swap(out[0], out[2]);
+    return true;
+}
+
+TrackedVertex StateTracker::arrayVertex(size_t index) const
+{
+    TrackedVertex v = mCurrent;
+    float f[4] = {0, 0, 0, 1};
+    if (fetch(kVertexArray, index, f)) {
+        v.position = f[3] != 0.0f && f[3] != 1.0f ? glm::vec3(f[0], f[1], f[2]) / f[3]
+                                                  : glm::vec3(f[0], f[1], f[2]);
+    }
+    float n[4] = {0, 0, 1, 0};
+    if (fetch(kNormalArray, index, n)) v.normal = {n[0], n[1], n[2]};
+    float c[4] = {1, 1, 1, 1};
+    if (fetch(kColorArray, index, c)) v.color = {c[0], c[1], c[2], c[3]};
+    float t[4] = {0, 0, 0, 1};
+    if (fetch(kTexCoordArray0, index, t)) v.texcoord = {t[0], t[1]};
+    return v;
+}
+
+void StateTracker::drawArrays(GLenum mode, GLint first, GLsizei count)
+{
+    if (first < 0 || count <= 0 || !mArrayState[kVertexArray].array.enabled) return;
+    TrackedBatch batch;
+    batch.mode = mode;
+    batch.hasNormals = mNormalSet || mArrayState[kNormalArray].array.enabled;
+    batch.vertices.reserve(size_t(count));
+    for (GLsizei i = 0; i < count; ++i) batch.vertices.push_back(arrayVertex(size_t(first + i)));
+    emit(std::move(batch));
+}
+
+void StateTracker::drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices)
+{
+    const size_t width = indexBytes(type);
+    if (count <= 0 || !width || !mArrayState[kVertexArray].array.enabled) return;
+    const uint8_t* data = static_cast<const uint8_t*>(indices);
+    if (mElementBuffer) {
+        auto it = mBuffers.find(mElementBuffer);
+        size_t offset = reinterpret_cast<uintptr_t>(indices);
+        if (it == mBuffers.end() || offset + size_t(count) * width > it->second.size()) return;
+        data = it->second.data() + offset;
+    }
+    if (!data) return;
+    TrackedBatch batch;
+    batch.mode = mode;
+    batch.hasNormals = mNormalSet || mArrayState[kNormalArray].array.enabled;
+    batch.vertices.reserve(size_t(count));
+    for (GLsizei i = 0; i < count; ++i) {
+        uint32_t index = 0;
+        std::memcpy(&index, data + size_t(i) * width, width); // little-endian
+        batch.vertices.push_back(arrayVertex(index));
+    }
+    emit(std::move(batch));
+}
+
+void StateTracker::arrayElement(GLint i)
+{
+    if (!mInBegin || i < 0) return;
+    mBatch.vertices.push_back(arrayVertex(size_t(i)));
+}
+
+void StateTracker::rect(float x1, float y1, float x2, float y2)
+{
+    TrackedBatch batch;
+    batch.mode = GL_POLYGON;
+    for (auto [x, y] : {std::pair{x1, y1}, {x2, y1}, {x2, y2}, {x1, y2}}) {
+        TrackedVertex v = mCurrent;
+        v.position = {x, y, 0.0f};
+        batch.vertices.push_back(v);
+    }
+    emit(std::move(batch));
+}
+
+} // namespace nprgl

@@ -1,0 +1,132 @@
+// The StateTracker on the committed captures: what geometry a frame draws, where, in which
+// material — display lists, client arrays and buffers included.
+
+#include "capture/CaptureReader.h"
+#include "shim/StateTracker.h"
+#include "tests/support/Process.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+using namespace nprgl;
+
+namespace {
+
+class FileBlobs : public BlobSource {
+public:
+    explicit FileBlobs(const capture::CaptureReader& r) : mReader(r) {}
+    const std::vector<uint8_t>* blob(uint64_t hash, std::string& error) override
+    {
+        auto it = mCache.find(hash);
+        if (it != mCache.end()) return &it->second;
+        std::vector<uint8_t> data;
+        if (!mReader.readBlob(hash, data, error)) return nullptr;
+        return &mCache.emplace(hash, std::move(data)).first->second;
+    }
+
+private:
+    const capture::CaptureReader& mReader;
+    std::map<uint64_t, std::vector<uint8_t>> mCache;
+};
+
+// Runs a fixture up to and including `frame` and returns that frame's batches.
+std::vector<TrackedBatch> frameBatches(const std::string& name, uint64_t frame)
+{
+    capture::CaptureReader reader;
+    std::string error;
+    std::string path = std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
+    EXPECT_TRUE(reader.open(path, error)) << error;
+    FileBlobs blobs(reader);
+    StateTracker tracker;
+    std::vector<uint8_t> calls;
+    for (size_t i = 0; i < reader.frames().size(); ++i) {
+        EXPECT_TRUE(reader.readFrame(i, calls, error)) << error;
+        EXPECT_TRUE(tracker.runFrame(calls.data(), calls.size(), &blobs, error)) << error;
+        if (reader.frames()[i].frameNumber == frame) return tracker.frameBatches();
+    }
+    ADD_FAILURE() << "no frame " << frame;
+    return {};
+}
+
+size_t distinctModelviews(const std::vector<TrackedBatch>& batches)
+{
+    std::set<std::vector<float>> seen;
+    for (const TrackedBatch& b : batches) {
+        const float* m = &b.modelview[0][0];
+        seen.emplace(m, m + 16);
+    }
+    return seen.size();
+}
+
+} // namespace
+
+TEST(StateTracker, GlxgearsDrawsThreeGearsFromItsDisplayLists)
+{
+    std::vector<TrackedBatch> batches = frameBatches("glxgears", 2);
+    // Each gear list: front face, front teeth, back face, back teeth, outward faces, inside
+    // cylinder.
+    ASSERT_EQ(batches.size(), 18u);
+    EXPECT_EQ(distinctModelviews(batches), 3u);
+    std::set<uint32_t> materials;
+    for (const TrackedBatch& b : batches) {
+        EXPECT_TRUE(b.is3D);
+        EXPECT_TRUE(b.hasNormals);
+        materials.insert(b.materialId);
+    }
+    EXPECT_EQ(materials.size(), 3u);
+    // The first gear is red: its lit colour is the material's diffuse.
+    EXPECT_NEAR(batches[0].vertices[0].color.r, 0.8f, 1e-6f);
+    EXPECT_NEAR(batches[0].vertices[0].color.g, 0.1f, 1e-6f);
+}
+
+TEST(StateTracker, ImmediateModeBatchesArePolygonalAndThreeDimensional)
+{
+    std::vector<TrackedBatch> batches = frameBatches("immediate", 2);
+    ASSERT_EQ(batches.size(), 64u); // glBegin calls per frame of the demo
+    std::set<GLenum> modes;
+    for (const TrackedBatch& b : batches) {
+        modes.insert(b.mode);
+        EXPECT_TRUE(b.is3D);
+        for (const TrackedVertex& v : b.vertices) ASSERT_TRUE(std::isfinite(v.position.x));
+    }
+    for (GLenum mode : {GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS,
+                        GL_QUAD_STRIP, GL_POLYGON}) {
+        EXPECT_EQ(modes.count(mode), 1u) << mode;
+    }
+}
+
+TEST(StateTracker, DisplayListSceneFollowsNestedAndCompileAndExecuteLists)
+{
+    std::vector<TrackedBatch> first = frameBatches("displaylist", 1);
+    std::vector<TrackedBatch> third = frameBatches("displaylist", 3);
+    ASSERT_FALSE(third.empty());
+    // Frame 1 compiles the lists and draws them; later frames only call them: same geometry.
+    EXPECT_EQ(first.size(), third.size());
+    EXPECT_GE(distinctModelviews(third), 4u); // back plate and three gears
+}
+
+TEST(StateTracker, ClientArraysAndBuffersGiveTheSameGeometry)
+{
+    std::vector<TrackedBatch> client = frameBatches("arrays", 2);
+    std::vector<TrackedBatch> vbo = frameBatches("arrays_vbo", 2);
+    ASSERT_FALSE(client.empty());
+    ASSERT_EQ(client.size(), vbo.size());
+    for (size_t i = 0; i < client.size(); ++i) {
+        ASSERT_EQ(client[i].vertices.size(), vbo[i].vertices.size()) << i;
+        for (size_t k = 0; k < client[i].vertices.size(); ++k) {
+            ASSERT_EQ(client[i].vertices[k].position, vbo[i].vertices[k].position) << i << "/" << k;
+            ASSERT_EQ(client[i].vertices[k].normal, vbo[i].vertices[k].normal);
+        }
+    }
+}
+
+TEST(StateTracker, TheOverlayIsNotThreeDimensional)
+{
+    std::vector<TrackedBatch> batches = frameBatches("overlay", 1);
+    size_t flat = 0, deep = 0;
+    for (const TrackedBatch& b : batches) (b.is3D ? deep : flat)++;
+    EXPECT_GT(deep, 0u);
+    EXPECT_GT(flat, 0u); // the HUD panel and bar
+}
