@@ -2,6 +2,7 @@
 
 #include "common/Log.h"
 #include "shim/Context.h"
+#include "shim/Recorder.h"
 
 #include <cstdlib>
 #include <ctime>
@@ -140,9 +141,26 @@ bool CaptureSession::writeFrame(const Context& ctx, uint64_t frame, const uint8_
     return true;
 }
 
+void CaptureSession::attach(Recorder* recorder)
+{
+    std::lock_guard lock(mMutex);
+    mRecorders.push_back(recorder);
+}
+
+void CaptureSession::detach(Recorder* recorder)
+{
+    std::lock_guard lock(mMutex);
+    std::erase(mRecorders, recorder);
+}
+
 void CaptureSession::addUncaptured(const char* name, uint64_t count)
 {
     std::lock_guard lock(mMutex);
+    addUncapturedLocked(name, count);
+}
+
+void CaptureSession::addUncapturedLocked(const char* name, uint64_t count)
+{
     for (auto& [n, c] : mUncaptured) {
         if (n == name) {
             c += count;
@@ -163,6 +181,11 @@ void CaptureSession::finish()
 void CaptureSession::finishLocked()
 {
     if (!mWriter.isOpen() || mWriter.ownedByOtherProcess()) return;
+    for (Recorder* recorder : mRecorders) {
+        recorder->takeUncaptured([this](const char* name, uint64_t count) {
+            addUncapturedLocked(name, count);
+        });
+    }
     if (mUncapturedChanged) mWriter.writeCallCounts(mUncaptured);
     std::string error;
     if (!mWriter.close(error)) NPRGL_ERROR("closing %s: %s", mPath.c_str(), error.c_str());

@@ -11,6 +11,7 @@
 namespace nprgl {
 
 class Context;
+class Recorder;
 
 // The process's capture file (NPRGL_RECORD): opened when the first recording context becomes
 // current, written at every frame end, closed with its index at exit. A forked child that
@@ -27,6 +28,10 @@ public:
     // Returns false once the range is over: recording stops.
     bool writeFrame(const Context& ctx, uint64_t frame, const uint8_t* calls, size_t size);
     void addUncaptured(const char* name, uint64_t count);
+    // Recorders report their counts at each frame end; at exit the session asks the ones
+    // still alive for the rest.
+    void attach(Recorder* recorder);
+    void detach(Recorder* recorder);
     bool wantsFrame(uint64_t frame) const { return frame <= mLastFrame; }
 
     // Closes the file with its index and reports what was not captured.
@@ -36,6 +41,7 @@ private:
     CaptureSession(std::string path, FrameSet frames);
     bool ensureOpenLocked(const Context& ctx);
     void finishLocked();
+    void addUncapturedLocked(const char* name, uint64_t count);
 
     std::mutex mMutex;
     std::string mBasePath;
@@ -46,6 +52,7 @@ private:
     bool mOpenFailed = false;
     uint64_t mFramesWritten = 0;
     std::vector<std::pair<std::string, uint64_t>> mUncaptured;
+    std::vector<Recorder*> mRecorders;
     bool mUncapturedChanged = false;
 };
 

@@ -20,7 +20,18 @@ Recorder::Recorder(Context& ctx, CaptureSession& session)
     mWriter.setBlobSink([&session, &ctx](const void* data, size_t size) {
         return session.putBlob(ctx, data, size);
     });
+    session.attach(this);
 }
+
+Recorder::~Recorder()
+{
+    takeUncaptured([this](const char* name, uint64_t count) {
+        mSession.addUncaptured(name, count);
+    });
+    mSession.detach(this);
+}
+
+const char* opcodeNameOf(size_t opcode) { return opcodeName(uint16_t(opcode)); }
 
 Recorder& Recorder::current() { return *tThread.context->recorder(); }
 
@@ -28,12 +39,9 @@ void Recorder::endFrame(uint64_t frame)
 {
     mWriter.op(op::kFrameEnd);
     mWriter.put<uint64_t>(frame);
-    for (uint16_t i = 0; i < op::kCount; ++i) {
-        if (mUncaptured[i] != mUncapturedReported[i]) {
-            mSession.addUncaptured(kOpcodeNames[i], mUncaptured[i] - mUncapturedReported[i]);
-            mUncapturedReported[i] = mUncaptured[i];
-        }
-    }
+    takeUncaptured([this](const char* name, uint64_t count) {
+        mSession.addUncaptured(name, count);
+    });
     if (!mStopped && !mSession.writeFrame(mContext, frame, mWriter.data(), mWriter.size())) {
         mStopped = true;
     }

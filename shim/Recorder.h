@@ -13,18 +13,24 @@ namespace nprgl {
 class CaptureSession;
 class Context;
 
+const char* opcodeNameOf(size_t opcode);
+
 // Turns one context's calls into the Stream: the generated recording functions encode each
 // call into writer() and call the driver; the hooks below follow the state needed to copy
 // client memory that a draw reads (client arrays, index data, mapped buffers).
 class Recorder {
 public:
     Recorder(Context& ctx, CaptureSession& session);
+    ~Recorder();
 
     // The recorder of the current context (recording functions only run when it exists).
     static Recorder& current();
 
     CallWriter& writer() { return mWriter; }
     void countUncaptured(uint16_t opcode) { ++mUncaptured[opcode]; }
+    // Hands over the counts not reported yet (name, count).
+    template <typename Fn>
+    void takeUncaptured(Fn&& report);
     // Closes the frame: marks its end and hands it to the capture file.
     void endFrame(uint64_t frame);
 
@@ -106,5 +112,16 @@ private:
     std::vector<uint64_t> mUncapturedReported;
     bool mStopped = false;
 };
+
+template <typename Fn>
+void Recorder::takeUncaptured(Fn&& report)
+{
+    for (size_t i = 0; i < mUncaptured.size(); ++i) {
+        if (mUncaptured[i] != mUncapturedReported[i]) {
+            report(opcodeNameOf(i), mUncaptured[i] - mUncapturedReported[i]);
+            mUncapturedReported[i] = mUncaptured[i];
+        }
+    }
+}
 
 } // namespace nprgl
