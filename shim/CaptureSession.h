@@ -2,6 +2,7 @@
 
 #include "capture/CaptureWriter.h"
 #include "common/FrameSet.h"
+#include "shim/StreamSink.h"
 
 #include <cstdint>
 #include <mutex>
@@ -10,29 +11,27 @@
 
 namespace nprgl {
 
-class Context;
-class Recorder;
 
 // The process's capture file (NPRGL_RECORD): opened when the first recording context becomes
 // current, written at every frame end, closed with its index at exit. A forked child that
 // records opens its own file, `<name>.<pid>.nprgl`, never the parent's.
-class CaptureSession {
+class CaptureSession : public StreamSink {
 public:
     // Null when the process is not recording.
     static CaptureSession* instance();
 
     // Opens the file first if needed (blobs come before the first frame that uses them).
-    uint64_t putBlob(const Context& ctx, const void* data, size_t size);
+    uint64_t putBlob(const Context& ctx, const void* data, size_t size) override;
     // Writes one frame of a context if it is inside the recorded range (frames before the
     // range are kept too: they create the lists, textures and buffers later frames use).
     // Returns false once the range is over: recording stops.
-    bool writeFrame(const Context& ctx, uint64_t frame, const uint8_t* calls, size_t size);
-    void addUncaptured(const char* name, uint64_t count);
+    bool writeFrame(const Context& ctx, uint64_t frame, const uint8_t* calls,
+                    size_t size) override;
+    void addUncaptured(const char* name, uint64_t count) override;
     // Recorders report their counts at each frame end; at exit the session asks the ones
     // still alive for the rest.
-    void attach(Recorder* recorder);
-    void detach(Recorder* recorder);
-    bool wantsFrame(uint64_t frame) const { return frame <= mLastFrame; }
+    void attach(Recorder* recorder) override;
+    void detach(Recorder* recorder) override;
 
     // Closes the file with its index and reports what was not captured.
     void finish();

@@ -1,7 +1,7 @@
 #include "shim/Recorder.h"
 
 #include "common/Log.h"
-#include "shim/CaptureSession.h"
+#include "shim/StreamSink.h"
 #include "shim/Context.h"
 #include "shim/RealGl.h"
 #include "shim/ThreadState.h"
@@ -13,7 +13,7 @@
 
 namespace nprgl {
 
-Recorder::Recorder(Context& ctx, CaptureSession& session)
+Recorder::Recorder(Context& ctx, StreamSink& session)
     : mContext(ctx), mSession(session), mUncaptured(op::kCount, 0),
       mUncapturedReported(op::kCount, 0)
 {

@@ -10,7 +10,7 @@
 
 namespace nprgl {
 
-class CaptureSession;
+class StreamSink;
 class Context;
 
 const char* opcodeNameOf(size_t opcode);
@@ -20,7 +20,7 @@ const char* opcodeNameOf(size_t opcode);
 // client memory that a draw reads (client arrays, index data, mapped buffers).
 class Recorder {
 public:
-    Recorder(Context& ctx, CaptureSession& session);
+    Recorder(Context& ctx, StreamSink& session);
     ~Recorder();
 
     // The recorder of the current context (recording functions only run when it exists).
@@ -94,7 +94,7 @@ private:
     };
 
     Context& mContext;
-    CaptureSession& mSession;
+    StreamSink& mSession;
     CallWriter mWriter;
     ClientArrayState mState;
     std::vector<ClientArrayState> mClientStack;

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace nprgl::reconstruct {
+
+// One vertex as the GL received it.
+struct Vertex {
+    glm::vec3 position;       // object space (already divided by w if w != 1)
+    glm::vec3 normal;         // the current normal at that vertex
+    glm::vec4 color;          // current colour, or the material's diffuse when lighting
+    glm::vec2 texcoord;       // unit 0
+    bool hasNormal = false;   // the program ever set a normal for this batch
+    uint8_t padding[3] = {};  // explicit and zero, so a vertex array hashes deterministically
+};
+static_assert(sizeof(Vertex) == 52, "Vertex must have no hidden padding");
+
+// One glBegin/glEnd or one draw call.
+struct Batch {
+    uint32_t mode = 0;          // GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS,
+                                // GL_QUAD_STRIP, GL_POLYGON; other modes assemble no triangle
+    std::vector<Vertex> vertices;
+    glm::mat4 modelview{1.0f};  // at the draw
+    uint32_t materialId = 0;    // distinct material/colour state -> distinct id
+    uint64_t contentHash = 0;   // hashBatch(*this); 0 means "not given", the Reconstructor
+                                // then computes it (a cost per frame for large batches)
+};
+
+// XXH3 of the vertex bytes seeded with the mode; never 0. The producer should store it in
+// Batch::contentHash when it copies the vertices, while they are hot in the cache.
+uint64_t hashBatch(const Batch& batch) noexcept;
+
+} // namespace nprgl::reconstruct

@@ -1,0 +1,82 @@
+#include "reconstruct/MeshGeometry.h"
+
+#include <cmath>
+
+namespace nprgl::reconstruct {
+
+namespace {
+
+inline glm::vec3 toGlm(const Mesh::Point& p)
+{
+    return {p[0], p[1], p[2]};
+}
+
+inline glm::vec3 normalizedOrZero(const glm::vec3& v)
+{
+    const float len2 = glm::dot(v, v);
+    return len2 > 0.0f && std::isfinite(len2) ? v * (1.0f / std::sqrt(len2)) : glm::vec3(0.0f);
+}
+
+} // namespace
+
+void computeGeometry(ObjectMesh& object, float creaseCosine, GeometryScratch& scratch)
+{
+    // Raw property arrays: the per-element property lookups cost more than the arithmetic.
+    Mesh& mesh = object.mesh;
+    std::vector<Mesh::Point>& points = mesh.property(mesh.points_pph()).data_vector();
+    std::vector<Mesh::Normal>& vertexNormals =
+        mesh.property(mesh.vertex_normals_pph()).data_vector();
+    std::vector<Mesh::Normal>& faceNormals = mesh.property(mesh.face_normals_pph()).data_vector();
+    const size_t vertexCount = points.size();
+    const size_t faceCount = faceNormals.size();
+    const Vertex* sources = object.sourceVertices.data();
+    const uint32_t* vertexSource = object.updateState.vertexSource.data();
+
+    for (size_t v = 0; v < vertexCount; ++v) {
+        const glm::vec3& p = sources[vertexSource[v]].position;
+        points[v] = Mesh::Point(p.x, p.y, p.z);
+    }
+
+    scratch.areaSum.assign(vertexCount, glm::vec3(0.0f));
+    scratch.givenSum.assign(vertexCount, glm::vec3(0.0f));
+    glm::vec3* areaSum = scratch.areaSum.data();
+    glm::vec3* givenSum = scratch.givenSum.data();
+    const uint32_t* faceVertices = object.faceVertices.data();
+    const uint32_t* faceCorners = object.faceCorners.data();
+    for (size_t f = 0; f < faceCount; ++f) {
+        const uint32_t* fv = faceVertices + 3 * f;
+        const glm::vec3 p0 = toGlm(points[fv[0]]);
+        // |cross| is twice the area: summing it weights vertex normals by area.
+        const glm::vec3 c = glm::cross(toGlm(points[fv[1]]) - p0, toGlm(points[fv[2]]) - p0);
+        const glm::vec3 n = normalizedOrZero(c);
+        faceNormals[f] = Mesh::Normal(n.x, n.y, n.z);
+        const uint32_t* fc = faceCorners + 3 * f;
+        for (int k = 0; k < 3; ++k) {
+            areaSum[fv[k]] += c;
+            const Vertex& corner = sources[fc[k]];
+            if (corner.hasNormal) givenSum[fv[k]] += corner.normal;
+        }
+    }
+    for (size_t v = 0; v < vertexCount; ++v) {
+        // The program's normals where it gave any (and they do not cancel out).
+        glm::vec3 n = normalizedOrZero(givenSum[v]);
+        if (n == glm::vec3(0.0f)) n = normalizedOrZero(areaSum[v]);
+        vertexNormals[v] = Mesh::Normal(n.x, n.y, n.z);
+    }
+
+    const uint32_t* materials = object.faceMaterials.data();
+    for (EdgeInfo& e : object.edges) {
+        if (e.classes & kEdgeBorder) continue;
+        uint8_t classes = 0;
+        const Mesh::Normal& n0 = faceNormals[e.f0];
+        const Mesh::Normal& n1 = faceNormals[e.f1];
+        const float d = n0[0] * n1[0] + n0[1] * n1[1] + n0[2] * n1[2];
+        // A zero normal (degenerate face) says nothing about the dihedral angle.
+        const bool valid = n0.sqrnorm() > 0.0f && n1.sqrnorm() > 0.0f;
+        if (valid && d < creaseCosine) classes |= kEdgeCrease;
+        if (materials[e.f0] != materials[e.f1]) classes |= kEdgeMaterial;
+        e.classes = classes;
+    }
+}
+
+} // namespace nprgl::reconstruct
