@@ -1,7 +1,9 @@
 #include "cli/CaptureCommands.h"
 
 #include "capture/CaptureReader.h"
+#include "shim/FrameExport.h"
 #include "shim/Replayer.h"
+#include "shim/StateTracker.h"
 #include "stream/CallPrinter.h"
 #include "styles/StyleSettings.h"
 
@@ -162,6 +164,48 @@ int infoCommand(const std::string& file)
         std::printf("  %10llu  %s\n", static_cast<unsigned long long>(n), name.c_str());
     }
     return 0;
+}
+
+} // namespace nprgl::cli
+
+namespace nprgl::cli {
+
+int exportCommand(const std::string& file, uint64_t frame, const std::string& output,
+                  const std::string& space, unsigned context)
+{
+    if (space != "eye" && space != "object") {
+        return fail("--space: expected eye or object, got '" + space + "'");
+    }
+    std::string error;
+    capture::CaptureReader reader;
+    if (!reader.open(file, error)) return fail(error);
+    const auto& frames = reader.frames();
+    uint32_t ctx = context ? context : (frames.empty() ? 1 : frames.front().contextId);
+    ReaderBlobs blobs(reader);
+    StateTracker tracker;
+    std::vector<uint8_t> calls;
+    // Every earlier frame runs too: it builds the lists, buffers and arrays frame N uses.
+    for (size_t i = 0; i < frames.size(); ++i) {
+        if (frames[i].contextId != ctx) continue;
+        if (!reader.readFrame(i, calls, error)) return fail(error);
+        if (!tracker.runFrame(calls.data(), calls.size(), &blobs, error)) {
+            return fail(file + ": frame " + std::to_string(frames[i].frameNumber) + " at " +
+                        std::to_string(frames[i].offset) + ": " + error);
+        }
+        if (frames[i].frameNumber != frame) continue;
+        reconstruct::Reconstructor reconstructor;
+        size_t objects = 0;
+        if (!exportFrame(reconstructor, tracker.frameBatches(),
+                         space == "eye" ? ExportSpace::Eye : ExportSpace::Object, output, error,
+                         &objects)) {
+            return fail(file + ": frame " + std::to_string(frame) + ": " + error);
+        }
+        std::fprintf(stderr, "nprgl: wrote %zu objects of frame %llu to %s\n", objects,
+                     static_cast<unsigned long long>(frame), output.c_str());
+        return 0;
+    }
+    return fail(file + ": no frame " + std::to_string(frame) + " in context " +
+                std::to_string(ctx));
 }
 
 } // namespace nprgl::cli

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,5 +19,7 @@ struct ReplayCommandOptions {
 int replayCommand(const ReplayCommandOptions& options);
 int dumpCommand(const std::string& file, const std::string& frames, const std::string& grep);
 int infoCommand(const std::string& file);
+int exportCommand(const std::string& file, uint64_t frame, const std::string& output,
+                  const std::string& space, unsigned context);
 
 } // namespace nprgl::cli

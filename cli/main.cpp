@@ -25,12 +25,16 @@ Commands:
                   [--set k=v]... [--frames A-B] [--size WxH] [--context N]
   dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
   info            print a capture's metadata, frames, calls and what was not captured
+  export          write a frame's reconstructed meshes: nprgl export FILE --frame N -o out.obj
+                  [--space eye|object] (also .ply, .off)
   styles          list the styles, their parameters, defaults and ranges
 
 Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM reads them too):
   NPRGL_STYLE       style chain, e.g. none
   NPRGL_CONFIG      style parameters, key=value,key=value
   NPRGL_SCREENSHOT  frames=1,10,100;dir=out writes <program>_<frame>.png before each swap
+  NPRGL_RECORD      record the GL stream to this file (NPRGL_RECORD_FRAMES=A-B)
+  NPRGL_EXPORT      frame=N;dir=D writes frame N's reconstructed meshes as D/<program>_N.obj
   NPRGL_LOG_LEVEL   error, warn, info (default) or debug
   NPRGL_LOG_FILE    log to this file instead of stderr
   NPRGL_REAL_LIBGL  the OpenGL library to forward to instead of libGL.so.1
@@ -94,6 +98,22 @@ int infoMain(int argc, char** argv)
     return nprgl::cli::infoCommand(file);
 }
 
+int exportMain(int argc, char** argv)
+{
+    std::string file, output, space = "eye";
+    uint64_t frame = 1;
+    unsigned context = 0;
+    CLI::App app{"Write a frame's reconstructed meshes (OBJ with one group per object, PLY, OFF)",
+                 "nprgl export"};
+    app.add_option("file", file, "the capture")->required();
+    app.add_option("--frame", frame, "the frame (counted from 1)")->required();
+    app.add_option("-o,--output", output, "out.obj, out.ply or out.off")->required();
+    app.add_option("--space", space, "eye (as the camera saw it, default) or object");
+    app.add_option("--context", context, "which context's stream (default: the first)");
+    CLI11_PARSE(app, argc, argv);
+    return nprgl::cli::exportCommand(file, frame, output, space, context);
+}
+
 int main(int argc, char** argv)
 {
     const char* command = argc > 1 ? argv[1] : "";
@@ -105,6 +125,7 @@ int main(int argc, char** argv)
     if (std::strcmp(command, "replay") == 0) return replayMain(argc - 1, argv + 1);
     if (std::strcmp(command, "dump") == 0) return dumpMain(argc - 1, argv + 1);
     if (std::strcmp(command, "info") == 0) return infoMain(argc - 1, argv + 1);
+    if (std::strcmp(command, "export") == 0) return exportMain(argc - 1, argv + 1);
     // "run" is the default command and may be left out; "record" is run plus a capture.
     const bool record = std::strcmp(command, "record") == 0;
     int skip = record || std::strcmp(command, "run") == 0 ? 1 : 0;

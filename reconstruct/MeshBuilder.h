@@ -36,7 +36,9 @@ public:
 private:
     OpenMesh::VertexHandle vertexFor(ObjectMesh& object, uint32_t welded);
     OpenMesh::VertexHandle copyOf(ObjectMesh& object, uint32_t welded);
-    void splitFace(ObjectMesh& object, const uint32_t welded[3], OpenMesh::VertexHandle vh[3]);
+    void splitFace(ObjectMesh& object, OpenMesh::VertexHandle vh[3]);
+    void addFace(ObjectMesh& object, uint32_t f, OpenMesh::VertexHandle vh[3]);
+    bool splitFans(ObjectMesh& object);
     void buildEdges(ObjectMesh& object);
 
     Welder mWelder;
@@ -44,6 +46,7 @@ private:
     std::vector<uint32_t> mTriangles;  // kept triangles, source-vertex triples
     std::vector<uint32_t> mMeshVertex; // per welded id: its mesh vertex, or kNoIndex
     std::unordered_map<uint32_t, std::vector<uint32_t>> mCopies; // welded id -> split copies
+    std::vector<uint8_t> mBoundaryOut; // per vertex: outgoing boundary halfedges, up to 2
     std::vector<Vertex> mStaged;
 };
 

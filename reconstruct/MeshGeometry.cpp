@@ -32,13 +32,12 @@ void computeGeometry(ObjectMesh& object, float creaseCosine, GeometryScratch& sc
     const Vertex* sources = object.sourceVertices.data();
     const uint32_t* vertexSource = object.updateState.vertexSource.data();
 
+    scratch.areaSum.assign(vertexCount, glm::vec3(0.0f));
+    scratch.givenSum.assign(vertexCount, glm::vec3(0.0f));
     for (size_t v = 0; v < vertexCount; ++v) {
         const glm::vec3& p = sources[vertexSource[v]].position;
         points[v] = Mesh::Point(p.x, p.y, p.z);
     }
-
-    scratch.areaSum.assign(vertexCount, glm::vec3(0.0f));
-    scratch.givenSum.assign(vertexCount, glm::vec3(0.0f));
     glm::vec3* areaSum = scratch.areaSum.data();
     glm::vec3* givenSum = scratch.givenSum.data();
     const uint32_t* faceVertices = object.faceVertices.data();

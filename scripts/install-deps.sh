@@ -7,6 +7,7 @@ pkgs=(
     libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
     libcli11-dev
     mesa-utils x11-utils xvfb xauth
+    apitrace
     clang libclang-rt-14-dev
 )
 sudo=""

@@ -3,6 +3,7 @@
 #include "common/Log.h"
 #include "shim/CaptureSession.h"
 #include "shim/FrameGrabber.h"
+#include "shim/LiveExport.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
 #include "shim/Recorder.h"
@@ -36,8 +37,11 @@ void APIENTRY osmesaFinish()
 Context::Context(WindowSystem ws, const void* handle, uint32_t serial)
     : mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial)
 {
-    if (CaptureSession* session = CaptureSession::instance()) {
-        mRecorder = std::make_unique<Recorder>(*this, *session);
+    // Recording to a file wins over a live export (both need the Stream).
+    StreamSink* sink = CaptureSession::instance();
+    if (!sink) sink = LiveExport::instance();
+    if (sink) {
+        mRecorder = std::make_unique<Recorder>(*this, *sink);
         installRecording(mDispatch);
     }
     mFinish = mDispatch.glFinish;

@@ -1,0 +1,51 @@
+#include "shim/FrameExport.h"
+
+#include "reconstruct/MeshExport.h"
+
+namespace nprgl {
+
+std::vector<reconstruct::Batch> reconstructionBatches(const std::vector<TrackedBatch>& batches)
+{
+    std::vector<reconstruct::Batch> out;
+    out.reserve(batches.size());
+    for (const TrackedBatch& tb : batches) {
+        if (!tb.is3D) continue; // 2D overlays are the program's own, never stylised
+        reconstruct::Batch b;
+        b.mode = tb.mode;
+        b.modelview = tb.modelview;
+        b.materialId = tb.materialId;
+        b.vertices.reserve(tb.vertices.size());
+        for (const TrackedVertex& v : tb.vertices) {
+            reconstruct::Vertex rv;
+            rv.position = v.position;
+            rv.normal = v.normal;
+            rv.color = v.color;
+            rv.texcoord = v.texcoord;
+            rv.hasNormal = tb.hasNormals;
+            b.vertices.push_back(rv);
+        }
+        b.contentHash = reconstruct::hashBatch(b);
+        out.push_back(std::move(b));
+    }
+    return out;
+}
+
+bool exportFrame(reconstruct::Reconstructor& reconstructor,
+                 const std::vector<TrackedBatch>& batches, ExportSpace space,
+                 const std::string& path, std::string& error, size_t* objectCount)
+{
+    std::vector<reconstruct::FrameObject> objects =
+        reconstructor.build(reconstructionBatches(batches));
+    std::vector<reconstruct::ExportObject> out;
+    for (const reconstruct::FrameObject& o : objects) {
+        out.push_back({o.mesh, space == ExportSpace::Eye ? o.modelview : glm::mat4(1.0f)});
+    }
+    if (objectCount) *objectCount = out.size();
+    if (out.empty()) {
+        error = "the frame has no 3D polygon geometry to export";
+        return false;
+    }
+    return reconstruct::exportMeshes(path, out, error);
+}
+
+} // namespace nprgl
