@@ -1,5 +1,8 @@
 #include "GlxWindow.h"
 
+#include <cstdlib>
+#include <unistd.h>
+
 #include "Readback.h"
 
 #include <X11/Xutil.h>
@@ -29,7 +32,13 @@ bool GlxWindow::open(const Options& options, std::string& error)
 {
     width_ = options.width;
     height_ = options.height;
+    // A busy X server (Xvfb serving several test programs) can refuse a connection for a
+    // moment; a few short retries make the demos dependable in CI.
     display_ = XOpenDisplay(nullptr);
+    for (int attempt = 0; !display_ && attempt < 20 && std::getenv("DISPLAY"); ++attempt) {
+        usleep(100000);
+        display_ = XOpenDisplay(nullptr);
+    }
     if (display_ == nullptr) {
         error = "cannot open X display (is DISPLAY set?)";
         return false;
