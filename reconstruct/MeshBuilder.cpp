@@ -10,12 +10,17 @@ namespace nprgl::reconstruct {
 
 namespace {
 
+using OpenMesh::FaceHandle;
 using OpenMesh::HalfedgeHandle;
 using OpenMesh::VertexHandle;
 
-// How many of a vertex's split copies a refused face tries before making a new one; bounds
-// the cost of pathological input (hundreds of faces stacked on one spot).
+// How many of a vertex's copies a refused face tries before making a new one; bounds the cost
+// of pathological input (hundreds of faces stacked on one spot).
 constexpr size_t kCopiesTried = 8;
+// A corner that will get a new copy of its vertex (never a real index).
+constexpr uint32_t kFresh = kNoIndex - 1;
+// Splitting fans converges in one round; this many rounds, then every face on its own.
+constexpr int kFanRounds = 3;
 
 inline bool isFinite(const glm::vec3& p)
 {
@@ -32,196 +37,307 @@ inline bool zeroArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c)
     return glm::dot(x, x) <= 1e-12 * glm::dot(e1, e1) * glm::dot(e2, e2);
 }
 
-// The checks of OpenMesh's PolyConnectivity::add_face (complex vertex, complex edge, patch
-// re-linking), read-only: a face it would refuse is never offered to it, which would also
-// print to stderr. Returns a bit per corner at fault, 0 when add_face will succeed.
-unsigned refusedCorners(const Mesh& mesh, const VertexHandle vh[3])
-{
-    unsigned bad = 0;
-    HalfedgeHandle heh[3];
-    for (int i = 0; i < 3; ++i) {
-        const int next = (i + 1) % 3;
-        if (!mesh.is_boundary(vh[i])) bad |= 1u << i;
-        heh[i] = mesh.find_halfedge(vh[i], vh[next]);
-        if (heh[i].is_valid() && !mesh.is_boundary(heh[i])) bad |= (1u << i) | (1u << next);
-    }
-    if (bad) return bad;
-    for (int i = 0; i < 3; ++i) {
-        const int next = (i + 1) % 3;
-        const HalfedgeHandle innerPrev = heh[i], innerNext = heh[next];
-        if (!innerPrev.is_valid() || !innerNext.is_valid()) continue;
-        if (mesh.next_halfedge_handle(innerPrev) == innerNext) continue;
-        // OpenMesh looks for another boundary gap at this vertex to move the patch into.
-        HalfedgeHandle boundaryPrev = mesh.opposite_halfedge_handle(innerNext);
-        do {
-            boundaryPrev = mesh.opposite_halfedge_handle(mesh.next_halfedge_handle(boundaryPrev));
-        } while (!mesh.is_boundary(boundaryPrev));
-        if (boundaryPrev == innerPrev) bad |= 1u << next;
-    }
-    return bad;
-}
-
-uint32_t totalVertices(const Batch* batches, size_t count)
-{
-    size_t total = 0;
-    for (size_t b = 0; b < count; ++b) total += batches[b].vertices.size();
-    return uint32_t(total);
-}
-
 void fillMaterials(ObjectMesh& object, const Batch* batches, size_t count)
 {
-    const std::vector<uint32_t>& faceEnd = object.updateState.batchFaceEnd;
+    ObjectMesh::UpdateState& state = object.updateState;
     uint32_t begin = 0;
     for (size_t b = 0; b < count; ++b) {
-        std::fill(object.faceMaterials.begin() + begin, object.faceMaterials.begin() + faceEnd[b],
-                  batches[b].materialId);
-        begin = faceEnd[b];
+        std::fill(object.faceMaterials.begin() + begin,
+                  object.faceMaterials.begin() + state.batchFaceEnd[b], batches[b].materialId);
+        begin = state.batchFaceEnd[b];
+        state.batchMaterials[b] = batches[b].materialId;
     }
 }
 
 } // namespace
 
-VertexHandle MeshBuilder::vertexFor(ObjectMesh& object, uint32_t welded)
+uint32_t MeshBuilder::vertexFor(ObjectMesh& object, uint32_t welded)
 {
-    uint32_t& v = mMeshVertex[welded];
+    ObjectMesh::UpdateState& state = object.updateState;
+    uint32_t& v = state.weldVertex[welded];
     if (v == kNoIndex) {
-        // Points are written by computeGeometry; connectivity does not look at them.
-        v = uint32_t(object.mesh.new_vertex().idx());
-        object.updateState.vertexSource.push_back(object.updateState.weldRep[welded]);
+        v = uint32_t(state.vertexSource.size());
+        state.vertexSource.push_back(state.weldRep[welded]);
     }
-    return VertexHandle(int(v));
+    return v;
 }
 
-VertexHandle MeshBuilder::copyOf(ObjectMesh& object, uint32_t welded)
+uint32_t MeshBuilder::copyOf(ObjectMesh& object, uint32_t welded)
 {
-    const VertexHandle vh = object.mesh.new_vertex();
-    object.updateState.vertexSource.push_back(object.updateState.weldRep[welded]);
-    mCopies[welded].push_back(uint32_t(vh.idx()));
+    ObjectMesh::UpdateState& state = object.updateState;
+    const uint32_t v = uint32_t(state.vertexSource.size());
+    state.vertexSource.push_back(state.weldRep[welded]);
+    state.splitVertices.push_back(v);
+    mCopies[welded].push_back(v);
+    mEdges.addVertex();
     ++object.stats.splitVertices;
-    return vh;
+    return v;
 }
 
-// A face OpenMesh refuses (an edge's third face, a flipped neighbour, a duplicate) goes onto
-// copies of its faulty corners: first copies made for earlier refused faces, so a whole second
-// sheet glued along a non-manifold edge stays connected to itself, then new ones, and at worst
-// three new vertices, which always works. The face is never dropped.
-void MeshBuilder::splitFace(ObjectMesh& object, VertexHandle vh[3])
+uint32_t MeshBuilder::halfedgeOf(uint32_t from, uint32_t to) const
 {
-    const Mesh& mesh = object.mesh;
-    const ObjectMesh::UpdateState& state = object.updateState;
-    uint32_t welded[3];
-    for (int k = 0; k < 3; ++k) welded[k] = state.weld[state.vertexSource[vh[k].idx()]];
-    ++object.stats.splitFaces;
-    unsigned bad = refusedCorners(mesh, vh);
+    const uint32_t e = mEdges.find(from, to);
+    if (e == EdgeLists::kNone) return kNoIndex;
+    return 2 * e + (mEdges.ends()[2 * size_t(e)] == from ? 0 : 1);
+}
+
+// A bit per corner on a directed edge that another face already runs along (OpenMesh's
+// "complex edge"). Edges to a kFresh corner are free.
+unsigned MeshBuilder::conflicts(const uint32_t v[3]) const
+{
+    unsigned bad = 0;
     for (int k = 0; k < 3; ++k) {
-        if (!(bad & (1u << k))) continue;
-        VertexHandle pick;
-        const auto it = mCopies.find(welded[k]);
-        if (it != mCopies.end()) {
+        const int next = (k + 1) % 3;
+        if (v[k] == kFresh || v[next] == kFresh) continue;
+        const uint32_t h = halfedgeOf(v[k], v[next]);
+        if (h != kNoIndex && (mEdgeUsed[h >> 1] & (1u << (h & 1))))
+            bad |= (1u << k) | (1u << next);
+    }
+    return bad;
+}
+
+// Adds face f on vertices v, or, when one of its directed edges is taken (an edge's third
+// face, a flipped neighbour, a duplicate), on copies of the corners at fault: first copies
+// made for earlier refused faces, so a second sheet glued along a non-manifold edge stays
+// connected to itself, else new ones. The face is never dropped.
+void MeshBuilder::placeFace(ObjectMesh& object, uint32_t f, uint32_t v[3])
+{
+    unsigned bad = conflicts(v);
+    if (bad != 0) {
+        ++object.stats.splitFaces;
+        const ObjectMesh::UpdateState& state = object.updateState;
+        uint32_t welded[3];
+        for (int k = 0; k < 3; ++k) welded[k] = state.weld[state.vertexSource[v[k]]];
+        for (int k = 0; k < 3; ++k) {
+            if (!(bad & (1u << k))) continue;
+            const uint32_t original = v[k];
+            v[k] = kFresh;
+            const auto it = mCopies.find(welded[k]);
+            if (it == mCopies.end()) continue;
             const std::vector<uint32_t>& copies = it->second;
             for (size_t j = copies.size(), tried = 0; j-- > 0 && tried < kCopiesTried; ++tried) {
-                const VertexHandle candidate(int(copies[j]));
-                if (candidate != vh[k] && mesh.is_boundary(candidate)) {
-                    pick = candidate;
-                    break;
-                }
+                if (copies[j] == original) continue;
+                v[k] = copies[j];
+                if (!(conflicts(v) & (1u << k))) break;
+                v[k] = kFresh;
             }
         }
-        vh[k] = pick.is_valid() ? pick : copyOf(object, welded[k]);
+        // All faulty corners on copies or none: a face that reached an earlier copy sheet
+        // at one vertex only would just make a bow-tie there. Whatever still conflicts gets
+        // new vertices; edges to those are always free.
+        bool partial = false;
+        for (int k = 0; k < 3; ++k) partial |= (bad & (1u << k)) && v[k] == kFresh;
+        if (partial) {
+            for (int k = 0; k < 3; ++k) {
+                if (bad & (1u << k)) v[k] = kFresh;
+            }
+        }
+        const unsigned remaining = conflicts(v);
+        for (int k = 0; k < 3; ++k) {
+            if (remaining & (1u << k)) v[k] = kFresh;
+        }
+        for (int k = 0; k < 3; ++k) {
+            if (v[k] == kFresh) v[k] = copyOf(object, welded[k]);
+        }
     }
-    bad = refusedCorners(mesh, vh);
     for (int k = 0; k < 3; ++k) {
-        if (bad & (1u << k)) vh[k] = copyOf(object, welded[k]);
-    }
-    if (refusedCorners(mesh, vh) != 0) {
-        for (int k = 0; k < 3; ++k) vh[k] = copyOf(object, welded[k]);
+        const uint32_t a = v[k], b = v[(k + 1) % 3];
+        uint32_t e = mEdges.find(a, b);
+        if (e == EdgeLists::kNone) {
+            e = mEdges.insert(a, b);
+            mEdgeUsed.push_back(0);
+        }
+        const uint32_t h = 2 * e + (mEdges.ends()[2 * size_t(e)] == a ? 0 : 1);
+        mEdgeUsed[e] |= uint8_t(1u << (h & 1));
+        mFaceHalfedges[3 * size_t(f) + k] = h;
+        object.faceVertices[3 * size_t(f) + k] = a;
     }
 }
 
-void MeshBuilder::addFace(ObjectMesh& object, uint32_t f, VertexHandle vh[3])
+// Writes the edges and faces into OpenMesh's arrays: the halfedge 2e runs ends[2e] ->
+// ends[2e+1]; a face's halfedge points to its corner 0, as add_face does.
+void MeshBuilder::fillMesh(ObjectMesh& object)
 {
     Mesh& mesh = object.mesh;
-    if (refusedCorners(mesh, vh) != 0) splitFace(object, vh);
-    if (!mesh.add_face(vh[0], vh[1], vh[2]).is_valid()) {
-        // Not expected (refusedCorners mirrors add_face), but never lose the face.
-        const ObjectMesh::UpdateState& state = object.updateState;
-        for (int k = 0; k < 3; ++k)
-            vh[k] = copyOf(object, state.weld[state.vertexSource[vh[k].idx()]]);
-        mesh.add_face(vh[0], vh[1], vh[2]);
+    const uint32_t vertexCount = uint32_t(object.updateState.vertexSource.size());
+    const uint32_t edgeCount = uint32_t(mEdgeUsed.size());
+    const uint32_t faceCount = uint32_t(object.faceVertices.size() / 3);
+    const std::vector<uint32_t>& ends = mEdges.ends();
+    mesh.clean();
+    mesh.resize(vertexCount, edgeCount, faceCount);
+    for (uint32_t e = 0; e < edgeCount; ++e) {
+        mesh.set_vertex_handle(HalfedgeHandle(int(2 * e)), VertexHandle(int(ends[2 * e + 1])));
+        mesh.set_vertex_handle(HalfedgeHandle(int(2 * e + 1)), VertexHandle(int(ends[2 * e])));
     }
-    for (int k = 0; k < 3; ++k) object.faceVertices[3 * size_t(f) + k] = uint32_t(vh[k].idx());
+    mCornerCount.assign(vertexCount, 0);
+    for (uint32_t f = 0; f < faceCount; ++f) {
+        const uint32_t* h = &mFaceHalfedges[3 * size_t(f)];
+        const uint32_t* fv = &object.faceVertices[3 * size_t(f)];
+        const FaceHandle fh{int(f)};
+        for (int k = 0; k < 3; ++k) {
+            const HalfedgeHandle heh(int(h[k]));
+            mesh.set_face_handle(heh, fh);
+            mesh.set_next_halfedge_handle(heh, HalfedgeHandle(int(h[(k + 1) % 3])));
+            mesh.set_halfedge_handle(VertexHandle(int(fv[k])), heh); // outgoing from corner k
+            ++mCornerCount[fv[k]];
+        }
+        mesh.set_halfedge_handle(fh, HalfedgeHandle(int(h[2])));
+    }
 }
 
-// OpenMesh accepts a bow-tie (two fans of faces meeting at one vertex) but circulating such a
-// vertex, its normal and stroke chaining through it are ill-defined. Each fan after the first
-// (the one with the earliest face) gets its own copy of the vertex. Returns true when faces
-// moved; the caller then rebuilds the connectivity.
-bool MeshBuilder::splitFans(ObjectMesh& object)
+// Links the boundary halfedges into loops and gives boundary vertices a boundary halfedge,
+// which OpenMesh's circulators and is_boundary rely on. Returns false (and lists them in
+// mFanVertices) when at some vertex several fans of faces meet: OpenMesh walks only one.
+bool MeshBuilder::linkBoundaries(ObjectMesh& object)
 {
-    const Mesh& mesh = object.mesh;
-    const uint32_t vertexCount = uint32_t(mesh.n_vertices());
-    const uint32_t halfedgeCount = uint32_t(mesh.n_halfedges());
-    // One outgoing boundary halfedge per gap between fans: two or more means a bow-tie.
-    mBoundaryOut.assign(vertexCount, 0);
-    bool any = false;
-    for (uint32_t h = 0; h < halfedgeCount; ++h) {
-        const OpenMesh::HalfedgeHandle heh{int(h)};
-        if (mesh.face_handle(heh).is_valid()) continue;
-        uint8_t& n = mBoundaryOut[mesh.from_vertex_handle(heh).idx()];
-        if (n < 2 && ++n == 2) any = true;
-    }
-    if (!any) return false;
+    Mesh& mesh = object.mesh;
+    const uint32_t vertexCount = uint32_t(mCornerCount.size());
+    const uint32_t halfedgeCount = uint32_t(2 * mEdgeUsed.size());
+    auto hasFace = [&](uint32_t h) { return (mEdgeUsed[h >> 1] >> (h & 1)) & 1u; };
+    const std::vector<uint32_t>& ends = mEdges.ends();
+    auto from = [&](uint32_t h) { return ends[h]; }; // 2e: ends[2e], 2e+1: ends[2e+1]
+    auto next = [&](uint32_t h) { return uint32_t(mesh.next_halfedge_handle(HalfedgeHandle(int(h))).idx()); };
 
-    bool moved = false;
-    ObjectMesh::UpdateState& state = object.updateState;
-    std::vector<uint32_t> faces, parent, copyOfRoot;
+    mOutBoundary.assign(vertexCount, kNoIndex);
+    mFanVertices.clear();
+    for (uint32_t h = 0; h < halfedgeCount; ++h) {
+        if (hasFace(h)) continue;
+        uint32_t& out = mOutBoundary[from(h)];
+        if (out == kNoIndex) out = h;
+        else mFanVertices.push_back(from(h)); // a second open fan
+    }
     for (uint32_t v = 0; v < vertexCount; ++v) {
-        if (mBoundaryOut[v] < 2) continue;
-        const VertexHandle vh{int(v)};
-        faces.clear();
-        for (const OpenMesh::HalfedgeHandle heh : mesh.voh_range(vh)) {
-            const OpenMesh::FaceHandle fh = mesh.face_handle(heh);
-            if (fh.is_valid()) faces.push_back(uint32_t(fh.idx()));
+        const uint32_t corners = mCornerCount[v];
+        uint32_t faces = 0;
+        if (mOutBoundary[v] != kNoIndex) {
+            // Open fan: from the face after the outgoing boundary to the incoming boundary.
+            for (uint32_t h = mOutBoundary[v] ^ 1u; faces <= corners;) {
+                ++faces;
+                const uint32_t opposite = next(h) ^ 1u;
+                if (!hasFace(opposite)) break;
+                h = opposite;
+            }
+        } else {
+            // Closed fan: around until the first outgoing halfedge comes back.
+            const uint32_t first = uint32_t(mesh.halfedge_handle(VertexHandle(int(v))).idx());
+            uint32_t h = first;
+            do {
+                ++faces;
+                if (!hasFace(h ^ 1u)) {
+                    faces = 0;
+                    break;
+                }
+                h = next(h ^ 1u);
+            } while (h != first && faces <= corners);
         }
-        std::sort(faces.begin(), faces.end());
-        // Union-find over the faces around v (sorted, so a set's root is its earliest face):
-        // faces that share an edge at v are one fan.
-        parent.resize(faces.size());
-        for (size_t i = 0; i < parent.size(); ++i) parent[i] = uint32_t(i);
-        auto local = [&](OpenMesh::FaceHandle fh) {
-            return uint32_t(std::lower_bound(faces.begin(), faces.end(), uint32_t(fh.idx())) -
-                            faces.begin());
-        };
-        auto root = [&](uint32_t i) {
-            while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        if (faces != corners) mFanVertices.push_back(v);
+    }
+    if (!mFanVertices.empty()) return false;
+
+    for (uint32_t h = 0; h < halfedgeCount; ++h) {
+        if (hasFace(h)) continue;
+        const uint32_t to = from(h ^ 1u);
+        mesh.set_next_halfedge_handle(HalfedgeHandle(int(h)), HalfedgeHandle(int(mOutBoundary[to])));
+    }
+    for (uint32_t v = 0; v < vertexCount; ++v) {
+        if (mOutBoundary[v] != kNoIndex)
+            mesh.set_halfedge_handle(VertexHandle(int(v)), HalfedgeHandle(int(mOutBoundary[v])));
+    }
+    return true;
+}
+
+// At each vertex of mFanVertices, the fan with the earliest face keeps the vertex and every
+// other fan (faces around it that share edges) gets a copy. With everyFace, every face gets
+// its own three vertices instead: the last resort, always manifold.
+void MeshBuilder::splitFans(ObjectMesh& object, bool everyFace)
+{
+    ObjectMesh::UpdateState& state = object.updateState;
+    std::vector<uint32_t>& faceVertices = object.faceVertices;
+    const uint32_t faceCount = uint32_t(faceVertices.size() / 3);
+    auto copyVertex = [&](uint32_t v) {
+        const uint32_t copy = uint32_t(state.vertexSource.size());
+        state.vertexSource.push_back(state.vertexSource[v]);
+        state.splitVertices.push_back(copy);
+        ++object.stats.splitVertices;
+        return copy;
+    };
+    if (everyFace) {
+        for (uint32_t f = 1; f < faceCount; ++f) {
+            for (int k = 0; k < 3; ++k) faceVertices[3 * f + k] = copyVertex(faceVertices[3 * f + k]);
+            ++object.stats.splitFaces;
+        }
+        return;
+    }
+
+    std::sort(mFanVertices.begin(), mFanVertices.end());
+    mFanVertices.erase(std::unique(mFanVertices.begin(), mFanVertices.end()), mFanVertices.end());
+    std::vector<std::pair<uint32_t, uint32_t>> corners; // (vertex, face), by vertex then face
+    for (uint32_t f = 0; f < faceCount; ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = faceVertices[3 * f + k];
+            if (std::binary_search(mFanVertices.begin(), mFanVertices.end(), v))
+                corners.emplace_back(v, f);
+        }
+    }
+    std::sort(corners.begin(), corners.end());
+    std::vector<uint32_t> root, copyOfRoot;
+    for (size_t begin = 0; begin < corners.size();) {
+        const uint32_t v = corners[begin].first;
+        size_t end = begin;
+        while (end < corners.size() && corners[end].first == v) ++end;
+        const size_t n = end - begin;
+        // Faces around v sharing another vertex share that edge: one fan. Valences are small.
+        root.resize(n);
+        for (size_t i = 0; i < n; ++i) root[i] = uint32_t(i);
+        auto find = [&](uint32_t i) {
+            while (root[i] != i) i = root[i] = root[root[i]];
             return i;
         };
-        for (const OpenMesh::HalfedgeHandle heh : mesh.voh_range(vh)) {
-            const OpenMesh::FaceHandle a = mesh.face_handle(heh);
-            const OpenMesh::FaceHandle b = mesh.opposite_face_handle(heh);
-            if (!a.is_valid() || !b.is_valid()) continue;
-            const uint32_t ra = root(local(a)), rb = root(local(b));
-            if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
-        }
-        // Fan 0 (with the earliest face) keeps v; every other fan gets a copy.
-        copyOfRoot.assign(faces.size(), kNoIndex);
-        for (uint32_t i = 0; i < faces.size(); ++i) {
-            const uint32_t r = root(i);
-            if (r == 0) continue;
-            if (copyOfRoot[r] == kNoIndex) {
-                copyOfRoot[r] = uint32_t(state.vertexSource.size());
-                state.vertexSource.push_back(state.vertexSource[v]);
-                ++object.stats.splitVertices;
+        for (size_t i = 0; i < n; ++i) {
+            const uint32_t* a = &faceVertices[3 * size_t(corners[begin + i].second)];
+            for (size_t j = i + 1; j < n; ++j) {
+                const uint32_t* b = &faceVertices[3 * size_t(corners[begin + j].second)];
+                bool shared = false;
+                for (int x = 0; x < 3 && !shared; ++x) {
+                    for (int y = 0; y < 3 && !shared; ++y) shared = a[x] != v && a[x] == b[y];
+                }
+                if (!shared) continue;
+                const uint32_t ri = find(uint32_t(i)), rj = find(uint32_t(j));
+                if (ri != rj) root[std::max(ri, rj)] = std::min(ri, rj);
             }
-            uint32_t* fv = &object.faceVertices[3 * size_t(faces[i])];
+        }
+        copyOfRoot.assign(n, kNoIndex);
+        for (size_t i = 0; i < n; ++i) {
+            const uint32_t r = find(uint32_t(i));
+            if (r == 0) continue; // the fan of the earliest face keeps v
+            if (copyOfRoot[r] == kNoIndex) copyOfRoot[r] = copyVertex(v);
+            uint32_t* fv = &faceVertices[3 * size_t(corners[begin + i].second)];
             for (int k = 0; k < 3; ++k) {
                 if (fv[k] == v) fv[k] = copyOfRoot[r];
             }
             ++object.stats.splitFaces;
-            moved = true;
         }
+        begin = end;
     }
-    return moved;
+}
+
+void MeshBuilder::connect(ObjectMesh& object)
+{
+    const uint32_t faceCount = uint32_t(object.faceVertices.size() / 3);
+    for (int round = 0;; ++round) {
+        mEdges.reset(object.updateState.vertexSource.size(), size_t(faceCount) * 3 / 2 + 16);
+        mEdgeUsed.clear();
+        mFaceHalfedges.resize(size_t(faceCount) * 3);
+        for (uint32_t f = 0; f < faceCount; ++f) {
+            uint32_t v[3] = {object.faceVertices[3 * size_t(f)],
+                             object.faceVertices[3 * size_t(f) + 1],
+                             object.faceVertices[3 * size_t(f) + 2]};
+            placeFace(object, f, v);
+        }
+        fillMesh(object);
+        if (linkBoundaries(object)) return;
+        splitFans(object, round + 1 >= kFanRounds);
+    }
 }
 
 void MeshBuilder::buildEdges(ObjectMesh& object)
@@ -237,7 +353,7 @@ void MeshBuilder::buildEdges(ObjectMesh& object)
         EdgeInfo& info = object.edges[e];
         info.v0 = uint32_t(mesh.to_vertex_handle(h1).idx());
         info.v1 = uint32_t(mesh.to_vertex_handle(h0).idx());
-        const OpenMesh::FaceHandle fh0 = mesh.face_handle(h0), fh1 = mesh.face_handle(h1);
+        const FaceHandle fh0 = mesh.face_handle(h0), fh1 = mesh.face_handle(h1);
         info.f0 = fh0.is_valid() ? uint32_t(fh0.idx()) : kNoIndex;
         info.f1 = fh1.is_valid() ? uint32_t(fh1.idx()) : kNoIndex;
         info.classes = (fh0.is_valid() && fh1.is_valid()) ? 0 : kEdgeBorder;
@@ -261,10 +377,9 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
     ObjectMesh::UpdateState& state = object.updateState;
     BuildStats& stats = object.stats;
 
-    const uint32_t total = totalVertices(batches, count);
+    size_t total = 0;
+    for (size_t b = 0; b < count; ++b) total += batches[b].vertices.size();
     object.sourceVertices.reserve(total);
-    state.batchModes.reserve(count);
-    state.batchCounts.reserve(count);
     for (size_t b = 0; b < count; ++b) {
         const std::vector<Vertex>& vertices = batches[b].vertices;
         object.sourceVertices.insert(object.sourceVertices.end(), vertices.begin(),
@@ -272,46 +387,46 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
         state.batchModes.push_back(batches[b].mode);
         state.batchCounts.push_back(uint32_t(vertices.size()));
     }
+    state.batchMaterials.resize(count);
     stats.batches = uint32_t(count);
-    stats.sourceVertices = total;
+    stats.sourceVertices = uint32_t(total);
     const Vertex* sources = object.sourceVertices.data();
 
     glm::vec3 lo(FLT_MAX), hi(-FLT_MAX);
-    for (uint32_t i = 0; i < total; ++i) {
+    for (size_t i = 0; i < total; ++i) {
         const glm::vec3& p = sources[i].position;
         if (!isFinite(p)) continue;
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
     const float diagonal = lo.x <= hi.x ? glm::length(hi - lo) : 0.0f;
-    const float tolerance = std::isfinite(diagonal) ? params.weldTolerance * diagonal : 0.0f;
+    state.weldTolerance = std::isfinite(diagonal) ? params.weldTolerance * diagonal : 0.0f;
     stats.weldedVertices =
-        mWelder.weld(sources, total, lo, hi, tolerance, state.weld, state.weldRep);
+        mWelder.weld(sources, total, lo, hi, state.weldTolerance, state.weld, state.weldRep);
 
     // Assembly: keep the triangles with three finite, distinct, non-collinear corners.
     const uint32_t* weld = state.weld.data();
     mTriangles.clear();
-    state.batchFaceEnd.reserve(count);
     uint32_t base = 0;
     for (size_t b = 0; b < count; ++b) {
         const uint32_t n = state.batchCounts[b];
         stats.incompleteVertices += assembleTriangles(
-            batches[b].mode, n, [&](uint32_t a, uint32_t bb, uint32_t c) {
-                a += base;
-                bb += base;
-                c += base;
+            batches[b].mode, n, [&](uint32_t i0, uint32_t i1, uint32_t i2) {
+                i0 += base;
+                i1 += base;
+                i2 += base;
                 ++stats.triangles;
-                const uint32_t wa = weld[a], wb = weld[bb], wc = weld[c];
-                if (wa == kNoIndex || wb == kNoIndex || wc == kNoIndex) {
+                const uint32_t w0 = weld[i0], w1 = weld[i1], w2 = weld[i2];
+                if (w0 == kNoIndex || w1 == kNoIndex || w2 == kNoIndex) {
                     ++stats.nonFiniteTriangles;
-                } else if (wa == wb || wb == wc || wa == wc) {
+                } else if (w0 == w1 || w1 == w2 || w0 == w2) {
                     ++stats.degenerateTriangles;
-                } else if (zeroArea(sources[a].position, sources[bb].position,
-                                    sources[c].position)) {
+                } else if (zeroArea(sources[i0].position, sources[i1].position,
+                                    sources[i2].position)) {
                     ++stats.degenerateTriangles;
-                    state.areaDropped.insert(state.areaDropped.end(), {a, bb, c});
+                    state.areaDropped.insert(state.areaDropped.end(), {i0, i1, i2});
                 } else {
-                    mTriangles.insert(mTriangles.end(), {a, bb, c});
+                    mTriangles.insert(mTriangles.end(), {i0, i1, i2});
                 }
             });
         state.batchFaceEnd.push_back(uint32_t(mTriangles.size() / 3));
@@ -319,43 +434,25 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
     }
     const uint32_t faceCount = uint32_t(mTriangles.size() / 3);
 
-    // Connectivity. Every kept triangle becomes a face, in drawing order.
-    Mesh& mesh = object.mesh;
-    mesh.reserve(stats.weldedVertices, faceCount * 3 / 2 + 16, faceCount);
-    mMeshVertex.assign(stats.weldedVertices, kNoIndex);
-    mCopies.clear();
+    // Vertices in order of first use; every kept triangle becomes a face, in drawing order.
+    state.weldVertex.assign(stats.weldedVertices, kNoIndex);
     state.vertexSource.reserve(stats.weldedVertices);
-    object.faceVertices.resize(size_t(faceCount) * 3);
-    for (uint32_t f = 0; f < faceCount; ++f) {
-        const uint32_t* corners = &mTriangles[3 * size_t(f)];
-        VertexHandle vh[3] = {vertexFor(object, weld[corners[0]]),
-                              vertexFor(object, weld[corners[1]]),
-                              vertexFor(object, weld[corners[2]])};
-        addFace(object, f, vh);
-    }
-    if (splitFans(object)) {
-        // Some faces moved to new vertices: connect everything again on the final vertices.
-        const uint32_t vertexCount = uint32_t(state.vertexSource.size());
-        mesh = Mesh();
-        mesh.reserve(vertexCount, faceCount * 3 / 2 + 16, faceCount);
-        for (uint32_t v = 0; v < vertexCount; ++v) mesh.new_vertex();
-        for (uint32_t f = 0; f < faceCount; ++f) {
-            const uint32_t* fv = &object.faceVertices[3 * size_t(f)];
-            VertexHandle vh[3] = {VertexHandle(int(fv[0])), VertexHandle(int(fv[1])),
-                                  VertexHandle(int(fv[2]))};
-            addFace(object, f, vh);
-        }
-    }
+    object.faceVertices.resize(mTriangles.size());
+    for (size_t c = 0; c < mTriangles.size(); ++c)
+        object.faceVertices[c] = vertexFor(object, weld[mTriangles[c]]);
+    mCopies.clear();
+    connect(object);
+
     object.faceCorners.assign(mTriangles.begin(), mTriangles.end());
     object.faceMaterials.resize(faceCount);
     fillMaterials(object, batches, count);
     buildEdges(object);
+    gatherSources(object, mGeometry);
     computeGeometry(object, params.creaseCosine, mGeometry);
     return result;
 }
 
-bool MeshBuilder::prepareUpdate(const ObjectMesh& object, const Batch* batches, size_t count,
-                                const ReconstructParams& params)
+bool MeshBuilder::prepareUpdate(const ObjectMesh& object, const Batch* batches, size_t count)
 {
     const ObjectMesh::UpdateState& state = object.updateState;
     if (count != state.batchModes.size()) return false;
@@ -363,51 +460,57 @@ bool MeshBuilder::prepareUpdate(const ObjectMesh& object, const Batch* batches, 
         if (batches[b].mode != state.batchModes[b]) return false;
         if (batches[b].vertices.size() != state.batchCounts[b]) return false;
     }
+    // One pass, a batch at a time while it is in the cache: copy, check, gather.
     mStaged.clear();
     mStaged.reserve(object.sourceVertices.size());
-    for (size_t b = 0; b < count; ++b)
-        mStaged.insert(mStaged.end(), batches[b].vertices.begin(), batches[b].vertices.end());
-
-    const Vertex* staged = mStaged.data();
-    const size_t total = mStaged.size();
+    mGeometry.prepare(object.mesh.n_vertices());
+    mGeometry.areaSum.reserve(object.mesh.n_vertices()); // applyUpdate must not allocate
+    const float tol2 = state.weldTolerance * state.weldTolerance;
     const uint32_t* weld = state.weld.data();
-    glm::vec3 lo(FLT_MAX), hi(-FLT_MAX);
-    for (size_t i = 0; i < total; ++i) {
-        const glm::vec3& p = staged[i].position;
-        const bool finite = isFinite(p);
-        if (finite != (weld[i] != kNoIndex)) return false;
-        if (!finite) continue;
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    const float diagonal = lo.x <= hi.x ? glm::length(hi - lo) : 0.0f;
-    const float tolerance = std::isfinite(diagonal) ? params.weldTolerance * diagonal : 0.0f;
-    const float tol2 = tolerance * tolerance;
     const uint32_t* rep = state.weldRep.data();
-    for (size_t i = 0; i < total; ++i) {
-        if (weld[i] == kNoIndex) continue;
-        const uint32_t r = rep[weld[i]];
-        if (r == i) continue;
-        const glm::vec3 d = staged[i].position - staged[r].position;
-        if (!(glm::dot(d, d) <= tol2)) return false;
+    uint32_t i = 0;
+    for (size_t b = 0; b < count; ++b) {
+        const std::vector<Vertex>& vertices = batches[b].vertices;
+        mStaged.insert(mStaged.end(), vertices.begin(), vertices.end());
+        const Vertex* staged = mStaged.data();
+        for (const uint32_t end = i + uint32_t(vertices.size()); i < end; ++i) {
+            const Vertex& source = staged[i];
+            const uint32_t w = weld[i];
+            const bool finite = isFinite(source.position);
+            if (w == kNoIndex) {
+                if (finite) return false;
+                continue;
+            }
+            if (!finite) return false;
+            const uint32_t r = rep[w];
+            if (r != i) {
+                const glm::vec3 d = source.position - staged[r].position;
+                if (!(glm::dot(d, d) <= tol2)) return false;
+            }
+            mGeometry.add(state, source, i, w);
+        }
     }
+    const Vertex* staged = mStaged.data();
     const std::vector<uint32_t>& dropped = state.areaDropped;
     for (size_t t = 0; t + 2 < dropped.size(); t += 3) {
         if (!zeroArea(staged[dropped[t]].position, staged[dropped[t + 1]].position,
                       staged[dropped[t + 2]].position))
             return false;
     }
+    mGeometry.addSplitVertices(state, staged);
     return true;
 }
 
 void MeshBuilder::applyUpdate(ObjectMesh& object, const Batch* batches, size_t count,
                               const ReconstructParams& params)
 {
-    // Allocate before anything changes, so running out of memory leaves the mesh intact.
-    mGeometry.areaSum.reserve(object.mesh.n_vertices());
-    mGeometry.givenSum.reserve(object.mesh.n_vertices());
     object.sourceVertices.swap(mStaged);
-    fillMaterials(object, batches, count);
+    for (size_t b = 0; b < count; ++b) {
+        if (batches[b].materialId != object.updateState.batchMaterials[b]) {
+            fillMaterials(object, batches, count);
+            break;
+        }
+    }
     ++object.geometryVersion;
     computeGeometry(object, params.creaseCosine, mGeometry);
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "reconstruct/Batch.h"
+#include "reconstruct/EdgeLists.h"
 #include "reconstruct/MeshGeometry.h"
 #include "reconstruct/ObjectMesh.h"
 #include "reconstruct/ReconstructParams.h"
@@ -15,38 +16,55 @@
 namespace nprgl::reconstruct {
 
 // Turns the batches of one object into an ObjectMesh: primitive assembly, welding, OpenMesh
-// connectivity (splitting vertices for faces it would refuse), normals and edge classes. Keeps
-// scratch buffers between calls; one per thread. Throws std::bad_alloc only.
+// connectivity, normals and edge classes. Non-manifold input keeps every face: a face that
+// would reuse a directed edge (an edge's third face, a flipped neighbour, a duplicate) is
+// placed on copies of its vertices, and a vertex where several fans of faces meet (a bow-tie)
+// is copied once per extra fan; BuildStats counts both.
+//
+// The connectivity is written straight into OpenMesh's arrays for the whole mesh at once
+// (the same halfedge structure add_face makes, boundary loops included): Debian builds
+// OpenMesh with assertions, which made add_face half of the build time.
+//
+// Keeps scratch buffers between calls; one per thread. Throws std::bad_alloc only.
 class MeshBuilder {
 public:
     std::shared_ptr<ObjectMesh> build(const Batch* batches, size_t count,
                                       const ReconstructParams& params);
 
     // True when `object` can show batches[0, count) by moving its vertices: the same modes
-    // and vertex counts, the same vertices finite, every vertex still within the weld
+    // and vertex counts, the same vertices finite, every vertex still within the build's weld
     // tolerance of the one it was welded to, and no triangle dropped for zero area now with
     // an area. Vertices that have come together are not merged: the topology stays stable
-    // while a mesh animates. Stages the new vertices for applyUpdate().
-    bool prepareUpdate(const ObjectMesh& object, const Batch* batches, size_t count,
-                       const ReconstructParams& params);
-    // Installs the staged vertices and recomputes points, normals and edge classes.
+    // while a mesh animates. Stages the new vertices, positions and normals for applyUpdate();
+    // does not touch `object`.
+    bool prepareUpdate(const ObjectMesh& object, const Batch* batches, size_t count);
+    // Installs what prepareUpdate staged and recomputes normals and edge classes. Does not
+    // allocate, so running out of memory cannot leave `object` half updated.
     void applyUpdate(ObjectMesh& object, const Batch* batches, size_t count,
                      const ReconstructParams& params);
 
 private:
-    OpenMesh::VertexHandle vertexFor(ObjectMesh& object, uint32_t welded);
-    OpenMesh::VertexHandle copyOf(ObjectMesh& object, uint32_t welded);
-    void splitFace(ObjectMesh& object, OpenMesh::VertexHandle vh[3]);
-    void addFace(ObjectMesh& object, uint32_t f, OpenMesh::VertexHandle vh[3]);
-    bool splitFans(ObjectMesh& object);
+    uint32_t vertexFor(ObjectMesh& object, uint32_t welded);
+    uint32_t copyOf(ObjectMesh& object, uint32_t welded);
+    uint32_t halfedgeOf(uint32_t from, uint32_t to) const;
+    unsigned conflicts(const uint32_t v[3]) const;
+    void placeFace(ObjectMesh& object, uint32_t f, uint32_t v[3]);
+    void fillMesh(ObjectMesh& object);
+    bool linkBoundaries(ObjectMesh& object);
+    void splitFans(ObjectMesh& object, bool everyCorner);
+    void connect(ObjectMesh& object);
     void buildEdges(ObjectMesh& object);
 
     Welder mWelder;
     GeometryScratch mGeometry;
-    std::vector<uint32_t> mTriangles;  // kept triangles, source-vertex triples
-    std::vector<uint32_t> mMeshVertex; // per welded id: its mesh vertex, or kNoIndex
-    std::unordered_map<uint32_t, std::vector<uint32_t>> mCopies; // welded id -> split copies
-    std::vector<uint8_t> mBoundaryOut; // per vertex: outgoing boundary halfedges, up to 2
+    EdgeLists mEdges;
+    std::vector<uint32_t> mTriangles;     // kept triangles, source-vertex triples
+    std::vector<uint8_t> mEdgeUsed;       // per edge: bit i = halfedge 2e+i has a face
+    std::vector<uint32_t> mFaceHalfedges; // 3 per face
+    std::vector<uint32_t> mCornerCount;   // per vertex
+    std::vector<uint32_t> mOutBoundary;   // per vertex: its outgoing boundary halfedge
+    std::vector<uint32_t> mFanVertices;   // vertices where several fans meet
+    std::unordered_map<uint32_t, std::vector<uint32_t>> mCopies; // welded id -> copies
     std::vector<Vertex> mStaged;
 };
 

@@ -19,29 +19,50 @@ inline glm::vec3 normalizedOrZero(const glm::vec3& v)
 
 } // namespace
 
+void GeometryScratch::prepare(size_t vertexCount)
+{
+    points.resize(vertexCount);
+    givenSum.assign(vertexCount, glm::vec3(0.0f));
+}
+
+void GeometryScratch::addSplitVertices(const ObjectMesh::UpdateState& state,
+                                       const Vertex* sources)
+{
+    for (const uint32_t v : state.splitVertices) {
+        const Vertex& source = sources[state.vertexSource[v]];
+        points[v] = Mesh::Point(source.position.x, source.position.y, source.position.z);
+        if (source.hasNormal) givenSum[v] = source.normal;
+    }
+}
+
+void gatherSources(const ObjectMesh& object, GeometryScratch& scratch)
+{
+    const ObjectMesh::UpdateState& state = object.updateState;
+    scratch.prepare(object.mesh.n_vertices());
+    const Vertex* sources = object.sourceVertices.data();
+    const uint32_t count = uint32_t(object.sourceVertices.size());
+    for (uint32_t i = 0; i < count; ++i) {
+        const uint32_t w = state.weld[i];
+        if (w != kNoIndex) scratch.add(state, sources[i], i, w);
+    }
+    scratch.addSplitVertices(state, sources);
+}
+
 void computeGeometry(ObjectMesh& object, float creaseCosine, GeometryScratch& scratch)
 {
-    // Raw property arrays: the per-element property lookups cost more than the arithmetic.
+    // Raw property arrays: per-element property lookups cost more than the arithmetic.
     Mesh& mesh = object.mesh;
     std::vector<Mesh::Point>& points = mesh.property(mesh.points_pph()).data_vector();
     std::vector<Mesh::Normal>& vertexNormals =
         mesh.property(mesh.vertex_normals_pph()).data_vector();
     std::vector<Mesh::Normal>& faceNormals = mesh.property(mesh.face_normals_pph()).data_vector();
+    points.swap(scratch.points);
     const size_t vertexCount = points.size();
     const size_t faceCount = faceNormals.size();
-    const Vertex* sources = object.sourceVertices.data();
-    const uint32_t* vertexSource = object.updateState.vertexSource.data();
 
     scratch.areaSum.assign(vertexCount, glm::vec3(0.0f));
-    scratch.givenSum.assign(vertexCount, glm::vec3(0.0f));
-    for (size_t v = 0; v < vertexCount; ++v) {
-        const glm::vec3& p = sources[vertexSource[v]].position;
-        points[v] = Mesh::Point(p.x, p.y, p.z);
-    }
     glm::vec3* areaSum = scratch.areaSum.data();
-    glm::vec3* givenSum = scratch.givenSum.data();
     const uint32_t* faceVertices = object.faceVertices.data();
-    const uint32_t* faceCorners = object.faceCorners.data();
     for (size_t f = 0; f < faceCount; ++f) {
         const uint32_t* fv = faceVertices + 3 * f;
         const glm::vec3 p0 = toGlm(points[fv[0]]);
@@ -49,13 +70,11 @@ void computeGeometry(ObjectMesh& object, float creaseCosine, GeometryScratch& sc
         const glm::vec3 c = glm::cross(toGlm(points[fv[1]]) - p0, toGlm(points[fv[2]]) - p0);
         const glm::vec3 n = normalizedOrZero(c);
         faceNormals[f] = Mesh::Normal(n.x, n.y, n.z);
-        const uint32_t* fc = faceCorners + 3 * f;
-        for (int k = 0; k < 3; ++k) {
-            areaSum[fv[k]] += c;
-            const Vertex& corner = sources[fc[k]];
-            if (corner.hasNormal) givenSum[fv[k]] += corner.normal;
-        }
+        areaSum[fv[0]] += c;
+        areaSum[fv[1]] += c;
+        areaSum[fv[2]] += c;
     }
+    const glm::vec3* givenSum = scratch.givenSum.data();
     for (size_t v = 0; v < vertexCount; ++v) {
         // The program's normals where it gave any (and they do not cancel out).
         glm::vec3 n = normalizedOrZero(givenSum[v]);

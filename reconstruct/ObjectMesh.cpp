@@ -55,8 +55,9 @@ size_t ObjectMesh::byteSize() const
     bytes += vectorBytes(vertexEdges);
     const UpdateState& u = updateState;
     bytes += vectorBytes(u.batchModes) + vectorBytes(u.batchCounts) + vectorBytes(u.batchFaceEnd);
-    bytes += vectorBytes(u.weld) + vectorBytes(u.weldRep) + vectorBytes(u.vertexSource);
-    bytes += vectorBytes(u.areaDropped);
+    bytes += vectorBytes(u.batchMaterials) + vectorBytes(u.weld) + vectorBytes(u.weldRep);
+    bytes += vectorBytes(u.weldVertex) + vectorBytes(u.vertexSource);
+    bytes += vectorBytes(u.splitVertices) + vectorBytes(u.areaDropped);
     return bytes;
 }
 

@@ -53,9 +53,9 @@ struct BuildStats {
 // you use the mesh: one that only the cache holds may be updated in place by a later frame
 // (geometryVersion then changes, the topology never does).
 struct ObjectMesh {
-    // Connectivity, points, vertex normals (the program's: the normalised sum of its corner
-    // normals; else area-weighted face normals) and unit face normals (0 for a face that has
-    // become degenerate in an update).
+    // Connectivity, points, vertex normals (the program's: the normalised sum of the normals
+    // it gave at the source vertices welded into the vertex; where it gave none, area-weighted
+    // face normals) and unit face normals (0 for a face that became degenerate in an update).
     Mesh mesh;
     std::vector<Vertex> sourceVertices;  // the batches' vertices, concatenated
     std::vector<uint32_t> faceCorners;   // 3 per face: index into sourceVertices
@@ -86,13 +86,17 @@ struct ObjectMesh {
 
     // Internal to the Reconstructor: what updating moved positions without rebuilding needs.
     struct UpdateState {
-        std::vector<uint32_t> batchModes;   // per batch
-        std::vector<uint32_t> batchCounts;  // per batch: vertex count
-        std::vector<uint32_t> batchFaceEnd; // per batch: one past its last face
-        std::vector<uint32_t> weld;         // per source vertex: welded id; kNoIndex: not finite
-        std::vector<uint32_t> weldRep;      // per welded id: its first source vertex
-        std::vector<uint32_t> vertexSource; // per mesh vertex: the source vertex of its position
-        std::vector<uint32_t> areaDropped;  // source-vertex triples dropped for zero area
+        std::vector<uint32_t> batchModes;     // per batch
+        std::vector<uint32_t> batchCounts;    // per batch: vertex count
+        std::vector<uint32_t> batchMaterials; // per batch
+        std::vector<uint32_t> batchFaceEnd;   // per batch: one past its last face
+        std::vector<uint32_t> weld;           // per source vertex: welded id; kNoIndex: not finite
+        std::vector<uint32_t> weldRep;        // per welded id: its first source vertex
+        std::vector<uint32_t> weldVertex;     // per welded id: its mesh vertex, or kNoIndex
+        std::vector<uint32_t> vertexSource;   // per mesh vertex: the source of its position
+        std::vector<uint32_t> splitVertices;  // mesh vertices that are copies (non-manifold)
+        std::vector<uint32_t> areaDropped;    // source-vertex triples dropped for zero area
+        float weldTolerance = 0.0f;           // absolute, at the build
     } updateState;
 };
 

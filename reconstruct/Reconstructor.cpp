@@ -91,7 +91,7 @@ std::shared_ptr<const ObjectMesh> Reconstructor::obtain(const Batch* batches,
         if (std::binary_search(mFrameKeys.begin(), mFrameKeys.end(), entry->contentKey))
             continue;
         if (attempts++ == kUpdateAttempts) break;
-        if (!mBuilder.prepareUpdate(*entry->mesh, batches, group.count, mParams)) continue;
+        if (!mBuilder.prepareUpdate(*entry->mesh, batches, group.count)) continue;
         try {
             // Someone still holds the old mesh: update a copy, theirs stays as it was.
             if (entry->mesh.use_count() > 1)

@@ -130,3 +130,43 @@ TEST(StateTracker, TheOverlayIsNotThreeDimensional)
     EXPECT_GT(deep, 0u);
     EXPECT_GT(flat, 0u); // the HUD panel and bar
 }
+
+// From a capture to meshes: the tracker's batches through the reconstruction.
+#include "shim/FrameExport.h"
+
+TEST(Reconstruction, EachGlxgearsGearIsOneClosedObject)
+{
+    reconstruct::Reconstructor reconstructor;
+    std::vector<reconstruct::FrameObject> objects =
+        reconstructor.build(reconstructionBatches(frameBatches("glxgears", 2)));
+    ASSERT_EQ(objects.size(), 3u);
+    for (const reconstruct::FrameObject& o : objects) {
+        ASSERT_TRUE(o.mesh);
+        EXPECT_EQ(o.mesh->borderEdgeCount(), 0u);
+        EXPECT_TRUE(o.mesh->closed());
+        EXPECT_EQ(o.mesh->eulerCharacteristic(), 0); // a gear is a ring: a torus
+        EXPECT_EQ(o.mesh->stats.splitFaces, 0u);
+        EXPECT_EQ(o.batchCount, 6u);
+    }
+    // The next frame only turns the gears: every object comes from the cache.
+    reconstructor.build(reconstructionBatches(frameBatches("glxgears", 3)));
+    EXPECT_EQ(reconstructor.cacheStats().hits, 3u);
+    EXPECT_EQ(reconstructor.cacheStats().rebuilds, 3u);
+}
+
+TEST(Reconstruction, ImmediateModeShapesWeldAcrossTheirBatches)
+{
+    reconstruct::Reconstructor reconstructor;
+    std::vector<reconstruct::FrameObject> objects =
+        reconstructor.build(reconstructionBatches(frameBatches("immediate", 1)));
+    ASSERT_EQ(objects.size(), 6u); // torus, sphere, cone, prism, cube, octahedron
+    // The torus (quad strips) is a closed ring, every other shape a closed sphere-like mesh.
+    EXPECT_EQ(objects[0].mesh->eulerCharacteristic(), 0);
+    for (size_t i = 0; i < objects.size(); ++i) {
+        EXPECT_TRUE(objects[i].mesh->closed()) << i << " split faces "
+                                               << objects[i].mesh->stats.splitFaces
+                                               << " degenerate "
+                                               << objects[i].mesh->stats.degenerateTriangles;
+        if (i > 0) EXPECT_EQ(objects[i].mesh->eulerCharacteristic(), 2) << i;
+    }
+}

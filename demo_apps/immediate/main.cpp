@@ -218,10 +218,11 @@ private:
         std::vector<Batch> batches;
         for (int i = 0; i + 1 < stacks; ++i) {
             Batch strip{GL_TRIANGLE_STRIP};
+            // Upper ring first: the strip's triangles then wind outwards, like the fans.
             for (int j = 0; j <= slices; ++j) {
                 float angle = 2.0f * pi * j / slices;
-                sidePoint(strip, angle, static_cast<float>(i) / stacks);
                 sidePoint(strip, angle, static_cast<float>(i + 1) / stacks);
+                sidePoint(strip, angle, static_cast<float>(i) / stacks);
             }
             batches.push_back(std::move(strip));
         }
@@ -249,7 +250,9 @@ private:
         const float radius = 0.75f;
         const float height = 1.3f;
         int rows = tess(4);
-        int columns = tess(2);
+        // Walls are split across their height only: the caps meet them at the corners alone,
+        // so the prism is watertight (no T-junction).
+        const int columns = 1;
         auto corner = [&](int i, float* p) {
             float angle = 2.0f * pi * i / sides;
             p[0] = radius * std::cos(angle);
