@@ -1,6 +1,7 @@
 #include "cli/CaptureCommands.h"
 
 #include "capture/CaptureReader.h"
+#include "shim/CaptureBlobs.h"
 #include "shim/FrameExport.h"
 #include "shim/Replayer.h"
 #include "shim/StateTracker.h"
@@ -28,23 +29,6 @@ bool parseFrames(const std::string& text, FrameSet& out, std::string& error)
 {
     return text.empty() || FrameSet::parse(text, out, error);
 }
-
-class ReaderBlobs : public BlobSource {
-public:
-    explicit ReaderBlobs(const capture::CaptureReader& reader) : mReader(reader) {}
-    const std::vector<uint8_t>* blob(uint64_t hash, std::string& error) override
-    {
-        auto it = mCache.find(hash);
-        if (it != mCache.end()) return &it->second;
-        std::vector<uint8_t> data;
-        if (!mReader.readBlob(hash, data, error)) return nullptr;
-        return &mCache.emplace(hash, std::move(data)).first->second;
-    }
-
-private:
-    const capture::CaptureReader& mReader;
-    std::map<uint64_t, std::vector<uint8_t>> mCache;
-};
 
 } // namespace
 
@@ -86,7 +70,7 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
     if (!parseFrames(framesText, frames, error)) return fail("--frames: " + error);
     capture::CaptureReader reader;
     if (!reader.open(file, error)) return fail(error);
-    ReaderBlobs blobs(reader);
+    CaptureBlobs blobs(reader);
     std::vector<uint8_t> calls;
     const auto& list = reader.frames();
     for (size_t i = 0; i < list.size(); ++i) {
@@ -123,7 +107,7 @@ int infoCommand(const std::string& file)
 
     std::map<uint32_t, uint64_t> perContext;
     std::map<std::string, uint64_t> calls;
-    ReaderBlobs blobs(reader);
+    CaptureBlobs blobs(reader);
     std::vector<uint8_t> data;
     uint64_t rawBytes = 0;
     const auto& list = reader.frames();
@@ -181,7 +165,7 @@ int exportCommand(const std::string& file, uint64_t frame, const std::string& ou
     if (!reader.open(file, error)) return fail(error);
     const auto& frames = reader.frames();
     uint32_t ctx = context ? context : (frames.empty() ? 1 : frames.front().contextId);
-    ReaderBlobs blobs(reader);
+    CaptureBlobs blobs(reader);
     StateTracker tracker;
     std::vector<uint8_t> calls;
     // Every earlier frame runs too: it builds the lists, buffers and arrays frame N uses.

@@ -346,6 +346,7 @@ void MeshBuilder::buildEdges(ObjectMesh& object)
     const uint32_t edgeCount = uint32_t(mesh.n_edges());
     const uint32_t vertexCount = uint32_t(mesh.n_vertices());
     object.edges.resize(edgeCount);
+    object.edgeClasses.resize(edgeCount);
     std::vector<uint32_t>& start = object.vertexEdgeStart;
     start.assign(vertexCount + 1, 0);
     for (uint32_t e = 0; e < edgeCount; ++e) {
@@ -356,7 +357,7 @@ void MeshBuilder::buildEdges(ObjectMesh& object)
         const FaceHandle fh0 = mesh.face_handle(h0), fh1 = mesh.face_handle(h1);
         info.f0 = fh0.is_valid() ? uint32_t(fh0.idx()) : kNoIndex;
         info.f1 = fh1.is_valid() ? uint32_t(fh1.idx()) : kNoIndex;
-        info.classes = (fh0.is_valid() && fh1.is_valid()) ? 0 : kEdgeBorder;
+        object.edgeClasses[e] = (fh0.is_valid() && fh1.is_valid()) ? 0 : kEdgeBorder;
         ++start[info.v0 + 1];
         ++start[info.v1 + 1];
     }

@@ -16,6 +16,8 @@ struct GeometryScratch {
     std::vector<Mesh::Point> points;
     std::vector<glm::vec3> givenSum;
     std::vector<glm::vec3> areaSum;
+    // Source vertices gathered without a normal; at 0 no area-weighted sums are needed.
+    size_t missingNormals = 0;
 
     // Sizes points and givenSum for `vertexCount` vertices (givenSum zeroed).
     void prepare(size_t vertexCount);
@@ -30,6 +32,7 @@ struct GeometryScratch {
             points[v] = Mesh::Point(p.x, p.y, p.z);
         }
         if (source.hasNormal) givenSum[v] += source.normal;
+        else ++missingNormals;
     }
     // Vertices split off for non-manifold faces: the position and normal of their source.
     void addSplitVertices(const ObjectMesh::UpdateState& state, const Vertex* sources);

@@ -33,7 +33,7 @@ glm::vec3 ObjectMesh::faceNormal(uint32_t f) const
 uint32_t ObjectMesh::borderEdgeCount() const
 {
     uint32_t count = 0;
-    for (const EdgeInfo& e : edges) count += (e.classes & kEdgeBorder) ? 1 : 0;
+    for (const uint8_t classes : edgeClasses) count += (classes & kEdgeBorder) ? 1 : 0;
     return count;
 }
 
@@ -51,7 +51,8 @@ size_t ObjectMesh::byteSize() const
     bytes += mesh.n_edges() * 2 * 16;
     bytes += mesh.n_faces() * (4 + sizeof(Mesh::Normal));
     bytes += vectorBytes(sourceVertices) + vectorBytes(faceCorners) + vectorBytes(faceVertices);
-    bytes += vectorBytes(faceMaterials) + vectorBytes(edges) + vectorBytes(vertexEdgeStart);
+    bytes += vectorBytes(faceMaterials) + vectorBytes(edges) + vectorBytes(edgeClasses);
+    bytes += vectorBytes(vertexEdgeStart);
     bytes += vectorBytes(vertexEdges);
     const UpdateState& u = updateState;
     bytes += vectorBytes(u.batchModes) + vectorBytes(u.batchCounts) + vectorBytes(u.batchFaceEnd);

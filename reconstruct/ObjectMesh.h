@@ -14,7 +14,7 @@ namespace nprgl::reconstruct {
 using EdgeIndex = uint32_t;
 inline constexpr uint32_t kNoIndex = 0xffffffffu;
 
-// Bits of EdgeInfo::classes (thesis §4.1.1). Silhouettes depend on the eye: Silhouette.h.
+// Bits of ObjectMesh::edgeClasses (thesis §4.1.1). Silhouettes depend on the eye: Silhouette.h.
 enum EdgeClass : uint8_t {
     kEdgeBorder = 1,   // one face only
     kEdgeCrease = 2,   // interior, n1·n2 < ReconstructParams::creaseCosine (both normals valid)
@@ -27,7 +27,6 @@ struct EdgeInfo {
     uint32_t v1 = 0;
     uint32_t f0 = kNoIndex; // face of halfedge 2e (v0 -> v1 in its winding), or kNoIndex
     uint32_t f1 = kNoIndex; // face of halfedge 2e+1, or kNoIndex
-    uint8_t classes = 0;    // EdgeClass bits
 };
 
 // What happened to the object's input at its last full build.
@@ -61,7 +60,8 @@ struct ObjectMesh {
     std::vector<uint32_t> faceCorners;   // 3 per face: index into sourceVertices
     std::vector<uint32_t> faceVertices;  // 3 per face: mesh vertex index
     std::vector<uint32_t> faceMaterials; // per face: its batch's materialId
-    std::vector<EdgeInfo> edges;         // per OpenMesh edge
+    std::vector<EdgeInfo> edges;         // per OpenMesh edge; fixed with the topology
+    std::vector<uint8_t> edgeClasses;    // per edge: EdgeClass bits (crease, material: per frame)
     // Edges around each vertex (thesis §4.4.2's per-endpoint neighbour lists):
     // vertexEdges[vertexEdgeStart[v] .. vertexEdgeStart[v+1]).
     std::vector<uint32_t> vertexEdgeStart;

@@ -3,6 +3,7 @@
 #include "common/Log.h"
 #include "common/PngImage.h"
 #include "shim/Api.h"
+#include "shim/CaptureBlobs.h"
 #include "shim/ClientArrays.h"
 #include "shim/RealGl.h"
 #include "shim/ShadowArrays.h"
@@ -21,24 +22,6 @@ namespace nprgl {
 namespace {
 
 constexpr size_t kMaxScratch = size_t(1) << 24;
-
-// Blobs of the capture, read once and kept for the replay.
-class FileBlobs : public BlobSource {
-public:
-    explicit FileBlobs(const capture::CaptureReader& reader) : mReader(reader) {}
-    const std::vector<uint8_t>* blob(uint64_t hash, std::string& error) override
-    {
-        auto it = mCache.find(hash);
-        if (it != mCache.end()) return &it->second;
-        std::vector<uint8_t> data;
-        if (!mReader.readBlob(hash, data, error)) return nullptr;
-        return &mCache.emplace(hash, std::move(data)).first->second;
-    }
-
-private:
-    const capture::CaptureReader& mReader;
-    std::map<uint64_t, std::vector<uint8_t>> mCache;
-};
 
 // The replaying sink of decodeCall.
 class ReplaySink {
@@ -92,19 +75,7 @@ public:
             uint64_t frame = r.get<uint64_t>();
             return r.ok() && mFrameEnd(frame);
         }
-        if (opcode == op::kArrayData) {
-            CallReader::Payload payload(r);
-            uint8_t slot = r.get<uint8_t>();
-            uint64_t offset = r.get<uint64_t>();
-            size_t size = 0;
-            const void* data = r.getBytes(size);
-            if (!payload.finish()) return false;
-            if (slot >= kArraySlotCount || !mArrays.write(slot, offset, data, size)) {
-                r.fail("client array data out of range");
-                return false;
-            }
-            return true;
-        }
+        if (opcode == op::kArrayData) return mArrays.apply(r);
         r.fail("unknown opcode " + std::to_string(opcode));
         return false;
     }
@@ -210,7 +181,7 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         return true;
     };
     ReplaySink sink(arrays, frameEnd);
-    FileBlobs blobs(reader);
+    CaptureBlobs blobs(reader);
     std::vector<uint8_t> calls;
     bool ok = true;
     for (size_t i = 0; ok && i < frames.size(); ++i) {

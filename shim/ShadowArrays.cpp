@@ -32,4 +32,19 @@ bool ShadowArrays::write(int slot, uint64_t offset, const void* data, size_t siz
     return true;
 }
 
+bool ShadowArrays::apply(CallReader& r)
+{
+    CallReader::Payload payload(r);
+    uint8_t slot = r.get<uint8_t>();
+    uint64_t offset = r.get<uint64_t>();
+    size_t size = 0;
+    const void* data = r.getBytes(size);
+    if (!payload.finish()) return false;
+    if (slot >= kArraySlotCount || !write(slot, offset, data, size)) {
+        r.fail("client array data out of range");
+        return false;
+    }
+    return true;
+}
+
 } // namespace nprgl

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "shim/ClientArrays.h"
+#include "stream/CallReader.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +24,8 @@ public:
     uint8_t* base(int slot);
     // Copies bytes to [offset, offset + size) of a slot; false when out of range.
     bool write(int slot, uint64_t offset, const void* data, size_t size);
+    // Decodes an ArrayData pseudo-call (its opcode already read) and applies it.
+    bool apply(CallReader& r);
 
 private:
     uint8_t* mBase[kArraySlotCount] = {};

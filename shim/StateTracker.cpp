@@ -346,19 +346,7 @@ bool StateTracker::pseudo(CallReader& r, uint16_t opcode)
         mFrameDone = true;
         return r.ok();
     }
-    if (opcode == op::kArrayData) {
-        CallReader::Payload payload(r);
-        uint8_t slot = r.get<uint8_t>();
-        uint64_t offset = r.get<uint64_t>();
-        size_t size = 0;
-        const void* data = r.getBytes(size);
-        if (!payload.finish()) return false;
-        if (slot >= kArraySlotCount || !mArrays.write(slot, offset, data, size)) {
-            r.fail("client array data out of range");
-            return false;
-        }
-        return true;
-    }
+    if (opcode == op::kArrayData) return mArrays.apply(r);
     r.fail("unknown opcode " + std::to_string(opcode));
     return false;
 }

@@ -223,17 +223,19 @@ TEST(Reconstruct, CubeCreasesAreTheTwelveBoxEdges)
     const auto m = single(r, cube());
     ASSERT_TRUE(m);
     int creases = 0;
-    for (const EdgeInfo& e : m->edges) {
+    for (uint32_t i = 0; i < m->edgeCount(); ++i) {
+        const EdgeInfo& e = m->edges[i];
+        const uint8_t classes = m->edgeClasses[i];
         const glm::vec3 d = glm::abs(m->position(e.v0) - m->position(e.v1));
         const int axes = (d.x > 0.5f) + (d.y > 0.5f) + (d.z > 0.5f);
-        if (e.classes & kEdgeCrease) {
+        if (classes & kEdgeCrease) {
             ++creases;
             EXPECT_EQ(axes, 1) << "a crease that is not a box edge";
         } else {
             EXPECT_EQ(axes, 2) << "a box edge that is not a crease";
         }
-        EXPECT_FALSE(e.classes & kEdgeBorder);
-        EXPECT_FALSE(e.classes & kEdgeMaterial);
+        EXPECT_FALSE(classes & kEdgeBorder);
+        EXPECT_FALSE(classes & kEdgeMaterial);
     }
     EXPECT_EQ(creases, 12);
 }
@@ -244,8 +246,9 @@ TEST(Reconstruct, MaterialBoundaryEdges)
     const auto m = single(r, cube(1.0f, glm::vec3(0.0f), 7));
     ASSERT_TRUE(m);
     int material = 0;
-    for (const EdgeInfo& e : m->edges) {
-        if (!(e.classes & kEdgeMaterial)) continue;
+    for (uint32_t i = 0; i < m->edgeCount(); ++i) {
+        const EdgeInfo& e = m->edges[i];
+        if (!(m->edgeClasses[i] & kEdgeMaterial)) continue;
         ++material;
         // The top face's four box edges, at y = 1.
         EXPECT_FLOAT_EQ(m->position(e.v0).y, 1.0f);
@@ -304,7 +307,7 @@ TEST(Reconstruct, SphereFromBandsAndFans)
     for (uint32_t v = 0; v < m->vertexCount(); ++v)
         EXPECT_NEAR(glm::dot(m->vertexNormal(v), glm::normalize(m->position(v))), 1.0f, 1e-5f);
     // No crease on a smooth sphere, no border.
-    for (const EdgeInfo& e : m->edges) EXPECT_EQ(e.classes, 0) << "edge classes";
+    for (const uint8_t classes : m->edgeClasses) EXPECT_EQ(classes, 0) << "edge classes";
 }
 
 TEST(Reconstruct, AreaWeightedNormalsWithoutProgramNormals)
@@ -314,6 +317,28 @@ TEST(Reconstruct, AreaWeightedNormalsWithoutProgramNormals)
     ASSERT_TRUE(m);
     for (uint32_t v = 0; v < m->vertexCount(); ++v)
         EXPECT_GT(glm::dot(m->vertexNormal(v), glm::normalize(m->position(v))), 0.995f) << v;
+}
+
+TEST(Reconstruct, CancellingProgramNormalsFallBackToFaceNormals)
+{
+    // Two triangles (both facing +z) whose program normals disagree: +z on the first, -z on
+    // the second. The shared edge's vertices get the face-based normal.
+    const glm::vec3 up(0, 0, 1), down(0, 0, -1);
+    const std::vector<Vertex> tris = {
+        vertex({0, 0, 0}, up, true), vertex({1, 0, 0}, up, true), vertex({0, 1, 0}, up, true),
+        vertex({1, 0, 0}, down, true), vertex({1, 1, 0}, down, true),
+        vertex({0, 1, 0}, down, true)};
+    Reconstructor r;
+    const auto m = single(r, {batch(GL_TRIANGLES, tris)});
+    ASSERT_TRUE(m);
+    ASSERT_EQ(m->vertexCount(), 4u);
+    for (uint32_t v = 0; v < 4; ++v) {
+        const glm::vec3 p = m->position(v);
+        const glm::vec3 expected = p == glm::vec3(0, 0, 0) ? up
+                                   : p == glm::vec3(1, 1, 0) ? down
+                                                             : up; // shared: from the faces
+        EXPECT_EQ(m->vertexNormal(v), expected) << p.x << "," << p.y;
+    }
 }
 
 TEST(Reconstruct, ConsecutiveBatchesWithOneModelviewAreOneObject)

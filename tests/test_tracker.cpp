@@ -2,6 +2,7 @@
 // material — display lists, client arrays and buffers included.
 
 #include "capture/CaptureReader.h"
+#include "shim/CaptureBlobs.h"
 #include "shim/StateTracker.h"
 #include "tests/support/Process.h"
 
@@ -14,23 +15,6 @@ using namespace nprgl;
 
 namespace {
 
-class FileBlobs : public BlobSource {
-public:
-    explicit FileBlobs(const capture::CaptureReader& r) : mReader(r) {}
-    const std::vector<uint8_t>* blob(uint64_t hash, std::string& error) override
-    {
-        auto it = mCache.find(hash);
-        if (it != mCache.end()) return &it->second;
-        std::vector<uint8_t> data;
-        if (!mReader.readBlob(hash, data, error)) return nullptr;
-        return &mCache.emplace(hash, std::move(data)).first->second;
-    }
-
-private:
-    const capture::CaptureReader& mReader;
-    std::map<uint64_t, std::vector<uint8_t>> mCache;
-};
-
 // Runs a fixture up to and including `frame` and returns that frame's batches.
 std::vector<TrackedBatch> frameBatches(const std::string& name, uint64_t frame)
 {
@@ -38,7 +22,7 @@ std::vector<TrackedBatch> frameBatches(const std::string& name, uint64_t frame)
     std::string error;
     std::string path = std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
     EXPECT_TRUE(reader.open(path, error)) << error;
-    FileBlobs blobs(reader);
+    CaptureBlobs blobs(reader);
     StateTracker tracker;
     std::vector<uint8_t> calls;
     for (size_t i = 0; i < reader.frames().size(); ++i) {

@@ -1,5 +1,7 @@
 #include "tests/support/ImageCompare.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstdlib>
 
@@ -31,6 +33,24 @@ double coveredFraction(const PngImage& image)
         if (image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2] > 24) ++covered;
     }
     return image.rgba.empty() ? 0.0 : double(covered) / (image.rgba.size() / 4);
+}
+
+void expectGlxgearsPicture(const std::string& path)
+{
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(path, image, error)) << error;
+    EXPECT_EQ(image.width, 300);
+    size_t red = 0, green = 0, blue = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        int r8 = image.rgba[i], g8 = image.rgba[i + 1], b8 = image.rgba[i + 2];
+        red += r8 > 120 && g8 < 60 && b8 < 60;
+        green += g8 > 120 && r8 < 60 && b8 < 60;
+        blue += b8 > 120 && r8 < 60 && g8 < 60;
+    }
+    EXPECT_GT(red, 1000u) << path;
+    EXPECT_GT(green, 300u) << path;
+    EXPECT_GT(blue, 300u) << path;
 }
 
 } // namespace nprgl::test

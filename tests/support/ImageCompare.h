@@ -19,4 +19,7 @@ ImageDiff compareImages(const std::string& a, const std::string& b);
 // Share of pixels that are not (near) black: a picture that is all background is suspect.
 double coveredFraction(const PngImage& image);
 
+// Checks a 300x300 glxgears frame: its red, green and blue gears are all there.
+void expectGlxgearsPicture(const std::string& path);
+
 } // namespace nprgl::test
