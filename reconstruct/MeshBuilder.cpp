@@ -14,12 +14,7 @@ using OpenMesh::FaceHandle;
 using OpenMesh::HalfedgeHandle;
 using OpenMesh::VertexHandle;
 
-// How many of a vertex's copies a refused face tries before making a new one; bounds the cost
-// of pathological input (hundreds of faces stacked on one spot).
-constexpr size_t kCopiesTried = 8;
-// A corner that will get a new copy of its vertex (never a real index).
-constexpr uint32_t kFresh = kNoIndex - 1;
-// Splitting fans converges in one round; this many rounds, then every face on its own.
+// Splitting fans converges in one round; after this many, every face goes on its own.
 constexpr int kFanRounds = 3;
 
 inline bool isFinite(const glm::vec3& p)
@@ -62,16 +57,15 @@ uint32_t MeshBuilder::vertexFor(ObjectMesh& object, uint32_t welded)
     return v;
 }
 
-uint32_t MeshBuilder::copyOf(ObjectMesh& object, uint32_t welded)
+uint32_t MeshBuilder::copyVertex(ObjectMesh& object, uint32_t v)
 {
     ObjectMesh::UpdateState& state = object.updateState;
-    const uint32_t v = uint32_t(state.vertexSource.size());
-    state.vertexSource.push_back(state.weldRep[welded]);
-    state.splitVertices.push_back(v);
-    mCopies[welded].push_back(v);
+    const uint32_t copy = uint32_t(state.vertexSource.size());
+    state.vertexSource.push_back(state.vertexSource[v]);
+    state.splitVertices.push_back(copy);
     mEdges.addVertex();
     ++object.stats.splitVertices;
-    return v;
+    return copy;
 }
 
 uint32_t MeshBuilder::halfedgeOf(uint32_t from, uint32_t to) const
@@ -82,13 +76,12 @@ uint32_t MeshBuilder::halfedgeOf(uint32_t from, uint32_t to) const
 }
 
 // A bit per corner on a directed edge that another face already runs along (OpenMesh's
-// "complex edge"). Edges to a kFresh corner are free.
+// "complex edge").
 unsigned MeshBuilder::conflicts(const uint32_t v[3]) const
 {
     unsigned bad = 0;
     for (int k = 0; k < 3; ++k) {
         const int next = (k + 1) % 3;
-        if (v[k] == kFresh || v[next] == kFresh) continue;
         const uint32_t h = halfedgeOf(v[k], v[next]);
         if (h != kNoIndex && (mEdgeUsed[h >> 1] & (1u << (h & 1))))
             bad |= (1u << k) | (1u << next);
@@ -96,48 +89,14 @@ unsigned MeshBuilder::conflicts(const uint32_t v[3]) const
     return bad;
 }
 
-// Adds face f on vertices v, or, when one of its directed edges is taken (an edge's third
-// face, a flipped neighbour, a duplicate), on copies of the corners at fault: first copies
-// made for earlier refused faces, so a second sheet glued along a non-manifold edge stays
-// connected to itself, else new ones. The face is never dropped.
+// Adds face f on vertices v. After cutNonManifold() no directed edge is taken twice; should
+// one be, the corners at fault go onto new copies (never drop a face).
 void MeshBuilder::placeFace(ObjectMesh& object, uint32_t f, uint32_t v[3])
 {
-    unsigned bad = conflicts(v);
-    if (bad != 0) {
+    if (const unsigned bad = conflicts(v)) {
         ++object.stats.splitFaces;
-        const ObjectMesh::UpdateState& state = object.updateState;
-        uint32_t welded[3];
-        for (int k = 0; k < 3; ++k) welded[k] = state.weld[state.vertexSource[v[k]]];
         for (int k = 0; k < 3; ++k) {
-            if (!(bad & (1u << k))) continue;
-            const uint32_t original = v[k];
-            v[k] = kFresh;
-            const auto it = mCopies.find(welded[k]);
-            if (it == mCopies.end()) continue;
-            const std::vector<uint32_t>& copies = it->second;
-            for (size_t j = copies.size(), tried = 0; j-- > 0 && tried < kCopiesTried; ++tried) {
-                if (copies[j] == original) continue;
-                v[k] = copies[j];
-                if (!(conflicts(v) & (1u << k))) break;
-                v[k] = kFresh;
-            }
-        }
-        // All faulty corners on copies or none: a face that reached an earlier copy sheet
-        // at one vertex only would just make a bow-tie there. Whatever still conflicts gets
-        // new vertices; edges to those are always free.
-        bool partial = false;
-        for (int k = 0; k < 3; ++k) partial |= (bad & (1u << k)) && v[k] == kFresh;
-        if (partial) {
-            for (int k = 0; k < 3; ++k) {
-                if (bad & (1u << k)) v[k] = kFresh;
-            }
-        }
-        const unsigned remaining = conflicts(v);
-        for (int k = 0; k < 3; ++k) {
-            if (remaining & (1u << k)) v[k] = kFresh;
-        }
-        for (int k = 0; k < 3; ++k) {
-            if (v[k] == kFresh) v[k] = copyOf(object, welded[k]);
+            if (bad & (1u << k)) v[k] = copyVertex(object, v[k]);
         }
     }
     for (int k = 0; k < 3; ++k) {
@@ -246,24 +205,17 @@ bool MeshBuilder::linkBoundaries(ObjectMesh& object)
     return true;
 }
 
-// At each vertex of mFanVertices, the fan with the earliest face keeps the vertex and every
-// other fan (faces around it that share edges) gets a copy. With everyFace, every face gets
-// its own three vertices instead: the last resort, always manifold.
+// Safety net after cutNonManifold(): at each vertex of mFanVertices, the fan with the
+// earliest face keeps the vertex and every other fan (faces around it that share edges) gets a
+// copy. With everyFace, every face gets its own three vertices: the last resort.
 void MeshBuilder::splitFans(ObjectMesh& object, bool everyFace)
 {
-    ObjectMesh::UpdateState& state = object.updateState;
     std::vector<uint32_t>& faceVertices = object.faceVertices;
     const uint32_t faceCount = uint32_t(faceVertices.size() / 3);
-    auto copyVertex = [&](uint32_t v) {
-        const uint32_t copy = uint32_t(state.vertexSource.size());
-        state.vertexSource.push_back(state.vertexSource[v]);
-        state.splitVertices.push_back(copy);
-        ++object.stats.splitVertices;
-        return copy;
-    };
     if (everyFace) {
         for (uint32_t f = 1; f < faceCount; ++f) {
-            for (int k = 0; k < 3; ++k) faceVertices[3 * f + k] = copyVertex(faceVertices[3 * f + k]);
+            for (int k = 0; k < 3; ++k)
+                faceVertices[3 * f + k] = copyVertex(object, faceVertices[3 * f + k]);
             ++object.stats.splitFaces;
         }
         return;
@@ -310,7 +262,7 @@ void MeshBuilder::splitFans(ObjectMesh& object, bool everyFace)
         for (size_t i = 0; i < n; ++i) {
             const uint32_t r = find(uint32_t(i));
             if (r == 0) continue; // the fan of the earliest face keeps v
-            if (copyOfRoot[r] == kNoIndex) copyOfRoot[r] = copyVertex(v);
+            if (copyOfRoot[r] == kNoIndex) copyOfRoot[r] = copyVertex(object, v);
             uint32_t* fv = &faceVertices[3 * size_t(corners[begin + i].second)];
             for (int k = 0; k < 3; ++k) {
                 if (fv[k] == v) fv[k] = copyOfRoot[r];
@@ -321,8 +273,86 @@ void MeshBuilder::splitFans(ObjectMesh& object, bool everyFace)
     }
 }
 
+bool MeshBuilder::connectFast(ObjectMesh& object)
+{
+    const uint32_t faceCount = uint32_t(object.faceVertices.size() / 3);
+    mEdges.reset(object.updateState.vertexSource.size(), size_t(faceCount) * 3 / 2 + 16);
+    mEdgeUsed.clear();
+    mFaceHalfedges.resize(size_t(faceCount) * 3);
+    for (uint32_t f = 0; f < faceCount; ++f) {
+        uint32_t v[3] = {object.faceVertices[3 * size_t(f)], object.faceVertices[3 * size_t(f) + 1],
+                         object.faceVertices[3 * size_t(f) + 2]};
+        if (conflicts(v) != 0) return false;
+        placeFace(object, f, v);
+    }
+    fillMesh(object);
+    return linkBoundaries(object);
+}
+
+// Non-manifold input: an edge keeps its first face and the first later face that runs it the
+// other way; any further face on it (a third sheet, a flipped or duplicated face) is cut off
+// there. Then the corners at each vertex fall into fans, joined across the kept edges
+// (union-find over all corners); the fan with the earliest corner keeps the vertex, every
+// other fan gets a copy. A fin on a sheet stays one piece, and so does the sheet.
+void MeshBuilder::cutNonManifold(ObjectMesh& object)
+{
+    std::vector<uint32_t>& faceVertices = object.faceVertices;
+    const uint32_t cornerCount = uint32_t(faceVertices.size());
+    const uint32_t vertexCount = uint32_t(object.updateState.vertexSource.size());
+    mEdges.reset(vertexCount, cornerCount / 2 + 16);
+    std::vector<uint32_t> first, second; // per edge: the corner starting its halfedge, or none
+    for (uint32_t c = 0; c < cornerCount; ++c) {
+        const uint32_t next = c % 3 == 2 ? c - 2 : c + 1;
+        const uint32_t a = faceVertices[c], b = faceVertices[next];
+        uint32_t e = mEdges.find(a, b);
+        if (e == EdgeLists::kNone) {
+            e = mEdges.insert(a, b);
+            first.push_back(c);
+            second.push_back(kNoIndex);
+        } else if (second[e] == kNoIndex && faceVertices[first[e]] == b) {
+            second[e] = c;
+        }
+    }
+    std::vector<uint32_t> root(cornerCount);
+    for (uint32_t c = 0; c < cornerCount; ++c) root[c] = c;
+    auto find = [&](uint32_t c) {
+        while (root[c] != c) c = root[c] = root[root[c]];
+        return c;
+    };
+    auto join = [&](uint32_t a, uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a != b) root[std::max(a, b)] = std::min(a, b); // the earliest corner is the root
+    };
+    auto nextCorner = [](uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; };
+    for (size_t e = 0; e < first.size(); ++e) {
+        if (second[e] == kNoIndex) continue;
+        // first runs a -> b from corner first[e]; second runs b -> a from corner second[e].
+        join(first[e], nextCorner(second[e]));
+        join(nextCorner(first[e]), second[e]);
+    }
+    std::vector<uint32_t> vertexOfRoot(cornerCount, kNoIndex);
+    std::vector<uint8_t> taken(vertexCount, 0);
+    uint32_t lastSplitFace = kNoIndex;
+    for (uint32_t c = 0; c < cornerCount; ++c) {
+        const uint32_t r = find(c);
+        if (vertexOfRoot[r] == kNoIndex) {
+            const uint32_t v = faceVertices[c];
+            vertexOfRoot[r] = taken[v] ? copyVertex(object, v) : v;
+            taken[v] = 1;
+        }
+        if (vertexOfRoot[r] != faceVertices[c] && c / 3 != lastSplitFace) {
+            lastSplitFace = c / 3;
+            ++object.stats.splitFaces;
+        }
+        faceVertices[c] = vertexOfRoot[r];
+    }
+}
+
 void MeshBuilder::connect(ObjectMesh& object)
 {
+    if (connectFast(object)) return;
+    cutNonManifold(object);
     const uint32_t faceCount = uint32_t(object.faceVertices.size() / 3);
     for (int round = 0;; ++round) {
         mEdges.reset(object.updateState.vertexSource.size(), size_t(faceCount) * 3 / 2 + 16);
@@ -441,7 +471,6 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
     object.faceVertices.resize(mTriangles.size());
     for (size_t c = 0; c < mTriangles.size(); ++c)
         object.faceVertices[c] = vertexFor(object, weld[mTriangles[c]]);
-    mCopies.clear();
     connect(object);
 
     object.faceCorners.assign(mTriangles.begin(), mTriangles.end());

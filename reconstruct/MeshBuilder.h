@@ -3,7 +3,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include "reconstruct/Batch.h"
@@ -16,10 +15,10 @@
 namespace nprgl::reconstruct {
 
 // Turns the batches of one object into an ObjectMesh: primitive assembly, welding, OpenMesh
-// connectivity, normals and edge classes. Non-manifold input keeps every face: a face that
-// would reuse a directed edge (an edge's third face, a flipped neighbour, a duplicate) is
-// placed on copies of its vertices, and a vertex where several fans of faces meet (a bow-tie)
-// is copied once per extra fan; BuildStats counts both.
+// connectivity, normals and edge classes. Non-manifold input keeps every face: faces beyond
+// an edge's manifold pair (a third sheet, a flipped or duplicated face) are cut off along it,
+// and a vertex where several fans of faces meet (a bow-tie) is copied once per extra fan;
+// BuildStats counts both (cutNonManifold()).
 //
 // The connectivity is written straight into OpenMesh's arrays for the whole mesh at once
 // (the same halfedge structure add_face makes, boundary loops included): Debian builds
@@ -45,13 +44,15 @@ public:
 
 private:
     uint32_t vertexFor(ObjectMesh& object, uint32_t welded);
-    uint32_t copyOf(ObjectMesh& object, uint32_t welded);
+    uint32_t copyVertex(ObjectMesh& object, uint32_t v);
     uint32_t halfedgeOf(uint32_t from, uint32_t to) const;
     unsigned conflicts(const uint32_t v[3]) const;
     void placeFace(ObjectMesh& object, uint32_t f, uint32_t v[3]);
     void fillMesh(ObjectMesh& object);
     bool linkBoundaries(ObjectMesh& object);
-    void splitFans(ObjectMesh& object, bool everyCorner);
+    bool connectFast(ObjectMesh& object);
+    void cutNonManifold(ObjectMesh& object);
+    void splitFans(ObjectMesh& object, bool everyFace);
     void connect(ObjectMesh& object);
     void buildEdges(ObjectMesh& object);
 
@@ -64,7 +65,6 @@ private:
     std::vector<uint32_t> mCornerCount;   // per vertex
     std::vector<uint32_t> mOutBoundary;   // per vertex: its outgoing boundary halfedge
     std::vector<uint32_t> mFanVertices;   // vertices where several fans meet
-    std::unordered_map<uint32_t, std::vector<uint32_t>> mCopies; // welded id -> copies
     std::vector<Vertex> mStaged;
 };
 

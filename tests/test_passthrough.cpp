@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 using namespace nprgl;
 using namespace nprgl::test;
@@ -145,13 +146,16 @@ TEST(OddPrograms, ProgramsWithoutGlSeeNoDifference)
     EXPECT_EQ(t.err, "");
     ProcessResult f = runProcess({nprglCommand(), "--", "/bin/false"});
     EXPECT_EQ(f.exitCode, 1);
-    ProcessResult lsNative = runProcess({"ls", "-la", "/"});
-    ProcessResult lsShim = runProcess({nprglCommand(), "ls", "-la", "/"});
+    // A directory no other test touches, so both listings see the same thing.
+    std::string quiet = freshDir("ls");
+    std::ofstream(quiet + "/file") << "x";
+    ProcessResult lsNative = runProcess({"ls", "-la", quiet});
+    ProcessResult lsShim = runProcess({nprglCommand(), "ls", "-la", quiet});
     EXPECT_EQ(lsShim.exitCode, lsNative.exitCode);
     EXPECT_EQ(lsShim.out, lsNative.out);
     EXPECT_EQ(lsShim.err, "");
     // Plain LD_PRELOAD works the same way.
-    ProcessResult preload = runProcess({"ls", "-la", "/"}, {{"LD_PRELOAD", libPath()}});
+    ProcessResult preload = runProcess({"ls", "-la", quiet}, {{"LD_PRELOAD", libPath()}});
     EXPECT_EQ(preload.out, lsNative.out);
     EXPECT_EQ(preload.err, "");
 }

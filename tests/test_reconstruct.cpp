@@ -432,6 +432,158 @@ TEST(Reconstruct, InconsistentWindingAndDuplicatesKeepAllFaces)
     EXPECT_EQ(m2->stats.splitFaces, 2u);
 }
 
+// The halfedge structure is what OpenMesh's own add_face would have made: consistent next,
+// prev, opposite, faces and boundary loops, one fan per vertex.
+void expectValidConnectivity(const ObjectMesh& m)
+{
+    const Mesh& mesh = m.mesh;
+    ASSERT_EQ(mesh.n_faces(), m.faceCount());
+    for (auto heh : mesh.halfedges()) {
+        ASSERT_EQ(mesh.next_halfedge_handle(mesh.prev_halfedge_handle(heh)), heh);
+        ASSERT_EQ(mesh.to_vertex_handle(heh),
+                  mesh.from_vertex_handle(mesh.next_halfedge_handle(heh)));
+        ASSERT_EQ(mesh.face_handle(mesh.next_halfedge_handle(heh)), mesh.face_handle(heh));
+        ASSERT_FALSE(mesh.face_handle(heh).is_valid() &&
+                     mesh.face_handle(heh) == mesh.opposite_face_handle(heh));
+    }
+    for (uint32_t f = 0; f < m.faceCount(); ++f) {
+        auto heh = mesh.halfedge_handle(OpenMesh::FaceHandle(int(f)));
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(uint32_t(mesh.to_vertex_handle(heh).idx()), m.faceVertices[3 * f + k]);
+            heh = mesh.next_halfedge_handle(heh);
+        }
+        ASSERT_EQ(heh, mesh.halfedge_handle(OpenMesh::FaceHandle(int(f))));
+    }
+    std::vector<int> corners(mesh.n_vertices(), 0);
+    for (uint32_t v : m.faceVertices) ++corners[v];
+    for (auto vh : mesh.vertices()) {
+        ASSERT_GT(corners[vh.idx()], 0) << "isolated vertex";
+        ASSERT_EQ(mesh.from_vertex_handle(mesh.halfedge_handle(vh)), vh);
+        ASSERT_TRUE(mesh.is_manifold(vh));
+        int faces = 0;
+        for (auto fh : mesh.vf_range(vh)) faces += fh.is_valid() ? 1 : 0;
+        ASSERT_EQ(faces, corners[vh.idx()]) << "a fan OpenMesh does not walk";
+    }
+}
+
+// Connected components of the face graph (faces sharing an edge).
+int faceComponents(const ObjectMesh& m)
+{
+    std::vector<int> component(m.faceCount(), -1);
+    int count = 0;
+    for (uint32_t start = 0; start < m.faceCount(); ++start) {
+        if (component[start] >= 0) continue;
+        std::vector<uint32_t> stack = {start};
+        component[start] = count;
+        while (!stack.empty()) {
+            const uint32_t f = stack.back();
+            stack.pop_back();
+            for (auto g : m.mesh.ff_range(OpenMesh::FaceHandle(int(f)))) {
+                if (component[g.idx()] < 0) {
+                    component[g.idx()] = count;
+                    stack.push_back(uint32_t(g.idx()));
+                }
+            }
+        }
+        ++count;
+    }
+    return count;
+}
+
+TEST(Reconstruct, FinOnASheetIsCutOffInOnePiece)
+{
+    // Two quads either side of the chain y = 0 (a flat sheet facing +z) and a vertical fin of
+    // two quads standing on the same chain: three faces on each chain edge.
+    std::vector<Vertex> a, b, c;
+    for (int i = 0; i < 2; ++i) {
+        const float x0 = float(i), x1 = float(i + 1);
+        for (glm::vec3 p : {glm::vec3(x0, -1, 0), glm::vec3(x1, -1, 0), glm::vec3(x1, 0, 0),
+                            glm::vec3(x0, 0, 0)})
+            a.push_back(vertex(p));
+        for (glm::vec3 p : {glm::vec3(x0, 0, 0), glm::vec3(x1, 0, 0), glm::vec3(x1, 1, 0),
+                            glm::vec3(x0, 1, 0)})
+            b.push_back(vertex(p));
+        for (glm::vec3 p : {glm::vec3(x0, 0, 0), glm::vec3(x1, 0, 0), glm::vec3(x1, 0, 1),
+                            glm::vec3(x0, 0, 1)})
+            c.push_back(vertex(p));
+    }
+    Reconstructor r;
+    const auto m = single(r, {batch(GL_QUADS, a), batch(GL_QUADS, b), batch(GL_QUADS, c)});
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->faceCount(), 12u);
+    EXPECT_EQ(m->mesh.n_faces(), 12u);
+    EXPECT_EQ(m->stats.weldedVertices, 12u);
+    EXPECT_EQ(m->stats.splitVertices, 3u); // the fin's copy of the chain
+    EXPECT_EQ(m->stats.splitFaces, 4u);    // the fin's four triangles
+    EXPECT_EQ(m->vertexCount(), 15u);
+    EXPECT_EQ(faceComponents(*m), 2);      // the sheet and the fin, each in one piece
+    expectValidConnectivity(*m);
+    for (auto vh : m->mesh.vertices()) EXPECT_TRUE(m->mesh.is_manifold(vh));
+    // The sheet's chain edges are interior; the fin's foot is a border.
+    int chainBorders = 0;
+    for (uint32_t e = 0; e < m->edgeCount(); ++e) {
+        const glm::vec3 p0 = m->position(m->edges[e].v0), p1 = m->position(m->edges[e].v1);
+        if (p0.y == 0 && p1.y == 0 && p0.z == 0 && p1.z == 0)
+            chainBorders += (m->edgeClasses[e] & kEdgeBorder) ? 1 : 0;
+    }
+    EXPECT_EQ(chainBorders, 2);
+}
+
+TEST(Reconstruct, TwoClosedFansAtOneVertexAreSplit)
+{
+    // Two tetrahedra touching at the origin only: OpenMesh cannot walk two closed fans.
+    auto tetrahedron = [](glm::vec3 b0, glm::vec3 b1, glm::vec3 b2) {
+        const glm::vec3 p[4] = {glm::vec3(0.0f), b0, b1, b2};
+        const glm::vec3 centre = (p[0] + p[1] + p[2] + p[3]) / 4.0f;
+        const int faces[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+        std::vector<Vertex> out;
+        for (const auto& f : faces) {
+            glm::vec3 x = p[f[0]], y = p[f[1]], z = p[f[2]];
+            if (glm::dot(glm::cross(y - x, z - x), (x + y + z) / 3.0f - centre) < 0)
+                std::swap(y, z);
+            for (glm::vec3 q : {x, y, z}) out.push_back(vertex(q));
+        }
+        return out;
+    };
+    Reconstructor r;
+    const auto m = single(r, {batch(GL_TRIANGLES, tetrahedron({-1, 0, 0}, {-1, 1, 0}, {-1, 0, 1})),
+                              batch(GL_TRIANGLES, tetrahedron({1, 0, 0}, {1, 0, 1}, {1, 1, 0}))});
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->faceCount(), 8u);
+    EXPECT_EQ(m->stats.weldedVertices, 7u);
+    EXPECT_EQ(m->vertexCount(), 8u);
+    EXPECT_EQ(m->stats.splitVertices, 1u);
+    EXPECT_EQ(m->stats.splitFaces, 3u);
+    EXPECT_TRUE(m->closed());
+    EXPECT_EQ(m->eulerCharacteristic(), 4); // two spheres
+    EXPECT_EQ(faceComponents(*m), 2);
+}
+
+TEST(Reconstruct, RandomSoupsKeepEveryFaceOnValidConnectivity)
+{
+    // Triangles on a few random grid points: bow-ties, three to many faces per edge, flipped
+    // and duplicated faces, all at once.
+    uint32_t seed = 12345;
+    auto rnd = [&seed](uint32_t n) {
+        seed = seed * 1664525u + 1013904223u;
+        return (seed >> 8) % n;
+    };
+    for (int trial = 0; trial < 20000; ++trial) {
+        std::vector<Vertex> tris;
+        const uint32_t points = 4 + rnd(20), count = 1 + rnd(60);
+        for (uint32_t t = 0; t < 3 * count; ++t) {
+            const uint32_t i = rnd(points);
+            tris.push_back(vertex(glm::vec3(float(i % 3), float(i / 3 % 3), float(i / 9))));
+        }
+        Reconstructor r;
+        const auto m = single(r, {batch(GL_TRIANGLES, tris)});
+        ASSERT_TRUE(m);
+        SCOPED_TRACE(trial);
+        EXPECT_EQ(m->faceCount(), m->stats.triangles - m->stats.degenerateTriangles);
+        expectValidConnectivity(*m);
+    }
+}
+
 TEST(Reconstruct, NonFiniteTrianglesAreDroppedAndCounted)
 {
     const float nan = std::numeric_limits<float>::quiet_NaN();
