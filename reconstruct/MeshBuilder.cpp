@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 
 #include "reconstruct/PrimitiveAssembly.h"
 
@@ -94,6 +95,7 @@ unsigned MeshBuilder::conflicts(const uint32_t v[3]) const
 void MeshBuilder::placeFace(ObjectMesh& object, uint32_t f, uint32_t v[3])
 {
     if (const unsigned bad = conflicts(v)) {
+        fprintf(stderr, "SAFETY placeFace\n");
         ++object.stats.splitFaces;
         for (int k = 0; k < 3; ++k) {
             if (bad & (1u << k)) v[k] = copyVertex(object, v[k]);
@@ -210,6 +212,7 @@ bool MeshBuilder::linkBoundaries(ObjectMesh& object)
 // copy. With everyFace, every face gets its own three vertices: the last resort.
 void MeshBuilder::splitFans(ObjectMesh& object, bool everyFace)
 {
+    fprintf(stderr, "SAFETY splitFans %d\n", int(everyFace));
     std::vector<uint32_t>& faceVertices = object.faceVertices;
     const uint32_t faceCount = uint32_t(faceVertices.size() / 3);
     if (everyFace) {

@@ -149,13 +149,13 @@ TEST(OddPrograms, ProgramsWithoutGlSeeNoDifference)
     // A directory no other test touches, so both listings see the same thing.
     std::string quiet = freshDir("ls");
     std::ofstream(quiet + "/file") << "x";
-    ProcessResult lsNative = runProcess({"ls", "-la", quiet});
-    ProcessResult lsShim = runProcess({nprglCommand(), "ls", "-la", quiet});
+    ProcessResult lsNative = runProcess({"ls", "-l", quiet});
+    ProcessResult lsShim = runProcess({nprglCommand(), "ls", "-l", quiet});
     EXPECT_EQ(lsShim.exitCode, lsNative.exitCode);
     EXPECT_EQ(lsShim.out, lsNative.out);
     EXPECT_EQ(lsShim.err, "");
     // Plain LD_PRELOAD works the same way.
-    ProcessResult preload = runProcess({"ls", "-la", quiet}, {{"LD_PRELOAD", libPath()}});
+    ProcessResult preload = runProcess({"ls", "-l", quiet}, {{"LD_PRELOAD", libPath()}});
     EXPECT_EQ(preload.out, lsNative.out);
     EXPECT_EQ(preload.err, "");
 }
