@@ -97,7 +97,7 @@ void row(const char* what, int triangles, const Samples& s, double scale, double
          const char* unit)
 {
     const double wall = median(s.wall) * scale, cpu = median(s.cpu) * scale;
-    std::printf("%-28s %8d %10.3f ms %10.3f %10.3f %-13s %7.3f  %s\n", what, triangles,
+    std::printf("%-28s %8d %10.3f ms %10.4f %10.4f %-13s %7.3f  %s\n", what, triangles,
                 median(s.wall), wall, cpu, unit, target, wall <= target ? "ok" : "MISSED");
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstdio>
 
 #include "reconstruct/PrimitiveAssembly.h"
 
@@ -95,7 +94,6 @@ unsigned MeshBuilder::conflicts(const uint32_t v[3]) const
 void MeshBuilder::placeFace(ObjectMesh& object, uint32_t f, uint32_t v[3])
 {
     if (const unsigned bad = conflicts(v)) {
-        fprintf(stderr, "SAFETY placeFace\n");
         ++object.stats.splitFaces;
         for (int k = 0; k < 3; ++k) {
             if (bad & (1u << k)) v[k] = copyVertex(object, v[k]);
@@ -157,7 +155,9 @@ bool MeshBuilder::linkBoundaries(ObjectMesh& object)
     auto hasFace = [&](uint32_t h) { return (mEdgeUsed[h >> 1] >> (h & 1)) & 1u; };
     const std::vector<uint32_t>& ends = mEdges.ends();
     auto from = [&](uint32_t h) { return ends[h]; }; // 2e: ends[2e], 2e+1: ends[2e+1]
-    auto next = [&](uint32_t h) { return uint32_t(mesh.next_halfedge_handle(HalfedgeHandle(int(h))).idx()); };
+    auto next = [&](uint32_t h) {
+        return uint32_t(mesh.next_halfedge_handle(HalfedgeHandle(int(h))).idx());
+    };
 
     mOutBoundary.assign(vertexCount, kNoIndex);
     mFanVertices.clear();
@@ -198,7 +198,8 @@ bool MeshBuilder::linkBoundaries(ObjectMesh& object)
     for (uint32_t h = 0; h < halfedgeCount; ++h) {
         if (hasFace(h)) continue;
         const uint32_t to = from(h ^ 1u);
-        mesh.set_next_halfedge_handle(HalfedgeHandle(int(h)), HalfedgeHandle(int(mOutBoundary[to])));
+        mesh.set_next_halfedge_handle(HalfedgeHandle(int(h)),
+                                      HalfedgeHandle(int(mOutBoundary[to])));
     }
     for (uint32_t v = 0; v < vertexCount; ++v) {
         if (mOutBoundary[v] != kNoIndex)
@@ -212,7 +213,6 @@ bool MeshBuilder::linkBoundaries(ObjectMesh& object)
 // copy. With everyFace, every face gets its own three vertices: the last resort.
 void MeshBuilder::splitFans(ObjectMesh& object, bool everyFace)
 {
-    fprintf(stderr, "SAFETY splitFans %d\n", int(everyFace));
     std::vector<uint32_t>& faceVertices = object.faceVertices;
     const uint32_t faceCount = uint32_t(faceVertices.size() / 3);
     if (everyFace) {

@@ -38,7 +38,7 @@ struct BuildStats {
     uint32_t nonFiniteTriangles = 0;  // dropped: a corner position is NaN or infinite
     uint32_t degenerateTriangles = 0; // dropped: two corners welded together, or zero area
     uint32_t weldedVertices = 0;      // distinct finite positions after welding
-    uint32_t splitFaces = 0;          // non-manifold faces added on duplicated vertices
+    uint32_t splitFaces = 0;          // faces moved onto vertex copies (non-manifold input)
     uint32_t splitVertices = 0;       // vertex copies made for them
 };
 

@@ -80,6 +80,7 @@ std::shared_ptr<const ObjectMesh> Reconstructor::obtain(const Batch* batches,
             ++mCounters.hits;
             return entry->mesh;
         }
+        mCache.erase(entry); // a 64-bit key collision: make room for the real content
     }
 
     // An entry of the same structure that no object of this frame still shows: an animated

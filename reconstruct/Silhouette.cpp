@@ -23,6 +23,11 @@ inline bool silhouette(const EdgeInfo& e, const Mesh::Point* points,
     return (d0 < 0.0f && d1 > 0.0f) || (d0 > 0.0f && d1 < 0.0f);
 }
 
+const Mesh::Normal* faceNormals(const ObjectMesh& object)
+{
+    return object.mesh.property(object.mesh.face_normals_pph()).data();
+}
+
 } // namespace
 
 glm::vec3 eyeInObjectSpace(const glm::mat4& modelview) noexcept
@@ -34,7 +39,7 @@ glm::vec3 eyeInObjectSpace(const glm::mat4& modelview) noexcept
 bool isSilhouette(const ObjectMesh& object, EdgeIndex edge, const glm::vec3& eye) noexcept
 {
     if (edge >= object.edges.size()) return false;
-    return silhouette(object.edges[edge], object.mesh.points(), object.mesh.property(object.mesh.face_normals_pph()).data(), eye);
+    return silhouette(object.edges[edge], object.mesh.points(), faceNormals(object), eye);
 }
 
 void silhouetteEdges(const ObjectMesh& object, const glm::vec3& eye,
@@ -42,11 +47,11 @@ void silhouetteEdges(const ObjectMesh& object, const glm::vec3& eye,
 {
     out.clear();
     const Mesh::Point* points = object.mesh.points();
-    const Mesh::Normal* faceNormals = object.mesh.property(object.mesh.face_normals_pph()).data();
+    const Mesh::Normal* normals = faceNormals(object);
     const uint32_t count = uint32_t(object.edges.size());
     try {
         for (uint32_t e = 0; e < count; ++e) {
-            if (silhouette(object.edges[e], points, faceNormals, eye)) out.push_back(e);
+            if (silhouette(object.edges[e], points, normals, eye)) out.push_back(e);
         }
     } catch (...) {
         out.clear(); // out of memory

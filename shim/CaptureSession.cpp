@@ -78,6 +78,7 @@ CaptureSession::CaptureSession(std::string path, FrameSet frames)
 
 bool CaptureSession::ensureOpenLocked(const Context& ctx)
 {
+    if (mFinished && !mWriter.ownedByOtherProcess()) return false; // never reopen (truncate)
     if (mWriter.isOpen() && !mWriter.ownedByOtherProcess()) return true;
     if (mWriter.isOpen()) {
         // A forked child: leave the parent's file alone and start one of our own.
@@ -86,6 +87,7 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
         mOpenFailed = false;
         mFramesWritten = 0;
         mUncaptured.clear();
+        mFinished = false;
         mPath = pathForThisProcess(mBasePath);
     } else if (mPath.empty()) {
         mPath = pathForThisProcess(mBasePath);
@@ -116,7 +118,7 @@ uint64_t CaptureSession::putBlob(const Context& ctx, const void* data, size_t si
 {
     {
         std::lock_guard lock(mMutex);
-        ensureOpenLocked(ctx);
+        if (!ensureOpenLocked(ctx)) return capture::hashBlob(data, size);
     }
     return mWriter.putBlob(data, size);
 }
@@ -180,6 +182,7 @@ void CaptureSession::finish()
 
 void CaptureSession::finishLocked()
 {
+    if (mWriter.isOpen() && !mWriter.ownedByOtherProcess()) mFinished = true;
     if (!mWriter.isOpen() || mWriter.ownedByOtherProcess()) return;
     for (Recorder* recorder : mRecorders) {
         recorder->takeUncaptured([this](const char* name, uint64_t count) {

@@ -49,6 +49,7 @@ private:
     uint64_t mLastFrame;
     capture::CaptureWriter mWriter;
     bool mOpenFailed = false;
+    bool mFinished = false; // closed with its index: later frames are not recorded
     uint64_t mFramesWritten = 0;
     std::vector<std::pair<std::string, uint64_t>> mUncaptured;
     std::vector<Recorder*> mRecorders;

@@ -46,6 +46,7 @@ void Recorder::endFrame(uint64_t frame)
         mStopped = true;
     }
     mWriter.clear();
+    mBatchStart = SIZE_MAX;
 }
 
 UnpackState Recorder::unpackState() const
@@ -155,6 +156,23 @@ void Recorder::emitArrayRange(int slot, const uint8_t* base, size_t offset, size
     mWriter.put<uint64_t>(offset);
     mWriter.putBytes(base + offset, bytes);
     mWriter.endPayload(mark);
+}
+
+void Recorder::before_glBegin(GLenum) { mBatchStart = mWriter.size(); }
+
+void Recorder::after_glEnd()
+{
+    const size_t start = mBatchStart;
+    mBatchStart = SIZE_MAX;
+    if (start == SIZE_MAX || start > mWriter.size()) return;
+    const size_t bytes = mWriter.size() - start;
+    if (bytes < kBatchBlobBytes || mStopped) return;
+    // The calls from glBegin to glEnd become one reference to a blob with the same bytes.
+    const uint64_t hash = mSession.putBlob(mContext, mWriter.data() + start, bytes);
+    mWriter.truncate(start);
+    mWriter.op(op::kBatchRef);
+    mWriter.put<uint64_t>(hash);
+    mWriter.put<uint64_t>(bytes);
 }
 
 void Recorder::before_glDrawArrays(GLenum, GLint first, GLsizei count)

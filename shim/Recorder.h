@@ -39,6 +39,12 @@ public:
                   GLsizei height, GLsizei depth);
     void putIndices(CallWriter& w, const void* indices, GLsizei count, GLenum type);
 
+    // Immediate-mode batches: a glBegin..glEnd of kBatchBlobBytes or more is stored once as
+    // a blob and referenced (programs re-send the same geometry every frame).
+    static constexpr size_t kBatchBlobBytes = 512;
+    void before_glBegin(GLenum mode);
+    void after_glEnd();
+
     // State hooks, called before the call is recorded.
     void before_glDrawArrays(GLenum mode, GLint first, GLsizei count);
     void before_glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices);
@@ -111,6 +117,7 @@ private:
     std::vector<uint64_t> mUncaptured;
     std::vector<uint64_t> mUncapturedReported;
     bool mStopped = false;
+    size_t mBatchStart = SIZE_MAX; // writer offset of the open glBegin
 };
 
 template <typename Fn>

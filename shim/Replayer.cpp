@@ -76,6 +76,7 @@ public:
             return r.ok() && mFrameEnd(frame);
         }
         if (opcode == op::kArrayData) return mArrays.apply(r);
+        if (opcode == op::kBatchRef) return expandBatchRef(r, *this, mDepth);
         r.fail("unknown opcode " + std::to_string(opcode));
         return false;
     }
@@ -106,6 +107,7 @@ private:
     int mClientActiveTexture = 0;
     std::vector<uint8_t> mScratch;
     bool mScratchTooBig = false;
+    int mDepth = 0;
     std::string mError;
 };
 

@@ -282,6 +282,7 @@ bool StateTracker::isVertexCall(uint16_t opcode) const
     case op::glRecti:
     case op::glRects:
     case op::kArrayData:
+    case op::kBatchRef:
         return true;
     default:
         return opcode < op::kCount && (mInBegin || std::strncmp(kOpcodeNames[opcode], "glVertex", 8) == 0);
@@ -347,6 +348,20 @@ bool StateTracker::pseudo(CallReader& r, uint16_t opcode)
         return r.ok();
     }
     if (opcode == op::kArrayData) return mArrays.apply(r);
+    if (opcode == op::kBatchRef) {
+        const std::vector<uint8_t>* blob = r.getBlobRef();
+        if (!blob) return false;
+        if (mCallDepth >= 64) {
+            r.fail("batch references nested too deep");
+            return false;
+        }
+        ++mCallDepth;
+        std::string error;
+        const bool ok = runCalls(blob->data(), blob->size(), false, error);
+        --mCallDepth;
+        if (!ok) r.fail("in a referenced batch: " + error);
+        return ok;
+    }
     r.fail("unknown opcode " + std::to_string(opcode));
     return false;
 }

@@ -31,7 +31,7 @@ GEN_COMMANDS = {"glGenTextures", "glGenQueries", "glGenBuffers"}
 SPECIAL = {"glMapBuffer", "glUnmapBuffer", "glInterleavedArrays"}
 # Recorder hooks called before recording (state the recorder must follow).
 HOOK_BEFORE = {
-    "glDrawArrays", "glDrawElements", "glDrawRangeElements", "glArrayElement",
+    "glBegin", "glDrawArrays", "glDrawElements", "glDrawRangeElements", "glArrayElement",
     "glMultiDrawArrays", "glEnableClientState", "glDisableClientState",
     "glClientActiveTexture", "glEnableVertexAttribArray", "glDisableVertexAttribArray",
     "glBindBuffer", "glBufferData", "glBufferSubData", "glPushClientAttrib",
@@ -39,6 +39,8 @@ HOOK_BEFORE = {
     "glColorPointer", "glSecondaryColorPointer", "glFogCoordPointer", "glIndexPointer",
     "glEdgeFlagPointer", "glTexCoordPointer", "glVertexAttribPointer",
 }
+# Recorder hooks called after the call is encoded (before the driver's).
+HOOK_AFTER = {"glEnd"}
 CLIENT_POINTERS = {
     "glVertexPointer", "glNormalPointer", "glColorPointer", "glSecondaryColorPointer",
     "glFogCoordPointer", "glIndexPointer", "glEdgeFlagPointer", "glTexCoordPointer",
@@ -186,6 +188,8 @@ def emitRecord(cmds):
                     pass
             if variable:
                 body.append("    w_.endPayload(mark_);")
+            if name in HOOK_AFTER:
+                body.append(f"    rec_.after_{name}({args});")
             body.append(f"    return {call};")
         out.append(f"{ret} {name}({plist})\n{{")
         out += body
@@ -251,6 +255,7 @@ def emitOpcodes(cmds):
     out += [f"constexpr uint16_t {name} = {i};" for i, (_, name, _, _) in enumerate(cmds)]
     out += [f"constexpr uint16_t kFrameEnd = 0x{FRAME_END_OPCODE:X};",
             f"constexpr uint16_t kArrayData = 0x{FRAME_END_OPCODE + 1:X};",
+            f"constexpr uint16_t kBatchRef = 0x{FRAME_END_OPCODE + 2:X};",
             f"constexpr uint16_t kCount = {len(cmds)};",
             "} // namespace op"]
     out.append("constexpr const char* kOpcodeNames[] = {")

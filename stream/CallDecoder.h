@@ -10,8 +10,44 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <string>
+
 namespace nprgl {
 
 #include "nprgl_decode.inc"
+
+// Decodes every call in r into the sink; an unknown opcode is an error.
+template <typename Sink>
+bool decodeCalls(CallReader& r, Sink& sink)
+{
+    while (!r.atEnd()) {
+        const uint16_t opcode = r.get<uint16_t>();
+        if (!r.ok()) return false;
+        if (!decodeCall(r, opcode, sink)) {
+            if (r.ok()) r.fail("unknown opcode " + std::to_string(opcode));
+            return false;
+        }
+    }
+    return true;
+}
+
+// Runs the calls of a batch reference (its opcode already read) through the sink. The
+// recorder never nests them; a hostile file that does is stopped after a few levels.
+template <typename Sink>
+bool expandBatchRef(CallReader& r, Sink& sink, int& depth)
+{
+    const std::vector<uint8_t>* blob = r.getBlobRef();
+    if (!blob) return false;
+    if (depth >= 4) {
+        r.fail("batch references nested too deep");
+        return false;
+    }
+    ++depth;
+    CallReader inner(blob->data(), blob->size(), r.blobs());
+    const bool ok = decodeCalls(inner, sink);
+    --depth;
+    if (!ok) r.fail("in a referenced batch: " + inner.error());
+    return ok;
+}
 
 } // namespace nprgl

@@ -41,14 +41,9 @@ bool CallPrinter::printFrame(const uint8_t* data, size_t size, BlobSource* blobs
     CallPrinter printer;
     printer.mOut = &out;
     printer.mGrep = grep;
-    while (!reader.atEnd()) {
-        uint16_t opcode = reader.get<uint16_t>();
-        if (!reader.ok() || !decodeCall(reader, opcode, printer)) {
-            error = reader.ok() ? "offset " + std::to_string(reader.offset()) +
-                                      ": unknown opcode " + std::to_string(opcode)
-                                : reader.error();
-            return false;
-        }
+    if (!decodeCalls(reader, printer)) {
+        error = reader.error();
+        return false;
     }
     if (callCount) *callCount = printer.mCalls;
     return true;
@@ -132,6 +127,7 @@ void CallPrinter::end()
 
 bool CallPrinter::pseudo(CallReader& r, uint16_t opcode)
 {
+    if (opcode == op::kBatchRef) return expandBatchRef(r, *this, mDepth);
     if (opcode == op::kFrameEnd) {
         uint64_t frame = r.get<uint64_t>();
         if (!r.ok()) return false;

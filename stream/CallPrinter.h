@@ -62,6 +62,7 @@ private:
     std::string mGrep;
     bool mFirstArg = true;
     uint64_t mCalls = 0;
+    int mDepth = 0;
 };
 
 } // namespace nprgl

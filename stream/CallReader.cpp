@@ -47,6 +47,20 @@ const void* CallReader::getBytes(size_t& size)
     return p;
 }
 
+const std::vector<uint8_t>* CallReader::getBlobRef()
+{
+    uint64_t hash = get<uint64_t>();
+    uint64_t size = get<uint64_t>();
+    if (!ok()) return nullptr;
+    std::string error;
+    const std::vector<uint8_t>* blob = mBlobs ? mBlobs->blob(hash, error) : nullptr;
+    if (!blob || blob->size() != size) {
+        fail(blob ? "blob size mismatch" : mBlobs ? error : "blob reference without a capture file");
+        return nullptr;
+    }
+    return blob;
+}
+
 const void* CallReader::alignedCopy(const void* p, size_t size)
 {
     if (!p || reinterpret_cast<uintptr_t>(p) % alignof(double) == 0) return p;

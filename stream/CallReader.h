@@ -62,6 +62,9 @@ public:
     // Index data of glDrawElements: client bytes or an offset into the element buffer.
     const void* getIndices(int count, uint32_t type);
     const char* getString();
+    // A batch reference (u64 hash, u64 size): the blob's bytes, or null with the error set.
+    const std::vector<uint8_t>* getBlobRef();
+    BlobSource* blobs() const { return mBlobs; }
 
     struct Sources {
         const char* const* strings = nullptr;

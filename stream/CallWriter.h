@@ -31,6 +31,7 @@ public:
 
     void setBlobSink(BlobSink sink) { mBlobSink = std::move(sink); }
     void clear() { mSize = 0; }
+    void truncate(size_t size) { mSize = size < mSize ? size : mSize; }
     const uint8_t* data() const { return mData.get(); }
     size_t size() const { return mSize; }
 

