@@ -33,8 +33,6 @@ Recorder::~Recorder()
 
 const char* opcodeNameOf(size_t opcode) { return opcodeName(uint16_t(opcode)); }
 
-Recorder& Recorder::current() { return *tThread.context->recorder(); }
-
 void Recorder::endFrame(uint64_t frame)
 {
     mWriter.op(op::kFrameEnd);

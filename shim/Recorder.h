@@ -1,6 +1,8 @@
 #pragma once
 
 #include "shim/ClientArrays.h"
+#include "shim/Context.h"
+#include "shim/ThreadState.h"
 #include "stream/CallWriter.h"
 #include "stream/GlSizes.h"
 
@@ -13,6 +15,7 @@ namespace nprgl {
 class StreamSink;
 class Context;
 
+
 const char* opcodeNameOf(size_t opcode);
 
 // Turns one context's calls into the Stream: the generated recording functions encode each
@@ -24,7 +27,8 @@ public:
     ~Recorder();
 
     // The recorder of the current context (recording functions only run when it exists).
-    static Recorder& current();
+    // Inline: it is on the per-vertex path.
+    static Recorder& current() { return *tThread.context->recorder(); }
 
     CallWriter& writer() { return mWriter; }
     void countUncaptured(uint16_t opcode) { ++mUncaptured[opcode]; }

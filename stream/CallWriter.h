@@ -36,7 +36,7 @@ public:
     size_t size() const { return mSize; }
 
     template <typename T>
-    void put(T value)
+    __attribute__((always_inline)) void put(T value)
     {
         reserve(sizeof value);
         std::memcpy(mData.get() + mSize, &value, sizeof value);
@@ -61,7 +61,7 @@ public:
     void putSources(int count, const char* const* strings, const int* lengths);
 
 private:
-    void reserve(size_t n)
+    __attribute__((always_inline)) void reserve(size_t n)
     {
         if (mSize + n > mCapacity) grow(n);
     }
