@@ -1,5 +1,6 @@
 #include "shim/FrameExport.h"
 
+#include "common/Log.h"
 #include "reconstruct/MeshExport.h"
 
 namespace nprgl {
@@ -41,6 +42,11 @@ bool exportFrame(reconstruct::Reconstructor& reconstructor,
         out.push_back({o.mesh, space == ExportSpace::Eye ? o.modelview : glm::mat4(1.0f)});
     }
     if (objectCount) *objectCount = out.size();
+    const reconstruct::CacheStats stats = reconstructor.cacheStats();
+    NPRGL_DEBUG("reconstruction: %zu objects; cache hits %llu, updates %llu, rebuilds %llu",
+                out.size(), static_cast<unsigned long long>(stats.hits),
+                static_cast<unsigned long long>(stats.updates),
+                static_cast<unsigned long long>(stats.rebuilds));
     if (out.empty()) {
         error = "the frame has no 3D polygon geometry to export";
         return false;

@@ -12,7 +12,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
+#include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -289,6 +291,85 @@ TEST(Record, EachContextHasItsOwnStream)
         EXPECT_EQ(image.rgba[0], ctx == 1 ? 255 : 0);
         EXPECT_EQ(image.rgba[2], ctx == 1 ? 0 : 255);
     }
+}
+
+namespace {
+
+struct ObjGroupStats {
+    size_t faces = 0;
+    size_t borderEdges = 0;
+};
+
+// Faces and border edges (used by one face only) of each group of an OBJ file.
+std::vector<ObjGroupStats> objGroups(const std::string& path)
+{
+    std::vector<ObjGroupStats> groups;
+    std::vector<std::map<std::pair<long, long>, int>> edges;
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("g ", 0) == 0) {
+            groups.emplace_back();
+            edges.emplace_back();
+        } else if (line.rfind("f ", 0) == 0 && !groups.empty()) {
+            std::istringstream words(line.substr(2));
+            std::vector<long> v;
+            std::string word;
+            while (words >> word) v.push_back(std::stol(word.substr(0, word.find('/'))));
+            for (size_t i = 0; i < v.size(); ++i) {
+                long a = v[i], b = v[(i + 1) % v.size()];
+                ++edges.back()[{std::min(a, b), std::max(a, b)}];
+            }
+            ++groups.back().faces;
+        }
+    }
+    for (size_t g = 0; g < groups.size(); ++g) {
+        for (const auto& [edge, uses] : edges[g]) groups[g].borderEdges += uses == 1;
+    }
+    return groups;
+}
+
+} // namespace
+
+TEST(Export, AGlxgearsFrameIsThreeClosedGears)
+{
+    std::string dir = freshDir("export");
+    ProcessResult r = runProcess({nprglCommand(), "export", fixture("glxgears"), "--frame", "2",
+                                  "-o", dir + "/gears.obj"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<ObjGroupStats> groups = objGroups(dir + "/gears.obj");
+    ASSERT_EQ(groups.size(), 3u);
+    for (const ObjGroupStats& g : groups) {
+        EXPECT_GT(g.faces, 100u);
+        EXPECT_EQ(g.borderEdges, 0u);
+    }
+    for (const char* ext : {".ply", ".off"}) {
+        std::string out = dir + "/gears" + ext;
+        ProcessResult p = runProcess({nprglCommand(), "export", fixture("glxgears"), "--frame",
+                                      "2", "--space", "object", "-o", out});
+        EXPECT_EQ(p.exitCode, 0) << p.err;
+        EXPECT_GT(fs::file_size(out), 1000u);
+    }
+    ProcessResult missing = runProcess({nprglCommand(), "export", fixture("glxgears"),
+                                        "--frame", "99", "-o", dir + "/none.obj"});
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.err.find("no frame 99"), std::string::npos) << missing.err;
+}
+
+TEST(Export, LiveExportWritesTheRequestedFrame)
+{
+    std::string dir = freshDir("liveexport");
+    ProcessResult r = runProcess({nprglCommand(), "--", demo("displaylist"), "--offscreen",
+                                  "--frames", "4", "--size", "64x64"},
+                                 {{"NPRGL_EXPORT", "frame=3;dir=" + dir}});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<ObjGroupStats> groups = objGroups(dir + "/demo_displaylist_3.obj");
+    EXPECT_GE(groups.size(), 4u) << r.err; // the back plate and three gears
+    EXPECT_FALSE(fs::exists(dir + "/demo_displaylist_4.obj"));
+    ProcessResult bad = runProcess({demo("displaylist"), "--offscreen", "--frames", "2"},
+                                   {{"LD_PRELOAD", libPath()}, {"NPRGL_EXPORT", "frame=x"}});
+    EXPECT_EQ(bad.exitCode, 0);
+    EXPECT_NE(bad.err.find("NPRGL_EXPORT"), std::string::npos) << bad.err;
 }
 
 namespace {
