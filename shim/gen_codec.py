@@ -136,6 +136,32 @@ def classify(cmd, params):
     return "record"
 
 
+# How each kind of parameter is written by the recorder (0) and read back by the decoder (1):
+# one row per kind, so that the two sides cannot drift apart. {name} is the parameter, {n}
+# its decoded variable, {count} its element count (encoder) and {dcount} (decoder).
+CODEC = {
+    "scalar": ("w_.put<{base}>({name});", "const {base} {n} = r.get<{base}>();"),
+    "array": ("w_.putBytes({name}, {name} ? ({count}) * sizeof({elem}) : 0);",
+              "const {elem}* {n} = r.getArray<{elem}>({dcount});"),
+    "image": ("rec_.putImage(w_, {name}, {count});", "const void* {n} = r.getImage();"),
+    "indices": ("rec_.putIndices(w_, {name}, count, type);",
+                "const void* {n} = r.getIndices(a_count, a_type);"),
+    "string": ("w_.putString({name});", "const GLchar* {n} = r.getString();"),
+    "sources": ("w_.putSources(count, {name}, length);",
+                "const CallReader::Sources {n} = r.getSources(a_count);"),
+    "clientptr": ("w_.put<uint64_t>(reinterpret_cast<uintptr_t>({name}));",
+                  "const uint64_t {n} = r.get<uint64_t>();"),
+    "out": ("", "auto {n} = sink.template scratch<{base}>({dcount});"),
+}
+
+
+def codecLine(p, side):
+    count = p.count or ""
+    return CODEC[p.kind][side].format(name=p.name, n=f"a_{p.name}", base=p.base,
+                                      elem=elemType(p), count=sub(count, ""),
+                                      dcount=sub(count, "a_"))
+
+
 def encodingOrder(params):
     """Scalars first: array lengths may name a parameter declared after the array."""
     first = [p for p in params if p.kind in ("scalar", "clientptr")]
@@ -169,23 +195,8 @@ def emitRecord(cmds):
             if variable:
                 body.append("    const size_t mark_ = w_.beginPayload();")
             for p in encodingOrder(params):
-                if p.kind == "scalar":
-                    body.append(f"    w_.put<{p.base}>({p.name});")
-                elif p.kind == "array":
-                    body.append(f"    w_.putBytes({p.name}, {p.name} ? "
-                                f"({sub(p.count, '')}) * sizeof({elemType(p)}) : 0);")
-                elif p.kind == "image":
-                    body.append(f"    rec_.putImage(w_, {p.name}, {sub(p.count, '')});")
-                elif p.kind == "indices":
-                    body.append(f"    rec_.putIndices(w_, {p.name}, count, type);")
-                elif p.kind == "string":
-                    body.append(f"    w_.putString({p.name});")
-                elif p.kind == "sources":
-                    body.append(f"    w_.putSources(count, {p.name}, length);")
-                elif p.kind == "clientptr":
-                    body.append(f"    w_.put<uint64_t>(reinterpret_cast<uintptr_t>({p.name}));")
-                elif p.kind == "out":
-                    pass
+                if CODEC[p.kind][0]:
+                    body.append("    " + codecLine(p, 0))
             if variable:
                 body.append("    w_.endPayload(mark_);")
             if name in HOOK_AFTER:
@@ -284,26 +295,7 @@ def emitDecode(cmds, groups):
         if variable:
             out.append("        CallReader::Payload payload(r);")
         for p in encodingOrder(params):
-            n = f"a_{p.name}"
-            if p.kind == "scalar":
-                out.append(f"        const {p.base} {n} = r.get<{p.base}>();")
-            elif p.kind == "array":
-                expected = sub(p.count, "a_")
-                out.append(f"        const {elemType(p)}* {n} = r.getArray<{elemType(p)}>"
-                           f"({expected});")
-            elif p.kind == "image":
-                out.append(f"        const void* {n} = r.getImage();")
-            elif p.kind == "indices":
-                out.append(f"        const void* {n} = r.getIndices(a_count, a_type);")
-            elif p.kind == "string":
-                out.append(f"        const GLchar* {n} = r.getString();")
-            elif p.kind == "sources":
-                out.append(f"        const CallReader::Sources {n} = r.getSources(a_count);")
-            elif p.kind == "clientptr":
-                out.append(f"        const uint64_t {n} = r.get<uint64_t>();")
-            elif p.kind == "out":
-                out.append(f"        auto {n} = sink.template scratch<{p.base}>"
-                           f"({sub(p.count, 'a_')});")
+            out.append("        " + codecLine(p, 1))
         out.append("        if (!r.ok()) return false;")
         # Replay: typed call through the sink (which owns the dispatch and the substitutions).
         cargs = []
