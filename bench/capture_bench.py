@@ -50,7 +50,9 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-REPORT_RE = re.compile(r"^frames=(\d+) seconds=([0-9.eE+-]+) fps=([0-9.eE+-]+)\s*$", re.M)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from benchlib import RunFailed, report_fps  # noqa: E402
+
 GLRETRACE_RE = re.compile(r"Rendered (\d+) frames in ([0-9.eE+-]+) secs")
 INFO_FRAMES_RE = re.compile(r"^frames:\s+(\d+)", re.M)
 INFO_CALL_RE = re.compile(r"^\s+(\d+)\s+(gl\w+)\s*$", re.M)
@@ -163,8 +165,6 @@ class Result:
         return d
 
 
-class RunFailed(Exception):
-    pass
 
 
 def clean_env() -> dict[str, str]:
@@ -213,19 +213,6 @@ def run(cmd: list[str], env: dict[str, str], hang_guard: float) -> tuple[float, 
         raise RunFailed(f"exit status {proc.returncode}: {' '.join(cmd)}\n"
                         f"{proc.stderr.strip()[-2000:]}")
     return wall, proc.stdout, proc.stderr
-
-
-def report_fps(cmd: list[str], stdout: str, stderr: str, frames: int) -> float:
-    matches = REPORT_RE.findall(stdout)
-    if not matches:
-        raise RunFailed(f"no 'frames=N seconds=S fps=F' line: {' '.join(cmd)}\n"
-                        f"stdout: {stdout.strip()[-1000:]}\nstderr: {stderr.strip()[-1000:]}")
-    done, _seconds, fps = matches[-1]
-    if int(done) != frames:
-        raise RunFailed(f"{done} frames rendered, {frames} asked: {' '.join(cmd)}")
-    if float(fps) <= 0.0:
-        raise RunFailed(f"fps={fps}: {' '.join(cmd)}")
-    return float(fps)
 
 
 def file_size(path: Path, cmd: list[str]) -> int:

@@ -32,8 +32,10 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from benchlib import RunFailed, report_fps  # noqa: E402
+
 TARGET_RATIO = 0.97
-REPORT_RE = re.compile(r"^frames=(\d+) seconds=([0-9.eE+-]+) fps=([0-9.eE+-]+)\s*$", re.M)
 REPO_ROOT = Path(__file__).resolve().parent.parent
 
 
@@ -88,8 +90,6 @@ class Result:
         }
 
 
-class RunFailed(Exception):
-    pass
 
 
 def clean_env(mode: str) -> dict[str, str]:
@@ -127,16 +127,7 @@ def run_once(cmd: list[str], env: dict[str, str], frames: int, hang_guard: float
     if proc.returncode != 0:
         raise RunFailed(f"exit status {proc.returncode}: {' '.join(cmd)}\n"
                         f"{proc.stderr.strip()}")
-    matches = REPORT_RE.findall(proc.stdout)
-    if not matches:
-        raise RunFailed(f"no 'frames=N seconds=S fps=F' line: {' '.join(cmd)}\n"
-                        f"stdout: {proc.stdout.strip()}\nstderr: {proc.stderr.strip()}")
-    done, seconds, fps = matches[-1]
-    if int(done) != frames:
-        raise RunFailed(f"{done} frames rendered, {frames} asked: {' '.join(cmd)}")
-    if float(fps) <= 0.0:
-        raise RunFailed(f"fps={fps} (seconds={seconds}): {' '.join(cmd)}")
-    return float(fps)
+    return report_fps(cmd, proc.stdout, proc.stderr, frames)
 
 
 def fmt_fps(values: list[float]) -> str:

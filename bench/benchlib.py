@@ -1,0 +1,24 @@
+"""What the benchmark scripts share: reading a demo app's --report line."""
+from __future__ import annotations
+
+import re
+
+REPORT_RE = re.compile(r"^frames=(\d+) seconds=([0-9.eE+-]+) fps=([0-9.eE+-]+)\s*$", re.M)
+
+
+class RunFailed(Exception):
+    """A benchmark run that did not produce a usable figure."""
+
+
+def report_fps(cmd: list[str], stdout: str, stderr: str, frames: int) -> float:
+    """The fps of a demo's `frames=N seconds=S fps=F` line, checked against the frames asked."""
+    matches = REPORT_RE.findall(stdout)
+    if not matches:
+        raise RunFailed(f"no 'frames=N seconds=S fps=F' line: {' '.join(cmd)}\n"
+                        f"stdout: {stdout.strip()[-1000:]}\nstderr: {stderr.strip()[-1000:]}")
+    done, seconds, fps = matches[-1]
+    if int(done) != frames:
+        raise RunFailed(f"{done} frames rendered, {frames} asked: {' '.join(cmd)}")
+    if float(fps) <= 0.0:
+        raise RunFailed(f"fps={fps} (seconds={seconds}): {' '.join(cmd)}")
+    return float(fps)
