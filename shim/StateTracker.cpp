@@ -89,7 +89,12 @@ void APIENTRY tPopMatrix() { T().popMatrix(); }
 void APIENTRY tEnable(GLenum cap) { T().setEnabled(cap, true); }
 void APIENTRY tDisable(GLenum cap) { T().setEnabled(cap, false); }
 void APIENTRY tMaterialfv(GLenum face, GLenum pname, const GLfloat* v) { T().material(face, pname, v); }
-void APIENTRY tMaterialf(GLenum face, GLenum pname, GLfloat v) { T().material(face, pname, &v); }
+void APIENTRY tMaterialf(GLenum face, GLenum pname, GLfloat v)
+{
+    // Only single-valued pnames are valid here (the driver refuses the others).
+    const float values[4] = {v, 0.0f, 0.0f, 0.0f};
+    if (pnameCount(pname) == 1) T().material(face, pname, values);
+}
 void APIENTRY tMaterialiv(GLenum face, GLenum pname, const GLint* v)
 {
     float f[4];

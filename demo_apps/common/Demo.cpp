@@ -53,4 +53,26 @@ void setPerspective(double fovYDegrees, double aspect, double zNear, double zFar
     glMatrixMode(GL_MODELVIEW);
 }
 
+void drawSphere(float radius, int stacks, int slices, float textureRepeats)
+{
+    const float pi = 3.14159265358979f;
+    for (int i = 0; i < stacks; ++i) {
+        glBegin(GL_TRIANGLE_STRIP);
+        for (int j = 0; j <= slices; ++j) {
+            float lon = 2.0f * pi * j / slices;
+            for (int k = 0; k <= 1; ++k) {
+                float lat = pi * (i + k) / stacks - pi / 2.0f;
+                float n[3] = {std::cos(lat) * std::cos(lon), std::sin(lat),
+                              -std::cos(lat) * std::sin(lon)};
+                glNormal3f(n[0], n[1], n[2]);
+                if (textureRepeats > 0.0f) {
+                    glTexCoord2f(textureRepeats * j / slices, static_cast<float>(i + k) / stacks);
+                }
+                glVertex3f(radius * n[0], radius * n[1], radius * n[2]);
+            }
+        }
+        glEnd();
+    }
+}
+
 } // namespace demo

@@ -10,4 +10,8 @@ int run(int argc, char** argv, const char* shortName, Scene& scene);
 // Sets a perspective projection like gluPerspective, without depending on GLU.
 void setPerspective(double fovYDegrees, double aspect, double zNear, double zFar);
 
+// A lit sphere at the origin, one GL_TRIANGLE_STRIP per band of latitude; with
+// textureRepeats > 0, texture coordinates that wrap that many times around it.
+void drawSphere(float radius, int stacks, int slices, float textureRepeats = 0.0f);
+
 } // namespace demo

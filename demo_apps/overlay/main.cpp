@@ -71,24 +71,6 @@ GlyphBitmap makeBitmap(const Glyph& glyph)
     return bitmap;
 }
 
-void drawSphere(float radius, int stacks, int slices)
-{
-    for (int i = 0; i < stacks; ++i) {
-        glBegin(GL_TRIANGLE_STRIP);
-        for (int j = 0; j <= slices; ++j) {
-            float lon = 2.0f * pi * j / slices;
-            for (int k = 0; k <= 1; ++k) {
-                float lat = pi * (i + k) / stacks - pi / 2.0f;
-                float n[3] = {std::cos(lat) * std::cos(lon), std::sin(lat),
-                              -std::cos(lat) * std::sin(lon)};
-                glNormal3f(n[0], n[1], n[2]);
-                glVertex3f(radius * n[0], radius * n[1], radius * n[2]);
-            }
-        }
-        glEnd();
-    }
-}
-
 void drawTorus(float major, float minor, int rings, int sides)
 {
     for (int i = 0; i < rings; ++i) {
@@ -158,7 +140,7 @@ private:
             glRotatef(-frame * 1.0f + i * 60.0f, 0.0f, 1.0f, 0.0f);
             glTranslatef(2.4f, 0.4f * std::sin(frame * 0.1f + i), 0.0f);
             setColour(colours[i][0], colours[i][1], colours[i][2]);
-            drawSphere(0.35f, 12, 16);
+            demo::drawSphere(0.35f, 12, 16);
             glPopMatrix();
         }
     }

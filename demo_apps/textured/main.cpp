@@ -88,26 +88,6 @@ void drawCube(float half)
     glEnd();
 }
 
-void drawSphere(float radius, int stacks, int slices)
-{
-    for (int i = 0; i < stacks; ++i) {
-        glBegin(GL_TRIANGLE_STRIP);
-        for (int j = 0; j <= slices; ++j) {
-            float lon = 2.0f * pi * j / slices;
-            for (int k = 0; k <= 1; ++k) {
-                float lat = pi * (i + k) / stacks - pi / 2.0f;
-                float n[3] = {std::cos(lat) * std::cos(lon), std::sin(lat),
-                              -std::cos(lat) * std::sin(lon)};
-                // Two texture repeats around so the stripes stay square-ish.
-                glTexCoord2f(2.0f * j / slices, static_cast<float>(i + k) / stacks);
-                glNormal3f(n[0], n[1], n[2]);
-                glVertex3f(radius * n[0], radius * n[1], radius * n[2]);
-            }
-        }
-        glEnd();
-    }
-}
-
 class TexturedScene : public demo::Scene {
 public:
     bool init(const demo::Options& options, std::string&) override
@@ -173,7 +153,7 @@ public:
         glTranslatef(1.3f, 0.0f, 0.0f);
         glRotatef(frame * 2.0f, 0.0f, 1.0f, 0.0f);
         glRotatef(20.0f, 0.0f, 0.0f, 1.0f);
-        drawSphere(0.95f, 24, 32);
+        demo::drawSphere(0.95f, 24, 32, 2.0f);
         glPopMatrix();
     }
 
