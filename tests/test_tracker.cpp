@@ -151,6 +151,8 @@ TEST(Reconstruction, ImmediateModeShapesWeldAcrossTheirBatches)
                                                << objects[i].mesh->stats.splitFaces
                                                << " degenerate "
                                                << objects[i].mesh->stats.degenerateTriangles;
-        if (i > 0) EXPECT_EQ(objects[i].mesh->eulerCharacteristic(), 2) << i;
+        if (i > 0) {
+            EXPECT_EQ(objects[i].mesh->eulerCharacteristic(), 2) << i;
+        }
     }
 }
