@@ -5,7 +5,7 @@ pkgs=(
     build-essential cmake ninja-build pkg-config python3
     khronos-api libgl-dev libegl-dev libx11-dev libosmesa6-dev libgl1-mesa-dri
     libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
-    libcli11-dev
+    libcli11-dev libassimp-dev assimp-testmodels
     mesa-utils x11-utils xvfb xauth
     apitrace
     clang libclang-rt-14-dev

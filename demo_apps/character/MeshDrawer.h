@@ -1,0 +1,25 @@
+#pragma once
+
+#include "CharacterPose.h"
+
+namespace character {
+
+// Sends a pose to GL every frame in one of three legacy ways.
+class MeshDrawer {
+public:
+    enum class Mode { ClientArrays, Immediate, BufferObjects };
+
+    explicit MeshDrawer(Mode mode) : mode_(mode) {}
+
+    void init(); // GL state for the mode; the context must be current
+    void draw(const CharacterPose& pose);
+    void shutdown();
+
+private:
+    void drawImmediate(const CharacterPose& pose, const Part& part);
+
+    Mode mode_;
+    unsigned buffers_[2] = {0, 0};
+};
+
+} // namespace character

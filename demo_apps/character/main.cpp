@@ -1,0 +1,165 @@
+// demo_character: the three character-animation techniques on models from assimp-testmodels:
+// morphing between MD2 keyframes, linear-blend skinning of a boned mesh, and rigid limbs
+// driven by a BVH motion clip. The geometry goes to GL every frame through client arrays,
+// immediate mode (--immediate) or buffer objects (--vbo).
+
+#include "Demo.h"
+#include "Md2Animator.h"
+#include "MeshDrawer.h"
+#include "RigidAnimator.h"
+#include "SkinAnimator.h"
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <numbers>
+
+namespace {
+
+constexpr const char* defaultModel = "/usr/share/assimp/models/MD2/sydney.md2";
+constexpr double animationStep = 1.0 / 30.0; // seconds of animation per frame, never wall time
+constexpr float orbitDegreesPerFrame = 1.0f;
+constexpr float elevationDegrees = 12.0f;
+constexpr double fieldOfView = 35.0;
+
+std::string lowerExtension(const std::string& path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+class CharacterScene : public demo::Scene {
+public:
+    std::vector<demo::ExtraOption> extraOptions() const override
+    {
+        using Kind = demo::ExtraOption::Kind;
+        return {{"model", Kind::Text, std::string("model file (default ") + defaultModel + ")"},
+                {"technique", Kind::Text, "morph, skin or rigid (default: from the file type)"},
+                {"clip", Kind::Text, "animation or MD2 frame group to play"},
+                {"immediate", Kind::Flag, "draw in immediate mode"},
+                {"vbo", Kind::Flag, "draw from buffer objects refilled every frame"}};
+    }
+
+    bool init(const demo::Options& options, std::string& error) override
+    {
+        std::string path = options.textValue("model", defaultModel);
+        if (!std::ifstream(path, std::ios::binary)) {
+            error = "cannot open model file " + path;
+            return false;
+        }
+        std::string technique = options.textValue("technique", "");
+        if (technique.empty()) {
+            std::string ext = lowerExtension(path);
+            technique = ext == ".md2" ? "morph" : (ext == ".bvh" ? "rigid" : "skin");
+        }
+        if (technique == "morph") {
+            animator_ = std::make_unique<character::Md2Animator>();
+        } else if (technique == "skin") {
+            animator_ = std::make_unique<character::SkinAnimator>();
+        } else if (technique == "rigid") {
+            animator_ = std::make_unique<character::RigidAnimator>();
+        } else {
+            error = "unknown technique " + technique + " (morph, skin or rigid)";
+            return false;
+        }
+        if (!animator_->load(path, options.textValue("clip", ""), error)) return false;
+        if (options.report) std::printf("%s\n", animator_->describe().c_str());
+
+        using Mode = character::MeshDrawer::Mode;
+        drawer_ = std::make_unique<character::MeshDrawer>(
+            options.has("vbo") ? Mode::BufferObjects
+                               : (options.has("immediate") ? Mode::Immediate : Mode::ClientArrays));
+        frameModel();
+
+        glViewport(0, 0, options.width, options.height);
+        distance_ = static_cast<float>(1.05 / std::sin(fieldOfView * std::numbers::pi / 360.0));
+        demo::setPerspective(fieldOfView, static_cast<double>(options.width) / options.height,
+                             0.05 * distance_, distance_ + 4.0);
+        glClearColor(0.12f, 0.13f, 0.16f, 1.0f);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glEnable(GL_NORMALIZE); // the framing scale shortens the normals
+        glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+        const float ambient[] = {0.25f, 0.2f, 0.18f, 1.0f};
+        const float diffuse[] = {0.85f, 0.62f, 0.45f, 1.0f};
+        const float specular[] = {0.3f, 0.3f, 0.3f, 1.0f};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, specular);
+        glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
+        glShadeModel(GL_SMOOTH);
+        drawer_->init();
+        return true;
+    }
+
+    void draw(int frame) override
+    {
+        animator_->pose((frame - 1) * animationStep, pose_);
+
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        const float lightDirection[] = {0.4f, 0.8f, 0.7f, 0.0f};
+        glLightfv(GL_LIGHT0, GL_POSITION, lightDirection);
+        glTranslatef(0.0f, 0.0f, -distance_);
+        glRotatef(elevationDegrees, 1.0f, 0.0f, 0.0f);
+        glRotatef(frame * orbitDegreesPerFrame, 0.0f, 1.0f, 0.0f);
+        glScalef(1.0f / radius_, 1.0f / radius_, 1.0f / radius_);
+        glTranslatef(-centre_[0], -centre_[1], -centre_[2]);
+        drawer_->draw(pose_);
+    }
+
+    void shutdown() override
+    {
+        if (drawer_) drawer_->shutdown();
+    }
+
+private:
+    // Centre and radius of the first pose, with every part in its place.
+    void frameModel()
+    {
+        animator_->pose(0.0, pose_);
+        float low[3] = {1e30f, 1e30f, 1e30f}, high[3] = {-1e30f, -1e30f, -1e30f};
+        for (const character::Part& part : pose_.parts) {
+            const float* m = part.matrix;
+            for (uint32_t i = part.firstIndex; i < part.firstIndex + part.indexCount; ++i) {
+                const float* p = pose_.vertices[pose_.indices[i]].position;
+                for (int k = 0; k < 3; ++k) {
+                    float v = m[k] * p[0] + m[4 + k] * p[1] + m[8 + k] * p[2] + m[12 + k];
+                    low[k] = std::min(low[k], v);
+                    high[k] = std::max(high[k], v);
+                }
+            }
+        }
+        float squared = 0.0f;
+        for (int k = 0; k < 3; ++k) {
+            centre_[k] = 0.5f * (low[k] + high[k]);
+            squared += 0.25f * (high[k] - low[k]) * (high[k] - low[k]);
+        }
+        radius_ = squared > 0.0f ? std::sqrt(squared) : 1.0f;
+    }
+
+    std::unique_ptr<character::Animator> animator_;
+    std::unique_ptr<character::MeshDrawer> drawer_;
+    character::CharacterPose pose_;
+    float centre_[3] = {0.0f, 0.0f, 0.0f};
+    float radius_ = 1.0f;
+    float distance_ = 5.0f;
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CharacterScene scene;
+    return demo::run(argc, argv, "character", scene);
+}
