@@ -435,6 +435,9 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
     }
     const float diagonal = lo.x <= hi.x ? glm::length(hi - lo) : 0.0f;
     state.weldTolerance = std::isfinite(diagonal) ? params.weldTolerance * diagonal : 0.0f;
+    state.updateTolerance = std::isfinite(diagonal)
+                                ? std::max(params.updateTolerance, params.weldTolerance) * diagonal
+                                : 0.0f;
     stats.weldedVertices =
         mWelder.weld(sources, total, lo, hi, state.weldTolerance, state.weld, state.weldRep);
 
@@ -498,7 +501,7 @@ bool MeshBuilder::prepareUpdate(const ObjectMesh& object, const Batch* batches, 
     mStaged.reserve(object.sourceVertices.size());
     mGeometry.prepare(object.mesh.n_vertices());
     mGeometry.areaSum.reserve(object.mesh.n_vertices()); // applyUpdate must not allocate
-    const float tol2 = state.weldTolerance * state.weldTolerance;
+    const float tol2 = state.updateTolerance * state.updateTolerance;
     const uint32_t* weld = state.weld.data();
     const uint32_t* rep = state.weldRep.data();
     uint32_t i = 0;

@@ -97,6 +97,7 @@ struct ObjectMesh {
         std::vector<uint32_t> splitVertices;  // mesh vertices that are copies (non-manifold)
         std::vector<uint32_t> areaDropped;    // source-vertex triples dropped for zero area
         float weldTolerance = 0.0f;           // absolute, at the build
+        float updateTolerance = 0.0f;         // absolute: welded corners may drift this far
     } updateState;
 };
 

@@ -18,6 +18,8 @@ ReconstructParams sanitized(ReconstructParams params)
     const ReconstructParams defaults;
     if (!(params.weldTolerance >= 0.0f) || !std::isfinite(params.weldTolerance))
         params.weldTolerance = defaults.weldTolerance;
+    if (!(params.updateTolerance >= 0.0f) || !std::isfinite(params.updateTolerance))
+        params.updateTolerance = defaults.updateTolerance;
     if (std::isnan(params.creaseCosine)) params.creaseCosine = defaults.creaseCosine;
     return params;
 }

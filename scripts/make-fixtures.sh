@@ -14,6 +14,12 @@ for app in immediate arrays displaylist textured overlay dlopen; do
 done
 "$nprgl" record -o "$out/arrays_vbo.nprgl" -- "$build/bin/demo_arrays" --vbo --offscreen \
     --frames 3 --size 160x120 2>/dev/null
+# The character demo's three animation techniques, on Debian's assimp-testmodels.
+models=/usr/share/assimp/models
+for pair in morph:MD2/sydney.md2 skin:X/Testwuson.X rigid:BVH/01_01.bvh; do
+    "$nprgl" record -o "$out/character_${pair%%:*}.nprgl" -- "$build/bin/demo_character" \
+        --model "$models/${pair#*:}" --offscreen --frames 3 --size 160x120 2>/dev/null
+done
 # glxgears runs until stopped; the recording ends after frame 3 and the file is complete.
 "$root/scripts/with-display.sh" timeout -s INT 4 "$nprgl" record --frames 1-3 \
     -o "$out/glxgears.nprgl" -- glxgears >/dev/null 2>&1 || true

@@ -128,6 +128,26 @@ TEST(Fixtures, EveryDemoFixtureReplaysAsTheDemoDrawsToday)
     }
 }
 
+TEST(Fixtures, CharacterFixturesReplayAsTheDemoDrawsToday)
+{
+    const std::string models = "/usr/share/assimp/models/";
+    const std::vector<std::pair<std::string, std::string>> fixtures = {
+        {"character_morph", "MD2/sydney.md2"},
+        {"character_skin", "X/Testwuson.X"},
+        {"character_rigid", "BVH/01_01.bvh"}};
+    for (const auto& [name, model] : fixtures) {
+        if (!fs::exists(models + model)) GTEST_SKIP() << "assimp-testmodels is not installed";
+        std::string dir = freshDir("character"), live = dir + "/live", replay = dir + "/replay";
+        ProcessResult r = runProcess({demo("character"), "--model", models + model,
+                                      "--offscreen", "--frames", "3", "--size", "160x120",
+                                      "--save-dir", live});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        ProcessResult p = runProcess({nprglCommand(), "replay", fixture(name), "-o", replay});
+        ASSERT_EQ(p.exitCode, 0) << name << ": " << p.err;
+        expectSameFrames(live, "character", replay, 3);
+    }
+}
+
 TEST(Fixtures, GlxgearsReplaysAsGlxgears)
 {
     std::string replay = freshDir("gears");

@@ -156,3 +156,34 @@ TEST(Reconstruction, ImmediateModeShapesWeldAcrossTheirBatches)
         }
     }
 }
+
+TEST(Reconstruction, AnimatedCharactersKeepTheirTopology)
+{
+    // After its first frame, a character whose vertices move (morphing, skinning) is updated
+    // in place, never rebuilt; a rigid figure's parts come from the cache. (The rigid figure
+    // is followed from frame 2: in frame 1's rest pose some consecutive parts share one
+    // transform and so, by design, one object.)
+    const std::pair<const char*, uint64_t> cases[] = {
+        {"character_morph", 1}, {"character_skin", 1}, {"character_rigid", 2}};
+    for (const auto& [name, start] : cases) {
+        reconstruct::Reconstructor reconstructor;
+        std::vector<reconstruct::FrameObject> first =
+            reconstructor.build(reconstructionBatches(frameBatches(name, start)));
+        ASSERT_FALSE(first.empty()) << name;
+        const uint64_t rebuilt = reconstructor.cacheStats().rebuilds;
+        EXPECT_EQ(rebuilt, first.size()) << name;
+        for (uint64_t frame = start + 1; frame <= 3; ++frame) {
+            std::vector<reconstruct::FrameObject> objects =
+                reconstructor.build(reconstructionBatches(frameBatches(name, frame)));
+            EXPECT_EQ(objects.size(), first.size()) << name << " frame " << frame;
+        }
+        const reconstruct::CacheStats stats = reconstructor.cacheStats();
+        EXPECT_EQ(stats.rebuilds, rebuilt) << name << ": topology changed";
+        EXPECT_EQ(stats.hits + stats.updates, (3 - start) * first.size()) << name;
+        if (std::string(name) == "character_rigid") {
+            EXPECT_EQ(stats.updates, 0u) << name << ": rigid parts do not deform";
+        } else {
+            EXPECT_GT(stats.updates, 0u) << name << ": the mesh did not move";
+        }
+    }
+}
