@@ -146,3 +146,18 @@ TEST(CharacterErrors, UnknownTechniqueIsRefused)
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("warp"), std::string::npos) << r.err;
 }
+
+TEST(CharacterTexture, MD2SkinsAreLoadedAndABadOneIsNamed)
+{
+    const std::string md2 = "/usr/share/assimp/models/MD2/";
+    if (!fs::exists(md2 + "sydney.md2")) GTEST_SKIP() << "assimp-testmodels is not installed";
+    // sydney.bmp lies beside sydney.md2: the model is drawn textured.
+    ProcessResult r = runProcess({demoCharacter(), "--model", md2 + "sydney.md2", "--offscreen",
+                                  "--frames", "1", "--size", "64x64", "--report"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("textured"), std::string::npos) << r.out;
+    ProcessResult bad = runProcess({demoCharacter(), "--model", md2 + "faerie.md2", "--texture",
+                                    "/no/such/skin.bmp", "--offscreen", "--frames", "1"});
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_NE(bad.err.find("/no/such/skin.bmp"), std::string::npos) << bad.err;
+}

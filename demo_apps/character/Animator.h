@@ -1,6 +1,7 @@
 #pragma once
 
 #include "CharacterPose.h"
+#include "SkinImage.h"
 
 #include <string>
 
@@ -17,6 +18,8 @@ public:
     virtual void pose(double seconds, CharacterPose& pose) = 0;
     // One line for --report and the log: technique, clip, sizes.
     virtual std::string describe() const = 0;
+    // The model's texture, or null when it has none (then the vertices' texcoords are unused).
+    virtual const SkinImage* skin() const { return nullptr; }
 };
 
 } // namespace character

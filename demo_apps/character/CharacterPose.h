@@ -8,6 +8,7 @@ namespace character {
 struct Vertex {
     float position[3];
     float normal[3];
+    float texcoord[2] = {0.0f, 0.0f};
 };
 
 // A run of triangles drawn with one model transform: the whole body for morphing and

@@ -3,6 +3,8 @@
 #include "NormalBuilder.h"
 
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -51,19 +53,44 @@ bool Md2Animator::load(const std::string& path, const std::string& clip, std::st
         return false;
     }
 
+    const bool textured = h.numSt > 0 && h.skinWidth > 0 && h.skinHeight > 0 &&
+                          fits(h.ofsSt, h.numSt, 4);
+    std::map<std::pair<int, int>, uint32_t> corners; // (vertex, st) -> pose vertex
     for (int t = 0; t < h.numTris; ++t) {
-        int16_t corner[3];
+        int16_t corner[3], st[3];
         std::memcpy(corner, data.data() + h.ofsTris + 12 * t, sizeof corner);
-        for (int16_t c : corner) {
-            if (c < 0 || c >= h.numVertices) {
+        std::memcpy(st, data.data() + h.ofsTris + 12 * t + 6, sizeof st);
+        for (int k = 0; k < 3; ++k) {
+            if (corner[k] < 0 || corner[k] >= h.numVertices ||
+                (textured && (st[k] < 0 || st[k] >= h.numSt))) {
                 error = path + ": triangle refers to a missing vertex";
                 return false;
             }
         }
         // MD2 triangles wind clockwise; GL's front faces wind counter-clockwise.
-        triangles_.insert(triangles_.end(), {uint32_t(corner[0]), uint32_t(corner[2]),
-                                             uint32_t(corner[1])});
+        for (int k : {0, 2, 1}) {
+            triangles_.push_back(uint32_t(corner[k]));
+            const int s = textured ? st[k] : 0;
+            auto [it, added] = corners.emplace(std::pair{int(corner[k]), s},
+                                               uint32_t(cornerVertex_.size()));
+            if (added) {
+                cornerVertex_.push_back(uint32_t(corner[k]));
+                int16_t uv[2] = {0, 0};
+                if (textured) std::memcpy(uv, data.data() + h.ofsSt + 4 * s, sizeof uv);
+                // MD2 measures t from the top of the skin; GL from its bottom row.
+                cornerTexcoord_.insert(cornerTexcoord_.end(),
+                                       {float(uv[0]) / h.skinWidth,
+                                        1.0f - float(uv[1]) / h.skinHeight});
+            }
+            cornerTriangles_.push_back(it->second);
+        }
     }
+    std::vector<std::string> skinNames;
+    for (int i = 0; fits(h.ofsSkins, h.numSkins, 64) && i < h.numSkins; ++i) {
+        skinNames.emplace_back(data.data() + h.ofsSkins + 64 * i,
+                               strnlen(data.data() + h.ofsSkins + 64 * i, 64));
+    }
+    if (textured && !loadSkin(path, skinNames, error)) return false;
 
     for (int f = 0; f < h.numFrames; ++f) {
         const char* frame = data.data() + h.ofsFrames + static_cast<int64_t>(f) * h.frameSize;
@@ -114,17 +141,48 @@ void Md2Animator::pose(double seconds, CharacterPose& pose)
     const std::vector<float>& from = frames_[clipFirst_ + a].positions;
     const std::vector<float>& to = frames_[clipFirst_ + b].positions;
 
+    // Blend and light the MD2 vertices, then give each texture corner its vertex: normals are
+    // built on the shared vertices so that texture seams are not shading seams.
     size_t count = from.size() / 3;
-    pose.vertices.resize(count);
+    shared_.resize(count);
     for (size_t v = 0; v < count; ++v) {
         for (int i = 0; i < 3; ++i) {
-            pose.vertices[v].position[i] = from[3 * v + i] + t * (to[3 * v + i] - from[3 * v + i]);
+            shared_[v].position[i] = from[3 * v + i] + t * (to[3 * v + i] - from[3 * v + i]);
         }
     }
-    pose.indices = triangles_;
-    buildNormals(pose.vertices, pose.indices);
+    buildNormals(shared_, triangles_);
+    pose.vertices.resize(cornerVertex_.size());
+    for (size_t c = 0; c < cornerVertex_.size(); ++c) {
+        pose.vertices[c] = shared_[cornerVertex_[c]];
+        pose.vertices[c].texcoord[0] = cornerTexcoord_[2 * c];
+        pose.vertices[c].texcoord[1] = cornerTexcoord_[2 * c + 1];
+    }
+    pose.indices = cornerTriangles_;
     pose.parts.assign(1, Part{});
     pose.parts[0].indexCount = static_cast<uint32_t>(pose.indices.size());
+}
+
+bool Md2Animator::loadSkin(const std::string& modelPath, const std::vector<std::string>& named,
+                           std::string& error)
+{
+    namespace fs = std::filesystem;
+    std::vector<std::string> candidates;
+    if (!skinPath_.empty()) {
+        candidates.push_back(skinPath_); // asked for: a failure is an error
+    } else {
+        for (const std::string& name : named) {
+            candidates.push_back((fs::path(modelPath).parent_path() / fs::path(name).filename())
+                                     .replace_extension(".bmp")
+                                     .string());
+        }
+        candidates.push_back(fs::path(modelPath).replace_extension(".bmp").string());
+    }
+    for (const std::string& candidate : candidates) {
+        if (!skinPath_.empty() || fs::exists(candidate)) {
+            return skin_.loadBmp(candidate, error);
+        }
+    }
+    return true; // no skin beside the model: drawn in its material colour
 }
 
 std::string Md2Animator::describe() const
@@ -132,7 +190,8 @@ std::string Md2Animator::describe() const
     return "morph: " + std::to_string(frames_.size()) + " MD2 keyframes, clip " + clipName_ +
            " (" + std::to_string(clipCount_) + " frames), " +
            std::to_string(frames_.empty() ? 0 : frames_[0].positions.size() / 3) +
-           " vertices, " + std::to_string(triangles_.size() / 3) + " triangles";
+           " vertices, " + std::to_string(triangles_.size() / 3) + " triangles" +
+           (skin_.width ? ", textured" : "");
 }
 
 } // namespace character

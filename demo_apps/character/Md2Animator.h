@@ -14,6 +14,9 @@ public:
     bool load(const std::string& path, const std::string& clip, std::string& error) override;
     void pose(double seconds, CharacterPose& pose) override;
     std::string describe() const override;
+    const SkinImage* skin() const override { return skin_.width ? &skin_ : nullptr; }
+    // The skin to use instead of the one the file names (or <model>.bmp beside it).
+    void setSkinPath(const std::string& path) { skinPath_ = path; }
 
 private:
     struct Keyframe {
@@ -21,8 +24,18 @@ private:
         std::vector<float> positions; // x, y, z per vertex, already Y-up
     };
 
+    bool loadSkin(const std::string& modelPath, const std::vector<std::string>& named,
+                  std::string& error);
+
     std::vector<Keyframe> frames_;
-    std::vector<uint32_t> triangles_;
+    std::vector<uint32_t> triangles_; // MD2 vertex indices: what the normals are built on
+    // A vertex of the pose per distinct (MD2 vertex, texture coordinate) corner.
+    std::vector<uint32_t> cornerVertex_;
+    std::vector<float> cornerTexcoord_;
+    std::vector<uint32_t> cornerTriangles_;
+    std::vector<Vertex> shared_; // scratch: one per MD2 vertex
+    SkinImage skin_;
+    std::string skinPath_;
     size_t clipFirst_ = 0;
     size_t clipCount_ = 0;
     std::string clipName_;

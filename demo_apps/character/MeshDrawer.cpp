@@ -10,12 +10,24 @@
 
 namespace character {
 
-void MeshDrawer::init()
+void MeshDrawer::init(const SkinImage* skin)
 {
+    if (skin) {
+        glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, skin->width, skin->height, 0, GL_RGB,
+                     GL_UNSIGNED_BYTE, skin->rgb.data());
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE); // lit and textured
+        glEnable(GL_TEXTURE_2D);
+    }
     if (mode_ == Mode::Immediate) return;
     if (mode_ == Mode::BufferObjects) glGenBuffers(2, buffers_);
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);
+    if (texture_) glEnableClientState(GL_TEXTURE_COORD_ARRAY);
 }
 
 void MeshDrawer::draw(const CharacterPose& pose)
@@ -36,6 +48,9 @@ void MeshDrawer::draw(const CharacterPose& pose)
     if (mode_ != Mode::Immediate) {
         glVertexPointer(3, GL_FLOAT, sizeof(Vertex), base + offsetof(Vertex, position));
         glNormalPointer(GL_FLOAT, sizeof(Vertex), base + offsetof(Vertex, normal));
+        if (texture_) {
+            glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), base + offsetof(Vertex, texcoord));
+        }
     }
     for (const Part& part : pose.parts) {
         glPushMatrix();
@@ -56,6 +71,7 @@ void MeshDrawer::drawImmediate(const CharacterPose& pose, const Part& part)
     for (uint32_t i = part.firstIndex; i < part.firstIndex + part.indexCount; ++i) {
         const Vertex& v = pose.vertices[pose.indices[i]];
         glNormal3fv(v.normal);
+        if (texture_) glTexCoord2fv(v.texcoord);
         glVertex3fv(v.position);
     }
     glEnd();
@@ -63,6 +79,7 @@ void MeshDrawer::drawImmediate(const CharacterPose& pose, const Part& part)
 
 void MeshDrawer::shutdown()
 {
+    if (texture_) glDeleteTextures(1, &texture_);
     if (mode_ != Mode::BufferObjects) return;
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "CharacterPose.h"
+#include "SkinImage.h"
 
 namespace character {
 
@@ -11,7 +12,8 @@ public:
 
     explicit MeshDrawer(Mode mode) : mode_(mode) {}
 
-    void init(); // GL state for the mode; the context must be current
+    // GL state for the mode, and the texture when there is one; the context must be current.
+    void init(const SkinImage* skin);
     void draw(const CharacterPose& pose);
     void shutdown();
 
@@ -20,6 +22,7 @@ private:
 
     Mode mode_;
     unsigned buffers_[2] = {0, 0};
+    unsigned texture_ = 0;
 };
 
 } // namespace character

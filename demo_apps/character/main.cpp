@@ -44,6 +44,7 @@ public:
         return {{"model", Kind::Text, std::string("model file (default ") + defaultModel + ")"},
                 {"technique", Kind::Text, "morph, skin or rigid (default: from the file type)"},
                 {"clip", Kind::Text, "animation or MD2 frame group to play"},
+                {"texture", Kind::Text, "MD2 skin (BMP; default: the one beside the model)"},
                 {"immediate", Kind::Flag, "draw in immediate mode"},
                 {"vbo", Kind::Flag, "draw from buffer objects refilled every frame"}};
     }
@@ -61,7 +62,9 @@ public:
             technique = ext == ".md2" ? "morph" : (ext == ".bvh" ? "rigid" : "skin");
         }
         if (technique == "morph") {
-            animator_ = std::make_unique<character::Md2Animator>();
+            auto md2 = std::make_unique<character::Md2Animator>();
+            md2->setSkinPath(options.textValue("texture", ""));
+            animator_ = std::move(md2);
         } else if (technique == "skin") {
             animator_ = std::make_unique<character::SkinAnimator>();
         } else if (technique == "rigid") {
@@ -89,15 +92,18 @@ public:
         glEnable(GL_LIGHT0);
         glEnable(GL_NORMALIZE); // the framing scale shortens the normals
         glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+        // A textured model takes its colours from the texture (modulated by white light).
+        const bool textured = animator_->skin() != nullptr;
         const float ambient[] = {0.25f, 0.2f, 0.18f, 1.0f};
-        const float diffuse[] = {0.85f, 0.62f, 0.45f, 1.0f};
+        const float diffuse[] = {textured ? 1.0f : 0.85f, textured ? 1.0f : 0.62f,
+                                 textured ? 1.0f : 0.45f, 1.0f};
         const float specular[] = {0.3f, 0.3f, 0.3f, 1.0f};
         glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, ambient);
         glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
         glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, specular);
         glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
         glShadeModel(GL_SMOOTH);
-        drawer_->init();
+        drawer_->init(animator_->skin());
         return true;
     }
 
