@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -160,4 +161,31 @@ TEST(CharacterTexture, MD2SkinsAreLoadedAndABadOneIsNamed)
                                     "/no/such/skin.bmp", "--offscreen", "--frames", "1"});
     EXPECT_EQ(bad.exitCode, 1);
     EXPECT_NE(bad.err.find("/no/such/skin.bmp"), std::string::npos) << bad.err;
+}
+
+TEST(CharacterWindow, AllThreeTechniquesRunUnderNprglInAGlxWindow)
+{
+    const char* display = std::getenv("DISPLAY");
+    ASSERT_TRUE(display && *display) << "run through scripts/test.sh (Xvfb)";
+    const std::string models = "/usr/share/assimp/models/";
+    for (const char* model : {"MD2/sydney.md2", "X/Testwuson.X", "BVH/01_01.bvh"}) {
+        if (!fs::exists(models + model)) GTEST_SKIP() << "assimp-testmodels is not installed";
+        std::string nativeDir = freshDir("glxnative"), shimDir = freshDir("glxshim");
+        std::vector<std::string> args = {demoCharacter(), "--model", models + model, "--frames",
+                                         "3", "--size", "128x96", "--save-frames", "1-3"};
+        std::vector<std::string> native = args, shimmed = {nprglCommand(), "--style", "none",
+                                                           "--"};
+        native.insert(native.end(), {"--save-dir", nativeDir});
+        shimmed.insert(shimmed.end(), args.begin(), args.end());
+        shimmed.insert(shimmed.end(), {"--save-dir", shimDir});
+        ProcessResult a = runProcess(native);
+        ASSERT_EQ(a.exitCode, 0) << model << ": " << a.err;
+        ProcessResult b = runProcess(shimmed);
+        ASSERT_EQ(b.exitCode, 0) << model << ": " << b.err;
+        for (int frame = 1; frame <= 3; ++frame) {
+            ImageDiff diff = compareImages(livePng(nativeDir, frame), livePng(shimDir, frame));
+            ASSERT_TRUE(diff.comparable) << diff.error;
+            EXPECT_EQ(diff.differingPixels, 0u) << model << " frame " << frame;
+        }
+    }
 }
