@@ -1,7 +1,7 @@
 #include "cli/RunCommand.h"
 
 #include "common/FrameSet.h"
-#include "common/KeyValue.h"
+#include "common/ScreenshotSpec.h"
 #include "common/Log.h"
 #include "styles/StyleSettings.h"
 
@@ -29,25 +29,6 @@ std::string joined(const std::vector<std::string>& items, const char* separator)
     std::string out;
     for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
     return out;
-}
-
-bool checkScreenshot(const std::string& spec, std::string& error)
-{
-    KeyValueList pairs;
-    if (!parseKeyValues(spec, ';', pairs, error)) return false;
-    bool haveFrames = false;
-    for (const auto& [key, value] : pairs) {
-        FrameSet frames;
-        if (key == "frames") {
-            if (!FrameSet::parse(value, frames, error)) return false;
-            haveFrames = true;
-        } else if (key != "dir") {
-            error = "unknown key '" + key + "'";
-            return false;
-        }
-    }
-    if (!haveFrames) error = "frames=LIST is missing";
-    return haveFrames;
 }
 
 } // namespace
@@ -86,7 +67,9 @@ int runProgram(const RunOptions& options)
     StyleSettings settings;
     std::string error;
     if (!StyleSettings::parse(style, config, settings, error)) return fail(error);
-    if (!options.screenshot.empty() && !checkScreenshot(options.screenshot, error)) {
+    ScreenshotSpec screenshot;
+    if (!options.screenshot.empty() &&
+        !ScreenshotSpec::parse(options.screenshot, screenshot, error)) {
         return fail("--screenshot: " + error + " (expected frames=LIST;dir=DIR)");
     }
     LogLevel level;

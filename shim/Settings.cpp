@@ -1,6 +1,6 @@
 #include "shim/Settings.h"
 
-#include "common/KeyValue.h"
+#include "common/ScreenshotSpec.h"
 #include "common/Log.h"
 
 #include <cerrno>
@@ -18,44 +18,23 @@ std::string envOr(const char* name, const char* fallback)
     return v ? v : fallback;
 }
 
-void parseScreenshot(const std::string& spec, Settings& s)
+void parseScreenshot(const std::string& text, Settings& s)
 {
-    KeyValueList pairs;
+    ScreenshotSpec spec;
     std::string error;
-    if (!parseKeyValues(spec, ';', pairs, error)) {
+    if (!ScreenshotSpec::parse(text, spec, error)) {
         NPRGL_ERROR("NPRGL_SCREENSHOT: %s; no screenshots", error.c_str());
         return;
     }
-    s.screenshotDir = ".";
-    bool haveFrames = false;
-    for (const auto& [key, value] : pairs) {
-        if (key == "frames") {
-            if (!FrameSet::parse(value, s.screenshotFrames, error)) {
-                NPRGL_ERROR("NPRGL_SCREENSHOT: %s; no screenshots", error.c_str());
-                return;
-            }
-            haveFrames = true;
-        } else if (key == "dir") {
-            s.screenshotDir = value.empty() ? "." : value;
-        } else {
-            NPRGL_ERROR("NPRGL_SCREENSHOT: unknown key '%s' (use frames=LIST;dir=DIR); no "
-                        "screenshots",
-                        key.c_str());
-            return;
-        }
-    }
-    if (!haveFrames) {
-        NPRGL_ERROR("NPRGL_SCREENSHOT needs frames=LIST (e.g. frames=1,10,100;dir=out); no "
-                    "screenshots");
-        return;
-    }
     std::error_code ec;
-    std::filesystem::create_directories(s.screenshotDir, ec);
+    std::filesystem::create_directories(spec.dir, ec);
     if (ec) {
         NPRGL_ERROR("NPRGL_SCREENSHOT: cannot create directory %s: %s; no screenshots",
-                    s.screenshotDir.c_str(), ec.message().c_str());
+                    spec.dir.c_str(), ec.message().c_str());
         return;
     }
+    s.screenshotFrames = std::move(spec.frames);
+    s.screenshotDir = std::move(spec.dir);
     s.screenshots = true;
 }
 

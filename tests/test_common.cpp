@@ -61,3 +61,21 @@ TEST(PngImage, RoundTripsAndFlips)
     EXPECT_FALSE(PngImage::read(path + ".missing", back, error));
     EXPECT_NE(error.find(".missing"), std::string::npos);
 }
+
+#include "common/ScreenshotSpec.h"
+
+TEST(ScreenshotSpec, ParsesFramesAndDirAndRefusesTheRest)
+{
+    ScreenshotSpec spec;
+    std::string error;
+    ASSERT_TRUE(ScreenshotSpec::parse("frames=1,10;dir=out", spec, error)) << error;
+    EXPECT_TRUE(spec.frames.contains(10));
+    EXPECT_EQ(spec.dir, "out");
+    ASSERT_TRUE(ScreenshotSpec::parse("frames=3", spec, error)) << error;
+    EXPECT_EQ(spec.dir, ".");
+    EXPECT_FALSE(ScreenshotSpec::parse("dir=out", spec, error));
+    EXPECT_NE(error.find("frames=LIST"), std::string::npos) << error;
+    EXPECT_FALSE(ScreenshotSpec::parse("frames=1;size=3", spec, error));
+    EXPECT_NE(error.find("'size'"), std::string::npos) << error;
+    EXPECT_FALSE(ScreenshotSpec::parse("frames=0", spec, error));
+}
