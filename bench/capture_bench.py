@@ -51,7 +51,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from benchlib import RunFailed, report_fps  # noqa: E402
+from benchlib import RunFailed, clean_env, report_fps  # noqa: E402
 
 GLRETRACE_RE = re.compile(r"Rendered (\d+) frames in ([0-9.eE+-]+) secs")
 INFO_FRAMES_RE = re.compile(r"^frames:\s+(\d+)", re.M)
@@ -165,18 +165,6 @@ class Result:
         return d
 
 
-
-
-def clean_env() -> dict[str, str]:
-    """The environment for every run: no nprgl settings, no stray libnprgl preload."""
-    env = {k: v for k, v in os.environ.items() if not k.startswith("NPRGL_")}
-    preload = [p for p in re.split(r"[: ]+", env.get("LD_PRELOAD", "")) if p]
-    preload = [p for p in preload if "libnprgl" not in os.path.basename(p)]
-    if preload:
-        env["LD_PRELOAD"] = ":".join(preload)
-    else:
-        env.pop("LD_PRELOAD", None)
-    return env
 
 
 # A shared X server sometimes refuses a connection for a moment (other clients' tests); such a

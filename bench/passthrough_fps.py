@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from benchlib import RunFailed, report_fps  # noqa: E402
+from benchlib import RunFailed, clean_env, report_fps  # noqa: E402
 
 TARGET_RATIO = 0.97
 REPO_ROOT = Path(__file__).resolve().parent.parent
@@ -92,17 +92,11 @@ class Result:
 
 
 
-def clean_env(mode: str) -> dict[str, str]:
-    """The environment for both variants: no nprgl settings, no stray libnprgl preload."""
-    env = {k: v for k, v in os.environ.items() if not k.startswith("NPRGL_")}
-    preload = [p for p in re.split(r"[: ]+", env.get("LD_PRELOAD", "")) if p]
-    preload = [p for p in preload if "libnprgl" not in os.path.basename(p)]
-    if preload:
-        env["LD_PRELOAD"] = ":".join(preload)
-    else:
-        env.pop("LD_PRELOAD", None)
+def run_env(mode: str) -> dict[str, str]:
+    """The environment for both variants; offscreen runs must not depend on an X server."""
+    env = clean_env()
     if mode == "offscreen":
-        env.pop("DISPLAY", None)  # offscreen must not depend on an X server
+        env.pop("DISPLAY", None)
     return env
 
 
@@ -237,7 +231,7 @@ def main(argv: list[str]) -> int:
     results: list[Result] = []
     try:
         for mode in args.modes:
-            env = clean_env(mode)
+            env = run_env(mode)
             for case in cases:
                 # Calibration: one short native run picks the frame count for ~--seconds. It is
                 # also the warm-up (page cache, shader cache); one untimed nprgl run follows.
