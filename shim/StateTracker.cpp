@@ -289,8 +289,17 @@ bool StateTracker::isVertexCall(uint16_t opcode) const
     case op::kArrayData:
     case op::kBatchRef:
         return true;
-    default:
-        return opcode < op::kCount && (mInBegin || std::strncmp(kOpcodeNames[opcode], "glVertex", 8) == 0);
+    default: {
+        // Which opcodes are glVertex*: worked out once from the names.
+        static const std::vector<bool> isVertex = [] {
+            std::vector<bool> v(op::kCount);
+            for (uint16_t i = 0; i < op::kCount; ++i) {
+                v[i] = std::strncmp(kOpcodeNames[i], "glVertex", 8) == 0;
+            }
+            return v;
+        }();
+        return opcode < op::kCount && (mInBegin || isVertex[opcode]);
+    }
     }
 }
 

@@ -82,12 +82,6 @@ const void* CallReader::getImage()
     return alignedCopy(bytes, size);
 }
 
-const void* CallReader::getIndices(int, uint32_t)
-{
-    // The same encoding as images: null, client bytes or a buffer offset.
-    return getImage();
-}
-
 const char* CallReader::getString()
 {
     size_t size = 0;

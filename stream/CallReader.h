@@ -57,10 +57,9 @@ public:
     }
     // Bytes of any length (images, index data), or null; size is set.
     const void* getBytes(size_t& size);
-    // An image argument: null, bytes, or an offset into a bound pixel-unpack buffer.
+    // An image or index-data argument: null, bytes, or an offset into the bound pixel-unpack
+    // or element buffer.
     const void* getImage();
-    // Index data of glDrawElements: client bytes or an offset into the element buffer.
-    const void* getIndices(int count, uint32_t type);
     const char* getString();
     // A batch reference (u64 hash, u64 size): the blob's bytes, or null with the error set.
     const std::vector<uint8_t>* getBlobRef();
