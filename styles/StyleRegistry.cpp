@@ -1,8 +1,86 @@
 #include "styles/StyleRegistry.h"
 
+#include "styles/Style.h"
+#include "styles/StyleList.h"
+
 #include <algorithm>
+#include <cstdio>
 
 namespace nprgl {
+
+namespace {
+
+std::string formatNumber(double v)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+} // namespace
+
+ParamInfo ParamInfo::number(std::string name, std::string help, double def, double lo, double hi)
+{
+    ParamInfo p;
+    p.name = std::move(name);
+    p.help = std::move(help);
+    p.defaultValue = def;
+    p.minValue = lo;
+    p.maxValue = hi;
+    return p;
+}
+
+ParamInfo ParamInfo::flag(std::string name, std::string help, bool def)
+{
+    return number(std::move(name), std::move(help), def ? 1.0 : 0.0, 0.0, 1.0);
+}
+
+ParamInfo ParamInfo::choice(std::string name, std::string help, std::vector<std::string> names,
+                            int def)
+{
+    ParamInfo p = number(std::move(name), std::move(help), def, 0.0, double(names.size() - 1));
+    p.kind = ParamKind::Choice;
+    p.choices = std::move(names);
+    return p;
+}
+
+ParamInfo ParamInfo::text(std::string name, std::string help, std::string def)
+{
+    ParamInfo p;
+    p.name = std::move(name);
+    p.help = std::move(help);
+    p.kind = ParamKind::Text;
+    p.defaultText = std::move(def);
+    return p;
+}
+
+std::string ParamInfo::defaultString() const
+{
+    switch (kind) {
+    case ParamKind::Choice: return choices[size_t(defaultValue)];
+    case ParamKind::Text: return defaultText;
+    case ParamKind::Number: break;
+    }
+    return formatNumber(defaultValue);
+}
+
+std::string ParamInfo::rangeString() const
+{
+    switch (kind) {
+    case ParamKind::Choice: {
+        std::string s;
+        for (const std::string& c : choices) s += (s.empty() ? "" : "|") + c;
+        return s;
+    }
+    case ParamKind::Text: return "file";
+    case ParamKind::Number: break;
+    }
+    if (minValue == 0.0 && maxValue == 1.0 && (defaultValue == 0.0 || defaultValue == 1.0) &&
+        help.find("(on/off)") != std::string::npos) {
+        return "on|off";
+    }
+    return "[" + formatNumber(minValue) + ", " + formatNumber(maxValue) + "]";
+}
 
 const ParamInfo* StyleInfo::findParam(std::string_view param) const
 {
@@ -13,8 +91,12 @@ const ParamInfo* StyleInfo::findParam(std::string_view param) const
 
 StyleRegistry::StyleRegistry()
 {
-    mStyles.push_back({"none", "passthrough: frames pixel-identical to running without nprgl", {}});
-    mDefault = "none";
+    StyleInfo none;
+    none.name = "none";
+    none.summary = "passthrough: frames pixel-identical to running without nprgl";
+    mStyles.push_back(std::move(none));
+    styles::registerStyles(mStyles);
+    mDefault = styles::kDefaultChain;
 }
 
 const StyleRegistry& StyleRegistry::instance()
@@ -34,6 +116,7 @@ bool StyleRegistry::parseChain(std::string_view chain, std::vector<const StyleIn
                                std::string& error) const
 {
     std::vector<const StyleInfo*> result;
+    int shading = 0;
     while (true) {
         size_t plus = chain.find('+');
         std::string_view name = chain.substr(0, plus);
@@ -44,9 +127,22 @@ bool StyleRegistry::parseChain(std::string_view chain, std::vector<const StyleIn
             error = "unknown style '" + std::string(name) + "' (known: " + known + ")";
             return false;
         }
+        if (std::find(result.begin(), result.end(), style) != result.end()) {
+            error = "style '" + style->name + "' is named twice in '" + std::string(chain) + "'";
+            return false;
+        }
+        if (style->create && style->role == styles::StyleRole::Shading && ++shading > 1) {
+            error = "a chain takes one shading style; '" + style->name + "' is a second";
+            return false;
+        }
         result.push_back(style);
         if (plus == std::string_view::npos) break;
         chain.remove_prefix(plus + 1);
+    }
+    if (result.size() > 1 &&
+        std::any_of(result.begin(), result.end(), [](auto* s) { return !s->create; })) {
+        error = "style 'none' cannot be part of a chain";
+        return false;
     }
     out = std::move(result);
     return true;

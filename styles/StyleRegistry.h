@@ -1,24 +1,50 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace nprgl {
 
-// One tunable parameter of a style, with its range. Values are numbers (bools are 0/1).
+namespace styles {
+class Style;
+enum class StyleRole;
+} // namespace styles
+
+// How a parameter's value is written: a number (bools are 0/1), one name of a list (stored
+// as its index), or a text such as a PNG file name.
+enum class ParamKind { Number, Choice, Text };
+
+// One tunable parameter of a style, with its range.
 struct ParamInfo {
     std::string name;
     std::string help;
     double defaultValue = 0.0;
     double minValue = 0.0;
     double maxValue = 0.0;
+    ParamKind kind = ParamKind::Number;
+    std::vector<std::string> choices; // Choice: the names, value = index
+    std::string defaultText;          // Text
+
+    static ParamInfo number(std::string name, std::string help, double def, double lo,
+                            double hi);
+    static ParamInfo flag(std::string name, std::string help, bool def);
+    static ParamInfo choice(std::string name, std::string help, std::vector<std::string> names,
+                            int def);
+    static ParamInfo text(std::string name, std::string help, std::string def = {});
+    // The default as it is written in a preset ("0.5", "dots", "on", a file name).
+    std::string defaultString() const;
+    // The range as `nprgl styles` prints it.
+    std::string rangeString() const;
 };
 
 struct StyleInfo {
     std::string name;
     std::string summary;
     std::vector<ParamInfo> params;
+    styles::StyleRole role{};
+    std::unique_ptr<styles::Style> (*create)() = nullptr; // null for "none"
 
     const ParamInfo* findParam(std::string_view param) const;
 };

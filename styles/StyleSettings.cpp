@@ -2,6 +2,7 @@
 
 #include "common/KeyValue.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -39,15 +40,24 @@ bool StyleSettings::parse(const std::string& chain, const std::string& config,
             error = "unknown parameter '" + key + "' (see `nprgl styles`)";
             return false;
         }
+        if (param->kind == ParamKind::Text) {
+            settings.mTexts[key] = text;
+            continue;
+        }
         double value;
-        if (!parseValue(text, value)) {
+        if (param->kind == ParamKind::Choice) {
+            auto it = std::find(param->choices.begin(), param->choices.end(), text);
+            if (it == param->choices.end()) {
+                error = "parameter " + key + ": '" + text + "' is not one of " +
+                        param->rangeString();
+                return false;
+            }
+            value = double(it - param->choices.begin());
+        } else if (!parseValue(text, value)) {
             error = "parameter " + key + ": '" + text + "' is not a number";
             return false;
-        }
-        if (value < param->minValue || value > param->maxValue) {
-            error = "parameter " + key + "=" + text + " is out of range [" +
-                    std::to_string(param->minValue) + ", " + std::to_string(param->maxValue) +
-                    "]";
+        } else if (value < param->minValue || value > param->maxValue) {
+            error = "parameter " + key + "=" + text + " is out of range " + param->rangeString();
             return false;
         }
         settings.mValues[key] = value;
@@ -69,6 +79,18 @@ double StyleSettings::value(const std::string& style, const std::string& param) 
     const StyleInfo* info = StyleRegistry::instance().find(style);
     const ParamInfo* p = info ? info->findParam(param) : nullptr;
     return p ? p->defaultValue : 0.0;
+}
+
+} // namespace nprgl
+
+namespace nprgl {
+
+std::string StyleSettings::text(const std::string& style, const std::string& param) const
+{
+    if (auto it = mTexts.find(style + "." + param); it != mTexts.end()) return it->second;
+    const StyleInfo* info = StyleRegistry::instance().find(style);
+    const ParamInfo* p = info ? info->findParam(param) : nullptr;
+    return p ? p->defaultText : std::string();
 }
 
 } // namespace nprgl

@@ -21,10 +21,13 @@ public:
     std::string chainName() const;
     // The value of style.param: the configured one, else the registry default.
     double value(const std::string& style, const std::string& param) const;
+    // A text parameter (a file name): the configured one, else the default.
+    std::string text(const std::string& style, const std::string& param) const;
 
 private:
     std::vector<const StyleInfo*> mChain;
     std::map<std::string, double> mValues;
+    std::map<std::string, std::string> mTexts;
 };
 
 } // namespace nprgl

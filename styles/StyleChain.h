@@ -1,0 +1,38 @@
+#pragma once
+
+#include "styles/Style.h"
+#include "styles/StyleSettings.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace nprgl::styles {
+
+// The styles of one chain in one GL context: created and initialised on first use, run in
+// order (the shading style first, then the outline styles as named) with the baseline state
+// of Style.h set before each.
+class StyleChain {
+public:
+    // getProc resolves the real driver's entry points. False with a message when the driver
+    // lacks what the styles need or no style of the chain could start.
+    bool init(const StyleSettings& settings, GlFunctions::GetProc getProc, std::string& error);
+    // Renders the scene. The caller has saved the program's state and restores it after.
+    void render(const Scene& scene);
+    void shutdown();
+
+    bool hasShading() const { return mHasShading; }
+    bool empty() const { return mStyles.empty(); }
+    StyleContext& context() { return mContext; }
+
+    // Sets the baseline state of Style.h (also for the compositor's depth-only passes).
+    void setBaseline(const Scene& scene);
+
+private:
+    StyleSettings mSettings;
+    StyleContext mContext;
+    std::vector<std::unique_ptr<Style>> mStyles;
+    bool mHasShading = false;
+};
+
+} // namespace nprgl::styles

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "common/PngImage.h"
+#include "reconstruct/Batch.h"
+#include "reconstruct/Reconstructor.h"
+#include "styles/Scene.h"
+#include "styles/StyleChain.h"
+
+#include <string>
+#include <vector>
+
+namespace nprgl::test {
+
+// Renders scenes through a style chain in an in-process OSMesa context, the way the
+// compositor does (a depth-only pass of the held-back geometry, then the chain), without the
+// shim: for the styles' unit tests.
+class StyleHarness {
+public:
+    StyleHarness(int width, int height);
+    ~StyleHarness();
+    bool ok() const { return mOk; }
+
+    // One object per batch group (the Reconstructor's grouping), lit by a light towards
+    // lightDir (eye space), viewed through projection.
+    styles::Scene makeScene(const std::vector<reconstruct::Batch>& batches,
+                            const glm::mat4& projection,
+                            glm::vec3 lightDir = glm::normalize(glm::vec3(0.3f, 0.5f, 1.0f)));
+    // Renders with "chain" and "config" (as NPRGL_STYLE / NPRGL_CONFIG); false with a message
+    // on a bad chain or a style that cannot start.
+    bool render(const styles::Scene& scene, const std::string& chain, const std::string& config,
+                PngImage& out, std::string& error, glm::vec4 background = glm::vec4(1.0f));
+    const styles::GlFunctions& gl() const { return mGl; }
+
+private:
+    int mWidth, mHeight;
+    void* mContext = nullptr;
+    std::vector<uint8_t> mBuffer;
+    bool mOk = false;
+    styles::GlFunctions mGl;
+    reconstruct::Reconstructor mReconstructor;
+    std::vector<reconstruct::FrameObject> mObjects;
+};
+
+// Batches for tests: a UV sphere and a box as GL_TRIANGLES with normals, at a modelview.
+reconstruct::Batch sphereBatch(const glm::mat4& modelview, float radius, int slices, int stacks,
+                               glm::vec4 color, uint32_t materialId = 1);
+reconstruct::Batch boxBatch(const glm::mat4& modelview, glm::vec3 halfSize, glm::vec4 color,
+                            uint32_t materialId = 1);
+
+} // namespace nprgl::test
