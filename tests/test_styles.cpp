@@ -18,9 +18,13 @@ TEST(StyleRegistry, ParsesChainsAndNamesTheUnknownStyle)
     const StyleRegistry& registry = StyleRegistry::instance();
     std::vector<const StyleInfo*> chain;
     std::string error;
-    ASSERT_TRUE(registry.parseChain("none+none", chain, error)) << error;
-    EXPECT_EQ(chain.size(), 2u);
-    EXPECT_FALSE(registry.parseChain("none+sparkles", chain, error));
+    ASSERT_TRUE(registry.parseChain("toon", chain, error)) << error;
+    EXPECT_EQ(chain.size(), 1u);
+    EXPECT_FALSE(registry.parseChain("none+toon", chain, error));
+    EXPECT_NE(error.find("'none'"), std::string::npos) << error;
+    EXPECT_FALSE(registry.parseChain("toon+toon", chain, error));
+    EXPECT_NE(error.find("twice"), std::string::npos) << error;
+    EXPECT_FALSE(registry.parseChain("toon+sparkles", chain, error));
     EXPECT_NE(error.find("'sparkles'"), std::string::npos) << error;
     EXPECT_FALSE(registry.parseChain("", chain, error));
     EXPECT_FALSE(registry.parseChain("none+", chain, error));
@@ -43,4 +47,18 @@ TEST(StyleSettings, RefusesUnknownParametersNamingThem)
     EXPECT_FALSE(StyleSettings::parse("none", "width", settings, error));
     EXPECT_FALSE(StyleSettings::parse("bogus", "", settings, error));
     EXPECT_NE(error.find("bogus"), std::string::npos) << error;
+}
+
+TEST(StyleSettings, ChecksRangesAndNamesTheRange)
+{
+    StyleSettings settings;
+    std::string error;
+    ASSERT_TRUE(StyleSettings::parse("toon", "toon.diffuse_threshold=-0.2", settings, error))
+        << error;
+    EXPECT_DOUBLE_EQ(settings.value("toon", "diffuse_threshold"), -0.2);
+    EXPECT_DOUBLE_EQ(settings.value("toon", "tones"), 3.0); // the default
+    EXPECT_FALSE(StyleSettings::parse("toon", "toon.diffuse_threshold=1.5", settings, error));
+    EXPECT_NE(error.find("[-1, 1]"), std::string::npos) << error;
+    EXPECT_FALSE(StyleSettings::parse("toon", "toon.tones=many", settings, error));
+    EXPECT_NE(error.find("not a number"), std::string::npos) << error;
 }
