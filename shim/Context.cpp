@@ -1,6 +1,7 @@
 #include "shim/Context.h"
 
 #include "common/Log.h"
+#include "shim/Compositor.h"
 #include "shim/CaptureSession.h"
 #include "shim/FrameGrabber.h"
 #include "shim/LiveExport.h"
@@ -40,15 +41,26 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial)
     // Recording to a file wins over a live export (both need the Stream).
     StreamSink* sink = CaptureSession::instance();
     if (!sink) sink = LiveExport::instance();
-    if (sink) {
-        mRecorder = std::make_unique<Recorder>(*this, *sink);
+    // The compositor reads the Stream too (from memory, frame by frame).
+    const bool styled = Settings::get().style.chain().front()->create != nullptr;
+    if (sink || styled) {
+        mRecorder = std::make_unique<Recorder>(*this, sink);
         installRecording(mDispatch);
+    }
+    if (styled) {
+        mCompositor = std::make_unique<Compositor>(*this, *mRecorder);
+        mCompositor->install(mDispatch);
     }
     mFinish = mDispatch.glFinish;
     if (ws == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
 }
 
 Context::~Context() = default;
+
+void Context::release()
+{
+    if (mCompositor) mCompositor->flush();
+}
 
 void Context::setDrawableSize(int width, int height)
 {
@@ -97,6 +109,7 @@ void Context::queryCaps()
 
 bool Context::endFrame()
 {
+    if (mCompositor) mCompositor->flush();
     ++mFrame;
     if (mRecorder) mRecorder->endFrame(mFrame);
     const Settings& settings = Settings::get();

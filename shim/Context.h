@@ -8,6 +8,7 @@
 
 namespace nprgl {
 
+class Compositor;
 class Recorder;
 
 enum class WindowSystem { Glx, Egl, OSMesa };
@@ -41,8 +42,13 @@ public:
     // The size of the drawable it was last made current with (0 when not known).
     void setDrawableSize(int width, int height);
 
-    // Null unless the process records (NPRGL_RECORD).
+    // The program is about to make another context (or none) current: draw what is held.
+    void release();
+
+    // Null unless the process records (NPRGL_RECORD, NPRGL_EXPORT) or a style is active.
     Recorder* recorder() const { return mRecorder.get(); }
+    // Null when the style is none.
+    Compositor* compositor() const { return mCompositor.get(); }
     // The glFinish below our OSMesa frame hook (the recording one or the driver's).
     void finishBelowHook() const { mFinish(); }
 
@@ -64,6 +70,7 @@ private:
     GlDispatch mDispatch;
     void(APIENTRY* mFinish)() = nullptr;
     std::unique_ptr<Recorder> mRecorder;
+    std::unique_ptr<Compositor> mCompositor;
     std::string mVendor, mRenderer, mVersion;
     int mWidth = 0, mHeight = 0;
     ContextCaps mCaps;

@@ -1,3 +1,4 @@
+#include "shim/Context.h"
 #include "shim/ContextRegistry.h"
 #include "shim/ProcAddress.h"
 #include "shim/RealGl.h"
@@ -9,6 +10,7 @@ namespace nprgl::hooks {
 
 EGLBoolean eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLContext ctx)
 {
+    if (Context* current = tThread.context) current->release();
     EGLBoolean ok = gRealWs.eglMakeCurrent(dpy, draw, read, ctx);
     if (ok) {
         ContextRegistry::instance().makeCurrent(WindowSystem::Egl,

@@ -1,3 +1,4 @@
+#include "shim/Context.h"
 #include "shim/ContextRegistry.h"
 #include "shim/ProcAddress.h"
 #include "shim/RealGl.h"
@@ -49,6 +50,7 @@ void onMakeCurrent(Display* dpy, GLXDrawable draw, GLXContext ctx)
 
 Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx)
 {
+    if (Context* current = tThread.context) current->release();
     Bool ok = gRealWs.glXMakeCurrent(dpy, drawable, ctx);
     if (ok) onMakeCurrent(dpy, drawable, ctx);
     return ok;
@@ -56,6 +58,7 @@ Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx)
 
 Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx)
 {
+    if (Context* current = tThread.context) current->release();
     Bool ok = gRealWs.glXMakeContextCurrent(dpy, draw, read, ctx);
     if (ok) onMakeCurrent(dpy, draw, ctx);
     return ok;

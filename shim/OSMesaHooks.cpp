@@ -1,3 +1,4 @@
+#include "shim/Context.h"
 #include "shim/ContextRegistry.h"
 #include "shim/ProcAddress.h"
 #include "shim/RealGl.h"
@@ -10,6 +11,7 @@ namespace nprgl::hooks {
 GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenum type, GLsizei width,
                             GLsizei height)
 {
+    if (Context* current = tThread.context) current->release();
     GLboolean ok = gRealWs.OSMesaMakeCurrent(ctx, buffer, type, width, height);
     if (ok) {
         ContextRegistry::instance().makeCurrent(WindowSystem::OSMesa, ctx);

@@ -2,6 +2,7 @@
 
 #include "common/Log.h"
 #include "shim/StreamSink.h"
+#include "shim/Compositor.h"
 #include "shim/Context.h"
 #include "shim/RealGl.h"
 #include "shim/ThreadState.h"
@@ -13,22 +14,27 @@
 
 namespace nprgl {
 
-Recorder::Recorder(Context& ctx, StreamSink& session)
+Recorder::Recorder(Context& ctx, StreamSink* session)
     : mContext(ctx), mSession(session), mUncaptured(op::kCount, 0),
       mUncapturedReported(op::kCount, 0)
 {
-    mWriter.setBlobSink([&session, &ctx](const void* data, size_t size) {
-        return session.putBlob(ctx, data, size);
+    // Without a sink (the compositor alone) large arguments stay inline.
+    if (!session) return;
+    mWriter.setBlobSink([session, &ctx](const void* data, size_t size) {
+        const uint64_t hash = session->putBlob(ctx, data, size);
+        if (Compositor* c = ctx.compositor()) c->keepBlob(hash, data, size);
+        return hash;
     });
-    session.attach(this);
+    session->attach(this);
 }
 
 Recorder::~Recorder()
 {
+    if (!mSession) return;
     takeUncaptured([this](const char* name, uint64_t count) {
-        mSession.addUncaptured(name, count);
+        mSession->addUncaptured(name, count);
     });
-    mSession.detach(this);
+    mSession->detach(this);
 }
 
 const char* opcodeNameOf(size_t opcode) { return opcodeName(uint16_t(opcode)); }
@@ -37,13 +43,18 @@ void Recorder::endFrame(uint64_t frame)
 {
     mWriter.op(op::kFrameEnd);
     mWriter.put<uint64_t>(frame);
-    takeUncaptured([this](const char* name, uint64_t count) {
-        mSession.addUncaptured(name, count);
-    });
-    if (!mStopped && !mSession.writeFrame(mContext, frame, mWriter.data(), mWriter.size())) {
-        mStopped = true;
+    Compositor* compositor = mContext.compositor();
+    if (compositor) compositor->syncStream();
+    if (mSession) {
+        takeUncaptured([this](const char* name, uint64_t count) {
+            mSession->addUncaptured(name, count);
+        });
+        if (!mStopped && !mSession->writeFrame(mContext, frame, mWriter.data(), mWriter.size())) {
+            mStopped = true;
+        }
     }
     mWriter.clear();
+    if (compositor) compositor->streamCleared();
     mBatchStart = SIZE_MAX;
 }
 
@@ -164,13 +175,17 @@ void Recorder::after_glEnd()
     mBatchStart = SIZE_MAX;
     if (start == SIZE_MAX || start > mWriter.size()) return;
     const size_t bytes = mWriter.size() - start;
-    if (bytes < kBatchBlobBytes || mStopped) return;
+    if (bytes < kBatchBlobBytes || mStopped || !mSession) return;
+    // The compositor follows the batch before it becomes a reference it could not resolve.
+    Compositor* compositor = mContext.compositor();
+    if (compositor) compositor->syncStream();
     // The calls from glBegin to glEnd become one reference to a blob with the same bytes.
-    const uint64_t hash = mSession.putBlob(mContext, mWriter.data() + start, bytes);
+    const uint64_t hash = mSession->putBlob(mContext, mWriter.data() + start, bytes);
     mWriter.truncate(start);
     mWriter.op(op::kBatchRef);
     mWriter.put<uint64_t>(hash);
     mWriter.put<uint64_t>(bytes);
+    if (compositor) compositor->streamRewritten(mWriter.size());
 }
 
 void Recorder::before_glDrawArrays(GLenum, GLint first, GLsizei count)

@@ -23,7 +23,8 @@ const char* opcodeNameOf(size_t opcode);
 // client memory that a draw reads (client arrays, index data, mapped buffers).
 class Recorder {
 public:
-    Recorder(Context& ctx, StreamSink& session);
+    // session: where frames go; null when only the compositor reads the Stream.
+    Recorder(Context& ctx, StreamSink* session);
     ~Recorder();
 
     // The recorder of the current context (recording functions only run when it exists).
@@ -104,7 +105,7 @@ private:
     };
 
     Context& mContext;
-    StreamSink& mSession;
+    StreamSink* mSession;
     CallWriter mWriter;
     ClientArrayState mState;
     std::vector<ClientArrayState> mClientStack;

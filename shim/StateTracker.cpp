@@ -164,6 +164,48 @@ void APIENTRY tRects(GLshort a, GLshort b, GLshort c, GLshort d)
     T().rect(float(a), float(b), float(c), float(d));
 }
 
+void APIENTRY tLightfv(GLenum light, GLenum pname, const GLfloat* v) { T().light(light, pname, v); }
+void APIENTRY tLightiv(GLenum light, GLenum pname, const GLint* v)
+{
+    float f[4] = {0, 0, 0, 0};
+    for (size_t i = 0; i < pnameCount(pname) && i < 4; ++i) f[i] = float(v[i]);
+    T().light(light, pname, f);
+}
+void APIENTRY tPolygonMode(GLenum face, GLenum mode) { T().polygonMode(face, mode); }
+void APIENTRY tShadeModel(GLenum mode) { T().shadeModel(mode); }
+void APIENTRY tColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
+{
+    T().colorMask(r, g, b, a);
+}
+void APIENTRY tTexEnvi(GLenum target, GLenum pname, GLint v)
+{
+    if (target == GL_TEXTURE_ENV) T().texEnv(pname, GLenum(v));
+}
+void APIENTRY tTexEnvf(GLenum target, GLenum pname, GLfloat v)
+{
+    if (target == GL_TEXTURE_ENV) T().texEnv(pname, GLenum(v));
+}
+void APIENTRY tTexEnviv(GLenum target, GLenum pname, const GLint* v)
+{
+    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE) T().texEnv(pname, GLenum(*v));
+}
+void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* v)
+{
+    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE) T().texEnv(pname, GLenum(*v));
+}
+void APIENTRY tViewport(GLint x, GLint y, GLsizei w, GLsizei h)
+{
+    if (w >= 0 && h >= 0) T().setViewport({x, y, w, h});
+}
+void APIENTRY tPushAttrib(GLbitfield mask) { T().pushAttrib(mask); }
+void APIENTRY tPopAttrib() { T().popAttrib(); }
+void APIENTRY tBitmap(GLsizei, GLsizei, GLfloat, GLfloat, GLfloat, GLfloat, const GLubyte*)
+{
+    T().otherDraw();
+}
+void APIENTRY tDrawPixels(GLsizei, GLsizei, GLenum, GLenum, const void*) { T().otherDraw(); }
+void APIENTRY tCopyPixels(GLint, GLint, GLsizei, GLsizei, GLenum) { T().otherDraw(); }
+
 GLuint listId(GLenum type, const uint8_t* p, GLsizei i)
 {
     switch (type) {
@@ -183,8 +225,13 @@ GLuint listId(GLenum type, const uint8_t* p, GLsizei i)
     }
 }
 
+// While a list compiles: what it will call (for deciding whether it can be held).
+void APIENTRY tCallListCompiled(GLuint list) { T().noteCompiledCall(list); }
+void APIENTRY tCallListsCompiled(GLsizei, GLenum, const void*) { T().otherDraw(); }
+
 void APIENTRY tCallLists(GLsizei n, GLenum type, const void* lists)
 {
+    T().otherDraw(); // text, typically: never held as a whole
     const uint8_t* p = static_cast<const uint8_t*>(lists);
     for (GLsizei i = 0; p && i < n; ++i) T().callList(T().listBaseValue() + listId(type, p, i));
 }
@@ -253,6 +300,27 @@ StateTracker::StateTracker()
     d.glRectd = tRectd;
     d.glRecti = tRecti;
     d.glRects = tRects;
+    d.glLightfv = tLightfv;
+    d.glLightiv = tLightiv;
+    d.glPolygonMode = tPolygonMode;
+    d.glShadeModel = tShadeModel;
+    d.glColorMask = tColorMask;
+    d.glTexEnvi = tTexEnvi;
+    d.glTexEnvf = tTexEnvf;
+    d.glTexEnviv = tTexEnviv;
+    d.glTexEnvfv = tTexEnvfv;
+    d.glViewport = tViewport;
+    d.glPushAttrib = tPushAttrib;
+    d.glPopAttrib = tPopAttrib;
+    d.glBitmap = tBitmap;
+    d.glDrawPixels = tDrawPixels;
+    d.glCopyPixels = tCopyPixels;
+    // While a list compiles, these only mark it as drawing something that is not held.
+    mCompileOnly.glBitmap = tBitmap;
+    mCompileOnly.glDrawPixels = tDrawPixels;
+    mCompileOnly.glCopyPixels = tCopyPixels;
+    mCompileOnly.glCallList = tCallListCompiled;
+    mCompileOnly.glCallLists = tCallListsCompiled;
 }
 
 StateTracker::~StateTracker() = default;
@@ -270,6 +338,116 @@ bool StateTracker::runFrame(const uint8_t* data, size_t size, BlobSource* blobs,
     bool ok = runCalls(data, size, true, error);
     tTracker = previous;
     return ok;
+}
+
+bool StateTracker::feed(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error)
+{
+    StateTracker* previous = tTracker;
+    tTracker = this;
+    mBlobs = blobs;
+    mLiveFrame = true;
+    bool ok = runCalls(data, size, true, error);
+    tTracker = previous;
+    return ok;
+}
+
+void StateTracker::takeBatches(std::vector<TrackedBatch>& out)
+{
+    out.swap(mFrameBatches);
+    mFrameBatches.clear();
+}
+
+bool StateTracker::wouldHold(GLenum mode) const
+{
+    const AttribState& a = mAttrib;
+    return mHolding && isPolygonMode(mode) && !mCompiling && mRenderMode == GL_RENDER &&
+           (a.depthTest || mProjection.back()[3][3] == 0.0f) && !a.blend && !a.alphaTest &&
+           !a.stencilTest && a.fillFront && a.fillBack && a.colorMaskAll;
+}
+
+bool StateTracker::wouldHoldList(GLuint list) const
+{
+    if (!wouldHold(GL_TRIANGLES)) return false;
+    // Breadth-first over the lists it calls; cycles and depth bounded like the driver's.
+    std::vector<GLuint> pending{list};
+    bool anyBatch = false;
+    for (size_t i = 0; i < pending.size() && i < 64; ++i) {
+        auto it = mLists.find(pending[i]);
+        if (it == mLists.end()) continue;
+        if (it->second.otherDraws) return false;
+        anyBatch = anyBatch || !it->second.batches.empty();
+        pending.insert(pending.end(), it->second.calls.begin(), it->second.calls.end());
+    }
+    return anyBatch;
+}
+
+void StateTracker::light(GLenum light, GLenum pname, const float* v)
+{
+    if (light != GL_LIGHT0 || !v) return;
+    if (pname == GL_POSITION) {
+        // GL stores the position in eye space, transformed by the modelview of the call.
+        mAttrib.light0 = mModelview.back() * glm::vec4(v[0], v[1], v[2], v[3]);
+    }
+}
+
+void StateTracker::polygonMode(GLenum face, GLenum mode)
+{
+    const bool fill = mode == GL_FILL;
+    if (face == GL_FRONT || face == GL_FRONT_AND_BACK) mAttrib.fillFront = fill;
+    if (face == GL_BACK || face == GL_FRONT_AND_BACK) mAttrib.fillBack = fill;
+}
+
+void StateTracker::pushAttrib(GLbitfield mask)
+{
+    if (mAttribStack.size() < 64) mAttribStack.emplace_back(mask, mAttrib);
+}
+
+void StateTracker::popAttrib()
+{
+    if (mAttribStack.empty()) return;
+    const auto [mask, saved] = mAttribStack.back();
+    mAttribStack.pop_back();
+    AttribState& a = mAttrib;
+    // Each piece comes back only if its group was saved.
+    if (mask & GL_ENABLE_BIT) {
+        a.lighting = saved.lighting;
+        a.colorMaterial = saved.colorMaterial;
+        a.depthTest = saved.depthTest;
+        a.texture2D = saved.texture2D;
+        a.blend = saved.blend;
+        a.alphaTest = saved.alphaTest;
+        a.stencilTest = saved.stencilTest;
+        a.light0On = saved.light0On;
+    }
+    if (mask & GL_LIGHTING_BIT) {
+        a.lighting = saved.lighting;
+        a.colorMaterial = saved.colorMaterial;
+        a.light0On = saved.light0On;
+        a.material = saved.material;
+        a.light0 = saved.light0;
+        a.flat = saved.flat;
+    }
+    if (mask & GL_DEPTH_BUFFER_BIT) a.depthTest = saved.depthTest;
+    if (mask & GL_COLOR_BUFFER_BIT) {
+        a.blend = saved.blend;
+        a.alphaTest = saved.alphaTest;
+        a.colorMaskAll = saved.colorMaskAll;
+    }
+    if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
+    if (mask & GL_POLYGON_BIT) {
+        a.fillFront = saved.fillFront;
+        a.fillBack = saved.fillBack;
+    }
+    if (mask & GL_TEXTURE_BIT) {
+        a.texture2D = saved.texture2D;
+        a.textureEnv = saved.textureEnv;
+    }
+    if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
+}
+
+void StateTracker::otherDraw()
+{
+    if (mCompiling) mCompiled.otherDraws = true;
 }
 
 bool StateTracker::isVertexCall(uint16_t opcode) const
@@ -417,11 +595,12 @@ void StateTracker::end()
 
 uint32_t StateTracker::currentMaterialId()
 {
-    std::vector<float> key = {float(mLighting), float(mColorMaterial),
-                              float(mTexture2D ? mBoundTexture : 0)};
-    if (mLighting && !mColorMaterial) {
-        key.insert(key.end(), {mMaterialDiffuse.r, mMaterialDiffuse.g, mMaterialDiffuse.b,
-                               mMaterialDiffuse.a});
+    const AttribState& a = mAttrib;
+    std::vector<float> key = {float(a.lighting), float(a.colorMaterial),
+                              float(a.texture2D ? mBoundTexture : 0)};
+    if (a.lighting && !a.colorMaterial) {
+        const glm::vec4& d = a.material.diffuse;
+        key.insert(key.end(), {d.r, d.g, d.b, d.a});
     }
     auto it = mMaterialIds.find(key);
     if (it != mMaterialIds.end()) return it->second;
@@ -432,7 +611,11 @@ uint32_t StateTracker::currentMaterialId()
 
 void StateTracker::emit(TrackedBatch batch)
 {
-    if (!isPolygonMode(batch.mode) || batch.vertices.empty()) return;
+    if (!isPolygonMode(batch.mode)) {
+        otherDraw();
+        return;
+    }
+    if (batch.vertices.empty()) return;
     if (mCompiling) {
         mCompiled.batches.push_back(batch);
         ListItem item;
@@ -443,11 +626,24 @@ void StateTracker::emit(TrackedBatch batch)
     batch.modelview = mModelview.back();
     batch.projection = mProjection.back();
     batch.materialId = currentMaterialId();
+    const AttribState& a = mAttrib;
     // What the program's picture shows: lit surfaces take the material's colour.
-    if (mLighting && !mColorMaterial) {
-        for (TrackedVertex& v : batch.vertices) v.color = mMaterialDiffuse;
+    if (a.lighting && !a.colorMaterial) {
+        for (TrackedVertex& v : batch.vertices) v.color = a.material.diffuse;
     }
-    batch.is3D = mDepthTest || batch.projection[3][3] == 0.0f;
+    batch.is3D = a.depthTest || batch.projection[3][3] == 0.0f;
+    if (mHolding) {
+        batch.held = mHoldingList > 0 || wouldHold(batch.mode);
+        if (!batch.held) return; // the compositor keeps only what it re-draws
+    }
+    batch.lit = a.lighting;
+    batch.flat = a.flat;
+    batch.material = a.material;
+    batch.light0 = a.light0;
+    batch.light0On = a.light0On;
+    batch.texture = a.texture2D ? mBoundTexture : 0;
+    batch.textureEnv = a.textureEnv;
+    batch.viewport = a.viewport;
     mFrameBatches.push_back(std::move(batch));
 }
 
@@ -478,11 +674,16 @@ void StateTracker::popMatrix()
 
 void StateTracker::setEnabled(GLenum cap, bool on)
 {
+    AttribState& a = mAttrib;
     switch (cap) {
-    case GL_LIGHTING: mLighting = on; break;
-    case GL_COLOR_MATERIAL: mColorMaterial = on; break;
-    case GL_DEPTH_TEST: mDepthTest = on; break;
-    case GL_TEXTURE_2D: mTexture2D = on; break;
+    case GL_LIGHTING: a.lighting = on; break;
+    case GL_COLOR_MATERIAL: a.colorMaterial = on; break;
+    case GL_DEPTH_TEST: a.depthTest = on; break;
+    case GL_TEXTURE_2D: a.texture2D = on; break;
+    case GL_BLEND: a.blend = on; break;
+    case GL_ALPHA_TEST: a.alphaTest = on; break;
+    case GL_STENCIL_TEST: a.stencilTest = on; break;
+    case GL_LIGHT0: a.light0On = on; break;
     default: break;
     }
 }
@@ -490,8 +691,15 @@ void StateTracker::setEnabled(GLenum cap, bool on)
 void StateTracker::material(GLenum face, GLenum pname, const float* v)
 {
     if (face == GL_BACK || !v) return;
-    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
-        mMaterialDiffuse = {v[0], v[1], v[2], v[3]};
+    TrackedMaterial& m = mAttrib.material;
+    const glm::vec4 value(v[0], v[1], v[2], v[3]);
+    switch (pname) {
+    case GL_AMBIENT: m.ambient = value; break;
+    case GL_DIFFUSE: m.diffuse = value; break;
+    case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = value; break;
+    case GL_SPECULAR: m.specular = value; break;
+    case GL_SHININESS: m.shininess = v[0]; break;
+    default: break;
     }
 }
 
@@ -513,6 +721,16 @@ void StateTracker::endList()
 }
 
 void StateTracker::callList(GLuint list)
+{
+    if (mCompiling) mCompiled.calls.push_back(list); // executed now: GL_COMPILE_AND_EXECUTE
+    // A list held back is held as a whole (the compositor masked the whole glCallList).
+    const bool hold = mHolding && mHoldingList == 0 && mCallDepth == 0 && wouldHoldList(list);
+    mHoldingList += hold;
+    callListBody(list);
+    mHoldingList -= hold;
+}
+
+void StateTracker::callListBody(GLuint list)
 {
     auto it = mLists.find(list);
     // GL_MAX_LIST_NESTING is 64: a list that calls itself stops there, as in the driver.

@@ -24,7 +24,15 @@ struct TrackedVertex {
     glm::vec2 texcoord;
 };
 
-// One polygonal draw of a frame, with the state reconstruction needs.
+// The front material as glMaterial set it.
+struct TrackedMaterial {
+    glm::vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f};
+    glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+    glm::vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};
+    float shininess = 0.0f;
+};
+
+// One polygonal draw of a frame, with the state reconstruction and the styles need.
 struct TrackedBatch {
     GLenum mode = GL_TRIANGLES;
     std::vector<TrackedVertex> vertices;
@@ -33,6 +41,15 @@ struct TrackedBatch {
     uint32_t materialId = 0;
     bool hasNormals = false;
     bool is3D = false; // perspective projection or depth test on: what nprgl stylises
+    bool held = false; // the compositor held it back (only when holding is on)
+    bool lit = false;
+    bool flat = false;
+    TrackedMaterial material;
+    glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f}; // GL_LIGHT0's position in eye space
+    bool light0On = false;
+    GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
+    GLenum textureEnv = GL_MODULATE;
+    glm::ivec4 viewport{0, 0, 0, 0};
 };
 
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix
@@ -51,6 +68,23 @@ public:
     // since the previous FrameEnd. Returns false with a message on malformed input.
     bool runFrame(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error);
     const std::vector<TrackedBatch>& frameBatches() const { return mFrameBatches; }
+
+    // Live use by the compositor: interprets calls as they are recorded, frames and all.
+    bool feed(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error);
+    // Holding: batches the compositor holds back are marked `held`, and only those are kept.
+    void setHolding(bool on) { mHolding = on; }
+    // Would a draw of `mode` issued now be held back? Polygonal, executed now (not only
+    // compiled into a list), 3D, and drawn in plain state (GL_RENDER, filled, no blending,
+    // alpha or stencil test, all colour channels written): what the styles can re-draw.
+    bool wouldHold(GLenum mode) const;
+    // Would glCallList(list) issued now be held back as a whole? Its draws are all polygonal
+    // (no bitmaps, pixels, lines or points, also in the lists it calls).
+    bool wouldHoldList(GLuint list) const;
+    void setRenderMode(GLenum mode) { mRenderMode = mode; }
+    void setViewport(const glm::ivec4& v) { mAttrib.viewport = v; }
+    const glm::ivec4& viewport() const { return mAttrib.viewport; }
+    // Moves the held batches out (the frame's batch list starts empty again).
+    void takeBatches(std::vector<TrackedBatch>& out);
     uint64_t lastFrame() const { return mLastFrame; }
 
     // Called by the generated per-vertex attribute functions.
@@ -81,6 +115,7 @@ public:
     void newList(GLuint list, GLenum mode);
     void endList();
     void callList(GLuint list);
+    void noteCompiledCall(GLuint list) { mCompiled.calls.push_back(list); }
     void listBase(GLuint base) { mListBase = base; }
     GLuint listBaseValue() const { return mListBase; }
     void deleteLists(GLuint list, GLsizei range);
@@ -97,6 +132,17 @@ public:
     void arrayElement(GLint i);
     void rect(float x1, float y1, float x2, float y2);
     bool executing() const { return !mCompiling || mCompileAndExecute; }
+    void light(GLenum light, GLenum pname, const float* v);
+    void polygonMode(GLenum face, GLenum mode);
+    void shadeModel(GLenum mode) { mAttrib.flat = mode == GL_FLAT; }
+    void colorMask(bool r, bool g, bool b, bool a) { mAttrib.colorMaskAll = r && g && b && a; }
+    void texEnv(GLenum pname, GLenum value)
+    {
+        if (pname == GL_TEXTURE_ENV_MODE) mAttrib.textureEnv = value;
+    }
+    void pushAttrib(GLbitfield mask);
+    void popAttrib();
+    void otherDraw(); // a bitmap, pixel rectangle, line or point: never held
 
 private:
     struct ListItem {
@@ -106,12 +152,25 @@ private:
     struct List {
         std::vector<ListItem> items;
         std::vector<TrackedBatch> batches;
+        bool otherDraws = false; // bitmaps, pixels, lines, points, glCallLists
+        std::vector<GLuint> calls; // lists it calls with glCallList
+    };
+    // The state glPushAttrib saves that decides holding and shading.
+    struct AttribState {
+        bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
+        bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
+        bool fillFront = true, fillBack = true, flat = false, colorMaskAll = true;
+        GLenum textureEnv = GL_MODULATE;
+        TrackedMaterial material;
+        glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
+        glm::ivec4 viewport{0, 0, 0, 0};
     };
     struct ArrayBinding {
         ClientArray array;
         GLuint buffer = 0; // data in this buffer's shadow (pointer is an offset)
     };
 
+    void callListBody(GLuint list);
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
     bool isVertexCall(uint16_t opcode) const;
     void emit(TrackedBatch batch);
@@ -133,9 +192,13 @@ private:
     std::vector<glm::mat4> mTexture{glm::mat4(1.0f)};
     TrackedVertex mCurrent{{0, 0, 0}, {0, 0, 1}, {1, 1, 1, 1}, {0, 0}};
     bool mNormalSet = false;
-    bool mLighting = false, mColorMaterial = false, mDepthTest = false, mTexture2D = false;
-    glm::vec4 mMaterialDiffuse{0.8f, 0.8f, 0.8f, 1.0f};
+    AttribState mAttrib;
+    std::vector<std::pair<GLbitfield, AttribState>> mAttribStack;
     GLuint mBoundTexture = 0;
+    bool mHolding = false;
+    int mHoldingList = 0; // > 0 while a held glCallList expands
+    GLenum mRenderMode = GL_RENDER;
+    bool mLiveFrame = false;
     std::map<std::vector<float>, uint32_t> mMaterialIds;
 
     bool mInBegin = false;

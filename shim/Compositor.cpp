@@ -1,0 +1,491 @@
+#include "shim/Compositor.h"
+
+#include "common/Log.h"
+#include "shim/Context.h"
+#include "shim/RealGl.h"
+#include "shim/Recorder.h"
+#include "shim/Settings.h"
+#include "shim/ThreadState.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace nprgl {
+
+namespace {
+
+Compositor& C() { return *tThread.context->compositor(); }
+
+void APIENTRY cBegin(GLenum mode) { C().begin(mode); }
+void APIENTRY cEnd() { C().end(); }
+
+// A draw that may be held back: decided (and colour writes masked) before it is recorded
+// and forwarded, unmasked after.
+#define NPRGL_HELD_DRAW(name, hold, params, args)                                               \
+    void APIENTRY c_##name params                                                              \
+    {                                                                                           \
+        Compositor& c = C();                                                                    \
+        const bool held = c.hold;                                                               \
+        c.next().name args;                                                                     \
+        if (held) c.endHeldDraw();                                                              \
+    }
+NPRGL_HELD_DRAW(glDrawArrays, holdDraw(mode), (GLenum mode, GLint first, GLsizei count),
+                (mode, first, count))
+NPRGL_HELD_DRAW(glDrawElements, holdDraw(mode),
+                (GLenum mode, GLsizei count, GLenum type, const void* indices),
+                (mode, count, type, indices))
+NPRGL_HELD_DRAW(glDrawRangeElements, holdDraw(mode),
+                (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                 const void* indices),
+                (mode, start, end, count, type, indices))
+NPRGL_HELD_DRAW(glMultiDrawArrays, holdDraw(mode),
+                (GLenum mode, const GLint* first, const GLsizei* count, GLsizei n),
+                (mode, first, count, n))
+NPRGL_HELD_DRAW(glCallList, holdList(list), (GLuint list), (list))
+NPRGL_HELD_DRAW(glRectf, holdDraw(GL_POLYGON), (GLfloat a, GLfloat b, GLfloat x, GLfloat y),
+                (a, b, x, y))
+NPRGL_HELD_DRAW(glRectd, holdDraw(GL_POLYGON), (GLdouble a, GLdouble b, GLdouble x, GLdouble y),
+                (a, b, x, y))
+NPRGL_HELD_DRAW(glRecti, holdDraw(GL_POLYGON), (GLint a, GLint b, GLint x, GLint y),
+                (a, b, x, y))
+NPRGL_HELD_DRAW(glRects, holdDraw(GL_POLYGON), (GLshort a, GLshort b, GLshort x, GLshort y),
+                (a, b, x, y))
+#undef NPRGL_HELD_DRAW
+
+// Barriers: what is held is drawn first, so these see (or draw over) the finished scene.
+#define NPRGL_BARRIER(ret, name, params, args)                                                  \
+    ret APIENTRY c_##name params                                                               \
+    {                                                                                           \
+        C().barrier();                                                                          \
+        return C().next().name args;                                                            \
+    }
+NPRGL_BARRIER(void, glCallLists, (GLsizei n, GLenum type, const void* lists), (n, type, lists))
+NPRGL_BARRIER(void, glClear, (GLbitfield mask), (mask))
+NPRGL_BARRIER(void, glAccum, (GLenum op, GLfloat value), (op, value))
+NPRGL_BARRIER(void, glReadPixels,
+              (GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* p),
+              (x, y, w, h, format, type, p))
+NPRGL_BARRIER(void, glCopyPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum type),
+              (x, y, w, h, type))
+NPRGL_BARRIER(void, glBitmap,
+              (GLsizei w, GLsizei h, GLfloat x, GLfloat y, GLfloat dx, GLfloat dy,
+               const GLubyte* bits),
+              (w, h, x, y, dx, dy, bits))
+NPRGL_BARRIER(void, glDrawPixels,
+              (GLsizei w, GLsizei h, GLenum format, GLenum type, const void* p),
+              (w, h, format, type, p))
+NPRGL_BARRIER(void, glCopyTexImage1D,
+              (GLenum t, GLint l, GLenum f, GLint x, GLint y, GLsizei w, GLint b),
+              (t, l, f, x, y, w, b))
+NPRGL_BARRIER(void, glCopyTexImage2D,
+              (GLenum t, GLint l, GLenum f, GLint x, GLint y, GLsizei w, GLsizei h, GLint b),
+              (t, l, f, x, y, w, h, b))
+NPRGL_BARRIER(void, glCopyTexSubImage1D,
+              (GLenum t, GLint l, GLint xo, GLint x, GLint y, GLsizei w), (t, l, xo, x, y, w))
+NPRGL_BARRIER(void, glCopyTexSubImage2D,
+              (GLenum t, GLint l, GLint xo, GLint yo, GLint x, GLint y, GLsizei w, GLsizei h),
+              (t, l, xo, yo, x, y, w, h))
+NPRGL_BARRIER(void, glCopyTexSubImage3D,
+              (GLenum t, GLint l, GLint xo, GLint yo, GLint zo, GLint x, GLint y, GLsizei w,
+               GLsizei h),
+              (t, l, xo, yo, zo, x, y, w, h))
+NPRGL_BARRIER(void, glFinish, (), ())
+NPRGL_BARRIER(void, glFlush, (), ())
+NPRGL_BARRIER(void, glDrawBuffer, (GLenum mode), (mode))
+NPRGL_BARRIER(void, glDrawBuffers, (GLsizei n, const GLenum* bufs), (n, bufs))
+NPRGL_BARRIER(void, glViewport, (GLint x, GLint y, GLsizei w, GLsizei h), (x, y, w, h))
+#undef NPRGL_BARRIER
+
+GLenum APIENTRY c_glGetError() { return C().getError(); }
+GLint APIENTRY c_glRenderMode(GLenum mode) { return C().renderMode(mode); }
+
+void* realProc(const char* name) { return realProcAddress(name); }
+
+glm::vec3 lightDirection(const TrackedBatch& b)
+{
+    if (b.lit && b.light0On) {
+        glm::vec3 toLight = glm::vec3(b.light0);
+        if (b.light0.w != 0.0f) {
+            // A positional light: towards it from the object's origin.
+            toLight = glm::vec3(b.light0) / b.light0.w - glm::vec3(b.modelview[3]);
+        }
+        if (glm::dot(toLight, toLight) > 1e-12f) return glm::normalize(toLight);
+    }
+    return glm::normalize(glm::vec3(-0.4f, 0.5f, 1.0f)); // a head-light from the upper left
+}
+
+} // namespace
+
+Compositor::Compositor(Context& ctx, Recorder& recorder) : mContext(ctx), mRecorder(recorder) {}
+
+Compositor::~Compositor() = default;
+
+void Compositor::install(GlDispatch& d)
+{
+    mNext = d;
+    d.glBegin = cBegin;
+    d.glEnd = cEnd;
+    d.glDrawArrays = c_glDrawArrays;
+    d.glDrawElements = c_glDrawElements;
+    d.glDrawRangeElements = c_glDrawRangeElements;
+    d.glMultiDrawArrays = c_glMultiDrawArrays;
+    d.glCallList = c_glCallList;
+    d.glRectf = c_glRectf;
+    d.glRectd = c_glRectd;
+    d.glRecti = c_glRecti;
+    d.glRects = c_glRects;
+    d.glCallLists = c_glCallLists;
+    d.glClear = c_glClear;
+    d.glAccum = c_glAccum;
+    d.glReadPixels = c_glReadPixels;
+    d.glCopyPixels = c_glCopyPixels;
+    d.glBitmap = c_glBitmap;
+    d.glDrawPixels = c_glDrawPixels;
+    d.glCopyTexImage1D = c_glCopyTexImage1D;
+    d.glCopyTexImage2D = c_glCopyTexImage2D;
+    d.glCopyTexSubImage1D = c_glCopyTexSubImage1D;
+    d.glCopyTexSubImage2D = c_glCopyTexSubImage2D;
+    d.glCopyTexSubImage3D = c_glCopyTexSubImage3D;
+    d.glFinish = c_glFinish;
+    d.glFlush = c_glFlush;
+    d.glDrawBuffer = c_glDrawBuffer;
+    d.glDrawBuffers = c_glDrawBuffers;
+    d.glViewport = c_glViewport;
+    d.glGetError = c_glGetError;
+    d.glRenderMode = c_glRenderMode;
+}
+
+void Compositor::syncStream()
+{
+    if (mBroken) return;
+    CallWriter& w = mRecorder.writer();
+    if (mSynced >= w.size()) return;
+    std::string error;
+    const bool ok = mTracker.feed(w.data() + mSynced, w.size() - mSynced, &mBlobs, error);
+    mBlobs.kept.clear();
+    if (!ok) {
+        NPRGL_ERROR("context %u: cannot follow the program's GL calls (%s); styles off, the "
+                    "program draws as without nprgl from here",
+                    mContext.serial(), error.c_str());
+        mBroken = true;
+        mTracker.setHolding(false);
+    }
+    mSynced = w.size();
+}
+
+void Compositor::keepBlob(uint64_t hash, const void* data, size_t size)
+{
+    if (mBroken) return;
+    const uint8_t* p = static_cast<const uint8_t*>(data);
+    mBlobs.kept.try_emplace(hash, p, p + size);
+}
+
+const std::vector<uint8_t>* Compositor::Blobs::blob(uint64_t hash, std::string& error)
+{
+    auto it = kept.find(hash);
+    if (it != kept.end()) return &it->second;
+    error = "blob not kept";
+    return nullptr;
+}
+
+bool Compositor::ready()
+{
+    if (mPhase == Phase::Ready) return !mBroken;
+    if (mPhase == Phase::Off || mBroken || mInFlush) return false;
+    const ContextCaps& caps = mContext.caps();
+    if (caps.es || caps.core || !caps.atLeast(3, 0)) {
+        NPRGL_WARN("context %u: %s%s; styles need OpenGL 3.0 compatibility or newer: "
+                   "passthrough",
+                   mContext.serial(), mContext.version().c_str(),
+                   caps.core ? " (core profile)" : "");
+        mPhase = Phase::Off;
+        return false;
+    }
+    // Our set-up (texture uploads) would be compiled into the program's list: wait.
+    GLint list = 0;
+    gRealGl.glGetIntegerv(GL_LIST_INDEX, &list);
+    if (list != 0) return false;
+    if (!startStyles()) {
+        mPhase = Phase::Off;
+        return false;
+    }
+    GLint viewport[4] = {};
+    gRealGl.glGetIntegerv(GL_VIEWPORT, viewport);
+    syncStream();
+    mTracker.setViewport({viewport[0], viewport[1], viewport[2], viewport[3]});
+    mTracker.setHolding(true);
+    mPhase = Phase::Ready;
+    return !mBroken;
+}
+
+bool Compositor::startStyles()
+{
+    mBindFramebuffer = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(realProc("glBindFramebuffer"));
+    mBindVertexArray = reinterpret_cast<PFNGLBINDVERTEXARRAYPROC>(realProc("glBindVertexArray"));
+    mBindRenderbuffer =
+        reinterpret_cast<PFNGLBINDRENDERBUFFERPROC>(realProc("glBindRenderbuffer"));
+    if (!mBindFramebuffer || !mBindVertexArray || !mBindRenderbuffer) {
+        NPRGL_WARN("context %u: the driver lacks framebuffer objects; passthrough",
+                   mContext.serial());
+        return false;
+    }
+    const GLenum appError = gRealGl.glGetError();
+    if (!saveState()) return false;
+    std::string error;
+    const bool ok = mChain.init(Settings::get().style, &realProc, error);
+    restoreState();
+    while (gRealGl.glGetError() != GL_NO_ERROR) {
+    }
+    if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
+    if (!ok) {
+        NPRGL_WARN("context %u: %s; passthrough", mContext.serial(), error.c_str());
+        return false;
+    }
+    maskColour = mChain.hasShading();
+    NPRGL_INFO("context %u: style %s on %s", mContext.serial(),
+               Settings::get().style.chainName().c_str(), mContext.renderer().c_str());
+    return true;
+}
+
+bool Compositor::holdDraw(GLenum mode)
+{
+    if (!ready()) return false;
+    syncStream();
+    if (!mTracker.wouldHold(mode)) {
+        if (mHeld) flush();
+        return false;
+    }
+    mask();
+    return true;
+}
+
+bool Compositor::holdList(GLuint list)
+{
+    if (!ready()) return false;
+    syncStream();
+    if (!mTracker.wouldHoldList(list)) {
+        if (mHeld) flush();
+        return false;
+    }
+    mask();
+    return true;
+}
+
+void Compositor::mask()
+{
+    GLint framebuffer = 0;
+    gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    if (mHeld && framebuffer != mHeldFramebuffer) flush(); // one scene per framebuffer
+    mHeldFramebuffer = framebuffer;
+    mHeld = true;
+    if (!maskColour) return;
+    gRealGl.glGetBooleanv(GL_COLOR_WRITEMASK, mSavedMask);
+    gRealGl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+}
+
+void Compositor::endHeldDraw()
+{
+    if (maskColour) {
+        gRealGl.glColorMask(mSavedMask[0], mSavedMask[1], mSavedMask[2], mSavedMask[3]);
+    }
+}
+
+void Compositor::begin(GLenum mode)
+{
+    mHoldingBegin = holdDraw(mode);
+    mNext.glBegin(mode);
+}
+
+void Compositor::end()
+{
+    mNext.glEnd();
+    if (mHoldingBegin) {
+        mHoldingBegin = false;
+        endHeldDraw();
+    }
+}
+
+void Compositor::barrier()
+{
+    if (mHeld && !mHoldingBegin) flush();
+}
+
+GLenum Compositor::getError()
+{
+    if (mPendingErrors.empty()) return mNext.glGetError();
+    const GLenum error = mPendingErrors.front();
+    mPendingErrors.pop_front();
+    // GL keeps the first error until it is asked for and drops the later ones.
+    if (mPendingErrors.empty()) gRealGl.glGetError();
+    return error;
+}
+
+GLint Compositor::renderMode(GLenum mode)
+{
+    barrier();
+    const GLint result = mNext.glRenderMode(mode);
+    GLint now = GL_RENDER;
+    gRealGl.glGetIntegerv(GL_RENDER_MODE, &now);
+    mTracker.setRenderMode(GLenum(now));
+    return result;
+}
+
+void Compositor::flush()
+{
+    if (mInFlush || mHoldingBegin) return;
+    syncStream();
+    if (!mHeld) return;
+    mHeld = false;
+    mInFlush = true;
+    mTracker.takeBatches(mTracked);
+    buildScene();
+    if (!mScene.objects.empty()) render();
+    mInFlush = false;
+}
+
+void Compositor::buildScene()
+{
+    mBatches.resize(mTracked.size());
+    for (size_t i = 0; i < mTracked.size(); ++i) {
+        const TrackedBatch& t = mTracked[i];
+        reconstruct::Batch& b = mBatches[i];
+        b.mode = t.mode;
+        b.modelview = t.modelview;
+        b.materialId = t.materialId;
+        b.vertices.resize(t.vertices.size());
+        for (size_t k = 0; k < t.vertices.size(); ++k) {
+            const TrackedVertex& tv = t.vertices[k];
+            reconstruct::Vertex& v = b.vertices[k];
+            v = reconstruct::Vertex{};
+            v.position = tv.position;
+            v.normal = tv.normal;
+            v.color = tv.color;
+            v.texcoord = tv.texcoord;
+            v.hasNormal = t.hasNormals;
+        }
+        b.contentHash = reconstruct::hashBatch(b);
+    }
+    mReconstructor.build(mBatches, mObjects);
+    mScene.objects.clear();
+    for (const reconstruct::FrameObject& o : mObjects) {
+        const TrackedBatch& t = mTracked[o.firstBatch];
+        styles::SceneObject s;
+        s.mesh = o.mesh;
+        s.modelview = o.modelview;
+        s.projection = t.projection;
+        s.material = {t.material.ambient, t.material.diffuse, t.material.specular,
+                      t.material.shininess};
+        s.lit = t.lit;
+        s.hasNormals = t.hasNormals;
+        s.flat = t.flat;
+        s.lightDir = lightDirection(t);
+        s.texture = t.texture;
+        s.textureEnv = t.textureEnv;
+        s.id = uint32_t(mScene.objects.size() + 1);
+        mScene.objects.push_back(std::move(s));
+    }
+    if (!mTracked.empty()) mScene.viewport = mTracked.back().viewport;
+    mScene.frame = mContext.frame();
+}
+
+void Compositor::render()
+{
+    const GLenum appError = gRealGl.glGetError();
+    if (saveState()) {
+        GLint current = 0;
+        gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &current);
+        if (current != mHeldFramebuffer) mBindFramebuffer(GL_DRAW_FRAMEBUFFER, mHeldFramebuffer);
+        gRealGl.glGetFloatv(GL_COLOR_CLEAR_VALUE, glm::value_ptr(mScene.clearColor));
+        mChain.render(mScene);
+        restoreState();
+    } else if (mFlushes == 0) {
+        NPRGL_WARN("context %u: the program's attribute stacks are full; this scene is drawn "
+                   "without style",
+                   mContext.serial());
+    }
+    ++mFlushes;
+    GLenum ours = gRealGl.glGetError();
+    if (ours != GL_NO_ERROR) {
+        static bool reported = false;
+        if (!reported) NPRGL_DEBUG("a style left GL error 0x%x (not the program's)", ours);
+        reported = true;
+        while (gRealGl.glGetError() != GL_NO_ERROR) {
+        }
+    }
+    if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
+}
+
+bool Compositor::saveState()
+{
+    const GlDispatch& gl = gRealGl;
+    GLint depth = 0, max = 0, clientDepth = 0, clientMax = 0;
+    gl.glGetIntegerv(GL_ATTRIB_STACK_DEPTH, &depth);
+    gl.glGetIntegerv(GL_MAX_ATTRIB_STACK_DEPTH, &max);
+    gl.glGetIntegerv(GL_CLIENT_ATTRIB_STACK_DEPTH, &clientDepth);
+    gl.glGetIntegerv(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, &clientMax);
+    if (depth >= max || clientDepth >= clientMax) return false;
+    gl.glPushAttrib(GL_ALL_ATTRIB_BITS);
+    gl.glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);
+    Saved& s = mSaved;
+    gl.glGetIntegerv(GL_CURRENT_PROGRAM, &s.program);
+    gl.glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &s.arrayBuffer);
+    gl.glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &s.vertexArray);
+    gl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &s.drawFramebuffer);
+    gl.glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &s.readFramebuffer);
+    gl.glGetIntegerv(GL_RENDERBUFFER_BINDING, &s.renderbuffer);
+    gl.glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &s.packBuffer);
+    gl.glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &s.unpackBuffer);
+    gl.glGetIntegerv(GL_ACTIVE_TEXTURE, &s.activeTexture);
+    for (int i = 0; i < 4; ++i) {
+        gl.glActiveTexture(GL_TEXTURE0 + i);
+        gl.glGetIntegerv(GL_TEXTURE_BINDING_2D, &s.textures[i]);
+    }
+    gl.glActiveTexture(GL_TEXTURE0);
+    if (s.packBuffer) gl.glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    if (s.unpackBuffer) gl.glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    // The styles upload and read pixels with the default pixel store.
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl.glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    gl.glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    gl.glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    gl.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    gl.glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    gl.glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    return true;
+}
+
+void Compositor::restoreState()
+{
+    const GlDispatch& gl = gRealGl;
+    const Saved& s = mSaved;
+    for (int i = 3; i >= 0; --i) {
+        gl.glActiveTexture(GL_TEXTURE0 + i);
+        gl.glBindTexture(GL_TEXTURE_2D, s.textures[i]);
+    }
+    gl.glActiveTexture(s.activeTexture);
+    mBindVertexArray(s.vertexArray);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, s.arrayBuffer);
+    gl.glBindBuffer(GL_PIXEL_PACK_BUFFER, s.packBuffer);
+    gl.glBindBuffer(GL_PIXEL_UNPACK_BUFFER, s.unpackBuffer);
+    mBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.drawFramebuffer);
+    mBindFramebuffer(GL_READ_FRAMEBUFFER, s.readFramebuffer);
+    mBindRenderbuffer(GL_RENDERBUFFER, s.renderbuffer);
+    gl.glUseProgram(s.program);
+    gl.glPopClientAttrib();
+    gl.glPopAttrib();
+}
+
+void Compositor::shutdown()
+{
+    flush();
+    if (mPhase == Phase::Ready) {
+        const GLenum appError = gRealGl.glGetError();
+        mChain.shutdown();
+        while (gRealGl.glGetError() != GL_NO_ERROR) {
+        }
+        if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
+    }
+    mPhase = Phase::Off;
+}
+
+} // namespace nprgl

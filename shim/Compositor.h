@@ -1,0 +1,116 @@
+#pragma once
+
+#include "reconstruct/Reconstructor.h"
+#include "shim/Api.h"
+#include "shim/StateTracker.h"
+#include "styles/Scene.h"
+#include "styles/StyleChain.h"
+
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace nprgl {
+
+class Context;
+class Recorder;
+
+// The frame compositor of DESIGN.md §5, one per GL context when a style is active.
+//
+// The StateTracker follows the context's Stream (recorded in memory by the Recorder) and is
+// brought up to date at every draw. A polygonal 3D draw in plain state is held back: it goes
+// to the driver with colour writes off (so the depth buffer still holds the whole scene and
+// later forwarded drawing depth-tests against it) and its geometry joins the frame's scene.
+// Everything else is forwarded in order. A barrier — a forwarded draw after held ones, a
+// clear, a read-back, a copy, a change of framebuffer or viewport, a frame end, a context
+// switch — flushes the scene: reconstruct it, save all of the program's state, run the
+// style chain, restore the state, and keep the program's pending GL error for its next
+// glGetError. With no shading style in the chain the held draws keep their colour and the
+// outline styles draw over the program's own picture.
+class Compositor {
+public:
+    Compositor(Context& ctx, Recorder& recorder);
+    ~Compositor();
+
+    // Points the dispatch slots the compositor needs at its own functions; the previous
+    // slots (recording functions) are what they call next.
+    void install(GlDispatch& dispatch);
+
+    // The Recorder's hooks: the tracker consumes a glBegin..glEnd before the recorder
+    // replaces it with a blob reference, and restarts when the Stream is cleared.
+    void syncStream();
+    void streamRewritten(size_t size) { mSynced = size; }
+    void streamCleared() { mSynced = 0; }
+    // A large argument the Recorder stored as a blob: kept until the tracker has read it.
+    void keepBlob(uint64_t hash, const void* data, size_t size);
+
+    // Renders what is held back, if anything.
+    void flush();
+    // The context is going away or switching: flush, and drop the styles with it current.
+    void shutdown();
+
+    // Dispatch entry points (through the current context's compositor).
+    void begin(GLenum mode);
+    void end();
+    bool holdDraw(GLenum mode);
+    void endHeldDraw();
+    bool holdList(GLuint list);
+    void barrier();
+    GLenum getError();
+    GLint renderMode(GLenum mode);
+    const GlDispatch& next() const { return mNext; }
+
+private:
+    bool ready();
+    bool startStyles();
+    void mask();
+    void unmask();
+    void buildScene();
+    void render();
+    bool saveState();
+    void restoreState();
+
+    Context& mContext;
+    Recorder& mRecorder;
+    GlDispatch mNext{};
+    StateTracker mTracker;
+    class Blobs : public BlobSource {
+    public:
+        const std::vector<uint8_t>* blob(uint64_t hash, std::string& error) override;
+        std::map<uint64_t, std::vector<uint8_t>> kept;
+    } mBlobs;
+    size_t mSynced = 0;
+    bool mBroken = false; // the Stream could not be followed: passthrough from then on
+
+    enum class Phase { Unknown, Ready, Off };
+    Phase mPhase = Phase::Unknown;
+    styles::StyleChain mChain;
+    bool maskColour = true; // the chain has a shading style: held draws write no colour
+
+    bool mHeld = false;         // held batches wait for the next flush
+    bool mHoldingBegin = false; // inside a held glBegin..glEnd
+    GLboolean mSavedMask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    GLint mHeldFramebuffer = 0;
+    std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
+    bool mInFlush = false;
+
+    std::vector<TrackedBatch> mTracked;
+    std::vector<reconstruct::Batch> mBatches;
+    std::vector<reconstruct::FrameObject> mObjects;
+    reconstruct::Reconstructor mReconstructor;
+    styles::Scene mScene;
+    uint64_t mFlushes = 0;
+
+    struct Saved {
+        GLint program = 0, arrayBuffer = 0, vertexArray = 0, drawFramebuffer = 0,
+              readFramebuffer = 0, activeTexture = 0, renderbuffer = 0, packBuffer = 0,
+              unpackBuffer = 0, elementBuffer = 0;
+        GLint textures[4] = {};
+    } mSaved;
+    PFNGLBINDFRAMEBUFFERPROC mBindFramebuffer = nullptr;
+    PFNGLBINDVERTEXARRAYPROC mBindVertexArray = nullptr;
+    PFNGLBINDRENDERBUFFERPROC mBindRenderbuffer = nullptr;
+};
+
+} // namespace nprgl
