@@ -6,6 +6,7 @@
 #include "shim/Replayer.h"
 #include "shim/StateTracker.h"
 #include "stream/CallPrinter.h"
+#include "styles/Presets.h"
 #include "styles/StyleSettings.h"
 
 #include <algorithm>
@@ -40,7 +41,9 @@ int replayCommand(const ReplayCommandOptions& options)
     StyleSettings style;
     std::string config;
     for (const std::string& s : options.settings) config += (config.empty() ? "" : ",") + s;
-    if (!StyleSettings::parse(options.style, config, style, error)) return fail(error);
+    std::string chain = options.style;
+    if (!Presets::combine(options.preset, chain, config, error)) return fail("--preset: " + error);
+    if (!StyleSettings::parse(chain, config, style, error)) return fail(error);
     setenv("NPRGL_STYLE", style.chainName().c_str(), 1);
     setenv("NPRGL_CONFIG", config.c_str(), 1);
 

@@ -9,6 +9,7 @@ namespace nprgl::cli {
 struct ReplayCommandOptions {
     std::string file;
     std::string style;
+    std::string preset;
     std::vector<std::string> settings;
     std::string frames;
     std::string size;

@@ -3,6 +3,7 @@
 #include "common/FrameSet.h"
 #include "common/ScreenshotSpec.h"
 #include "common/Log.h"
+#include "styles/Presets.h"
 #include "styles/StyleSettings.h"
 
 #include <cerrno>
@@ -64,9 +65,13 @@ int runProgram(const RunOptions& options)
     }
     std::string style = options.style;
     if (style.empty() && std::getenv("NPRGL_STYLE")) style = std::getenv("NPRGL_STYLE");
-    StyleSettings settings;
+    std::string preset = options.preset;
+    if (preset.empty() && std::getenv("NPRGL_PRESET")) preset = std::getenv("NPRGL_PRESET");
     std::string error;
+    if (!Presets::combine(preset, style, config, error)) return fail("--preset: " + error);
+    StyleSettings settings;
     if (!StyleSettings::parse(style, config, settings, error)) return fail(error);
+    unsetenv("NPRGL_PRESET"); // resolved here: the library gets the chain and values
     ScreenshotSpec screenshot;
     if (!options.screenshot.empty() &&
         !ScreenshotSpec::parse(options.screenshot, screenshot, error)) {

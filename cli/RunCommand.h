@@ -7,6 +7,7 @@ namespace nprgl::cli {
 
 struct RunOptions {
     std::string style;
+    std::string preset; // a shipped preset's name or a preset file
     std::vector<std::string> settings; // key=value
     std::string screenshot;
     std::string logLevel;

@@ -32,6 +32,7 @@ Commands:
 Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM reads them too):
   NPRGL_STYLE       style chain, e.g. none
   NPRGL_CONFIG      style parameters, key=value,key=value
+  NPRGL_PRESET      a preset name or file (applied under NPRGL_STYLE and NPRGL_CONFIG)
   NPRGL_SCREENSHOT  frames=1,10,100;dir=out writes <program>_<frame>.png before each swap
   NPRGL_RECORD      record the GL stream to this file (NPRGL_RECORD_FRAMES=A-B)
   NPRGL_EXPORT      frame=N;dir=D writes frame N's reconstructed meshes as D/<program>_N.obj
@@ -68,6 +69,7 @@ int replayMain(int argc, char** argv)
     app.add_option("file", o.file, "the capture")->required();
     app.add_option("-o,--output", o.outDir, "directory for the PNGs")->required();
     app.add_option("-s,--style", o.style, "style chain");
+    app.add_option("--preset", o.preset, "a shipped preset (see nprgl styles) or a preset file");
     app.add_option("--set", o.settings, "style parameter, style.param=value (repeatable)")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -136,6 +138,8 @@ int main(int argc, char** argv)
     app.footer(kFooter);
     app.set_version_flag("--version", std::string("nprgl ") + NPRGL_VERSION);
     app.add_option("-s,--style", options.style, "style chain (default: the best-looking one)");
+    app.add_option("--preset", options.preset,
+                   "a shipped preset (see nprgl styles) or a file of key=value lines");
     app.add_option("--set", options.settings, "style parameter, style.param=value (repeatable)")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

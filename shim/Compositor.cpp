@@ -198,6 +198,7 @@ bool Compositor::ready()
                    mContext.serial(), mContext.version().c_str(),
                    caps.core ? " (core profile)" : "");
         mPhase = Phase::Off;
+        mContext.stopStyling();
         return false;
     }
     // Our set-up (texture uploads) would be compiled into the program's list: wait.

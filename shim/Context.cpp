@@ -57,6 +57,16 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial)
 
 Context::~Context() = default;
 
+void Context::stopStyling()
+{
+    // Nothing reads the Stream any more unless it is being recorded: calls go straight to
+    // the driver again (the table is per context, so other contexts keep their styles).
+    if (!mRecorder || mRecorder->hasSink()) return;
+    mDispatch = gRealGl;
+    mFinish = mDispatch.glFinish;
+    if (mWs == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
+}
+
 void Context::release()
 {
     if (mCompositor) mCompositor->flush();

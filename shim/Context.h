@@ -44,6 +44,8 @@ public:
 
     // The program is about to make another context (or none) current: draw what is held.
     void release();
+    // The compositor cannot run here (core profile, old GL): back to plain forwarding.
+    void stopStyling();
 
     // Null unless the process records (NPRGL_RECORD, NPRGL_EXPORT) or a style is active.
     Recorder* recorder() const { return mRecorder.get(); }

@@ -32,6 +32,7 @@ public:
     static Recorder& current() { return *tThread.context->recorder(); }
 
     CallWriter& writer() { return mWriter; }
+    bool hasSink() const { return mSession != nullptr; }
     void countUncaptured(uint16_t opcode) { ++mUncaptured[opcode]; }
     // Hands over the counts not reported yet (name, count).
     template <typename Fn>

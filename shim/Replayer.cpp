@@ -165,7 +165,9 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
     std::string frameError;
     auto frameEnd = [&](uint64_t frame) {
         // The program's frame is complete; OSMesa renders into our buffer.
-        gRealGl.glFinish();
+        // Through the context's own glFinish: the compositor draws what it holds, as at the
+        // end of a live frame.
+        tThread.dispatch->glFinish();
         if (options.outDir.empty() ||
             (!options.frames.empty() && !options.frames.contains(frame))) {
             return true;

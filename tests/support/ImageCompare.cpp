@@ -7,7 +7,7 @@
 
 namespace nprgl::test {
 
-ImageDiff compareImages(const std::string& a, const std::string& b)
+ImageDiff compareImages(const std::string& a, const std::string& b, int tolerance)
 {
     ImageDiff diff;
     PngImage ia, ib;
@@ -20,7 +20,7 @@ ImageDiff compareImages(const std::string& a, const std::string& b)
     for (size_t i = 0; i < ia.rgba.size(); i += 4) {
         int delta = 0;
         for (int c = 0; c < 3; ++c) delta = std::max(delta, std::abs(ia.rgba[i + c] - ib.rgba[i + c]));
-        if (delta) ++diff.differingPixels;
+        if (delta > tolerance) ++diff.differingPixels;
         diff.maxChannelDelta = std::max(diff.maxChannelDelta, delta);
     }
     return diff;

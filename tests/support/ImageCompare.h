@@ -13,8 +13,9 @@ struct ImageDiff {
     int maxChannelDelta = 0;
 };
 
-// Compares two PNG files pixel by pixel (RGB only: GLX visuals may lack alpha).
-ImageDiff compareImages(const std::string& a, const std::string& b);
+// Compares two PNG files pixel by pixel (RGB only: GLX visuals may lack alpha); a pixel
+// differs when a channel differs by more than `tolerance`.
+ImageDiff compareImages(const std::string& a, const std::string& b, int tolerance = 0);
 
 // Share of pixels that are not (near) black: a picture that is all background is suspect.
 double coveredFraction(const PngImage& image);

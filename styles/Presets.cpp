@@ -1,0 +1,122 @@
+#include "styles/Presets.h"
+
+#include "styles/StyleRegistry.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace nprgl {
+
+namespace {
+
+std::string trim(const std::string& s)
+{
+    const size_t first = s.find_first_not_of(" \t\r");
+    if (first == std::string::npos) return {};
+    return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+} // namespace
+
+const std::vector<Preset>& Presets::shipped()
+{
+    static const std::vector<Preset> presets = {
+        {"cartoon", "cel shading with clean ink outlines (the default look)",
+         "style=toon+edges\n"},
+        {"comic", "two flat tones, bold outlines and ink between the bands",
+         "style=toon+edges\n"
+         "toon.tones=2\n"
+         "toon.diffuse_threshold=0.15\n"
+         "edges.width=3\n"},
+        {"newspaper", "halftone dots in print black with ink outlines",
+         "style=halftone+edges\n"
+         "halftone.screen=dots\n"},
+        {"engraving", "cross-hatched pen and ink",
+         "style=textured+edges\n"
+         "textured.shadow_texture=crosshatch\n"},
+        {"sketch", "pencil strokes over hatching",
+         "style=textured+strokes\n"
+         "textured.shadow_texture=hatching\n"},
+    };
+    return presets;
+}
+
+bool Presets::parse(const std::string& text, const std::string& origin, std::string& chain,
+                    std::string& config, std::string& error)
+{
+    const StyleRegistry& registry = StyleRegistry::instance();
+    std::istringstream in(text);
+    std::string line, outChain, outConfig;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (size_t hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+        line = trim(line);
+        if (line.empty()) continue;
+        const std::string where = origin + ":" + std::to_string(number) + ": ";
+        const size_t eq = line.find('=');
+        if (eq == std::string::npos) {
+            error = where + "expected key=value, got '" + line + "'";
+            return false;
+        }
+        const std::string key = trim(line.substr(0, eq)), value = trim(line.substr(eq + 1));
+        if (key == "style") {
+            std::vector<const StyleInfo*> styles;
+            if (!registry.parseChain(value, styles, error)) {
+                error = where + error;
+                return false;
+            }
+            outChain = value;
+            continue;
+        }
+        const size_t dot = key.find('.');
+        const StyleInfo* style = dot == std::string::npos ? nullptr
+                                                          : registry.find(key.substr(0, dot));
+        if (!style || !style->findParam(key.substr(dot + 1))) {
+            error = where + "unknown parameter '" + key + "' (see `nprgl styles`)";
+            return false;
+        }
+        if (value.find(',') != std::string::npos) {
+            error = where + "a value may not contain ',': '" + value + "'";
+            return false;
+        }
+        outConfig += (outConfig.empty() ? "" : ",") + key + "=" + value;
+    }
+    chain = outChain;
+    config = outConfig;
+    return true;
+}
+
+bool Presets::combine(const std::string& preset, std::string& chain, std::string& config,
+                      std::string& error)
+{
+    if (preset.empty()) return true;
+    std::string presetChain, presetConfig;
+    if (!load(preset, presetChain, presetConfig, error)) return false;
+    if (chain.empty()) chain = presetChain;
+    if (!presetConfig.empty()) config = presetConfig + (config.empty() ? "" : "," + config);
+    return true;
+}
+
+bool Presets::load(const std::string& nameOrFile, std::string& chain, std::string& config,
+                   std::string& error)
+{
+    if (nameOrFile.find_first_of("/.") == std::string::npos) {
+        for (const Preset& p : shipped()) {
+            if (nameOrFile == p.name) return parse(p.text, p.name, chain, config, error);
+        }
+        std::string known;
+        for (const Preset& p : shipped()) known += (known.empty() ? "" : ", ") + std::string(p.name);
+        error = "unknown preset '" + nameOrFile + "' (shipped: " + known +
+                "; or give a file name)";
+        return false;
+    }
+    std::ifstream file(nameOrFile);
+    if (!file) {
+        error = "cannot read preset file " + nameOrFile;
+        return false;
+    }
+    std::stringstream text;
+    text << file.rdbuf();
+    return parse(text.str(), nameOrFile, chain, config, error);
+}
+
+} // namespace nprgl
