@@ -12,7 +12,7 @@ grep -v '^#' "$root/tests/golden/cases.txt" | while read -r fixture style frame;
     name=$(echo "${fixture}_${style}" | tr '+' '-')
     rm -rf "$tmp/out"
     "$build/bin/nprgl" replay "$root/tests/fixtures/$fixture.nprgl" -o "$tmp/out" \
-        --style "$style" --frames "$frame" --size 256x256 2>/dev/null
+        --style "$style" --frames "$frame" 2>/dev/null
     cp "$tmp/out/$(printf 'frame_%010d.png' "$frame")" "$root/tests/golden/$name.png"
     echo "tests/golden/$name.png"
 done

@@ -107,6 +107,7 @@ void APIENTRY tCallList(GLuint list) { T().callList(list); }
 void APIENTRY tListBase(GLuint base) { T().listBase(base); }
 void APIENTRY tDeleteLists(GLuint list, GLsizei range) { T().deleteLists(list, range); }
 void APIENTRY tBindTexture(GLenum target, GLuint texture) { T().bindTexture(target, texture); }
+void APIENTRY tActiveTexture(GLenum unit) { T().activeTexture(unit); }
 void APIENTRY tEnableClientState(GLenum cap) { T().enableArray(cap, true); }
 void APIENTRY tDisableClientState(GLenum cap) { T().enableArray(cap, false); }
 void APIENTRY tClientActiveTexture(GLenum unit) { T().clientActiveTexture(unit); }
@@ -281,6 +282,7 @@ StateTracker::StateTracker()
     d.glListBase = tListBase;
     d.glDeleteLists = tDeleteLists;
     d.glBindTexture = tBindTexture;
+    d.glActiveTexture = tActiveTexture;
     d.glEnableClientState = tEnableClientState;
     d.glDisableClientState = tDisableClientState;
     d.glClientActiveTexture = tClientActiveTexture;
@@ -362,7 +364,16 @@ bool StateTracker::wouldHold(GLenum mode) const
     const AttribState& a = mAttrib;
     return mHolding && isPolygonMode(mode) && !mCompiling && mRenderMode == GL_RENDER &&
            (a.depthTest || mProjection.back()[3][3] == 0.0f) && !a.blend && !a.alphaTest &&
-           !a.stencilTest && a.fillFront && a.fillBack && a.colorMaskAll;
+           !a.stencilTest && a.fillFront && a.fillBack && a.colorMaskAll && a.textureUnits == 0 &&
+           !multitexturedArrays();
+}
+
+bool StateTracker::multitexturedArrays() const
+{
+    for (int unit = 1; unit < 8; ++unit) {
+        if (mArrayState[kTexCoordArray0 + unit].array.enabled) return true;
+    }
+    return false;
 }
 
 bool StateTracker::wouldHoldList(GLuint list) const
@@ -438,8 +449,11 @@ void StateTracker::popAttrib()
         a.fillFront = saved.fillFront;
         a.fillBack = saved.fillBack;
     }
-    if (mask & GL_TEXTURE_BIT) {
+    if (mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
         a.texture2D = saved.texture2D;
+        a.textureUnits = saved.textureUnits;
+    }
+    if (mask & GL_TEXTURE_BIT) {
         a.textureEnv = saved.textureEnv;
     }
     if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
@@ -564,9 +578,16 @@ void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
     case Attrib::Normal:
         mCurrent.normal = {x, y, z};
         mNormalSet = true;
+        mListSetsNormal = mListSetsNormal || mCompiling;
         break;
-    case Attrib::Color: mCurrent.color = {x, y, z, w}; break;
-    case Attrib::TexCoord: mCurrent.texcoord = {x, y}; break;
+    case Attrib::Color:
+        mCurrent.color = {x, y, z, w};
+        mListSetsColor = mListSetsColor || mCompiling;
+        break;
+    case Attrib::TexCoord:
+        mCurrent.texcoord = {x, y};
+        mListSetsTexCoord = mListSetsTexCoord || mCompiling;
+        break;
     case Attrib::Vertex:
         if (!mInBegin) return;
         TrackedVertex v = mCurrent;
@@ -617,6 +638,7 @@ void StateTracker::emit(TrackedBatch batch)
     }
     if (batch.vertices.empty()) return;
     if (mCompiling) {
+        mCompiled.inherits.push_back({!mListSetsColor, !mListSetsNormal, !mListSetsTexCoord});
         mCompiled.batches.push_back(batch);
         ListItem item;
         item.batch = int(mCompiled.batches.size()) - 1;
@@ -679,7 +701,23 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     case GL_LIGHTING: a.lighting = on; break;
     case GL_COLOR_MATERIAL: a.colorMaterial = on; break;
     case GL_DEPTH_TEST: a.depthTest = on; break;
-    case GL_TEXTURE_2D: a.texture2D = on; break;
+    case GL_TEXTURE_2D:
+        if (mActiveUnit == 0) {
+            a.texture2D = on;
+            break;
+        }
+        [[fallthrough]];
+    case GL_TEXTURE_1D:
+    case GL_TEXTURE_3D:
+    case GL_TEXTURE_CUBE_MAP:
+    case GL_TEXTURE_GEN_S:
+    case GL_TEXTURE_GEN_T:
+        // Multitexturing and generated coordinates: the styles take unit 0's 2D texture
+        // with the program's coordinates only, so such draws stay the program's.
+        if (on) a.textureUnits |= 1u << std::min(mActiveUnit, 31);
+        else if (cap != GL_TEXTURE_GEN_S && cap != GL_TEXTURE_GEN_T)
+            a.textureUnits &= ~(1u << std::min(mActiveUnit, 31));
+        break;
     case GL_BLEND: a.blend = on; break;
     case GL_ALPHA_TEST: a.alphaTest = on; break;
     case GL_STENCIL_TEST: a.stencilTest = on; break;
@@ -710,6 +748,7 @@ void StateTracker::newList(GLuint list, GLenum mode)
     mCompileAndExecute = mode == GL_COMPILE_AND_EXECUTE;
     mCompilingList = list;
     mCompiled = List();
+    mListSetsColor = mListSetsNormal = mListSetsTexCoord = false;
 }
 
 void StateTracker::endList()
@@ -739,7 +778,16 @@ void StateTracker::callListBody(GLuint list)
     const List& body = it->second;
     for (const ListItem& item : body.items) {
         if (item.batch >= 0) {
-            emit(body.batches[size_t(item.batch)]);
+            TrackedBatch batch = body.batches[size_t(item.batch)];
+            const List::Inherits& from = body.inherits[size_t(item.batch)];
+            // What the list did not set itself comes from the state at this call.
+            for (TrackedVertex& v : batch.vertices) {
+                if (from.color) v.color = mCurrent.color;
+                if (from.normal) v.normal = mCurrent.normal;
+                if (from.texcoord) v.texcoord = mCurrent.texcoord;
+            }
+            if (from.normal) batch.hasNormals = batch.hasNormals || mNormalSet;
+            emit(std::move(batch));
         } else {
             std::string ignored;
             runCalls(item.call.data(), item.call.size(), false, ignored);
@@ -753,9 +801,14 @@ void StateTracker::deleteLists(GLuint list, GLsizei range)
     for (GLsizei i = 0; i < range; ++i) mLists.erase(list + GLuint(i));
 }
 
+void StateTracker::activeTexture(GLenum unit)
+{
+    if (unit >= GL_TEXTURE0 && unit < GL_TEXTURE0 + 32) mActiveUnit = int(unit - GL_TEXTURE0);
+}
+
 void StateTracker::bindTexture(GLenum target, GLuint texture)
 {
-    if (target == GL_TEXTURE_2D) mBoundTexture = texture;
+    if (target == GL_TEXTURE_2D && mActiveUnit == 0) mBoundTexture = texture;
 }
 
 void StateTracker::enableArray(GLenum cap, bool on)

@@ -120,6 +120,7 @@ public:
     GLuint listBaseValue() const { return mListBase; }
     void deleteLists(GLuint list, GLsizei range);
     void bindTexture(GLenum target, GLuint texture);
+    void activeTexture(GLenum unit);
     void enableArray(GLenum cap, bool on);
     void clientActiveTexture(GLenum unit);
     void arrayPointer(int slot, GLint size, GLenum type, GLsizei stride, const void* pointer);
@@ -154,10 +155,15 @@ private:
         std::vector<TrackedBatch> batches;
         bool otherDraws = false; // bitmaps, pixels, lines, points, glCallLists
         std::vector<GLuint> calls; // lists it calls with glCallList
+        struct Inherits {
+            bool color = false, normal = false, texcoord = false;
+        };
+        std::vector<Inherits> inherits; // per batch: attributes taken at glCallList time
     };
     // The state glPushAttrib saves that decides holding and shading.
     struct AttribState {
         bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
+        uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
         bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
         bool fillFront = true, fillBack = true, flat = false, colorMaskAll = true;
         GLenum textureEnv = GL_MODULATE;
@@ -171,6 +177,7 @@ private:
     };
 
     void callListBody(GLuint list);
+    bool multitexturedArrays() const; // texcoord arrays on units other than 0
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
     bool isVertexCall(uint16_t opcode) const;
     void emit(TrackedBatch batch);
@@ -194,7 +201,11 @@ private:
     bool mNormalSet = false;
     AttribState mAttrib;
     std::vector<std::pair<GLbitfield, AttribState>> mAttribStack;
-    GLuint mBoundTexture = 0;
+    GLuint mBoundTexture = 0; // unit 0's GL_TEXTURE_2D
+    int mActiveUnit = 0;
+    // While a list compiles: which current attributes the list sets itself (the others come
+    // from the state when the list is called).
+    bool mListSetsColor = false, mListSetsNormal = false, mListSetsTexCoord = false;
     bool mHolding = false;
     int mHoldingList = 0; // > 0 while a held glCallList expands
     GLenum mRenderMode = GL_RENDER;

@@ -27,13 +27,14 @@ const std::vector<Preset>& Presets::shipped()
          "style=toon+edges\n"
          "toon.tones=2\n"
          "toon.diffuse_threshold=0.15\n"
-         "edges.width=3\n"},
+         "edges.silhouette_width=3\n"},
         {"newspaper", "halftone dots in print black with ink outlines",
          "style=halftone+edges\n"
-         "halftone.screen=dots\n"},
+         "halftone.pattern=dots\n"},
         {"engraving", "cross-hatched pen and ink",
          "style=textured+edges\n"
-         "textured.shadow_texture=crosshatch\n"},
+         "textured.shadow_texture=crosshatching\n"
+         "textured.tint=off\n"},
         {"sketch", "pencil strokes over hatching",
          "style=textured+strokes\n"
          "textured.shadow_texture=hatching\n"},

@@ -4,12 +4,24 @@ namespace nprgl::styles {
 
 // Each module defines its StyleInfo factory in its own file.
 StyleInfo toonStyleInfo();
+StyleInfo strokesStyleInfo();
+StyleInfo wireframeStyleInfo();
+StyleInfo perpixelStyleInfo();
+StyleInfo edgesStyleInfo();
+StyleInfo texturedStyleInfo();
+StyleInfo halftoneStyleInfo();
 
 const char* const kDefaultChain = "none";
 
 void registerStyles(std::vector<StyleInfo>& out)
 {
     out.push_back(toonStyleInfo());
+    out.push_back(strokesStyleInfo());
+    out.push_back(wireframeStyleInfo());
+    out.push_back(perpixelStyleInfo());
+    out.push_back(edgesStyleInfo());
+    out.push_back(texturedStyleInfo());
+    out.push_back(halftoneStyleInfo());
 }
 
 } // namespace nprgl::styles

@@ -1,10 +1,19 @@
 // The shading styles (thesis chapter 3) rendered in-process through the style harness.
+// Pictures go to /tmp/shading/ for looking at them.
 
+#include "styles/textures/HalftoneScreens.h"
+#include "styles/textures/HatchTexture.h"
+#include "styles/textures/StippleTexture.h"
 #include "tests/support/StyleHarness.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
 #include <set>
 
 using namespace nprgl;
@@ -12,7 +21,134 @@ using namespace nprgl::test;
 
 namespace {
 
-glm::mat4 perspective() { return glm::perspective(glm::radians(40.0f), 1.0f, 1.0f, 20.0f); }
+constexpr int kSize = 128;
+constexpr float kFov = 40.0f;
+const glm::vec3 kCentre(0.0f, 0.0f, -6.0f);
+constexpr float kRadius = 1.5f;
+// From the upper right and a little in front: the terminator crosses the visible sphere.
+const glm::vec3 kLight = glm::normalize(glm::vec3(1.0f, 0.6f, 0.6f));
+
+glm::mat4 perspective() { return glm::perspective(glm::radians(kFov), 1.0f, 1.0f, 20.0f); }
+
+void save(const PngImage& image, const std::string& name)
+{
+    std::filesystem::create_directories("/tmp/shading");
+    std::string error;
+    image.write("/tmp/shading/" + name + ".png", error);
+}
+
+// The analytic sphere behind pixel (x, y) (top row first): its L·n, or nothing when the
+// pixel misses the sphere or lies within `rim` pixels of its outline.
+std::optional<float> sphereLight(int x, int y, float rim = 2.0f)
+{
+    const float t = std::tan(glm::radians(kFov) / 2.0f);
+    const glm::vec3 dir = glm::normalize(glm::vec3((2.0f * (x + 0.5f) / kSize - 1.0f) * t,
+                                                   (1.0f - 2.0f * (y + 0.5f) / kSize) * t, -1.0f));
+    const float b = glm::dot(dir, kCentre);
+    const float miss = std::sqrt(std::max(0.0f, glm::dot(kCentre, kCentre) - b * b));
+    // Keep `rim` pixels (world units at the sphere's distance) away from the outline.
+    const float pixelSize = 2.0f * t * -kCentre.z / kSize;
+    if (miss > kRadius - rim * pixelSize) return std::nullopt;
+    const float disc = kRadius * kRadius - miss * miss;
+    const glm::vec3 p = dir * (b - std::sqrt(disc));
+    return glm::dot(glm::normalize(p - kCentre), kLight);
+}
+
+struct Rgb {
+    int r, g, b;
+    bool operator<(const Rgb& o) const { return std::tie(r, g, b) < std::tie(o.r, o.g, o.b); }
+};
+
+Rgb pixel(const PngImage& image, int x, int y)
+{
+    const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+    return {p[0], p[1], p[2]};
+}
+
+float luminance(const Rgb& c) { return (0.299f * c.r + 0.587f * c.g + 0.114f * c.b) / 255.0f; }
+
+bool near(const Rgb& a, const Rgb& b, int tolerance = 2)
+{
+    return std::abs(a.r - b.r) <= tolerance && std::abs(a.g - b.g) <= tolerance &&
+           std::abs(a.b - b.b) <= tolerance;
+}
+
+// Distinct colours of a set, counting those within one 8-bit step (interpolated vertex
+// colours round either way) as one.
+size_t distinct(const std::set<Rgb>& colours)
+{
+    std::vector<Rgb> kept;
+    for (const Rgb& c : colours) {
+        bool seen = false;
+        for (const Rgb& k : kept) seen = seen || near(c, k, 1);
+        if (!seen) kept.push_back(c);
+    }
+    return kept.size();
+}
+
+// Calls f(colour, L·n) for every pixel well inside the sphere.
+void forSphere(const PngImage& image, const std::function<void(const Rgb&, float)>& f,
+               float rim = 2.0f)
+{
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (auto ln = sphereLight(x, y, rim)) f(pixel(image, x, y), *ln);
+        }
+    }
+}
+
+class Shading : public ::testing::Test {
+protected:
+    PngImage render(const std::string& chain, const std::string& config, const std::string& name,
+                    glm::vec4 color = glm::vec4(0.8f, 0.1f, 0.1f, 1.0f), GLuint texture = 0)
+    {
+        auto mv = glm::translate(glm::mat4(1.0f), kCentre);
+        reconstruct::Batch sphere = sphereBatch(mv, kRadius, 48, 24, color);
+        for (reconstruct::Vertex& v : sphere.vertices) {
+            // Longitude / latitude texcoords for the detail-texture tests.
+            v.texcoord = {std::atan2(v.normal.z, v.normal.x) / 6.2831853f + 0.5f,
+                          std::acos(std::clamp(v.normal.y, -1.0f, 1.0f)) / 3.14159265f};
+        }
+        auto scene = harness.makeScene({sphere}, perspective(), kLight);
+        for (auto& o : scene.objects) o.texture = texture;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, chain, config, image, error)) << error;
+        save(image, name);
+        return image;
+    }
+
+    // A 64 x 64 RGBA checkerboard of 8-texel squares, as a program would bind it.
+    GLuint checkerTexture()
+    {
+        const styles::GlFunctions& gl = harness.gl();
+        std::vector<uint8_t> texels(64 * 64 * 4);
+        for (int y = 0; y < 64; ++y) {
+            for (int x = 0; x < 64; ++x) {
+                const bool dark = ((x / 8) + (y / 8)) % 2;
+                uint8_t* t = &texels[size_t(y * 64 + x) * 4];
+                t[0] = dark ? 40 : 255;
+                t[1] = dark ? 60 : 255;
+                t[2] = dark ? 200 : 255;
+                t[3] = 255;
+            }
+        }
+        GLuint id = 0;
+        gl.GenTextures(1, &id);
+        gl.BindTexture(GL_TEXTURE_2D, id);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                      texels.data());
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+        return id;
+    }
+
+    StyleHarness harness{kSize, kSize};
+};
+
+// The toon band colours of the red test sphere with default scales.
+const Rgb kDiffuse{204, 26, 26};
 
 } // namespace
 
@@ -25,7 +161,7 @@ TEST(Toon, SphereShowsOnlyItsBandColours)
     auto scene = harness.makeScene({sphereBatch(mv, 1.5f, 48, 24, red)}, perspective());
     PngImage image;
     std::string error;
-    ASSERT_TRUE(harness.render(scene, "toon", "", image, error)) << error;
+    ASSERT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
     image.write(std::string("/tmp/toon_sphere.png"), error);
     // Inside the sphere (well away from its rim) only the three band colours occur.
     std::set<uint32_t> colours;
@@ -37,4 +173,393 @@ TEST(Toon, SphereShowsOnlyItsBandColours)
     }
     EXPECT_GE(colours.size(), 2u);
     EXPECT_LE(colours.size(), 3u);
+}
+
+TEST_F(Shading, TwoTonesGiveTwoColoursMatchingTheLight)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage image = render("toon", "toon.tones=2,toon.band=nearest", "toon_2tones");
+    std::set<Rgb> colours;
+    int wrong = 0, total = 0;
+    const Rgb shadow{112, 14, 14}; // 0.8 x 0.55, 0.1 x 0.55 in 8 bits
+    forSphere(image, [&](const Rgb& c, float ln) {
+        colours.insert(c);
+        // Away from the boundary (tessellation moves it a little) the colour follows L·n.
+        if (std::abs(ln) < 0.06f) return;
+        ++total;
+        if (!near(c, ln < 0.0f ? shadow : kDiffuse)) ++wrong;
+    });
+    EXPECT_EQ(distinct(colours), 2u);
+    EXPECT_GT(total, 3000);
+    EXPECT_LT(wrong, total / 200);
+}
+
+TEST_F(Shading, ThreeTonesNearestShowAtMostThreeColours)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage image =
+        render("toon", "toon.band=nearest,toon.highlight_threshold=0.8", "toon_3tones");
+    std::set<Rgb> colours;
+    int highlight = 0;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        colours.insert(c);
+        if (ln > 0.85f) highlight += luminance(c) > luminance(kDiffuse) + 0.1f;
+    });
+    EXPECT_EQ(distinct(colours), 3u);
+    EXPECT_GT(highlight, 50);
+}
+
+TEST_F(Shading, DiffuseThresholdMovesTheBoundary)
+{
+    ASSERT_TRUE(harness.ok());
+    double previous = -1.0;
+    for (const char* td : {"-0.4", "0", "0.4"}) {
+        const std::string config = "toon.tones=2,toon.band=nearest,toon.diffuse_threshold=";
+        const PngImage image = render("toon", config + td, std::string("toon_td_") + td);
+        int shadow = 0, total = 0;
+        forSphere(image, [&](const Rgb& c, float) {
+            ++total;
+            shadow += luminance(c) < luminance(kDiffuse) - 0.05f;
+        });
+        const double share = double(shadow) / total;
+        EXPECT_GT(share, previous + 0.1) << "t_d=" << td;
+        previous = share;
+    }
+}
+
+TEST_F(Shading, SmoothBandsBlendOnlyAtTheBoundaries)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage hard = render("toon", "toon.band=nearest", "toon_nearest");
+    std::set<Rgb> bands;
+    forSphere(hard, [&](const Rgb& c, float) { bands.insert(c); });
+    ASSERT_EQ(distinct(bands), 3u);
+    const PngImage soft = render("toon", "toon.band=smooth", "toon_smooth");
+    int between = 0, far = 0;
+    forSphere(soft, [&](const Rgb& c, float ln) {
+        bool known = false;
+        for (const Rgb& b : bands) known = known || near(c, b);
+        if (known) return;
+        ++between;
+        // One pixel is about 0.03 of L·n on this sphere; allow for the tessellation.
+        if (std::abs(ln - 0.0f) > 0.12f && std::abs(ln - 0.92f) > 0.12f) ++far;
+    });
+    EXPECT_GT(between, 20);
+    EXPECT_EQ(far, 0);
+}
+
+TEST_F(Shading, BandLinesInkTheBoundaries)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage image =
+        render("toon", "toon.band_lines=on,toon.band_line_width=2", "toon_band_lines");
+    int ink = 0, stray = 0;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        if (luminance(c) > 0.12f) return;
+        ++ink;
+        if (std::abs(ln) > 0.15f && std::abs(ln - 0.92f) > 0.15f) ++stray;
+    });
+    EXPECT_GT(ink, 100);
+    EXPECT_EQ(stray, 0);
+}
+
+TEST_F(Shading, DetailTextureShowsOnATexturedObject)
+{
+    ASSERT_TRUE(harness.ok());
+    const GLuint checker = checkerTexture();
+    const glm::vec4 white(1.0f);
+    auto litLuminances = [&](const PngImage& image) {
+        std::vector<float> out;
+        forSphere(image, [&](const Rgb& c, float ln) {
+            if (ln > 0.2f && ln < 0.85f) out.push_back(luminance(c));
+        });
+        return out;
+    };
+    auto spread = [](const std::vector<float>& v) {
+        float lo = 1.0f, hi = 0.0f;
+        for (float x : v) lo = std::min(lo, x), hi = std::max(hi, x);
+        return hi - lo;
+    };
+    const auto modulated = litLuminances(
+        render("toon", "toon.band=nearest", "toon_detail_modulate", white, checker));
+    const auto decal = litLuminances(
+        render("toon", "toon.band=nearest,toon.detail=decal", "toon_detail_decal", white, checker));
+    const auto off = litLuminances(
+        render("toon", "toon.band=nearest,toon.detail=off", "toon_detail_off", white, checker));
+    EXPECT_GT(spread(modulated), 0.4f);
+    EXPECT_GT(spread(decal), 0.4f);
+    EXPECT_LT(spread(off), 0.01f);
+    harness.gl().DeleteTextures(1, &checker);
+}
+
+TEST_F(Shading, ThresholdsOutOfOrderAreClampedWithAWarning)
+{
+    ASSERT_TRUE(harness.ok());
+    testing::internal::CaptureStderr();
+    const PngImage image = render(
+        "toon", "toon.band=nearest,toon.diffuse_threshold=0.5,toon.highlight_threshold=0.2",
+        "toon_clamped");
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_NE(log.find("diffuse_threshold"), std::string::npos) << log;
+    // Clamped to t_h = t_d + 0.02: the shadow still covers L·n < 0.5.
+    int wrong = 0;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        if (ln < 0.45f && luminance(c) > luminance(kDiffuse) - 0.05f) ++wrong;
+    });
+    EXPECT_LT(wrong, 20);
+}
+
+TEST_F(Shading, TexturedShadowSideIsDarkerAndHatched)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage image = render("textured", "", "textured_default");
+    double lit = 0, shadow = 0, shadowSq = 0;
+    int nLit = 0, nShadow = 0;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        const double l = luminance(c);
+        if (ln > 0.3f) lit += l, ++nLit;
+        if (ln < -0.1f) shadow += l, shadowSq += l * l, ++nShadow;
+    });
+    ASSERT_GT(nLit, 500);
+    ASSERT_GT(nShadow, 400);
+    const double shadowMean = shadow / nShadow;
+    EXPECT_LT(shadowMean + 0.1, lit / nLit);
+    // Strokes on paper: the shadow side varies strongly from pixel to pixel.
+    const double variance = shadowSq / nShadow - shadowMean * shadowMean;
+    EXPECT_GT(std::sqrt(variance), 0.05);
+}
+
+TEST_F(Shading, TexturedLayersAreOptional)
+{
+    ASSERT_TRUE(harness.ok());
+    // No textures at all: only the shading colours remain (two, plus their antialiased edge).
+    const PngImage plain = render(
+        "textured", "textured.light_texture=none,textured.shadow_texture=none", "textured_none");
+    std::map<Rgb, int> colours;
+    forSphere(plain, [&](const Rgb& c, float) { ++colours[c]; });
+    std::set<Rgb> major;
+    for (const auto& [c, n] : colours) {
+        if (n > 50) major.insert(c);
+    }
+    EXPECT_EQ(distinct(major), 2u);
+    // Hatching on the lit side only: the lit side varies, the shadow side is flat.
+    const PngImage lightOnly =
+        render("textured", "textured.light_texture=hatching,textured.shadow_texture=none",
+               "textured_light_only");
+    std::set<Rgb> lit, dark;
+    forSphere(lightOnly, [&](const Rgb& c, float ln) {
+        if (ln > 0.4f) lit.insert(c);
+        if (ln < -0.4f) dark.insert(c);
+    });
+    EXPECT_GT(lit.size(), 5u);
+    EXPECT_EQ(dark.size(), 1u);
+}
+
+TEST_F(Shading, TexturedTransitionBandIsIndependentOfTheDiffuseThreshold)
+{
+    ASSERT_TRUE(harness.ok());
+    // A band far from t_d: the shadow texture reaches well into the lit colour region.
+    const PngImage image =
+        render("textured",
+               "textured.tint=off,textured.light_texture=none,textured.transition=symmetric,"
+               "textured.alpha_low=0.5,textured.alpha_high=0.6",
+               "textured_band_moved");
+    int hatchedLit = 0;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        if (ln > 0.1f && ln < 0.4f) hatchedLit += luminance(c) < 0.5f;
+    });
+    EXPECT_GT(hatchedLit, 100);
+}
+
+TEST_F(Shading, HalftoneIsNearBinaryAndDarkerInShadow)
+{
+    ASSERT_TRUE(harness.ok());
+    for (const char* pattern : {"dots", "lines", "noise", "bricks"}) {
+        const PngImage image = render("halftone", std::string("halftone.pattern=") + pattern,
+                                      std::string("halftone_") + pattern);
+        const Rgb paper{250, 247, 238}, ink{0, 0, 0};
+        int binary = 0, total = 0;
+        double litInk = 0, shadowInk = 0;
+        int nLit = 0, nShadow = 0;
+        forSphere(image, [&](const Rgb& c, float ln) {
+            ++total;
+            binary += near(c, paper, 25) || near(c, ink, 25);
+            const double coverage = 1.0 - luminance(c) / luminance(paper);
+            if (ln > 0.3f) litInk += coverage, ++nLit;
+            if (ln < -0.3f) shadowInk += coverage, ++nShadow;
+        });
+        EXPECT_GE(binary, total * 95 / 100) << pattern << ": " << binary << " of " << total;
+        EXPECT_GT(shadowInk / nShadow, litInk / nLit + 0.2) << pattern;
+    }
+}
+
+TEST_F(Shading, HalftoneReadsAPngScreen)
+{
+    ASSERT_TRUE(harness.ok());
+    // Vertical stripes, 4 ink and 4 blank texels: the output stripes run vertically.
+    PngImage screen;
+    screen.width = screen.height = 16;
+    screen.rgba.resize(16 * 16 * 4);
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            uint8_t* p = &screen.rgba[size_t(y * 16 + x) * 4];
+            p[0] = p[1] = p[2] = (x % 8) < 4 ? 0 : 255;
+            p[3] = 255;
+        }
+    }
+    std::filesystem::create_directories("/tmp/shading");
+    const std::string path = "/tmp/shading/stripes_screen.png";
+    std::string error;
+    ASSERT_TRUE(screen.write(path, error)) << error;
+    const PngImage image =
+        render("halftone", "halftone.screen_png=" + path + ",halftone.ambient=0.3",
+               "halftone_png");
+    // Compare each pixel with its neighbours across and along the stripes.
+    int across = 0, along = 0;
+    for (int y = 30; y < 98; ++y) {
+        for (int x = 30; x < 98; ++x) {
+            if (!sphereLight(x, y, 4.0f) || !sphereLight(x + 1, y + 1, 4.0f)) continue;
+            const float l = luminance(pixel(image, x, y));
+            across += std::abs(l - luminance(pixel(image, x + 1, y))) > 0.5f;
+            along += std::abs(l - luminance(pixel(image, x, y + 1))) > 0.5f;
+        }
+    }
+    EXPECT_GT(across, 200);
+    EXPECT_LT(along, across / 10);
+}
+
+TEST_F(Shading, HalftoneMissingPngFallsBackWithAnError)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage reference = render("halftone", "", "halftone_reference");
+    testing::internal::CaptureStderr();
+    const PngImage image =
+        render("halftone", "halftone.screen_png=/nonexistent/screen.png", "halftone_missing");
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_NE(log.find("nprgl"), std::string::npos) << log;
+    EXPECT_NE(log.find("/nonexistent/screen.png"), std::string::npos) << log;
+    EXPECT_EQ(image.rgba, reference.rgba); // the procedural default
+}
+
+TEST_F(Shading, TexturedMissingPngFallsBackWithAnError)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage reference = render("textured", "", "textured_reference");
+    testing::internal::CaptureStderr();
+    const PngImage image =
+        render("textured", "textured.shadow_png=/nonexistent/shadow.png", "textured_missing");
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_NE(log.find("/nonexistent/shadow.png"), std::string::npos) << log;
+    EXPECT_EQ(image.rgba, reference.rgba);
+}
+
+TEST(ShadingSettings, OutOfRangeValuesAreRefused)
+{
+    StyleSettings settings;
+    std::string error;
+    EXPECT_TRUE(StyleSettings::parse("halftone", "halftone.smoothness=12,halftone.pattern=bricks",
+                                     settings, error))
+        << error;
+    for (const char* bad :
+         {"toon.tones=4", "toon.band=wobbly", "toon.band_line_width=0", "toon.detail=sticker",
+          "halftone.smoothness=0.5", "halftone.gamma=20", "halftone.screen_scale=0",
+          "halftone.pattern=stars", "textured.alpha_low=-2", "textured.light_texture=bricks",
+          "textured.transition=wavy", "textured.texture_scale=100"}) {
+        const std::string chain = std::string(bad).substr(0, std::string(bad).find('.'));
+        EXPECT_FALSE(StyleSettings::parse(chain, bad, settings, error)) << bad;
+        EXPECT_NE(error.find(std::string(bad).substr(0, std::string(bad).find('='))),
+                  std::string::npos)
+            << error;
+    }
+}
+
+TEST(ShadingTextures, GeneratorsAreDeterministicAndTile)
+{
+    using namespace nprgl::styles;
+    const TextureImage a = HatchTexture::make({}), b = HatchTexture::make({});
+    EXPECT_EQ(a.pixels, b.pixels);
+    HatchTexture::Options cross;
+    cross.cross = true;
+    cross.size = 96;
+    cross.spacing = 6;
+    const TextureImage c = HatchTexture::make(cross);
+    auto inkShare = [](const TextureImage& t) {
+        int ink = 0;
+        for (uint8_t v : t.pixels) ink += v < 128;
+        return double(ink) / double(t.pixels.size());
+    };
+    EXPECT_GT(inkShare(a), 0.05);
+    EXPECT_GT(inkShare(c), inkShare(a) * 1.5); // cross-hatching is darker
+    EXPECT_GT(inkShare(StippleTexture::make({})), 0.02);
+    // Seamless: the last column continues into the first about as smoothly as neighbours do.
+    auto seam = [](const TextureImage& t, int x0, int x1) {
+        int diff = 0;
+        for (int y = 0; y < t.height; ++y) diff += std::abs(int(t.at(x0, y)) - int(t.at(x1, y)));
+        return diff;
+    };
+    EXPECT_LT(seam(c, c.width - 1, 0), 2 * seam(c, 10, 11) + 255);
+}
+
+TEST(ShadingTextures, ScreensCombineAsTheThesisSays)
+{
+    using namespace nprgl::styles;
+    HalftoneScreens::Set set;
+    set.a = TextureImage::grey(8, 8, 255);
+    set.b = TextureImage::grey(8, 8, 0);
+    set.c = TextureImage::grey(8, 8, 0);
+    set.a.at(0, 0) = 0;
+    const TextureImage h = HalftoneScreens::combine(set);
+    EXPECT_EQ(h.at(0, 0), 0);  // A's ink
+    EXPECT_EQ(h.at(3, 3), 84); // B's ink remapped to 0.33
+    set.b = TextureImage::grey(8, 8, 255);
+    EXPECT_EQ(HalftoneScreens::combine(set).at(3, 3), 168); // C's ink at 0.66
+    // The generated screens span the whole range, darkest in A.
+    for (auto pattern : {HalftoneScreens::Pattern::Dots, HalftoneScreens::Pattern::Lines,
+                         HalftoneScreens::Pattern::Noise, HalftoneScreens::Pattern::Bricks}) {
+        const TextureImage combined = HalftoneScreens::combine(HalftoneScreens::make(pattern));
+        int lo = 255, hi = 0;
+        for (uint8_t v : combined.pixels) lo = std::min(lo, int(v)), hi = std::max(hi, int(v));
+        EXPECT_LT(lo, 30);
+        EXPECT_GT(hi, 150);
+    }
+}
+
+TEST_F(Shading, TexturedAsymmetricTransitionKeepsStrokesSolid)
+{
+    ASSERT_TRUE(harness.ok());
+    // In the middle of the band the symmetric cross-fade greys the strokes out; the
+    // non-symmetric transition (fig. 3.13) keeps them at full strength.
+    const std::string common = "textured.tint=off,textured.light_texture=none,"
+                               "textured.alpha_low=-0.4,textured.alpha_high=0.4,";
+    auto solidInk = [&](const std::string& transition) {
+        const PngImage image = render("textured", common + "textured.transition=" + transition,
+                                      "textured_" + transition);
+        int solid = 0;
+        forSphere(image, [&](const Rgb& c, float ln) {
+            if (std::abs(ln) < 0.08f) solid += luminance(c) < 0.3f;
+        });
+        return solid;
+    };
+    const int symmetric = solidInk("symmetric");
+    const int asymmetric = solidInk("asymmetric");
+    EXPECT_LT(symmetric, 5);
+    EXPECT_GT(asymmetric, 40);
+}
+
+TEST_F(Shading, TexturedHighlightVariantKeepsDetailOutOfTheHighlight)
+{
+    ASSERT_TRUE(harness.ok());
+    const GLuint checker = checkerTexture();
+    const PngImage image = render("textured",
+                                  "textured.variant=highlight,textured.highlight_threshold=0.7,"
+                                  "textured.alpha_low=-0.05,textured.alpha_high=0.05",
+                                  "textured_highlight", glm::vec4(1.0f), checker);
+    std::set<Rgb> highlight, below;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        if (ln > 0.8f) highlight.insert(c);
+        if (ln > 0.1f && ln < 0.6f) below.insert(c);
+    });
+    EXPECT_EQ(distinct(highlight), 1u);
+    EXPECT_GT(below.size(), 10u);
+    harness.gl().DeleteTextures(1, &checker);
 }

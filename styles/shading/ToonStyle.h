@@ -3,11 +3,15 @@
 #include "styles/ShaderProgram.h"
 #include "styles/Style.h"
 
+#include <glm/glm.hpp>
+
 namespace nprgl::styles {
 
-// Cartoon shading (thesis §3.1): per pixel, L·n below t_d takes the shadow colour, above t_h
-// the highlight colour, else the diffuse colour; all three derived from the program's own
-// colour or material.
+// Cartoon shading (thesis §3.1 and the future work of §3.1.4): per pixel, L·n below t_d takes
+// the shadow colour, above t_h the highlight colour, else the diffuse colour; all three
+// derived from the program's own colour or material unless configured. Optional: band
+// boundaries antialiased in screen space, ink lines between the bands (fig. 3.8), and the
+// program's texture as a detail texture (modulated or as a decal "sticker").
 class ToonStyle : public Style {
 public:
     bool init(StyleContext& ctx, std::string& error) override;
@@ -15,7 +19,24 @@ public:
     void shutdown(StyleContext& ctx) override;
 
 private:
+    struct Uniforms {
+        GLint modelview = -1, projection = -1, normalMatrix = -1, lightDir = -1,
+              diffuseThreshold = -1, highlightThreshold = -1, tones = -1, shadowScale = -1,
+              highlightMix = -1, smoothBands = -1, detailMode = -1, detail = -1, bandLines = -1,
+              lineWidth = -1, fixedColors = -1, shadowColor = -1, diffuseColor = -1,
+              highlightColor = -1;
+    };
     ShaderProgram mProgram;
+    Uniforms mU;
+    // Parameters: fixed for the chain's life, so read once at init.
+    int mTones = 3;
+    float mDiffuseThreshold = 0.0f, mHighlightThreshold = 0.9f;
+    float mShadowScale = 0.5f, mHighlightMix = 0.5f;
+    bool mSmooth = true, mBandLines = false;
+    float mLineWidth = 1.5f;
+    int mDetail = 1; // 0 off, 1 modulate, 2 decal
+    int mFixed = 0; // bit i: colour i (shadow, diffuse, highlight) is configured
+    glm::vec3 mColors[3]{};
 };
 
 } // namespace nprgl::styles

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# The README gallery: records a few programs once (glxgears, the gear scene, the character
+# demo's two animations), replays every capture in every gallery style into docs/gallery/,
+# and rewrites the table between the gallery markers in README.md. Run after a change to a
+# style's look; look at the pictures before committing them.
+#   scripts/make-gallery.sh [BUILD_DIR]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+nprgl="$build/bin/nprgl"
+out="$root/docs/gallery"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$out"
+rm -f "$out"/*.png
+models=/usr/share/assimp/models
+styles=(none toon textured halftone toon+edges toon+wireframe toon+perpixel toon+strokes
+        halftone+edges textured+strokes)
+
+record() { # name frames command...
+    local name=$1 frames=$2
+    shift 2
+    "$nprgl" record -o "$tmp/$name.nprgl" --frames "1-$frames" --style none -- "$@" \
+        >/dev/null 2>&1 || true
+}
+record gears 5 "$build/bin/demo_displaylist" --offscreen --frames 5 --size 320x240
+record sydney 20 "$build/bin/demo_character" --model "$models/MD2/sydney.md2" --offscreen \
+    --frames 20 --size 320x240
+record wuson 20 "$build/bin/demo_character" --model "$models/X/Testwuson.X" --offscreen \
+    --frames 20 --size 320x240
+"$root/scripts/with-display.sh" sh -c \
+    "timeout 3 '$nprgl' record -o '$tmp/glxgears.nprgl' --frames 1-30 --style none -- \
+     glxgears -geometry 320x240 >/dev/null 2>&1 || true"
+
+scenes=()
+for capture in "$tmp"/*.nprgl; do
+    scene=$(basename "$capture" .nprgl)
+    last=$("$nprgl" info "$capture" | awk '/^frames:/ {print $2}')
+    [ -n "$last" ] || continue
+    scenes+=("$scene")
+    for style in "${styles[@]}"; do
+        name="${scene}_$(echo "$style" | tr '+' '-')"
+        rm -rf "$tmp/r"
+        "$nprgl" replay "$capture" -o "$tmp/r" --style "$style" --frames "$last" \
+            >/dev/null 2>&1
+        cp "$tmp/r/$(printf 'frame_%010d.png' "$last")" "$out/$name.png"
+    done
+done
+
+table="$tmp/table.md"
+{
+    printf '| style |'
+    for scene in "${scenes[@]}"; do printf ' %s |' "$scene"; done
+    printf '\n|---|'
+    for _ in "${scenes[@]}"; do printf -- '---|'; done
+    printf '\n'
+    for style in "${styles[@]}"; do
+        printf '| `%s` |' "$style"
+        for scene in "${scenes[@]}"; do
+            printf ' ![%s in %s](docs/gallery/%s_%s.png) |' "$scene" "$style" "$scene" \
+                "$(echo "$style" | tr '+' '-')"
+        done
+        printf '\n'
+    done
+} > "$table"
+python3 - "$root/README.md" "$table" <<'PY'
+import sys
+readme, table = sys.argv[1], open(sys.argv[2]).read()
+text = open(readme).read()
+start, end = "<!-- gallery:start -->", "<!-- gallery:end -->"
+if start not in text:
+    sys.exit("README.md has no gallery markers")
+head, rest = text.split(start, 1)
+tail = rest.split(end, 1)[1]
+open(readme, "w").write(head + start + "\n" + table + end + tail)
+PY
+ls "$out" | wc -l

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "styles/ShaderProgram.h"
+#include "styles/Style.h"
+#include "styles/textures/GlTexture.h"
+#include "styles/textures/TextureImage.h"
+
+#include <glm/glm.hpp>
+
+namespace nprgl::styles {
+
+// Half-toning (thesis §3.3, after Freudenberg): three screens A, B, C folded into one texture
+// H; per pixel the illumination I = a + ((L·n + 1) / 2)^α · d (eq. 3.13), times a detail
+// map T (the program's texture, else 1), decides the ink through C_f = 1 − S(1 − I·T − H)
+// (eq. 3.14, clamped), which is near-binary: ink or paper.
+class HalftoneStyle : public Style {
+public:
+    bool init(StyleContext& ctx, std::string& error) override;
+    void render(const Scene& scene, StyleContext& ctx) override;
+    void shutdown(StyleContext& ctx) override;
+
+private:
+    struct Uniforms {
+        GLint modelview = -1, projection = -1, normalMatrix = -1, lightDir = -1, ambient = -1,
+              diffuse = -1, gamma = -1, smoothness = -1, screen = -1, detail = -1,
+              useDetail = -1, objectSpace = -1, anchor = -1, scale = -1, inkFromObject = -1,
+              ink = -1, paper = -1, detailStrength = -1;
+    };
+    ShaderProgram mProgram;
+    Uniforms mU;
+    TextureImage mScreenImage; // combined H, uploaded on first render
+    GlTexture mScreen;
+    float mAmbient = 0.0f, mDiffuse = 1.0f, mGamma = 1.0f, mSmoothness = 6.0f, mScale = 1.0f;
+    float mDetailStrength = 0.6f;
+    bool mDetail = true, mObjectSpace = false, mInkFromObject = false;
+    glm::vec3 mInk{0.0f}, mPaper{1.0f};
+};
+
+} // namespace nprgl::styles

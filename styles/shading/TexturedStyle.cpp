@@ -1,0 +1,325 @@
+#include "styles/shading/TexturedStyle.h"
+
+#include "common/Log.h"
+#include "styles/StyleRegistry.h"
+#include "styles/shading/ShadingCommon.h"
+#include "styles/textures/HatchTexture.h"
+#include "styles/textures/StippleTexture.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace nprgl::styles {
+
+namespace {
+
+const char* kFragment = R"(
+uniform vec3 lightDir;
+uniform float diffuseThreshold;
+uniform float highlightThreshold;
+uniform int tones;
+uniform float shadowScale;
+uniform float highlightMix;
+uniform bool tint;
+uniform float bandLow;  // ta_l
+uniform float bandHigh; // ta_u
+uniform bool asymmetric;
+uniform float falloff;  // share of the band over which each layer fades (non-symmetric)
+uniform int lightMode;  // 0 blank, 1 grey pattern, 2 program texture, 3 colour pattern
+uniform int shadowMode;
+uniform sampler2D lightTex;
+uniform sampler2D shadowTex;
+uniform sampler2D programTex;
+uniform bool objectSpace;
+uniform vec2 anchor;    // window pixel of the object's origin
+uniform float scale;
+in vec3 eyeNormal;
+in vec4 baseColor;
+in vec2 uv;
+out vec4 fragColor;
+
+vec3 layer(int mode, sampler2D tex)
+{
+    if (mode == 0) return vec3(1.0);
+    vec4 t;
+    if (mode == 2) {
+        t = texture(programTex, uv);
+    } else {
+        // Object space: the program's texcoords, 8 tiles per unit; screen space: one texel
+        // per pixel at scale 1, anchored at the object's origin.
+        vec2 p = objectSpace ? uv * 8.0 * scale
+                             : (gl_FragCoord.xy - anchor) * scale / vec2(textureSize(tex, 0));
+        t = texture(tex, p);
+        if (mode == 1) t = vec4(t.rrr, 1.0);
+    }
+    return mix(vec3(1.0), t.rgb, t.a); // transparent texels show the shading colour
+}
+
+float ramp(float x, float lo, float hi)
+{
+    return clamp((x - lo) / max(hi - lo, 1e-4), 0.0, 1.0);
+}
+
+void main()
+{
+    vec3 n = shadingNormal(eyeNormal);
+    float d = dot(n, lightDir);
+    float pixel = max(fwidth(d), 1e-5);
+    // The shading colours (the 1D shading texture's colour channels), antialiased bands.
+    vec3 base = tint ? baseColor.rgb : vec3(1.0);
+    float lit = clamp((d - diffuseThreshold) / pixel + 0.5, 0.0, 1.0);
+    vec3 shade = mix(base * shadowScale, base, lit);
+    if (tones == 3) {
+        vec3 ch = mix(base, vec3(1.0), highlightMix);
+        shade = mix(shade, ch, clamp((d - highlightThreshold) / pixel + 0.5, 0.0, 1.0));
+    }
+    vec3 L = layer(lightMode, lightTex);
+    vec3 S = layer(shadowMode, shadowTex);
+    vec3 c;
+    if (!asymmetric) {
+        // The thesis's two passes: shadow layer, then the light layer blended over it by the
+        // shading texture's alpha ramp.
+        c = shade * mix(S, L, ramp(d, bandLow, bandHigh));
+    } else {
+        // Both layers overlap inside the band; each falls off steeply at its own end.
+        float w = (bandHigh - bandLow) * falloff;
+        float wl = ramp(d, bandLow, bandLow + w);
+        float ws = 1.0 - ramp(d, bandHigh - w, bandHigh);
+        c = shade * mix(vec3(1.0), L, wl) * mix(vec3(1.0), S, ws);
+    }
+    fragColor = vec4(c, baseColor.a);
+}
+)";
+
+const std::vector<std::string> kSources = {"none",    "paper",  "hatching", "crosshatching",
+                                           "stipple", "program"};
+
+std::unique_ptr<Style> create() { return std::make_unique<TexturedStyle>(); }
+
+TextureImage procedural(TexturedStyle::Source source)
+{
+    switch (source) {
+    case TexturedStyle::Hatching: {
+        HatchTexture::Options o;
+        o.spacing = 8;
+        o.width = 1.2f;
+        return HatchTexture::make(o);
+    }
+    case TexturedStyle::CrossHatching: {
+        HatchTexture::Options o;
+        o.size = 96; // a multiple of the spacing, so the tile repeats seamlessly
+        o.spacing = 6;
+        o.width = 1.3f;
+        o.cross = true;
+        o.seed = 2;
+        return HatchTexture::make(o);
+    }
+    case TexturedStyle::Stipple: return StippleTexture::make({});
+    default: return {};
+    }
+}
+
+// Layer modes of the shader.
+int modeOf(TexturedStyle::Source source, const TextureImage& image, bool programTexture)
+{
+    if (source == TexturedStyle::Program) return programTexture ? 2 : 0;
+    if (image.empty()) return 0;
+    return image.channels == 1 ? 1 : 3;
+}
+
+} // namespace
+
+StyleInfo texturedStyleInfo()
+{
+    StyleInfo info;
+    info.name = "textured";
+    info.summary = "textured shading: a light texture on lit and a shadow texture on shadowed "
+                   "regions (thesis 3.2)";
+    info.role = StyleRole::Shading;
+    info.create = &create;
+    info.params = {
+        ParamInfo::number("tones", "shading colours: 2 (shadow, diffuse) or 3 (+ highlight)", 2,
+                          2, 3),
+        ParamInfo::number("diffuse_threshold", "t_d: L.n below it takes the shadow colour", 0.0,
+                          -1.0, 1.0),
+        ParamInfo::number("highlight_threshold", "t_h: L.n above it takes the highlight colour",
+                          0.92, -1.0, 1.0),
+        ParamInfo::number("shadow_scale", "shadow colour = base colour x this", 0.75, 0.0, 1.0),
+        ParamInfo::number("highlight_mix", "highlight colour = base mixed with white by this",
+                          0.55, 0.0, 1.0),
+        ParamInfo::flag("tint", "shading colours from the program's colour (off: white paper, "
+                                "ink only)",
+                        true),
+        ParamInfo::number("alpha_low", "ta_l: L.n where the light texture starts to fade in",
+                          -0.15, -1.0, 1.0),
+        ParamInfo::number("alpha_high", "ta_u: L.n where only the light texture remains", 0.15,
+                          -1.0, 1.0),
+        ParamInfo::choice("transition", "symmetric (one cross-fade) or asymmetric (both "
+                                        "textures overlap in the band, steep ends; fig. 3.13)",
+                          {"symmetric", "asymmetric"}, 1),
+        ParamInfo::number("falloff", "asymmetric: share of the band over which each texture "
+                                     "fades",
+                          0.3, 0.05, 1.0),
+        ParamInfo::choice("light_texture", "texture of the lit region (program: the program's "
+                                           "own texture, blank without one)",
+                          kSources, 5),
+        ParamInfo::choice("shadow_texture", "texture of the shadowed region", kSources, 3),
+        ParamInfo::text("light_png", "a PNG file as light texture (replaces light_texture)"),
+        ParamInfo::text("shadow_png", "a PNG file as shadow texture (replaces shadow_texture)"),
+        ParamInfo::choice("variant", "shadow: band around [ta_l, ta_u]; highlight: band of the "
+                                     "same width centred on t_h, the program's texture (else "
+                                     "the shadow texture) below it and none in the highlight",
+                          {"shadow", "highlight"}, 0),
+        ParamInfo::choice("space", "where the textures lie: screen (constant stroke width, "
+                                   "any program) or object (the program's texcoords; only for "
+                                   "textured objects, others use screen)",
+                          {"screen", "object"}, 0),
+        ParamInfo::number("texture_scale", "pattern density: screen texels per pixel, or tiles "
+                                           "per 1/8 texcoord unit",
+                          1.0, 0.1, 16.0),
+    };
+    return info;
+}
+
+void TexturedStyle::prepareLayer(StyleContext& ctx, Layer& layer, const char* choice,
+                                 const char* png)
+{
+    layer.source = Source(std::clamp(int(std::lround(ctx.param("textured", choice))), 0,
+                                     int(kSources.size()) - 1));
+    const std::string path = ctx.text("textured", png);
+    if (!path.empty()) {
+        std::string why;
+        if (GlTexture::loadPng(path, false, layer.image, why)) {
+            layer.source = Paper; // any non-program source: the image decides the mode
+            return;
+        }
+        NPRGL_ERROR("textured: cannot use %s=%s (%s); using the %s texture instead", png,
+                    path.c_str(), why.c_str(), kSources[size_t(layer.source)].c_str());
+    }
+    layer.image = procedural(layer.source);
+}
+
+bool TexturedStyle::init(StyleContext& ctx, std::string& error)
+{
+    const std::string fragment =
+        std::string("#version 130\n") + ShadingCommon::normalFunction() + kFragment;
+    if (!mProgram.build(ctx.gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+        return false;
+    }
+    const GlFunctions& gl = ctx.gl;
+    auto at = [&](const char* name) { return mProgram.uniform(gl, name); };
+    mU = {at("modelview"),   at("projection"),   at("normalMatrix"), at("lightDir"),
+          at("diffuseThreshold"), at("highlightThreshold"), at("tones"), at("shadowScale"),
+          at("highlightMix"), at("tint"),         at("bandLow"),      at("bandHigh"),
+          at("asymmetric"),  at("falloff"),      at("lightMode"),    at("shadowMode"),
+          at("lightTex"),    at("shadowTex"),    at("programTex"),   at("objectSpace"),
+          at("anchor"),      at("scale")};
+
+    mTones = int(std::lround(ctx.param("textured", "tones"))) <= 2 ? 2 : 3;
+    mDiffuseThreshold = float(ctx.param("textured", "diffuse_threshold"));
+    mHighlightThreshold = float(ctx.param("textured", "highlight_threshold"));
+    if (mDiffuseThreshold >= mHighlightThreshold) {
+        const float td = std::min(mDiffuseThreshold, 0.98f);
+        NPRGL_WARN("textured: diffuse_threshold (%.3g) must be below highlight_threshold "
+                   "(%.3g); using %.3g and %.3g",
+                   double(mDiffuseThreshold), double(mHighlightThreshold), double(td),
+                   double(td + 0.02f));
+        mDiffuseThreshold = td;
+        mHighlightThreshold = td + 0.02f;
+    }
+    mShadowScale = float(ctx.param("textured", "shadow_scale"));
+    mHighlightMix = float(ctx.param("textured", "highlight_mix"));
+    mTint = ctx.param("textured", "tint") >= 0.5;
+    mBandLow = float(ctx.param("textured", "alpha_low"));
+    mBandHigh = float(ctx.param("textured", "alpha_high"));
+    if (mBandLow > mBandHigh) {
+        NPRGL_WARN("textured: alpha_low (%.3g) is above alpha_high (%.3g); swapping them",
+                   double(mBandLow), double(mBandHigh));
+        std::swap(mBandLow, mBandHigh);
+    }
+    mAsymmetric = ctx.param("textured", "transition") >= 0.5;
+    mFalloff = float(ctx.param("textured", "falloff"));
+    mHighlightVariant = ctx.param("textured", "variant") >= 0.5;
+    if (mHighlightVariant) {
+        const float half = 0.5f * (mBandHigh - mBandLow);
+        mBandLow = mHighlightThreshold - half;
+        mBandHigh = mHighlightThreshold + half;
+        mTones = 3;
+    }
+    mObjectSpace = ctx.param("textured", "space") >= 0.5;
+    mScale = float(ctx.param("textured", "texture_scale"));
+    prepareLayer(ctx, mLight, "light_texture", "light_png");
+    prepareLayer(ctx, mShadow, "shadow_texture", "shadow_png");
+    return true;
+}
+
+void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
+{
+    const GlFunctions& gl = ctx.gl;
+    if (!mUploaded) {
+        // First use: the compositor has saved the program's state around render().
+        for (Layer* layer : {&mLight, &mShadow}) {
+            if (layer->image.empty()) continue;
+            gl.ActiveTexture(layer == &mLight ? GL_TEXTURE1 : GL_TEXTURE2);
+            layer->texture.upload(gl, layer->image);
+        }
+        mUploaded = true;
+    }
+    gl.UseProgram(mProgram.id());
+    gl.Uniform1f(mU.diffuseThreshold, mDiffuseThreshold);
+    gl.Uniform1f(mU.highlightThreshold, mHighlightThreshold);
+    gl.Uniform1i(mU.tones, mTones);
+    gl.Uniform1f(mU.shadowScale, mShadowScale);
+    gl.Uniform1f(mU.highlightMix, mHighlightMix);
+    gl.Uniform1i(mU.tint, mTint ? 1 : 0);
+    gl.Uniform1f(mU.bandLow, mBandLow);
+    gl.Uniform1f(mU.bandHigh, mBandHigh);
+    gl.Uniform1i(mU.asymmetric, mAsymmetric ? 1 : 0);
+    gl.Uniform1f(mU.falloff, mFalloff);
+    gl.Uniform1i(mU.programTex, 0);
+    gl.Uniform1i(mU.lightTex, 1);
+    gl.Uniform1i(mU.shadowTex, 2);
+    gl.Uniform1f(mU.scale, mScale);
+    gl.ActiveTexture(GL_TEXTURE1);
+    gl.BindTexture(GL_TEXTURE_2D, mLight.texture.id());
+    gl.ActiveTexture(GL_TEXTURE2);
+    gl.BindTexture(GL_TEXTURE_2D, mShadow.texture.id());
+    gl.ActiveTexture(GL_TEXTURE0);
+    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
+    for (const SceneObject& object : scene.objects) {
+        gl.UniformMatrix4fv(mU.modelview, 1, GL_FALSE, glm::value_ptr(object.modelview));
+        gl.UniformMatrix4fv(mU.projection, 1, GL_FALSE, glm::value_ptr(object.projection));
+        const glm::mat3 normalMatrix = ShadingCommon::normalMatrix(object.modelview);
+        gl.UniformMatrix3fv(mU.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+        gl.Uniform3fv(mU.lightDir, 1, glm::value_ptr(object.lightDir));
+        const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
+        gl.Uniform2f(mU.anchor, anchor.x, anchor.y);
+        const bool textured = object.texture != 0;
+        // Untextured objects have no meaningful texcoords: their patterns lie in screen space.
+        gl.Uniform1i(mU.objectSpace, mObjectSpace && textured ? 1 : 0);
+        int lightMode = modeOf(mLight.source, mLight.image, textured);
+        int shadowMode = modeOf(mShadow.source, mShadow.image, textured);
+        if (mHighlightVariant) {
+            // The detail below the highlight band, nothing inside the highlight.
+            if (textured) shadowMode = 2;
+            lightMode = 0;
+        }
+        gl.Uniform1i(mU.lightMode, lightMode);
+        gl.Uniform1i(mU.shadowMode, shadowMode);
+        if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
+        ShadingCommon::drawTwoSided(ctx, *object.mesh, frontIsCcw);
+    }
+}
+
+void TexturedStyle::shutdown(StyleContext& ctx)
+{
+    mLight.texture.destroy(ctx.gl);
+    mShadow.texture.destroy(ctx.gl);
+    mProgram.destroy(ctx.gl);
+}
+
+} // namespace nprgl::styles

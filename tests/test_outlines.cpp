@@ -1,0 +1,403 @@
+// The outline styles (thesis chapter 4: wireframe, per-pixel, image-space) rendered
+// in-process through the style harness and checked against analytically known outlines.
+
+#include "tests/support/StyleHarness.h"
+
+#include "styles/StyleChain.h"
+#include "styles/StyleSettings.h"
+
+#include <GL/osmesa.h>
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+using namespace nprgl;
+using namespace nprgl::test;
+
+namespace {
+
+constexpr int kSize = 256;
+constexpr float kFov = 40.0f;
+constexpr float kDistance = 6.0f;
+constexpr float kRadius = 1.5f;
+
+glm::mat4 perspective() { return glm::perspective(glm::radians(kFov), 1.0f, 1.0f, 20.0f); }
+
+glm::mat4 sphereModelview()
+{
+    return glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+}
+
+// The outline of a sphere centred on the optical axis: a circle of angular radius
+// asin(R/d) around the image centre, in pixels for a viewport of `size`.
+float silhouetteRadius(int size)
+{
+    const float half = std::tan(std::asin(kRadius / kDistance));
+    return half / std::tan(glm::radians(kFov) * 0.5f) * float(size) * 0.5f;
+}
+
+glm::mat4 boxModelview()
+{
+    glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+    mv = glm::rotate(mv, glm::radians(30.0f), glm::vec3(1, 0, 0));
+    return glm::rotate(mv, glm::radians(40.0f), glm::vec3(0, 1, 0));
+}
+
+const glm::vec4 kRed(0.85f, 0.25f, 0.2f, 1.0f);
+const glm::vec4 kPale(0.9f, 0.85f, 0.6f, 1.0f);
+
+bool isInk(const PngImage& image, int x, int y)
+{
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height) return false;
+    const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+    return p[0] < 90 && p[1] < 90 && p[2] < 90;
+}
+
+// Ink anywhere within `radius` pixels of the GL window point (x, y up).
+bool inkNear(const PngImage& image, glm::vec2 window, float radius)
+{
+    const int r = int(std::ceil(radius));
+    const int cx = int(std::floor(window.x)), cy = image.height - 1 - int(std::floor(window.y));
+    for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
+            if (dx * dx + dy * dy <= radius * radius && isInk(image, cx + dx, cy + dy)) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// Distance of a pixel's centre from the window point `centre` (GL window coordinates).
+float distanceFrom(const PngImage& image, int x, int y, glm::vec2 centre)
+{
+    return glm::length(glm::vec2(x + 0.5f, image.height - y - 0.5f) - centre);
+}
+
+struct RingStats {
+    float rimCoverage = 0.0f; // fraction of directions with ink within the rim band
+    int insideInk = 0;        // ink pixels deeper than `inner` x radius
+    int inside = 0;
+    int outsideInk = 0;       // ink pixels further than radius + `outer`
+};
+
+RingStats ring(const PngImage& image, glm::vec2 centre, float radius, float band = 3.0f,
+               float inner = 0.75f, float outer = 6.0f)
+{
+    RingStats s;
+    int hits = 0;
+    constexpr int kDirections = 360;
+    for (int a = 0; a < kDirections; ++a) {
+        const float t = glm::radians(float(a));
+        const glm::vec2 dir(std::cos(t), std::sin(t));
+        bool hit = false;
+        for (float r = radius - band; r <= radius + band && !hit; r += 0.5f) {
+            hit = inkNear(image, centre + dir * r, 0.5f);
+        }
+        hits += hit;
+    }
+    s.rimCoverage = float(hits) / kDirections;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float d = distanceFrom(image, x, y, centre);
+            if (d < inner * radius) {
+                ++s.inside;
+                s.insideInk += isInk(image, x, y);
+            } else if (d > radius + outer) {
+                s.outsideInk += isInk(image, x, y);
+            }
+        }
+    }
+    return s;
+}
+
+int countInk(const PngImage& image)
+{
+    int n = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) n += isInk(image, x, y);
+    }
+    return n;
+}
+
+PngImage render(StyleHarness& harness, const styles::Scene& scene, const std::string& chain,
+                const std::string& config, const std::string& name)
+{
+    PngImage image;
+    std::string error;
+    EXPECT_TRUE(harness.render(scene, chain, config, image, error)) << chain << ": " << error;
+    std::filesystem::create_directories("/tmp/outlines");
+    image.write("/tmp/outlines/" + name + ".png", error);
+    return image;
+}
+
+const glm::vec2 kCentre(kSize * 0.5f, kSize * 0.5f);
+
+class SphereOutline : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SphereOutline, InkOnTheAnalyticSilhouetteOnly)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    PngImage image = render(harness, scene, GetParam(), "", "sphere_" + GetParam());
+    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize));
+    EXPECT_GE(s.rimCoverage, 0.99f) << "gaps in the outline";
+    EXPECT_LE(s.insideInk, s.inside / 500) << "ink inside the sphere";
+    EXPECT_EQ(s.outsideInk, 0) << "ink far outside the sphere";
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, SphereOutline,
+                         ::testing::Values("wireframe", "perpixel", "edges"));
+
+// Under an orthographic projection the sphere's outline is a circle of its own radius.
+TEST_P(SphereOutline, Orthographic)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 ortho = glm::ortho(-3.0f, 3.0f, -3.0f, 3.0f, 1.0f, 20.0f);
+    auto scene =
+        harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)}, ortho);
+    PngImage image = render(harness, scene, "toon+" + GetParam(), "toon.band=nearest",
+                            "ortho_" + GetParam());
+    const RingStats s = ring(image, kCentre, kRadius / 3.0f * kSize * 0.5f);
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0);
+    EXPECT_EQ(s.outsideInk, 0);
+}
+
+// Composed with toon shading: the interior keeps toon's band colours, the rim is inked.
+class ToonOutline : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ToonOutline, BandsInsideInkOnTheRim)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    const std::string chain = "toon+" + GetParam();
+    // Hard band boundaries: exactly the band colours inside.
+    PngImage image = render(harness, scene, chain, "toon.band=nearest", "toon_" + GetParam());
+    const float radius = silhouetteRadius(kSize);
+    const RingStats s = ring(image, kCentre, radius);
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0);
+    std::set<uint32_t> colours;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (distanceFrom(image, x, y, kCentre) > 0.75f * radius) continue;
+            const uint8_t* p = &image.rgba[(size_t(y) * kSize + x) * 4];
+            colours.insert(uint32_t(p[0]) << 16 | uint32_t(p[1]) << 8 | p[2]);
+        }
+    }
+    EXPECT_GE(colours.size(), 2u);
+    EXPECT_LE(colours.size(), 3u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, ToonOutline,
+                         ::testing::Values("wireframe", "perpixel", "edges"));
+
+// The box's visible edges (those with a front-facing face) are creases or silhouettes: ink
+// along all of them, none in the middle of its faces.
+class BoxOutline : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BoxOutline, InkAlongTheProjectedEdges)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 mv = boxModelview();
+    auto scene = harness.makeScene({boxBatch(mv, glm::vec3(1.0f), kPale)}, perspective());
+    PngImage image = render(harness, scene, "toon+" + GetParam(), "", "box_" + GetParam());
+    const glm::vec4 viewport(0, 0, kSize, kSize);
+    auto project = [&](glm::vec3 p) {
+        return glm::vec2(glm::project(p, mv, perspective(), viewport));
+    };
+    auto frontFacing = [&](glm::vec3 n) {
+        const glm::vec3 centre = glm::vec3(mv * glm::vec4(n, 1.0f));
+        const glm::vec3 normal = glm::mat3(mv) * n;
+        return glm::dot(normal, -centre) > 0.0f;
+    };
+    int samples = 0, inked = 0, faces = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 n(0.0f);
+            n[axis] = sign;
+            if (!frontFacing(n)) continue;
+            ++faces;
+            EXPECT_FALSE(inkNear(image, project(n), 6.0f)) << "ink on a face, axis " << axis;
+            // The face's four edges.
+            const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+            for (int e = 0; e < 4; ++e) {
+                glm::vec3 a = n, b = n;
+                const int along = e < 2 ? u : w, across = e < 2 ? w : u;
+                const float side = (e % 2) ? 1.0f : -1.0f;
+                a[along] = -1.0f;
+                b[along] = 1.0f;
+                a[across] = b[across] = side;
+                // About one sample per pixel: a dotted line fails.
+                for (float t = 0.1f; t <= 0.9f; t += 0.01f) {
+                    ++samples;
+                    inked += inkNear(image, project(glm::mix(a, b, t)), 1.0f);
+                }
+            }
+        }
+    }
+    EXPECT_EQ(faces, 3);
+    EXPECT_GE(float(inked), 0.97f * float(samples)) << inked << " of " << samples;
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, BoxOutline, ::testing::Values("wireframe", "edges"));
+
+// The width parameter widens the lines.
+struct WidthCase {
+    std::string chain, thin, wide;
+};
+
+void PrintTo(const WidthCase& c, std::ostream* os) { *os << c.chain; }
+
+class OutlineWidth : public ::testing::TestWithParam<WidthCase> {};
+
+TEST_P(OutlineWidth, GrowsWithTheParameter)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    const WidthCase& c = GetParam();
+    const int thin = countInk(render(harness, scene, c.chain, c.thin, "thin_" + c.chain));
+    const int wide = countInk(render(harness, scene, c.chain, c.wide, "wide_" + c.chain));
+    EXPECT_GT(thin, 200);
+    EXPECT_GT(float(wide), 2.0f * float(thin)) << thin << " vs " << wide;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Styles, OutlineWidth,
+    ::testing::Values(
+        WidthCase{"wireframe", "wireframe.silhouette_width=2", "wireframe.silhouette_width=8"},
+        WidthCase{"perpixel", "perpixel.epsilon=0.15", "perpixel.epsilon=0.4"},
+        WidthCase{"edges", "edges.silhouette_width=2", "edges.silhouette_width=6"}),
+    [](const auto& info) { return info.param.chain; });
+
+// A box behind the sphere: its edges must not show through the sphere, while the sphere's
+// outline stays complete over the box.
+class Occlusion : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Occlusion, HiddenEdgesStayHidden)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    glm::mat4 box = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, 0.2f, -11.0f));
+    box = glm::rotate(box, glm::radians(35.0f), glm::vec3(1, 1, 0));
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed),
+                                    boxBatch(box, glm::vec3(2.0f), kPale, 2)},
+                                   perspective());
+    PngImage image = render(harness, scene, "toon+" + GetParam(), "", "occlusion_" + GetParam());
+    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, 0.85f, 1e6f);
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, Occlusion, ::testing::Values("wireframe", "perpixel", "edges"));
+
+TEST(Wireframe, StencilKeepsLinesOffTheInterior)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    PngImage image = render(harness, scene, "toon+wireframe",
+                            "wireframe.stencil=on,wireframe.antialias=on", "wireframe_stencil");
+    const float radius = silhouetteRadius(kSize);
+    const RingStats s = ring(image, kCentre, radius, 3.0f, 0.97f);
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0);
+    EXPECT_EQ(s.outsideInk, 0);
+}
+
+// The image-space buffers follow the viewport, also when it does not start at the origin.
+TEST(Edges, FollowsAnOffsetViewport)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    scene.viewport = {40, 20, 180, 180};
+    PngImage image = render(harness, scene, "toon+edges", "", "edges_viewport");
+    const glm::vec2 centre(40 + 90, 20 + 90);
+    const RingStats s = ring(image, centre, silhouetteRadius(180));
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0);
+    EXPECT_EQ(s.outsideInk, 0);
+}
+
+// One chain kept across flushes whose viewport changes size: the off-screen buffers follow.
+TEST(Edges, RecreatesBuffersWhenTheViewportChanges)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    StyleSettings settings;
+    std::string error;
+    ASSERT_TRUE(StyleSettings::parse("edges", "", settings, error)) << error;
+    styles::StyleChain chain;
+    auto getProc = [](const char* name) {
+        return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+    };
+    ASSERT_TRUE(chain.init(settings, getProc, error)) << error;
+    const styles::GlFunctions& gl = harness.gl();
+    PngImage image;
+    for (int size : {96, kSize, 160}) {
+        scene.viewport = {0, 0, size, size};
+        gl.Viewport(0, 0, kSize, kSize);
+        gl.ClearColor(1, 1, 1, 1);
+        gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        chain.render(scene);
+        image.width = image.height = kSize;
+        image.rgba.resize(size_t(kSize) * kSize * 4);
+        gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+        gl.ReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        image.flipRows();
+        image.write("/tmp/outlines/edges_resize_" + std::to_string(size) + ".png", error);
+        const glm::vec2 centre(size * 0.5f, size * 0.5f);
+        const RingStats s = ring(image, centre, silhouetteRadius(size));
+        EXPECT_GE(s.rimCoverage, 0.99f) << size;
+        EXPECT_EQ(s.insideInk, 0) << size;
+        EXPECT_EQ(s.outsideInk, 0) << size;
+    }
+    chain.shutdown();
+}
+
+// Pictures of the options for looking at (no assertions beyond rendering).
+TEST(Gallery, Options)
+{
+    StyleHarness harness(320, 320);
+    ASSERT_TRUE(harness.ok());
+    glm::mat4 box = glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, -0.3f, -8.0f));
+    box = glm::rotate(box, glm::radians(35.0f), glm::vec3(1, 1, 0));
+    const glm::mat4 sphere = glm::translate(glm::mat4(1.0f), glm::vec3(-0.8f, 0.2f, -6.0f));
+    auto scene = harness.makeScene({boxBatch(box, glm::vec3(1.2f), kPale, 2),
+                                    sphereBatch(sphere, 1.2f, 32, 16, kRed)},
+                                   perspective());
+    const std::pair<const char*, const char*> cases[] = {
+        {"toon+wireframe", ""},
+        {"toon+wireframe", "wireframe.antialias=on,wireframe.silhouette_width=6"},
+        {"toon+wireframe", "wireframe.stencil=on,wireframe.silhouette_width=10"},
+        {"toon+wireframe", "wireframe.silhouette_width=10,wireframe.vertex_points=off"},
+        {"wireframe", "wireframe.depth_cue=1,wireframe.crease_lightness=0.5"},
+        {"toon+perpixel", ""},
+        {"toon+edges", ""},
+        {"toon+edges", "edges.silhouette_width=5,edges.crease_lightness=0.4"},
+        {"edges", ""},
+    };
+    int i = 0;
+    for (const auto& [chain, config] : cases) {
+        render(harness, scene, chain, config, "gallery_" + std::to_string(i++));
+    }
+}
+
+} // namespace

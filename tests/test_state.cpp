@@ -1,0 +1,205 @@
+// End to end: demo_state must see exactly the GL state it set, natively and under nprgl, and
+// demo_shapes' ray-cast truth silhouettes must lie on the outlines of its GL frame.
+
+#include "common/PngImage.h"
+#include "tests/support/ImageCompare.h"
+#include "tests/support/Process.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <regex>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+using namespace nprgl;
+using namespace nprgl::test;
+
+namespace {
+
+// The styles demo_state must be transparent under; more join as their compositors land.
+const std::vector<std::string> kStyles = {"none"};
+
+std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
+
+bool haveDisplay()
+{
+    const char* d = std::getenv("DISPLAY");
+    return d && *d;
+}
+
+std::vector<std::string> stateArgs(bool offscreen)
+{
+    std::vector<std::string> args = {demo("state"), "--frames", "5", "--size", "200x150",
+                                     "--report"};
+    if (offscreen) args.push_back("--offscreen");
+    return args;
+}
+
+// The item count from "state checks: N items x F frames, all equal", or -1.
+int reportedItems(const std::string& out, int frames)
+{
+    std::smatch match;
+    std::regex line("state checks: ([0-9]+) items x ([0-9]+) frames, all equal");
+    if (!std::regex_search(out, match, line) || std::stoi(match[2]) != frames) return -1;
+    return std::stoi(match[1]);
+}
+
+class StateUnderNprgl : public ::testing::TestWithParam<std::tuple<std::string, bool>> {};
+
+std::string stateCaseName(const ::testing::TestParamInfo<std::tuple<std::string, bool>>& info)
+{
+    return std::get<0>(info.param) + (std::get<1>(info.param) ? "_offscreen" : "_glx");
+}
+
+} // namespace
+
+TEST(StateNative, EveryQueryAnswersWhatWasSet)
+{
+    for (bool offscreen : {true, false}) {
+        if (!offscreen && !haveDisplay()) {
+            ADD_FAILURE() << "no DISPLAY: run the tests through scripts/test.sh (Xvfb)";
+            continue;
+        }
+        ProcessResult r = runProcess(stateArgs(offscreen));
+        ASSERT_EQ(r.exitCode, 0) << (offscreen ? "offscreen: " : "glx: ") << r.err;
+        EXPECT_EQ(r.err, "");
+        EXPECT_GE(reportedItems(r.out, 5), 100) << r.out;
+    }
+}
+
+TEST_P(StateUnderNprgl, EveryQueryAnswersWhatWasSet)
+{
+    const auto& [style, offscreen] = GetParam();
+    if (!offscreen) {
+        ASSERT_TRUE(haveDisplay()) << "no DISPLAY: run the tests through scripts/test.sh";
+    }
+    std::string nativeDir = freshDir("native"), shimDir = freshDir("shim");
+    std::vector<std::string> nativeArgs = stateArgs(offscreen);
+    nativeArgs.insert(nativeArgs.end(), {"--save-dir", nativeDir});
+    ProcessResult native = runProcess(nativeArgs);
+    ASSERT_EQ(native.exitCode, 0) << native.err;
+
+    std::vector<std::string> args = {binDir() + "/nprgl", "--style", style, "--"};
+    std::vector<std::string> app = stateArgs(offscreen);
+    args.insert(args.end(), app.begin(), app.end());
+    args.insert(args.end(), {"--save-dir", shimDir});
+    ProcessResult r = runProcess(args);
+    // demo_state's stderr line names the first state that differs and both values.
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err;
+    int items = reportedItems(r.out, 5);
+    EXPECT_GE(items, 100) << r.out;
+    EXPECT_EQ(items, reportedItems(native.out, 5)) << r.out;
+    if (style == "none") {
+        // Passthrough draws the same pictures, state juggling and all.
+        for (int frame = 1; frame <= 5; ++frame) {
+            std::string file = "/state_" + std::to_string(frame) + ".png";
+            ImageDiff diff = compareImages(nativeDir + file, shimDir + file);
+            ASSERT_TRUE(diff.comparable) << diff.error;
+            EXPECT_EQ(diff.differingPixels, 0u) << "frame " << frame;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, StateUnderNprgl,
+                         ::testing::Combine(::testing::ValuesIn(kStyles), ::testing::Bool()),
+                         stateCaseName);
+
+TEST(ShapesTruth, SilhouettesLieOnTheGlFramesOutlines)
+{
+    std::string dir = freshDir("shapes");
+    const int frame = 7;
+    ProcessResult r = runProcess({demo("shapes"), "--offscreen", "--frames", "7", "--step",
+                                  "3", "--save-dir", dir, "--save-frames", "7", "--truth", dir});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string base = dir + "/shapes_" + std::to_string(frame);
+    PngImage picture, truth;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(base + ".png", picture, error)) << error;
+    ASSERT_TRUE(PngImage::read(base + "_truth.png", truth, error)) << error;
+    ASSERT_EQ(picture.width, truth.width);
+    ASSERT_EQ(picture.height, truth.height);
+    int w = picture.width;
+    int h = picture.height;
+
+    // Colour boundaries of the GL frame: a 4-neighbour differs clearly. Shading changes
+    // smoothly between neighbours; object/background and object/object edges do not.
+    auto at = [&](const PngImage& image, int x, int y, int c) {
+        return static_cast<int>(image.rgba[(static_cast<size_t>(y) * w + x) * 4 + c]);
+    };
+    std::vector<uint8_t> boundary(static_cast<size_t>(w) * h, 0);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            for (auto [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+                if (x + dx >= w || y + dy >= h) continue;
+                int difference = 0;
+                for (int c = 0; c < 3; ++c) {
+                    difference += std::abs(at(picture, x, y, c) - at(picture, x + dx, y + dy, c));
+                }
+                if (difference > 30) {
+                    boundary[static_cast<size_t>(y) * w + x] = 1;
+                    boundary[static_cast<size_t>(y + dy) * w + x + dx] = 1;
+                }
+            }
+        }
+    }
+
+    // Every truth silhouette pixel within 1.5 px (the 8 neighbours) of a boundary.
+    size_t silhouettePixels = 0, nearBoundary = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (at(truth, x, y, 0) < 128) continue;
+            ++silhouettePixels;
+            bool found = false;
+            for (int dy = -1; dy <= 1 && !found; ++dy) {
+                for (int dx = -1; dx <= 1 && !found; ++dx) {
+                    int nx = x + dx, ny = y + dy;
+                    found = nx >= 0 && ny >= 0 && nx < w && ny < h
+                            && boundary[static_cast<size_t>(ny) * w + nx];
+                }
+            }
+            nearBoundary += found;
+        }
+    }
+    // Six shapes of 50-200 px across at 512x512 have thousands of silhouette pixels.
+    EXPECT_GT(silhouettePixels, 1500u);
+    std::printf("truth silhouette: %zu pixels, %.4f of them on a GL colour boundary\n",
+                silhouettePixels, static_cast<double>(nearBoundary) / silhouettePixels);
+    EXPECT_GE(static_cast<double>(nearBoundary) / silhouettePixels, 0.95)
+        << nearBoundary << " of " << silhouettePixels << " silhouette pixels on a boundary";
+
+    // The ids picture is written alongside and shows all six shapes.
+    PngImage ids;
+    ASSERT_TRUE(PngImage::read(base + "_ids.png", ids, error)) << error;
+    std::vector<uint32_t> colours;
+    for (size_t i = 0; i < ids.rgba.size(); i += 4) {
+        uint32_t colour = ids.rgba[i] << 16 | ids.rgba[i + 1] << 8 | ids.rgba[i + 2];
+        if (std::find(colours.begin(), colours.end(), colour) == colours.end()) {
+            colours.push_back(colour);
+        }
+    }
+    EXPECT_EQ(colours.size(), 7u) << "background and six shapes";
+}
+
+TEST(ShapesTruth, RunsAreDeterministic)
+{
+    std::string a = freshDir("shapes_a"), b = freshDir("shapes_b");
+    for (const std::string& dir : {a, b}) {
+        ProcessResult r = runProcess({demo("shapes"), "--offscreen", "--frames", "2", "--size",
+                                      "128x128", "--save-dir", dir, "--truth", dir});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    for (const char* file : {"/shapes_2.png", "/shapes_2_truth.png"}) {
+        PngImage x, y;
+        std::string error;
+        ASSERT_TRUE(PngImage::read(a + file, x, error)) << error;
+        ASSERT_TRUE(PngImage::read(b + file, y, error)) << error;
+        EXPECT_EQ(x.rgba, y.rgba) << file;
+    }
+}
