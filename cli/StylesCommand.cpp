@@ -13,9 +13,10 @@ int listStyles()
     const StyleRegistry& registry = StyleRegistry::instance();
     std::printf("Styles (default chain: %s)\n\n", registry.defaultStyle().c_str());
     for (const StyleInfo& style : registry.styles()) {
-        const char* role = !style.create                               ? ""
-                           : style.role == styles::StyleRole::Shading ? " [shading]"
-                                                                      : " [outline]";
+        const char* role = !style.create                                  ? ""
+                           : style.role == styles::StyleRole::Shading    ? " [shading]"
+                           : style.role == styles::StyleRole::Background ? " [background]"
+                                                                         : " [outline]";
         std::printf("%s%s\n    %s\n", style.name.c_str(), role, style.summary.c_str());
         for (const ParamInfo& p : style.params) {
             std::printf("    %-34s %-12s %-22s %s\n", (style.name + "." + p.name).c_str(),

@@ -4,6 +4,7 @@
 #include "shim/Context.h"
 #include "shim/RealGl.h"
 #include "shim/Recorder.h"
+#include "shim/RecordingDispatch.h"
 #include "shim/Settings.h"
 #include "shim/ThreadState.h"
 
@@ -18,15 +19,26 @@ Compositor& C() { return *tThread.context->compositor(); }
 void APIENTRY cBegin(GLenum mode) { C().begin(mode); }
 void APIENTRY cEnd() { C().end(); }
 
-// A draw that may be held back: decided (and colour writes masked) before it is recorded
-// and forwarded, unmasked after.
+// A display list also sets state (materials, shade model...), so a held one still runs in
+// the driver, writing neither colour nor depth.
+void APIENTRY c_glCallList(GLuint list)
+{
+    Compositor& c = C();
+    const bool masked = c.holdList(list) && c.shading();
+    if (masked) c.mask();
+    c.next().glCallList(list);
+    if (masked) c.unmask();
+}
+
+// A draw that may be held back. With a shading style in the chain a held draw is only
+// recorded (the style draws it); without one it goes to the driver as it is (the outline
+// styles draw over the program's own picture).
 #define NPRGL_HELD_DRAW(name, hold, params, args)                                               \
     void APIENTRY c_##name params                                                              \
     {                                                                                           \
         Compositor& c = C();                                                                    \
-        const bool held = c.hold;                                                               \
+        if (c.hold && c.shading()) return c.heldNext().name args;                              \
         c.next().name args;                                                                     \
-        if (held) c.endHeldDraw();                                                              \
     }
 NPRGL_HELD_DRAW(glDrawArrays, holdDraw(mode), (GLenum mode, GLint first, GLsizei count),
                 (mode, first, count))
@@ -40,7 +52,6 @@ NPRGL_HELD_DRAW(glDrawRangeElements, holdDraw(mode),
 NPRGL_HELD_DRAW(glMultiDrawArrays, holdDraw(mode),
                 (GLenum mode, const GLint* first, const GLsizei* count, GLsizei n),
                 (mode, first, count, n))
-NPRGL_HELD_DRAW(glCallList, holdList(list), (GLuint list), (list))
 NPRGL_HELD_DRAW(glRectf, holdDraw(GL_POLYGON), (GLfloat a, GLfloat b, GLfloat x, GLfloat y),
                 (a, b, x, y))
 NPRGL_HELD_DRAW(glRectd, holdDraw(GL_POLYGON), (GLdouble a, GLdouble b, GLdouble x, GLdouble y),
@@ -214,6 +225,12 @@ bool Compositor::ready()
     syncStream();
     mTracker.setViewport({viewport[0], viewport[1], viewport[2], viewport[3]});
     mTracker.setHolding(true);
+    // While a held glBegin..glEnd is open: the context's table with vertices recorded only.
+    mHeldNext = mNext;
+    installHeldRecording(mHeldNext);
+    mHeldTable = mContext.dispatch();
+    installHeldRecording(mHeldTable);
+    mHeldTable.glEnd = cEnd;
     mPhase = Phase::Ready;
     return !mBroken;
 }
@@ -241,7 +258,7 @@ bool Compositor::startStyles()
         NPRGL_WARN("context %u: %s; passthrough", mContext.serial(), error.c_str());
         return false;
     }
-    maskColour = mChain.hasShading();
+    mShading = mChain.hasShading();
     NPRGL_INFO("context %u: style %s on %s", mContext.serial(),
                Settings::get().style.chainName().c_str(), mContext.renderer().c_str());
     return true;
@@ -255,7 +272,7 @@ bool Compositor::holdDraw(GLenum mode)
         if (mHeld) flush();
         return false;
     }
-    mask();
+    noteHeld();
     return true;
 }
 
@@ -267,42 +284,51 @@ bool Compositor::holdList(GLuint list)
         if (mHeld) flush();
         return false;
     }
-    mask();
+    noteHeld();
     return true;
 }
 
-void Compositor::mask()
+void Compositor::noteHeld()
 {
     GLint framebuffer = 0;
     gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     if (mHeld && framebuffer != mHeldFramebuffer) flush(); // one scene per framebuffer
     mHeldFramebuffer = framebuffer;
     mHeld = true;
-    if (!maskColour) return;
-    gRealGl.glGetBooleanv(GL_COLOR_WRITEMASK, mSavedMask);
-    gRealGl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 }
 
-void Compositor::endHeldDraw()
+void Compositor::mask()
 {
-    if (maskColour) {
-        gRealGl.glColorMask(mSavedMask[0], mSavedMask[1], mSavedMask[2], mSavedMask[3]);
-    }
+    gRealGl.glGetBooleanv(GL_COLOR_WRITEMASK, mSavedMask);
+    gRealGl.glGetBooleanv(GL_DEPTH_WRITEMASK, &mSavedDepthMask);
+    gRealGl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gRealGl.glDepthMask(GL_FALSE);
+}
+
+void Compositor::unmask()
+{
+    gRealGl.glColorMask(mSavedMask[0], mSavedMask[1], mSavedMask[2], mSavedMask[3]);
+    gRealGl.glDepthMask(mSavedDepthMask);
 }
 
 void Compositor::begin(GLenum mode)
 {
-    mHoldingBegin = holdDraw(mode);
+    if (holdDraw(mode) && mShading) {
+        // Vertices go to the Stream only until glEnd (attribute calls still reach the driver).
+        mHoldingBegin = true;
+        mHeldNext.glBegin(mode);
+        tThread.dispatch = &mHeldTable;
+        return;
+    }
     mNext.glBegin(mode);
 }
 
 void Compositor::end()
 {
-    mNext.glEnd();
-    if (mHoldingBegin) {
-        mHoldingBegin = false;
-        endHeldDraw();
-    }
+    if (!mHoldingBegin) return mNext.glEnd();
+    mHeldNext.glEnd();
+    mHoldingBegin = false;
+    tThread.dispatch = &mContext.dispatch();
 }
 
 void Compositor::barrier()

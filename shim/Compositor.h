@@ -54,8 +54,13 @@ public:
     void begin(GLenum mode);
     void end();
     bool holdDraw(GLenum mode);
-    void endHeldDraw();
     bool holdList(GLuint list);
+    // Colour and depth writes off around a held display list (its state changes must run).
+    void mask();
+    void unmask();
+    // The chain has a shading style: held draws are drawn by it, not by the driver.
+    bool shading() const { return mShading; }
+    const GlDispatch& heldNext() const { return mHeldNext; }
     void barrier();
     GLenum getError();
     GLint renderMode(GLenum mode);
@@ -64,8 +69,7 @@ public:
 private:
     bool ready();
     bool startStyles();
-    void mask();
-    void unmask();
+    void noteHeld();
     void buildScene();
     void render();
     bool saveState();
@@ -86,11 +90,14 @@ private:
     enum class Phase { Unknown, Ready, Off };
     Phase mPhase = Phase::Unknown;
     styles::StyleChain mChain;
-    bool maskColour = true; // the chain has a shading style: held draws write no colour
+    bool mShading = true;
+    GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only
+    GlDispatch mHeldTable{}; // the context's table while a held glBegin..glEnd is open
 
     bool mHeld = false;         // held batches wait for the next flush
     bool mHoldingBegin = false; // inside a held glBegin..glEnd
     GLboolean mSavedMask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    GLboolean mSavedDepthMask = GL_TRUE;
     GLint mHeldFramebuffer = 0;
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;

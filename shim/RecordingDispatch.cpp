@@ -13,4 +13,6 @@ namespace nprgl {
 
 void installRecording(GlDispatch& dispatch) { fillRecordingDispatch(dispatch); }
 
+void installHeldRecording(GlDispatch& dispatch) { fillHeldDispatch(dispatch); }
+
 } // namespace nprgl

@@ -36,6 +36,7 @@ namespace nprgl::styles {
     X(TexSubImage2D) X(Uniform1f) X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform3fv)          \
     X(Uniform4f) X(Uniform4fv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)            \
     X(Uniform2i) \
+    X(CopyTexSubImage2D) \
     X(VertexAttrib4f) X(VertexAttribPointer) X(Viewport)
 
 struct GlFunctions {

@@ -25,22 +25,27 @@ struct StyleContext {
     std::string text(const char* style, const char* name) const;
 };
 
-// Shading styles draw the held-back surfaces; outline styles draw on top of whatever the
-// chain's shading (or, with no shading style, the program itself) left.
-enum class StyleRole { Shading, Outline };
+// Shading styles draw the held-back surfaces; background styles then restyle the page around
+// (and under) them; outline styles draw on top of whatever the chain's shading (or, with no
+// shading style, the program itself) and background left.
+enum class StyleRole { Shading, Background, Outline };
 
 // One technique. The compositor creates it when the chain is first used in a context, calls
 // init() once, render() at every flush of held-back geometry, shutdown() before the context
 // goes. All three run with that context current.
 //
 // When render() starts, the compositor has saved all of the program's state and set:
-// the program's framebuffer and viewport (scene.viewport); the depth buffer holding the
-// scene's depth (the held-back draws wrote depth with colour writes off, so earlier forwarded
-// 3D drawing depth-tests correctly); ctx.vao bound with attributes 0-3 free; program 0;
-// depth test on with GL_LEQUAL and writes on; GL_POLYGON_OFFSET_FILL on at (-1, -1) so a
-// re-drawn surface wins against its own depth; blending, culling, stencil, scissor off;
-// fill mode; colour mask on; texture unit 0 active. A style may change any state; the
-// compositor resets this baseline before the next style and restores the program's after.
+// the program's framebuffer and viewport (scene.viewport); ctx.vao bound with attributes 0-3
+// free; program 0; blending, culling, stencil, scissor off; fill mode; colour mask on;
+// texture unit 0 active. The depth buffer holds what the program drew before, but not the
+// held-back scene: the held draws reached the driver with neither colour nor depth (when the
+// chain has a shading style) or as the program made them (when it has none).
+// - A shading style runs first, with depth test GL_LESS and depth writes on: it draws the
+//   scene's surfaces and their depth, so everything after it sees the whole scene.
+// - Background and outline styles run after it with depth test GL_LEQUAL, depth writes on
+//   and GL_POLYGON_OFFSET_FILL at (-1, -1), so a re-drawn surface wins against its own depth.
+// A style may change any state; the compositor resets this baseline before the next style
+// and restores the program's after the chain.
 class Style {
 public:
     virtual ~Style() = default;

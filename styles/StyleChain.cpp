@@ -19,10 +19,11 @@ bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getPro
     }
     const GlFunctions& gl = mContext.gl;
     gl.GenVertexArrays(1, &mContext.vao);
-    // Shading first, then the outline styles in the order named.
+    // Shading first, then the background (it must see the shaded surfaces' colours and
+    // lie under the ink), then the outline styles in the order named.
     std::vector<const StyleInfo*> order = mSettings.chain();
-    std::stable_partition(order.begin(), order.end(), [](const StyleInfo* s) {
-        return s->role == StyleRole::Shading;
+    std::stable_sort(order.begin(), order.end(), [](const StyleInfo* a, const StyleInfo* b) {
+        return int(a->role) < int(b->role);
     });
     for (const StyleInfo* info : order) {
         if (!info->create) continue;
@@ -47,7 +48,7 @@ bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getPro
     return true;
 }
 
-void StyleChain::setBaseline(const Scene& scene)
+void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
 {
     const GlFunctions& gl = mContext.gl;
     gl.BindVertexArray(mContext.vao);
@@ -55,10 +56,12 @@ void StyleChain::setBaseline(const Scene& scene)
     gl.ActiveTexture(GL_TEXTURE0);
     gl.Viewport(scene.viewport.x, scene.viewport.y, scene.viewport.z, scene.viewport.w);
     gl.Enable(GL_DEPTH_TEST);
-    gl.DepthFunc(GL_LEQUAL);
     gl.DepthMask(GL_TRUE);
-    gl.Enable(GL_POLYGON_OFFSET_FILL);
     gl.PolygonOffset(-1.0f, -1.0f);
+    // The shading pass lays down the scene's depth; the passes after it draw onto it.
+    gl.DepthFunc(shadingPass ? GL_LESS : GL_LEQUAL);
+    if (shadingPass) gl.Disable(GL_POLYGON_OFFSET_FILL);
+    else gl.Enable(GL_POLYGON_OFFSET_FILL);
     for (GLenum cap : {GL_BLEND, GL_CULL_FACE, GL_STENCIL_TEST, GL_SCISSOR_TEST, GL_ALPHA_TEST,
                        GL_LIGHTING, GL_TEXTURE_2D, GL_FOG, GL_LINE_SMOOTH, GL_POLYGON_SMOOTH,
                        GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_COLOR_LOGIC_OP}) {
@@ -72,9 +75,9 @@ void StyleChain::setBaseline(const Scene& scene)
 
 void StyleChain::render(const Scene& scene)
 {
-    for (const std::unique_ptr<Style>& style : mStyles) {
-        setBaseline(scene);
-        style->render(scene, mContext);
+    for (size_t i = 0; i < mStyles.size(); ++i) {
+        setBaseline(scene, mHasShading && i == 0); // the shading style is ordered first
+        mStyles[i]->render(scene, mContext);
     }
     mContext.meshes.endFlush(mContext.gl);
 }

@@ -25,8 +25,8 @@ public:
     bool empty() const { return mStyles.empty(); }
     StyleContext& context() { return mContext; }
 
-    // Sets the baseline state of Style.h (also for the compositor's depth-only passes).
-    void setBaseline(const Scene& scene);
+    // Sets the baseline state of Style.h: the shading pass's, or the one of the passes after.
+    void setBaseline(const Scene& scene, bool shadingPass = false);
 
 private:
     StyleSettings mSettings;

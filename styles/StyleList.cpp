@@ -10,6 +10,7 @@ StyleInfo perpixelStyleInfo();
 StyleInfo edgesStyleInfo();
 StyleInfo texturedStyleInfo();
 StyleInfo halftoneStyleInfo();
+StyleInfo paperStyleInfo();
 
 const char* const kDefaultChain = "none";
 
@@ -22,6 +23,7 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(edgesStyleInfo());
     out.push_back(texturedStyleInfo());
     out.push_back(halftoneStyleInfo());
+    out.push_back(paperStyleInfo());
 }
 
 } // namespace nprgl::styles

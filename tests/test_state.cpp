@@ -22,8 +22,12 @@ using namespace nprgl::test;
 
 namespace {
 
-// The styles demo_state must be transparent under; more join as their compositors land.
-const std::vector<std::string> kStyles = {"none"};
+// Every style, alone and in the chains users reach for: the program must not notice any.
+const std::vector<std::string> kStyles = {"none",           "toon",           "textured",
+                                          "halftone",       "wireframe",      "perpixel",
+                                          "edges",          "strokes",        "toon+edges",
+                                          "halftone+wireframe", "textured+strokes",
+                                          "toon+perpixel"};
 
 std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
 
@@ -54,7 +58,9 @@ class StateUnderNprgl : public ::testing::TestWithParam<std::tuple<std::string, 
 
 std::string stateCaseName(const ::testing::TestParamInfo<std::tuple<std::string, bool>>& info)
 {
-    return std::get<0>(info.param) + (std::get<1>(info.param) ? "_offscreen" : "_glx");
+    std::string name = std::get<0>(info.param);
+    std::replace(name.begin(), name.end(), '+', '_');
+    return name + (std::get<1>(info.param) ? "_offscreen" : "_glx");
 }
 
 } // namespace
@@ -96,6 +102,13 @@ TEST_P(StateUnderNprgl, EveryQueryAnswersWhatWasSet)
     int items = reportedItems(r.out, 5);
     EXPECT_GE(items, 100) << r.out;
     EXPECT_EQ(items, reportedItems(native.out, 5)) << r.out;
+    if (style != "none") {
+        // The style did draw (a transparent nothing would pass the checks above too).
+        std::string file = "/state_5.png";
+        ImageDiff diff = compareImages(nativeDir + file, shimDir + file, 16);
+        ASSERT_TRUE(diff.comparable) << diff.error;
+        EXPECT_GT(diff.differingPixels, 512u * 512u / 1000) << style; // thin outlines: 0.1%
+    }
     if (style == "none") {
         // Passthrough draws the same pictures, state juggling and all.
         for (int frame = 1; frame <= 5; ++frame) {

@@ -65,7 +65,8 @@ void drawTorus(double major, double minor, int detail)
         glBegin(GL_QUAD_STRIP);
         for (int j = 0; j <= sides; ++j) {
             double v = 2.0 * pi * j / sides;
-            for (int k = 1; k >= 0; --k) {
+            // u_i before u_{i+1}: counter-clockwise seen from outside (the demo culls).
+            for (int k = 0; k <= 1; ++k) {
                 double u = 2.0 * pi * (i + k) / rings;
                 double r = major + minor * std::cos(v);
                 glNormal3d(std::cos(u) * std::cos(v), std::sin(u) * std::cos(v), std::sin(v));

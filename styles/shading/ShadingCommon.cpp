@@ -49,36 +49,16 @@ vec3 shadingNormal(vec3 eyeNormal)
 
 bool ShadingCommon::beginTwoSided(const GlFunctions& gl)
 {
-    gl.DepthMask(GL_FALSE);
-    gl.Enable(GL_CULL_FACE);
     GLint frontFace = GL_CCW;
     gl.GetIntegerv(GL_FRONT_FACE, &frontFace);
     return frontFace == GL_CCW;
 }
 
-void ShadingCommon::drawTwoSided(StyleContext& ctx, const reconstruct::ObjectMesh& mesh,
-                                 bool frontIsCcw)
+void ShadingCommon::drawTwoSided(StyleContext& ctx, const reconstruct::ObjectMesh& mesh, bool)
 {
-    const GlFunctions& gl = ctx.gl;
-    const GLsizei count = ctx.meshes.bind(gl, mesh);
-    if (count <= 0) return;
-    // Which winding faces outwards: the one the program's normals agree with (a sample of
-    // faces is enough; meshes are consistent or not at all).
-    const uint32_t faces = mesh.faceCount();
-    const uint32_t step = std::max(1u, faces / 64);
-    int agree = 0;
-    for (uint32_t f = 0; f < faces; f += step) {
-        const reconstruct::Vertex& c = mesh.corner(f, 0);
-        const glm::vec3 n = c.hasNormal ? c.normal : mesh.vertexNormal(mesh.faceVertices[3 * f]);
-        const float d = glm::dot(mesh.faceNormal(f), n);
-        agree += d > 0.0f ? 1 : d < 0.0f ? -1 : 0;
-    }
-    // faceNormal() follows counter-clockwise winding.
-    const bool outwardIsGlFront = (agree >= 0) == frontIsCcw;
-    gl.CullFace(outwardIsGlFront ? GL_FRONT : GL_BACK);
-    gl.DrawArrays(GL_TRIANGLES, 0, count);
-    gl.CullFace(outwardIsGlFront ? GL_BACK : GL_FRONT);
-    gl.DrawArrays(GL_TRIANGLES, 0, count);
+    // One pass: the shading pass draws the held scene's depth itself (GL_LESS), so nearer
+    // surfaces win whatever the order, and shadingNormal() lights both sides.
+    ctx.meshes.draw(ctx.gl, mesh);
 }
 
 glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)

@@ -18,12 +18,9 @@ public:
     // GLSL helper for fragment shaders: `vec3 shadingNormal(vec3 eyeNormal)` normalises and
     // flips it when it points away from the visible side (two-sided lighting).
     static const char* normalFunction();
-    // Sets the state drawTwoSided() needs (once per render()); returns whether the program's
-    // front faces are counter-clockwise.
+    // Returns whether the program's front faces are counter-clockwise (once per render()).
     static bool beginTwoSided(const GlFunctions& gl);
-    // Draws the mesh's inward-facing triangles, then its outward-facing ones, both tested
-    // against the scene's depth without writing it: where the polygon offset lets a far-side
-    // triangle through at a silhouette, the near side drawn after it still wins.
+    // Draws the mesh, both sides, in one pass with depth writes (the shading baseline).
     static void drawTwoSided(StyleContext& ctx, const reconstruct::ObjectMesh& mesh,
                              bool frontIsCcw);
     static glm::mat3 normalMatrix(const glm::mat4& modelview);

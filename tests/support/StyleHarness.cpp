@@ -68,6 +68,27 @@ styles::Scene StyleHarness::makeScene(const std::vector<reconstruct::Batch>& bat
     return scene;
 }
 
+bool StyleHarness::drawDepth(const styles::Scene& scene, styles::StyleChain& styleChain,
+                             std::string& error)
+{
+    const styles::GlFunctions& gl = mGl;
+    styles::ShaderProgram depth;
+    if (!depth.build(gl, kDepthVertex, kDepthFragment, error)) return false;
+    styleChain.setBaseline(scene);
+    gl.Disable(GL_POLYGON_OFFSET_FILL);
+    gl.DepthFunc(GL_LESS);
+    gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl.UseProgram(depth.id());
+    for (const styles::SceneObject& o : scene.objects) {
+        glm::mat4 mvp = o.projection * o.modelview;
+        gl.UniformMatrix4fv(depth.uniform(gl, "mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+        styleChain.context().meshes.draw(gl, *o.mesh);
+    }
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    depth.destroy(gl);
+    return true;
+}
+
 bool StyleHarness::render(const styles::Scene& scene, const std::string& chain,
                           const std::string& config, PngImage& out, std::string& error,
                           glm::vec4 background)
@@ -86,23 +107,13 @@ bool StyleHarness::render(const styles::Scene& scene, const std::string& chain,
     gl.ClearDepth(1.0);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
-    // What the compositor's held-back draws leave: the scene's depth, no colour.
-    styles::ShaderProgram depth;
-    if (!depth.build(gl, kDepthVertex, kDepthFragment, error)) return false;
-    styleChain.setBaseline(scene);
-    gl.Disable(GL_POLYGON_OFFSET_FILL);
-    gl.DepthFunc(GL_LESS);
-    gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    gl.UseProgram(depth.id());
-    for (const styles::SceneObject& o : scene.objects) {
-        glm::mat4 mvp = o.projection * o.modelview;
-        gl.UniformMatrix4fv(depth.uniform(gl, "mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
-        styleChain.context().meshes.draw(gl, *o.mesh);
-    }
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    depth.destroy(gl);
-
-    styleChain.render(scene);
+    // What the compositor's held-back draws leave: nothing when the chain has a shading style
+    // (it draws the scene's depth), else the program's picture with its depth (here depth only).
+    if (!styleChain.hasShading() && !drawDepth(scene, styleChain, error)) return false;
+    // The program's glClearColor at the flush, as the compositor reports it.
+    styles::Scene cleared = scene;
+    cleared.clearColor = background;
+    styleChain.render(cleared);
     gl.Finish();
     out.width = mWidth;
     out.height = mHeight;

@@ -12,8 +12,9 @@
 namespace nprgl::test {
 
 // Renders scenes through a style chain in an in-process OSMesa context, the way the
-// compositor does (a depth-only pass of the held-back geometry, then the chain), without the
-// shim: for the styles' unit tests.
+// compositor does (with no shading style in the chain, the program's own drawing of the
+// held-back geometry comes first: here its depth only), without the shim: for the styles'
+// unit tests.
 class StyleHarness {
 public:
     StyleHarness(int width, int height);
@@ -32,6 +33,8 @@ public:
     const styles::GlFunctions& gl() const { return mGl; }
 
 private:
+    bool drawDepth(const styles::Scene& scene, styles::StyleChain& chain, std::string& error);
+
     int mWidth, mHeight;
     void* mContext = nullptr;
     std::vector<uint8_t> mBuffer;

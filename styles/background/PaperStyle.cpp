@@ -1,0 +1,259 @@
+#include "styles/background/PaperStyle.h"
+
+#include "common/Log.h"
+#include "styles/StyleRegistry.h"
+#include "styles/background/PaperGrain.h"
+#include "styles/shading/ShadingCommon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace nprgl::styles {
+
+namespace {
+
+const char* kStyle = "paper";
+const char* kDefaultColour = "f4efe1";
+
+const char* kVertex = R"(#version 130
+in vec3 position;
+void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }
+)";
+
+// Two passes over the viewport, both classifying pixels from the same copy. Pass 0 grains
+// the scene: multiplied (blend DST_COLOR, ZERO) by the grain factor, background discarded.
+// Pass 1 lays the page: background pixels replaced by the grained paper, opaque (a page has
+// no holes, even where the program cleared alpha to 0), the scene discarded.
+const char* kFragment = R"(#version 130
+uniform sampler2D colour;    // copy of the viewport's colour
+uniform sampler2D depth;     // copy of its depth
+uniform sampler2D grainTex;  // grey, 1 = untouched
+uniform sampler2D paperTex;  // the user's paper scan
+uniform int pass;
+uniform ivec2 origin;
+uniform bool fill;
+uniform bool haveDepth;
+uniform bool usePaperTex;
+uniform vec3 paperColour;
+uniform vec3 clearColour;
+uniform float tolerance;
+uniform float grain;
+uniform vec2 grainSize;      // one grain tile on screen, pixels
+uniform vec2 paperSize;      // one paper tile on screen, pixels
+out vec4 fragColor;
+
+void main()
+{
+    ivec2 p = ivec2(gl_FragCoord.xy) - origin;
+    vec2 q = vec2(p) + 0.5;
+    float factor = 1.0 - grain * (1.0 - texture(grainTex, q / grainSize).r);
+    bool background = false;
+    if (fill) {
+        // Untouched: nothing drew depth here and the colour is still the clear colour (a
+        // 2D backdrop the program drew without depth keeps its pixels).
+        bool far = !haveDepth || texelFetch(depth, p, 0).r >= 1.0;
+        vec3 d = abs(texelFetch(colour, p, 0).rgb - clearColour);
+        background = far && max(d.r, max(d.g, d.b)) <= tolerance;
+    }
+    if (pass == 0) {
+        if (background) discard;
+        fragColor = vec4(vec3(factor), 1.0);
+        return;
+    }
+    if (!background) discard;
+    vec3 paper = paperColour;
+    if (usePaperTex) {
+        // Upright: the image's top row was uploaded first (t = 0).
+        vec4 t = texture(paperTex, vec2(q.x, -q.y) / paperSize);
+        paper = mix(paperColour, t.rgb, t.a);
+    }
+    fragColor = vec4(paper * factor, 1.0);
+}
+)";
+
+std::unique_ptr<Style> create() { return std::make_unique<PaperStyle>(); }
+
+} // namespace
+
+StyleInfo paperStyleInfo()
+{
+    StyleInfo info;
+    info.name = kStyle;
+    info.summary = "the page: the program's cleared background becomes paper and a fine paper "
+                   "grain lies over the picture (thesis 2.4.2, appendix B)";
+    info.role = StyleRole::Background;
+    info.create = &create;
+    info.params = {
+        ParamInfo::text("color", "paper colour, hex rrggbb", kDefaultColour),
+        ParamInfo::flag("background",
+                        "replace the program's untouched background (far depth, clear "
+                        "colour) with paper (on/off)",
+                        true),
+        ParamInfo::number("grain", "strength of the paper grain multiplied over the viewport",
+                          0.12, 0.0, 1.0),
+        ParamInfo::number("grain_scale", "size of the grain (and of texture_png's tiles)", 1.0,
+                          0.25, 8.0),
+        ParamInfo::text("texture_png", "a paper scan tiled over the background instead of the "
+                                       "flat colour (empty: none)"),
+    };
+    return info;
+}
+
+bool PaperStyle::init(StyleContext& ctx, std::string& error)
+{
+    const GlFunctions& gl = ctx.gl;
+    if (!mProgram.build(gl, kVertex, kFragment, error)) return false;
+    auto at = [&](const char* name) { return mProgram.uniform(gl, name); };
+    mU = {at("colour"),      at("depth"),       at("grainTex"),    at("paperTex"),
+          at("origin"),      at("fill"),        at("haveDepth"),   at("usePaperTex"),
+          at("paperColour"), at("clearColour"), at("tolerance"),   at("grain"),
+          at("pass"),        at("grainSize"),   at("paperSize")};
+
+    const std::string colour = ctx.text(kStyle, "color");
+    if (!ShadingCommon::parseColor(colour, mPaperColour)) {
+        if (!colour.empty()) {
+            NPRGL_ERROR("paper: color='%s' is not a hex colour rrggbb; using %s",
+                        colour.c_str(), kDefaultColour);
+        }
+        ShadingCommon::parseColor(kDefaultColour, mPaperColour);
+    }
+    mFill = ctx.param(kStyle, "background") >= 0.5;
+    mGrain = float(std::clamp(ctx.param(kStyle, "grain"), 0.0, 1.0));
+    mGrainScale = float(std::clamp(ctx.param(kStyle, "grain_scale"), 0.25, 8.0));
+    if (mGrain > 0.0f) mGrainImage = PaperGrain::make(PaperGrain::Options{});
+
+    const std::string png = ctx.text(kStyle, "texture_png");
+    if (!png.empty()) {
+        std::string why;
+        if (!GlTexture::loadPng(png, false, mPaperImage, why)) {
+            NPRGL_ERROR("paper: cannot use texture_png '%s' (%s); drawing the procedural "
+                        "paper instead",
+                        png.c_str(), why.c_str());
+            mPaperImage = TextureImage{};
+        }
+    }
+
+    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
+    gl.GenBuffers(1, &mTriangle);
+    gl.BindBuffer(GL_ARRAY_BUFFER, mTriangle);
+    gl.BufferData(GL_ARRAY_BUFFER, sizeof(triangle), triangle, GL_STATIC_DRAW);
+    gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+    return true;
+}
+
+bool PaperStyle::grainedThisFrame(const Scene& scene)
+{
+    if (scene.frame != mGrainFrame) {
+        mGrainFrame = scene.frame;
+        mGrainedViewports.clear();
+    }
+    if (std::find(mGrainedViewports.begin(), mGrainedViewports.end(), scene.viewport) !=
+        mGrainedViewports.end()) {
+        return true;
+    }
+    mGrainedViewports.push_back(scene.viewport);
+    return false;
+}
+
+void PaperStyle::render(const Scene& scene, StyleContext& ctx)
+{
+    const GlFunctions& gl = ctx.gl;
+    const glm::ivec4 vp = scene.viewport;
+    // An empty flush drew nothing; its page is whatever the program left.
+    if (scene.objects.empty() || vp.z <= 0 || vp.w <= 0) return;
+    const bool grainScene = mGrain > 0.0f && !grainedThisFrame(scene);
+    bool fill = mFill;
+    if (fill && !mCopy.capture(gl, vp)) {
+        if (!mWarnedCopy) {
+            NPRGL_WARN("paper: cannot copy a multisampled (or undrawn) framebuffer; the "
+                       "background is left as the program cleared it");
+        }
+        mWarnedCopy = true;
+        fill = false;
+    }
+    if (!fill && !grainScene) return;
+
+    // Textures are uploaded here, where the program's state is saved (GlTexture::upload).
+    if (!mGrainImage.empty() && !mGrainTexture.valid()) mGrainTexture.upload(gl, mGrainImage);
+    if (!mPaperImage.empty() && !mPaperTexture.valid()) mPaperTexture.upload(gl, mPaperImage);
+
+    gl.UseProgram(mProgram.id());
+    gl.Uniform1i(mU.colour, 0);
+    gl.Uniform1i(mU.depth, 1);
+    gl.Uniform1i(mU.grainTex, 2);
+    gl.Uniform1i(mU.paperTex, 3);
+    gl.Uniform2i(mU.origin, vp.x, vp.y);
+    gl.Uniform1i(mU.fill, fill ? 1 : 0);
+    gl.Uniform1i(mU.haveDepth, mCopy.hasDepth() ? 1 : 0);
+    gl.Uniform1i(mU.usePaperTex, mPaperTexture.valid() ? 1 : 0);
+    gl.Uniform3f(mU.paperColour, mPaperColour.r, mPaperColour.g, mPaperColour.b);
+    const glm::vec3 clear = glm::clamp(glm::vec3(scene.clearColor), 0.0f, 1.0f);
+    gl.Uniform3f(mU.clearColour, clear.r, clear.g, clear.b);
+    // One and a half steps of the coarser of the framebuffer and the 8-bit copy.
+    const int bits = std::clamp(mCopy.colourBits(), 1, 8);
+    gl.Uniform1f(mU.tolerance, 1.5f / float((1 << bits) - 1));
+    gl.Uniform1f(mU.grain, mGrainTexture.valid() ? mGrain : 0.0f);
+    const float grainTile = float(std::max(mGrainImage.width, 1)) * mGrainScale;
+    gl.Uniform2f(mU.grainSize, grainTile, grainTile);
+    gl.Uniform2f(mU.paperSize, float(std::max(mPaperImage.width, 1)) * mGrainScale,
+                 float(std::max(mPaperImage.height, 1)) * mGrainScale);
+
+    const GLuint textures[4] = {mCopy.colour(), mCopy.depth(), mGrainTexture.id(),
+                                mPaperTexture.id()};
+    for (int i = 3; i >= 0; --i) {
+        gl.ActiveTexture(GL_TEXTURE0 + GLenum(i));
+        gl.BindTexture(GL_TEXTURE_2D, textures[i]);
+    }
+
+    // Only the viewport; the scene's depth stays for the outline styles.
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(vp.x, vp.y, vp.z, vp.w);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.DepthMask(GL_FALSE);
+    gl.BindBuffer(GL_ARRAY_BUFFER, mTriangle);
+    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    gl.EnableVertexAttribArray(0);
+    for (GLuint a = 1; a < 4; ++a) gl.DisableVertexAttribArray(a);
+    if (grainScene) {
+        // Multiplied into colour only: the program's alpha over its scene stays.
+        gl.Uniform1i(mU.pass, 0);
+        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+        gl.Enable(GL_BLEND);
+        gl.BlendEquation(GL_FUNC_ADD);
+        gl.BlendFunc(GL_DST_COLOR, GL_ZERO);
+        gl.DrawArrays(GL_TRIANGLES, 0, 3);
+        gl.Disable(GL_BLEND);
+    }
+    if (fill) {
+        gl.Uniform1i(mU.pass, 1);
+        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    gl.DisableVertexAttribArray(0);
+    gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+    for (int i = 3; i >= 0; --i) {
+        gl.ActiveTexture(GL_TEXTURE0 + GLenum(i));
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+    }
+    // Back to the baseline masks: a clear that follows (before anyone restores the state)
+    // must reach the whole depth and colour buffers.
+    gl.Disable(GL_BLEND);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthMask(GL_TRUE);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void PaperStyle::shutdown(StyleContext& ctx)
+{
+    const GlFunctions& gl = ctx.gl;
+    mProgram.destroy(gl);
+    mCopy.destroy(gl);
+    mGrainTexture.destroy(gl);
+    mPaperTexture.destroy(gl);
+    if (mTriangle) gl.DeleteBuffers(1, &mTriangle);
+    mTriangle = 0;
+}
+
+} // namespace nprgl::styles

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "styles/ShaderProgram.h"
+#include "styles/Style.h"
+#include "styles/background/ScreenCopy.h"
+#include "styles/textures/GlTexture.h"
+#include "styles/textures/TextureImage.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace nprgl::styles {
+
+// The page the picture is drawn on (thesis 2.4.2 and appendix B: a background image before
+// the frame, a paper structure blended over it after). Where the program left its cleared
+// background untouched - far depth and still the clear colour - the page shows paper (a flat
+// colour or a tiled scan); then a fine paper grain darkens the whole viewport, the scene
+// included, fixed to the screen like a real sheet. Runs after shading, before the ink.
+class PaperStyle : public Style {
+public:
+    bool init(StyleContext& ctx, std::string& error) override;
+    void render(const Scene& scene, StyleContext& ctx) override;
+    void shutdown(StyleContext& ctx) override;
+
+private:
+    struct Uniforms {
+        GLint colour = -1, depth = -1, grainTex = -1, paperTex = -1, origin = -1, fill = -1,
+              haveDepth = -1, usePaperTex = -1, paperColour = -1, clearColour = -1,
+              tolerance = -1, grain = -1, pass = -1, grainSize = -1, paperSize = -1;
+    };
+    // Whether this frame's grain already lies over the viewport (a second flush in one
+    // frame must not darken the page twice).
+    bool grainedThisFrame(const Scene& scene);
+
+    ShaderProgram mProgram;
+    Uniforms mU;
+    GLuint mTriangle = 0;
+    ScreenCopy mCopy;
+    GlTexture mGrainTexture, mPaperTexture;
+    TextureImage mGrainImage, mPaperImage; // uploaded at the first render()
+    bool mWarnedCopy = false;
+    uint64_t mGrainFrame = UINT64_MAX;
+    std::vector<glm::ivec4> mGrainedViewports;
+    // Parameters, fixed for the chain's life.
+    glm::vec3 mPaperColour{0.957f, 0.937f, 0.882f};
+    bool mFill = true;
+    float mGrain = 0.12f;
+    float mGrainScale = 1.0f;
+};
+
+} // namespace nprgl::styles

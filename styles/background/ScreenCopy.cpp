@@ -1,0 +1,86 @@
+#include "styles/background/ScreenCopy.h"
+
+namespace nprgl::styles {
+
+namespace {
+
+void makeTexture(const GlFunctions& gl, GLuint tex, GLint internal, GLenum format, GLenum type,
+                 int width, int height)
+{
+    gl.BindTexture(GL_TEXTURE_2D, tex);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, internal, width, height, 0, format, type, nullptr);
+    // texelFetch only; nearest keeps the texture complete without mipmaps, and no compare
+    // mode so the depth reads as a value.
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (format == GL_DEPTH_COMPONENT) {
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    }
+}
+
+} // namespace
+
+void ScreenCopy::ensure(const GlFunctions& gl, int width, int height)
+{
+    if (mColour && width == mWidth && height == mHeight) return;
+    destroy(gl);
+    mWidth = width;
+    mHeight = height;
+    gl.GenTextures(1, &mColour);
+    gl.GenTextures(1, &mDepth);
+    makeTexture(gl, mColour, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    makeTexture(gl, mDepth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width,
+                height);
+}
+
+bool ScreenCopy::capture(const GlFunctions& gl, const glm::ivec4& viewport)
+{
+    const int width = viewport.z, height = viewport.w;
+    if (width <= 0 || height <= 0) return false;
+    GLint samples = 0, drawBuffer = GL_NONE, drawFbo = 0, readFbo = 0;
+    gl.GetIntegerv(GL_SAMPLE_BUFFERS, &samples);
+    gl.GetIntegerv(GL_DRAW_BUFFER, &drawBuffer);
+    // A multisampled buffer would need a resolve first; copying it is an error.
+    if (samples > 0 || drawBuffer == GL_NONE) return false;
+    // ReadBuffer takes one side; the back buffer is the one being drawn.
+    if (drawBuffer == GL_FRONT_AND_BACK) drawBuffer = GL_BACK;
+    GLint depthBits = 0, redBits = 0;
+    gl.GetIntegerv(GL_DEPTH_BITS, &depthBits);
+    gl.GetIntegerv(GL_RED_BITS, &redBits);
+    mHasDepth = depthBits > 0;
+    mColourBits = redBits > 0 ? redBits : 8;
+
+    gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);
+    gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFbo);
+    // Read from what is being drawn; the read buffer belongs to that framebuffer, so put
+    // its own back before leaving.
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(drawFbo));
+    GLint readBuffer = GL_NONE;
+    gl.GetIntegerv(GL_READ_BUFFER, &readBuffer);
+    if (readBuffer != drawBuffer) gl.ReadBuffer(GLenum(drawBuffer));
+
+    ensure(gl, width, height);
+    gl.BindTexture(GL_TEXTURE_2D, mColour);
+    gl.CopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, viewport.x, viewport.y, width, height);
+    if (mHasDepth) {
+        gl.BindTexture(GL_TEXTURE_2D, mDepth);
+        gl.CopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, viewport.x, viewport.y, width, height);
+    }
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+
+    if (readBuffer != drawBuffer) gl.ReadBuffer(GLenum(readBuffer));
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFbo));
+    return true;
+}
+
+void ScreenCopy::destroy(const GlFunctions& gl)
+{
+    if (mColour) gl.DeleteTextures(1, &mColour);
+    if (mDepth) gl.DeleteTextures(1, &mDepth);
+    mColour = mDepth = 0;
+    mWidth = mHeight = 0;
+}
+
+} // namespace nprgl::styles
