@@ -21,22 +21,22 @@ std::string trim(const std::string& s)
 const std::vector<Preset>& Presets::shipped()
 {
     static const std::vector<Preset> presets = {
-        {"cartoon", "cel shading with clean ink outlines (the default look)",
-         "style=toon+edges\n"},
+        {"cartoon", "cel shading, clean ink outlines, paper (the default look)",
+         "style=toon+paper+edges\n"},
         {"comic", "two flat tones, bold outlines and ink between the bands",
-         "style=toon+edges\n"
+         "style=toon+paper+edges\n"
          "toon.tones=2\n"
          "toon.diffuse_threshold=0.15\n"
          "edges.silhouette_width=3\n"},
         {"newspaper", "halftone dots in print black with ink outlines",
-         "style=halftone+edges\n"
+         "style=halftone+paper+edges\n"
          "halftone.pattern=dots\n"},
         {"engraving", "cross-hatched pen and ink",
-         "style=textured+edges\n"
+         "style=textured+paper+edges\n"
          "textured.shadow_texture=crosshatching\n"
          "textured.tint=off\n"},
         {"sketch", "pencil strokes over hatching",
-         "style=textured+strokes\n"
+         "style=textured+paper+strokes\n"
          "textured.shadow_texture=hatching\n"},
     };
     return presets;

@@ -12,7 +12,7 @@ StyleInfo texturedStyleInfo();
 StyleInfo halftoneStyleInfo();
 StyleInfo paperStyleInfo();
 
-const char* const kDefaultChain = "none";
+const char* const kDefaultChain = "toon+paper+edges";
 
 void registerStyles(std::vector<StyleInfo>& out)
 {

@@ -101,12 +101,12 @@ TEST_P(Character, ReplayIsPixelIdenticalToTheLiveFrames)
 {
     std::string dir = freshDir("rec"), live = dir + "/live", replay = dir + "/replay";
     std::string file = dir + "/capture.nprgl";
-    std::vector<std::string> cmd = {nprglCommand(), "record", "-o", file, "--"};
+    std::vector<std::string> cmd = {nprglCommand(), "record", "--style", "none", "-o", file, "--"};
     std::vector<std::string> args = demoArgs(live);
     cmd.insert(cmd.end(), args.begin(), args.end());
     ProcessResult r = runProcess(cmd);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    ProcessResult p = runProcess({nprglCommand(), "replay", file, "-o", replay});
+    ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", replay});
     ASSERT_EQ(p.exitCode, 0) << p.err;
     for (int frame = 1; frame <= kFrames; ++frame) {
         ImageDiff diff = compareImages(livePng(live, frame), replayPng(replay, frame));

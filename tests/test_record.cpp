@@ -85,14 +85,14 @@ TEST_P(RecordReplay, ReplayIsPixelIdenticalToTheLiveFrames)
     }
     std::string dir = freshDir("rec"), live = dir + "/live", replay = dir + "/replay";
     std::string file = dir + "/capture.nprgl";
-    std::vector<std::string> cmd = {nprglCommand(), "record", "-o", file, "--", demo(c.app),
+    std::vector<std::string> cmd = {nprglCommand(), "record", "--style", "none", "-o", file, "--", demo(c.app),
                                     "--frames", "3", "--size", "96x72", "--save-dir", live,
                                     "--save-frames", "1-3"};
     cmd.insert(cmd.end(), c.args.begin(), c.args.end());
     if (c.offscreen) cmd.push_back("--offscreen");
     ProcessResult r = runProcess(cmd);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    ProcessResult p = runProcess({nprglCommand(), "replay", file, "-o", replay});
+    ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", replay});
     ASSERT_EQ(p.exitCode, 0) << p.err;
     expectSameFrames(live, c.app, replay, 3);
     EXPECT_FALSE(fs::exists(framePng(replay, 4)));
@@ -122,7 +122,7 @@ TEST(Fixtures, EveryDemoFixtureReplaysAsTheDemoDrawsToday)
         cmd.insert(cmd.end(), args.begin(), args.end());
         ProcessResult r = runProcess(cmd);
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        ProcessResult p = runProcess({nprglCommand(), "replay", fixture(name), "-o", replay});
+        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", fixture(name), "-o", replay});
         ASSERT_EQ(p.exitCode, 0) << name << ": " << p.err;
         expectSameFrames(live, app, replay, 3);
     }
@@ -142,7 +142,7 @@ TEST(Fixtures, CharacterFixturesReplayAsTheDemoDrawsToday)
                                       "--offscreen", "--frames", "3", "--size", "160x120",
                                       "--save-dir", live});
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        ProcessResult p = runProcess({nprglCommand(), "replay", fixture(name), "-o", replay});
+        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", fixture(name), "-o", replay});
         ASSERT_EQ(p.exitCode, 0) << name << ": " << p.err;
         expectSameFrames(live, "character", replay, 3);
     }
@@ -151,7 +151,7 @@ TEST(Fixtures, CharacterFixturesReplayAsTheDemoDrawsToday)
 TEST(Fixtures, GlxgearsReplaysAsGlxgears)
 {
     std::string replay = freshDir("gears");
-    ProcessResult p = runProcess({nprglCommand(), "replay", fixture("glxgears"), "-o", replay});
+    ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", fixture("glxgears"), "-o", replay});
     ASSERT_EQ(p.exitCode, 0) << p.err;
     expectGlxgearsPicture(framePng(replay, 3));
 }
@@ -186,7 +186,7 @@ TEST(Dump, PrintsOneCallPerLineWithNamedArguments)
 TEST(Info, ReportsProgramFramesCallsAndWhatWasNotCaptured)
 {
     std::string dir = freshDir("info"), file = dir + "/d.nprgl";
-    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--", demo("displaylist"),
+    ProcessResult r = runProcess({nprglCommand(), "record", "--style", "none", "-o", file, "--", demo("displaylist"),
                                   "--offscreen", "--frames", "4", "--size", "64x64",
                                   "--save-dir", dir + "/live"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -257,12 +257,12 @@ TEST(Record, ProgramsStoppedBySignalsOrUnderscoreExitLeaveReadableFiles)
         std::smatch m;
         ASSERT_TRUE(std::regex_search(i.out, m, std::regex(R"(frames:\s+(\d+))"))) << i.out;
         EXPECT_GE(std::stoi(m[1]), 1);
-        ProcessResult p = runProcess({nprglCommand(), "replay", file, "-o", dir + "/r"});
+        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", dir + "/r"});
         EXPECT_EQ(p.exitCode, 0) << p.err;
         EXPECT_TRUE(fs::exists(framePng(dir + "/r", 1)));
     }
     std::string dir = freshDir("uexit"), file = dir + "/u.nprgl";
-    ProcessResult u = runProcess({nprglCommand(), "record", "-o", file, "--",
+    ProcessResult u = runProcess({nprglCommand(), "record", "--style", "none", "-o", file, "--",
                                   binDir() + "/probe_fork", "underscore-exit"});
     EXPECT_EQ(u.exitCode, 5);
     ProcessResult i = runProcess({nprglCommand(), "info", file});
@@ -273,7 +273,7 @@ TEST(Record, ProgramsStoppedBySignalsOrUnderscoreExitLeaveReadableFiles)
 TEST(Record, AForkedChildWritesItsOwnFile)
 {
     std::string dir = freshDir("fork"), file = dir + "/f.nprgl";
-    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--",
+    ProcessResult r = runProcess({nprglCommand(), "record", "--style", "none", "-o", file, "--",
                                   binDir() + "/probe_fork", "fork"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::vector<std::string> files;
@@ -292,7 +292,7 @@ TEST(Record, AForkedChildWritesItsOwnFile)
 TEST(Record, EachContextHasItsOwnStream)
 {
     std::string dir = freshDir("threads"), file = dir + "/t.nprgl";
-    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--",
+    ProcessResult r = runProcess({nprglCommand(), "record", "--style", "none", "-o", file, "--",
                                   binDir() + "/probe_threads"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ProcessResult i = runProcess({nprglCommand(), "info", file});
@@ -301,7 +301,7 @@ TEST(Record, EachContextHasItsOwnStream)
     // Context 1 cleared to red, context 2 to blue.
     for (int ctx : {1, 2}) {
         std::string out = dir + "/ctx" + std::to_string(ctx);
-        ProcessResult p = runProcess({nprglCommand(), "replay", file, "--context",
+        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "--context",
                                       std::to_string(ctx), "-o", out});
         ASSERT_EQ(p.exitCode, 0) << p.err;
         PngImage image;
