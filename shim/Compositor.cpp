@@ -299,16 +299,15 @@ void Compositor::noteHeld()
 
 void Compositor::mask()
 {
-    gRealGl.glGetBooleanv(GL_COLOR_WRITEMASK, mSavedMask);
-    gRealGl.glGetBooleanv(GL_DEPTH_WRITEMASK, &mSavedDepthMask);
-    gRealGl.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    gRealGl.glDepthMask(GL_FALSE);
+    // Primitives stop before rasterisation (GL 3.0): the list's state changes still happen,
+    // and no fragment is shaded for a picture the style draws anyway.
+    mSavedDiscard = gRealGl.glIsEnabled(GL_RASTERIZER_DISCARD);
+    if (!mSavedDiscard) gRealGl.glEnable(GL_RASTERIZER_DISCARD);
 }
 
 void Compositor::unmask()
 {
-    gRealGl.glColorMask(mSavedMask[0], mSavedMask[1], mSavedMask[2], mSavedMask[3]);
-    gRealGl.glDepthMask(mSavedDepthMask);
+    if (!mSavedDiscard) gRealGl.glDisable(GL_RASTERIZER_DISCARD);
 }
 
 void Compositor::begin(GLenum mode)

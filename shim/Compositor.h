@@ -19,15 +19,17 @@ class Recorder;
 // The frame compositor of DESIGN.md §5, one per GL context when a style is active.
 //
 // The StateTracker follows the context's Stream (recorded in memory by the Recorder) and is
-// brought up to date at every draw. A polygonal 3D draw in plain state is held back: it goes
-// to the driver with colour writes off (so the depth buffer still holds the whole scene and
-// later forwarded drawing depth-tests against it) and its geometry joins the frame's scene.
-// Everything else is forwarded in order. A barrier — a forwarded draw after held ones, a
-// clear, a read-back, a copy, a change of framebuffer or viewport, a frame end, a context
-// switch — flushes the scene: reconstruct it, save all of the program's state, run the
-// style chain, restore the state, and keep the program's pending GL error for its next
-// glGetError. With no shading style in the chain the held draws keep their colour and the
-// outline styles draw over the program's own picture.
+// brought up to date at every draw. A polygonal 3D draw in plain state is held back: its
+// geometry joins the frame's scene and the driver never draws it (glBegin..glEnd and array
+// draws are only recorded; a display list still runs, for its state changes, with the
+// rasteriser discarding its primitives). Everything else is forwarded in order. A barrier —
+// a forwarded draw after held ones, a clear, a read-back, a copy, a change of framebuffer or
+// viewport, a frame end, a context switch — flushes the scene: reconstruct it, save all of
+// the program's state, run the style chain (whose shading style draws the scene and its
+// depth, so later forwarded drawing depth-tests against it), restore the state, and keep the
+// program's pending GL error for its next glGetError. With no shading style in the chain
+// the held draws go to the driver as they are and the outline styles draw over the
+// program's own picture.
 class Compositor {
 public:
     Compositor(Context& ctx, Recorder& recorder);
@@ -55,7 +57,7 @@ public:
     void end();
     bool holdDraw(GLenum mode);
     bool holdList(GLuint list);
-    // Colour and depth writes off around a held display list (its state changes must run).
+    // Rasteriser discard around a held display list (its state changes must still run).
     void mask();
     void unmask();
     // The chain has a shading style: held draws are drawn by it, not by the driver.
@@ -96,8 +98,7 @@ private:
 
     bool mHeld = false;         // held batches wait for the next flush
     bool mHoldingBegin = false; // inside a held glBegin..glEnd
-    GLboolean mSavedMask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
-    GLboolean mSavedDepthMask = GL_TRUE;
+    GLboolean mSavedDiscard = GL_FALSE;
     GLint mHeldFramebuffer = 0;
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
