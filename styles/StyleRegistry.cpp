@@ -32,7 +32,23 @@ ParamInfo ParamInfo::number(std::string name, std::string help, double def, doub
 
 ParamInfo ParamInfo::flag(std::string name, std::string help, bool def)
 {
-    return number(std::move(name), std::move(help), def ? 1.0 : 0.0, 0.0, 1.0);
+    ParamInfo p = number(std::move(name), std::move(help), def ? 1.0 : 0.0, 0.0, 1.0);
+    p.isFlag = true;
+    return p;
+}
+
+ParamInfo ParamInfo::colour(std::string name, std::string help, std::string def)
+{
+    ParamInfo p = text(std::move(name), std::move(help), std::move(def));
+    p.kind = ParamKind::Colour;
+    return p;
+}
+
+bool ParamInfo::isColour(const std::string& text)
+{
+    const size_t skip = !text.empty() && text[0] == '#' ? 1 : 0;
+    if (text.size() != skip + 6) return false;
+    return text.find_first_not_of("0123456789abcdefABCDEF", skip) == std::string::npos;
 }
 
 ParamInfo ParamInfo::choice(std::string name, std::string help, std::vector<std::string> names,
@@ -58,9 +74,11 @@ std::string ParamInfo::defaultString() const
 {
     switch (kind) {
     case ParamKind::Choice: return choices[size_t(defaultValue)];
-    case ParamKind::Text: return defaultText;
+    case ParamKind::Text: return defaultText.empty() ? "\"\"" : defaultText;
+    case ParamKind::Colour: return defaultText.empty() ? "derived" : defaultText;
     case ParamKind::Number: break;
     }
+    if (isFlag) return defaultValue != 0.0 ? "on" : "off";
     return formatNumber(defaultValue);
 }
 
@@ -73,12 +91,10 @@ std::string ParamInfo::rangeString() const
         return s;
     }
     case ParamKind::Text: return "file";
+    case ParamKind::Colour: return "rrggbb";
     case ParamKind::Number: break;
     }
-    if (minValue == 0.0 && maxValue == 1.0 && (defaultValue == 0.0 || defaultValue == 1.0) &&
-        help.find("(on/off)") != std::string::npos) {
-        return "on|off";
-    }
+    if (isFlag) return "on|off";
     return "[" + formatNumber(minValue) + ", " + formatNumber(maxValue) + "]";
 }
 

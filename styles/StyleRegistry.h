@@ -12,9 +12,9 @@ class Style;
 enum class StyleRole;
 } // namespace styles
 
-// How a parameter's value is written: a number (bools are 0/1), one name of a list (stored
-// as its index), or a text such as a PNG file name.
-enum class ParamKind { Number, Choice, Text };
+// How a parameter's value is written: a number (flags are 0/1, on/off), one name of a list
+// (stored as its index), a text such as a PNG file name, or a colour as hex rrggbb.
+enum class ParamKind { Number, Choice, Text, Colour };
 
 // One tunable parameter of a style, with its range.
 struct ParamInfo {
@@ -25,7 +25,8 @@ struct ParamInfo {
     double maxValue = 0.0;
     ParamKind kind = ParamKind::Number;
     std::vector<std::string> choices; // Choice: the names, value = index
-    std::string defaultText;          // Text
+    std::string defaultText;          // Text, Colour
+    bool isFlag = false;              // a Number that is on (1) or off (0)
 
     static ParamInfo number(std::string name, std::string help, double def, double lo,
                             double hi);
@@ -33,6 +34,10 @@ struct ParamInfo {
     static ParamInfo choice(std::string name, std::string help, std::vector<std::string> names,
                             int def);
     static ParamInfo text(std::string name, std::string help, std::string def = {});
+    // "rrggbb" or "#rrggbb"; empty means "derived" where the style says so.
+    static ParamInfo colour(std::string name, std::string help, std::string def = {});
+    // True when `text` is a valid value of a Colour parameter.
+    static bool isColour(const std::string& text);
     // The default as it is written in a preset ("0.5", "dots", "on", a file name).
     std::string defaultString() const;
     // The range as `nprgl styles` prints it.

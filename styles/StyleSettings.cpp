@@ -40,7 +40,11 @@ bool StyleSettings::parse(const std::string& chain, const std::string& config,
             error = "unknown parameter '" + key + "' (see `nprgl styles`)";
             return false;
         }
-        if (param->kind == ParamKind::Text) {
+        if (param->kind == ParamKind::Colour && !text.empty() && !ParamInfo::isColour(text)) {
+            error = "parameter " + key + ": '" + text + "' is not a colour (use rrggbb, e.g. 1a2b3c)";
+            return false;
+        }
+        if (param->kind == ParamKind::Text || param->kind == ParamKind::Colour) {
             settings.mTexts[key] = text;
             continue;
         }
