@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -32,5 +33,7 @@ struct Batch {
 // XXH3 of the vertex bytes seeded with the mode; never 0. The producer should store it in
 // Batch::contentHash when it copies the vertices, while they are hot in the cache.
 uint64_t hashBatch(const Batch& batch) noexcept;
+// The same for vertices not (yet) in a Batch.
+uint64_t hashVertices(const Vertex* vertices, size_t count, uint32_t mode) noexcept;
 
 } // namespace nprgl::reconstruct

@@ -370,28 +370,34 @@ void Compositor::flush()
 
 void Compositor::buildScene()
 {
+    // The tracker's vertices are the reconstruction's: lent, not copied, and handed back
+    // to the tracker's pool for the next frame.
     mBatches.resize(mTracked.size());
     for (size_t i = 0; i < mTracked.size(); ++i) {
-        const TrackedBatch& t = mTracked[i];
+        TrackedBatch& t = mTracked[i];
         reconstruct::Batch& b = mBatches[i];
         b.mode = t.mode;
         b.modelview = t.modelview;
         b.materialId = t.materialId;
-        b.vertices.resize(t.vertices.size());
-        for (size_t k = 0; k < t.vertices.size(); ++k) {
-            const TrackedVertex& tv = t.vertices[k];
-            reconstruct::Vertex& v = b.vertices[k];
-            v = reconstruct::Vertex{};
-            v.position = tv.position;
-            v.normal = tv.normal;
-            v.color = tv.color;
-            v.texcoord = tv.texcoord;
-            v.hasNormal = t.hasNormals;
-        }
-        b.contentHash = reconstruct::hashBatch(b);
+        b.vertices.swap(t.vertices);
+        b.contentHash = t.contentHash != 0 ? t.contentHash : reconstruct::hashBatch(b);
     }
-    mReconstructor.build(mBatches, mObjects);
+    // Last frame's scene lets go of its meshes first: an animated mesh is then updated in
+    // place rather than copied (the Reconstructor copies a mesh someone else still holds).
     mScene.objects.clear();
+    mReconstructor.build(mBatches, mObjects);
+    for (size_t i = 0; i < mTracked.size(); ++i) mTracked[i].vertices.swap(mBatches[i].vertices);
+    mTracker.recycle(mTracked);
+    if (logEnabled(LogLevel::Debug)) {
+        const reconstruct::CacheStats st = mReconstructor.cacheStats();
+        NPRGL_DEBUG("flush %llu: %zu batches, %zu objects; cache hits %llu, updates %llu, "
+                    "rebuilds %llu, evictions %llu, entries %zu, bytes %zu",
+                    static_cast<unsigned long long>(mFlushes), mBatches.size(), mObjects.size(),
+                    static_cast<unsigned long long>(st.hits),
+                    static_cast<unsigned long long>(st.updates),
+                    static_cast<unsigned long long>(st.rebuilds),
+                    static_cast<unsigned long long>(st.evictions), st.entries, st.bytes);
+    }
     for (const reconstruct::FrameObject& o : mObjects) {
         const TrackedBatch& t = mTracked[o.firstBatch];
         styles::SceneObject s;

@@ -15,17 +15,8 @@ std::vector<reconstruct::Batch> reconstructionBatches(const std::vector<TrackedB
         b.mode = tb.mode;
         b.modelview = tb.modelview;
         b.materialId = tb.materialId;
-        b.vertices.reserve(tb.vertices.size());
-        for (const TrackedVertex& v : tb.vertices) {
-            reconstruct::Vertex rv;
-            rv.position = v.position;
-            rv.normal = v.normal;
-            rv.color = v.color;
-            rv.texcoord = v.texcoord;
-            rv.hasNormal = tb.hasNormals;
-            b.vertices.push_back(rv);
-        }
-        b.contentHash = reconstruct::hashBatch(b);
+        b.vertices = tb.vertices; // the same vertex type: one copy, no conversion
+        b.contentHash = tb.contentHash != 0 ? tb.contentHash : reconstruct::hashBatch(b);
         out.push_back(std::move(b));
     }
     return out;

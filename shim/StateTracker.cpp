@@ -14,7 +14,12 @@ namespace nprgl {
 
 namespace {
 
-thread_local StateTracker* tTracker = nullptr;
+// Initial-exec like tThread: read per vertex, no __tls_get_addr call.
+constinit thread_local StateTracker* tTracker __attribute__((tls_model("initial-exec"))) =
+    nullptr;
+
+// Capacity the vertex pool keeps at most (a frame's worth for large scenes).
+constexpr size_t kPoolBytes = size_t(256) << 20;
 
 template <typename T>
 T zeroValue()
@@ -239,6 +244,15 @@ void APIENTRY tCallLists(GLsizei n, GLenum type, const void* lists)
 
 bool isPolygonMode(GLenum mode) { return mode >= GL_TRIANGLES && mode <= GL_POLYGON; }
 
+// Component i of an array element (unaligned).
+template <typename T>
+T load(const uint8_t* p, int i)
+{
+    T v;
+    std::memcpy(&v, p + sizeof(T) * size_t(i), sizeof(T));
+    return v;
+}
+
 } // namespace
 
 StateTracker& currentTracker() { return *tTracker; }
@@ -334,6 +348,7 @@ bool StateTracker::runFrame(const uint8_t* data, size_t size, BlobSource* blobs,
     tTracker = this;
     mBlobs = blobs;
     if (mFrameDone) {
+        recycle(mFrameBatches);
         mFrameBatches.clear();
         mFrameDone = false;
     }
@@ -355,8 +370,36 @@ bool StateTracker::feed(const uint8_t* data, size_t size, BlobSource* blobs, std
 
 void StateTracker::takeBatches(std::vector<TrackedBatch>& out)
 {
+    recycle(out);
     out.swap(mFrameBatches);
     mFrameBatches.clear();
+}
+
+void StateTracker::recycle(std::vector<TrackedBatch>& batches)
+{
+    // Last first, so that the next frame's first batch gets this frame's first vector back.
+    for (auto it = batches.rbegin(); it != batches.rend(); ++it) recycle(std::move(it->vertices));
+}
+
+void StateTracker::recycle(std::vector<TrackedVertex>&& vertices)
+{
+    const size_t bytes = vertices.capacity() * sizeof(TrackedVertex);
+    if (bytes == 0 || mPoolBytes + bytes > kPoolBytes) {
+        std::vector<TrackedVertex>().swap(vertices);
+        return;
+    }
+    vertices.clear();
+    mVertexPool.push_back(std::move(vertices));
+    mPoolBytes += bytes;
+}
+
+std::vector<TrackedVertex> StateTracker::takeVertices()
+{
+    if (mVertexPool.empty()) return {};
+    std::vector<TrackedVertex> v = std::move(mVertexPool.back());
+    mVertexPool.pop_back();
+    mPoolBytes -= v.capacity() * sizeof(TrackedVertex);
+    return v;
 }
 
 bool StateTracker::wouldHold(GLenum mode) const
@@ -577,7 +620,7 @@ void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
     switch (kind) {
     case Attrib::Normal:
         mCurrent.normal = {x, y, z};
-        mNormalSet = true;
+        mCurrent.hasNormal = mNormalSet = true;
         mListSetsNormal = mListSetsNormal || mCompiling;
         break;
     case Attrib::Color:
@@ -588,19 +631,22 @@ void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
         mCurrent.texcoord = {x, y};
         mListSetsTexCoord = mListSetsTexCoord || mCompiling;
         break;
-    case Attrib::Vertex:
+    case Attrib::Vertex: {
         if (!mInBegin) return;
-        TrackedVertex v = mCurrent;
-        v.position = w != 0.0f && w != 1.0f ? glm::vec3(x, y, z) / w : glm::vec3(x, y, z);
-        mBatch.vertices.push_back(v);
+        TrackedVertex& v = mBatch.vertices.emplace_back(mCurrent);
+        if (w != 0.0f && w != 1.0f) v.position = glm::vec3(x, y, z) / w;
+        else v.position = glm::vec3(x, y, z);
         break;
+    }
     }
 }
 
 void StateTracker::begin(GLenum mode)
 {
+    recycle(std::move(mBatch.vertices)); // a glBegin without glEnd before it
     mInBegin = true;
     mBatch = TrackedBatch();
+    mBatch.vertices = takeVertices();
     mBatch.mode = mode;
     mBatch.hasNormals = mNormalSet;
 }
@@ -609,7 +655,11 @@ void StateTracker::end()
 {
     if (!mInBegin) return;
     mInBegin = false;
-    mBatch.hasNormals = mBatch.hasNormals || mNormalSet;
+    if (!mBatch.hasNormals && mNormalSet) {
+        // The first glNormal came inside this batch: the vertices before it count as well.
+        mBatch.hasNormals = true;
+        for (TrackedVertex& v : mBatch.vertices) v.hasNormal = true;
+    }
     emit(std::move(mBatch));
     mBatch = TrackedBatch();
 }
@@ -617,33 +667,45 @@ void StateTracker::end()
 uint32_t StateTracker::currentMaterialId()
 {
     const AttribState& a = mAttrib;
-    std::vector<float> key = {float(a.lighting), float(a.colorMaterial),
-                              float(a.texture2D ? mBoundTexture : 0)};
+    // Unlit or colour-material keys leave the diffuse zero; their first two entries tell
+    // them apart from lit ones.
+    std::array<float, 7> key = {float(a.lighting), float(a.colorMaterial),
+                                float(a.texture2D ? mBoundTexture : 0), 0.0f, 0.0f, 0.0f, 0.0f};
     if (a.lighting && !a.colorMaterial) {
         const glm::vec4& d = a.material.diffuse;
-        key.insert(key.end(), {d.r, d.g, d.b, d.a});
+        key[3] = d.r;
+        key[4] = d.g;
+        key[5] = d.b;
+        key[6] = d.a;
     }
     auto it = mMaterialIds.find(key);
     if (it != mMaterialIds.end()) return it->second;
     uint32_t id = uint32_t(mMaterialIds.size()) + 1;
-    mMaterialIds.emplace(std::move(key), id);
+    mMaterialIds.emplace(key, id);
     return id;
 }
 
-void StateTracker::emit(TrackedBatch batch)
+void StateTracker::emit(TrackedBatch&& batch)
+{
+    if (keep(batch)) mFrameBatches.push_back(std::move(batch));
+    else recycle(std::move(batch.vertices));
+}
+
+// Completes a batch with the state of its draw; false when the frame does not keep it.
+bool StateTracker::keep(TrackedBatch& batch)
 {
     if (!isPolygonMode(batch.mode)) {
         otherDraw();
-        return;
+        return false;
     }
-    if (batch.vertices.empty()) return;
+    if (batch.vertices.empty()) return false;
     if (mCompiling) {
         mCompiled.inherits.push_back({!mListSetsColor, !mListSetsNormal, !mListSetsTexCoord});
         mCompiled.batches.push_back(batch);
         ListItem item;
         item.batch = int(mCompiled.batches.size()) - 1;
         mCompiled.items.push_back(std::move(item));
-        if (!mCompileAndExecute) return;
+        if (!mCompileAndExecute) return false;
     }
     batch.modelview = mModelview.back();
     batch.projection = mProjection.back();
@@ -656,7 +718,7 @@ void StateTracker::emit(TrackedBatch batch)
     batch.is3D = a.depthTest || batch.projection[3][3] == 0.0f;
     if (mHolding) {
         batch.held = mHoldingList > 0 || wouldHold(batch.mode);
-        if (!batch.held) return; // the compositor keeps only what it re-draws
+        if (!batch.held) return false; // the compositor keeps only what it re-draws
     }
     batch.lit = a.lighting;
     batch.flat = a.flat;
@@ -666,7 +728,10 @@ void StateTracker::emit(TrackedBatch batch)
     batch.texture = a.texture2D ? mBoundTexture : 0;
     batch.textureEnv = a.textureEnv;
     batch.viewport = a.viewport;
-    mFrameBatches.push_back(std::move(batch));
+    // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
+    batch.contentHash =
+        reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);
+    return true;
 }
 
 glm::mat4& StateTracker::topMatrix()
@@ -778,15 +843,24 @@ void StateTracker::callListBody(GLuint list)
     const List& body = it->second;
     for (const ListItem& item : body.items) {
         if (item.batch >= 0) {
-            TrackedBatch batch = body.batches[size_t(item.batch)];
+            const TrackedBatch& compiled = body.batches[size_t(item.batch)];
+            TrackedBatch batch;
+            batch.vertices = takeVertices();
+            batch.vertices.assign(compiled.vertices.begin(), compiled.vertices.end());
+            batch.mode = compiled.mode;
+            batch.hasNormals = compiled.hasNormals;
             const List::Inherits& from = body.inherits[size_t(item.batch)];
-            // What the list did not set itself comes from the state at this call.
-            for (TrackedVertex& v : batch.vertices) {
-                if (from.color) v.color = mCurrent.color;
-                if (from.normal) v.normal = mCurrent.normal;
-                if (from.texcoord) v.texcoord = mCurrent.texcoord;
-            }
             if (from.normal) batch.hasNormals = batch.hasNormals || mNormalSet;
+            // What the list did not set itself comes from the state at this call.
+            if (from.color || from.normal || from.texcoord ||
+                batch.hasNormals != compiled.hasNormals) {
+                for (TrackedVertex& v : batch.vertices) {
+                    if (from.color) v.color = mCurrent.color;
+                    if (from.normal) v.normal = mCurrent.normal;
+                    if (from.texcoord) v.texcoord = mCurrent.texcoord;
+                    v.hasNormal = batch.hasNormals;
+                }
+            }
             emit(std::move(batch));
         } else {
             std::string ignored;
@@ -865,57 +939,84 @@ void StateTracker::bufferSubData(GLenum target, GLintptr offset, GLsizeiptr size
     std::memcpy(it->second.data() + offset, data, size_t(size));
 }
 
-bool StateTracker::fetch(int slot, size_t index, float out[4]) const
+StateTracker::ArraySource StateTracker::source(int slot) const
 {
+    ArraySource s;
     const ArrayBinding& b = mArrayState[slot];
     const ClientArray& a = b.array;
-    const size_t elem = a.elementBytes(), stride = a.effectiveStride();
-    if (!a.enabled || !elem) return false;
-    const uint8_t* p = nullptr;
+    s.elem = a.elementBytes();
+    s.stride = a.effectiveStride();
+    if (!a.enabled || !s.elem) return s;
     if (a.inBuffer) {
         auto it = mBuffers.find(b.buffer);
-        size_t offset = reinterpret_cast<uintptr_t>(a.pointer) + index * stride;
-        if (it == mBuffers.end() || offset + elem > it->second.size()) return false;
-        p = it->second.data() + offset;
+        const size_t offset = reinterpret_cast<uintptr_t>(a.pointer);
+        if (it == mBuffers.end() || offset > it->second.size()) return s;
+        s.base = it->second.data() + offset;
+        s.limit = it->second.size() - offset;
     } else {
-        if (!a.pointer || index * stride + elem > ShadowArrays::kReserve) return false;
-        p = a.pointer + index * stride;
+        if (!a.pointer) return s;
+        s.base = a.pointer;
+        s.limit = ShadowArrays::kReserve;
     }
-    const bool normalize = slot == kColorArray || slot == kNormalArray;
-    const int n = std::min(a.size == GL_BGRA ? 4 : a.size, 4);
-    for (int i = 0; i < n; ++i) {
-        double v = 0;
-        switch (a.type) {
-        case GL_FLOAT: { float f; std::memcpy(&f, p + 4 * i, 4); v = f; break; }
-        case GL_DOUBLE: { double d; std::memcpy(&d, p + 8 * i, 8); v = d; break; }
-        case GL_INT: { int32_t x; std::memcpy(&x, p + 4 * i, 4); v = normalize ? x / 2147483647.0 : x; break; }
-        case GL_UNSIGNED_INT: { uint32_t x; std::memcpy(&x, p + 4 * i, 4); v = normalize ? x / 4294967295.0 : x; break; }
-        case GL_SHORT: { int16_t x; std::memcpy(&x, p + 2 * i, 2); v = normalize ? x / 32767.0 : x; break; }
-        case GL_UNSIGNED_SHORT: { uint16_t x; std::memcpy(&x, p + 2 * i, 2); v = normalize ? x / 65535.0 : x; break; }
-        case GL_BYTE: v = normalize ? int8_t(p[i]) / 127.0 : int8_t(p[i]); break;
-        case GL_UNSIGNED_BYTE: v = normalize ? p[i] / 255.0 : p[i]; break;
-        default: return false;
+    s.type = a.type;
+    s.count = std::min(a.size == GL_BGRA ? 4 : a.size, 4);
+    s.normalize = slot == kColorArray || slot == kNormalArray;
+    s.bgra = a.size == GL_BGRA;
+    return s;
+}
+
+StateTracker::DrawSources StateTracker::drawSources() const
+{
+    return {source(kVertexArray), source(kNormalArray), source(kColorArray),
+            source(kTexCoordArray0)};
+}
+
+bool StateTracker::fetch(const ArraySource& from, size_t index, float out[4])
+{
+    if (!from.base || index * from.stride + from.elem > from.limit) return false;
+    const uint8_t* p = from.base + index * from.stride;
+    const bool normalize = from.normalize;
+    const int n = from.count;
+    if (from.type == GL_FLOAT) {
+        std::memcpy(out, p, size_t(n) * sizeof(float)); // the common case, no conversion
+    } else {
+        for (int i = 0; i < n; ++i) {
+            double v = 0;
+            switch (from.type) {
+            case GL_DOUBLE: v = load<double>(p, i); break;
+            case GL_INT: v = load<int32_t>(p, i) / (normalize ? 2147483647.0 : 1.0); break;
+            case GL_UNSIGNED_INT:
+                v = load<uint32_t>(p, i) / (normalize ? 4294967295.0 : 1.0);
+                break;
+            case GL_SHORT: v = load<int16_t>(p, i) / (normalize ? 32767.0 : 1.0); break;
+            case GL_UNSIGNED_SHORT: v = load<uint16_t>(p, i) / (normalize ? 65535.0 : 1.0); break;
+            case GL_BYTE: v = load<int8_t>(p, i) / (normalize ? 127.0 : 1.0); break;
+            case GL_UNSIGNED_BYTE: v = load<uint8_t>(p, i) / (normalize ? 255.0 : 1.0); break;
+            default: return false;
+            }
+            out[i] = float(v);
         }
-        out[i] = float(v);
     }
-    if (a.size == GL_BGRA) std::swap(out[0], out[2]);
+    if (from.bgra) std::swap(out[0], out[2]);
     return true;
 }
 
-TrackedVertex StateTracker::arrayVertex(size_t index) const
+TrackedVertex StateTracker::arrayVertex(const DrawSources& from, size_t index,
+                                        bool hasNormal) const
 {
     TrackedVertex v = mCurrent;
+    v.hasNormal = hasNormal;
     float f[4] = {0, 0, 0, 1};
-    if (fetch(kVertexArray, index, f)) {
+    if (fetch(from.vertex, index, f)) {
         v.position = f[3] != 0.0f && f[3] != 1.0f ? glm::vec3(f[0], f[1], f[2]) / f[3]
                                                   : glm::vec3(f[0], f[1], f[2]);
     }
     float n[4] = {0, 0, 1, 0};
-    if (fetch(kNormalArray, index, n)) v.normal = {n[0], n[1], n[2]};
+    if (fetch(from.normal, index, n)) v.normal = {n[0], n[1], n[2]};
     float c[4] = {1, 1, 1, 1};
-    if (fetch(kColorArray, index, c)) v.color = {c[0], c[1], c[2], c[3]};
+    if (fetch(from.color, index, c)) v.color = {c[0], c[1], c[2], c[3]};
     float t[4] = {0, 0, 0, 1};
-    if (fetch(kTexCoordArray0, index, t)) v.texcoord = {t[0], t[1]};
+    if (fetch(from.texcoord, index, t)) v.texcoord = {t[0], t[1]};
     return v;
 }
 
@@ -925,8 +1026,12 @@ void StateTracker::drawArrays(GLenum mode, GLint first, GLsizei count)
     TrackedBatch batch;
     batch.mode = mode;
     batch.hasNormals = mNormalSet || mArrayState[kNormalArray].array.enabled;
+    batch.vertices = takeVertices();
     batch.vertices.reserve(size_t(count));
-    for (GLsizei i = 0; i < count; ++i) batch.vertices.push_back(arrayVertex(size_t(first + i)));
+    const DrawSources from = drawSources();
+    for (GLsizei i = 0; i < count; ++i) {
+        batch.vertices.push_back(arrayVertex(from, size_t(first + i), batch.hasNormals));
+    }
     emit(std::move(batch));
 }
 
@@ -945,11 +1050,13 @@ void StateTracker::drawElements(GLenum mode, GLsizei count, GLenum type, const v
     TrackedBatch batch;
     batch.mode = mode;
     batch.hasNormals = mNormalSet || mArrayState[kNormalArray].array.enabled;
+    batch.vertices = takeVertices();
     batch.vertices.reserve(size_t(count));
+    const DrawSources from = drawSources();
     for (GLsizei i = 0; i < count; ++i) {
         uint32_t index = 0;
         std::memcpy(&index, data + size_t(i) * width, width); // little-endian
-        batch.vertices.push_back(arrayVertex(index));
+        batch.vertices.push_back(arrayVertex(from, index, batch.hasNormals));
     }
     emit(std::move(batch));
 }
@@ -957,7 +1064,7 @@ void StateTracker::drawElements(GLenum mode, GLsizei count, GLenum type, const v
 void StateTracker::arrayElement(GLint i)
 {
     if (!mInBegin || i < 0) return;
-    mBatch.vertices.push_back(arrayVertex(size_t(i)));
+    mBatch.vertices.push_back(arrayVertex(drawSources(), size_t(i), mCurrent.hasNormal));
 }
 
 void StateTracker::rect(float x1, float y1, float x2, float y2)
@@ -967,6 +1074,7 @@ void StateTracker::rect(float x1, float y1, float x2, float y2)
     for (auto [x, y] : {std::pair{x1, y1}, {x2, y1}, {x2, y2}, {x1, y2}}) {
         TrackedVertex v = mCurrent;
         v.position = {x, y, 0.0f};
+        v.hasNormal = false; // as the batch's hasNormals
         batch.vertices.push_back(v);
     }
     emit(std::move(batch));

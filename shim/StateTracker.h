@@ -1,5 +1,6 @@
 #pragma once
 
+#include "reconstruct/Batch.h"
 #include "shim/Api.h"
 #include "shim/ClientArrays.h"
 #include "shim/ShadowArrays.h"
@@ -7,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -17,12 +19,9 @@ namespace nprgl {
 
 enum class Attrib { Vertex, Normal, Color, TexCoord };
 
-struct TrackedVertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-    glm::vec4 color;
-    glm::vec2 texcoord;
-};
+// Kept as reconstruction's own vertex, so the compositor hands the tracker's vectors to the
+// Reconstructor without converting them. hasNormal always equals its batch's hasNormals.
+using TrackedVertex = reconstruct::Vertex;
 
 // The front material as glMaterial set it.
 struct TrackedMaterial {
@@ -50,6 +49,7 @@ struct TrackedBatch {
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     GLenum textureEnv = GL_MODULATE;
     glm::ivec4 viewport{0, 0, 0, 0};
+    uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
 };
 
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix
@@ -83,8 +83,12 @@ public:
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
     void setViewport(const glm::ivec4& v) { mAttrib.viewport = v; }
     const glm::ivec4& viewport() const { return mAttrib.viewport; }
-    // Moves the held batches out (the frame's batch list starts empty again).
+    // Moves the held batches out (the frame's batch list starts empty again). The batches
+    // `out` held before give their vertex vectors back to the pool first.
     void takeBatches(std::vector<TrackedBatch>& out);
+    // Takes the batches' vertex vectors (emptied, capacity kept) for the next frames' batches:
+    // no allocation and no page faults per frame once the sizes repeat.
+    void recycle(std::vector<TrackedBatch>& batches);
     uint64_t lastFrame() const { return mLastFrame; }
 
     // Called by the generated per-vertex attribute functions.
@@ -175,14 +179,31 @@ private:
         ClientArray array;
         GLuint buffer = 0; // data in this buffer's shadow (pointer is an offset)
     };
+    // An enabled array's bytes as one draw reads them: looked up once per draw, not per
+    // vertex. Element i is at base + i * stride when i * stride + elem <= limit.
+    struct ArraySource {
+        const uint8_t* base = nullptr; // null: the array gives nothing
+        size_t limit = 0, stride = 0, elem = 0;
+        GLenum type = GL_FLOAT;
+        int count = 0; // components read (at most 4)
+        bool normalize = false, bgra = false;
+    };
+    struct DrawSources {
+        ArraySource vertex, normal, color, texcoord;
+    };
 
     void callListBody(GLuint list);
     bool multitexturedArrays() const; // texcoord arrays on units other than 0
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
     bool isVertexCall(uint16_t opcode) const;
-    void emit(TrackedBatch batch);
-    TrackedVertex arrayVertex(size_t index) const;
-    bool fetch(int slot, size_t index, float out[4]) const;
+    void emit(TrackedBatch&& batch);
+    bool keep(TrackedBatch& batch);
+    std::vector<TrackedVertex> takeVertices();
+    void recycle(std::vector<TrackedVertex>&& vertices);
+    DrawSources drawSources() const;
+    ArraySource source(int slot) const;
+    TrackedVertex arrayVertex(const DrawSources& from, size_t index, bool hasNormal) const;
+    static bool fetch(const ArraySource& from, size_t index, float out[4]);
     uint32_t currentMaterialId();
 
     GlDispatch mDispatch;
@@ -210,7 +231,7 @@ private:
     int mHoldingList = 0; // > 0 while a held glCallList expands
     GLenum mRenderMode = GL_RENDER;
     bool mLiveFrame = false;
-    std::map<std::vector<float>, uint32_t> mMaterialIds;
+    std::map<std::array<float, 7>, uint32_t> mMaterialIds;
 
     bool mInBegin = false;
     TrackedBatch mBatch;
@@ -228,6 +249,9 @@ private:
     std::map<GLuint, std::vector<uint8_t>> mBuffers;
 
     std::vector<TrackedBatch> mFrameBatches;
+    // Vertex vectors of earlier batches, last frame's first batch at the back.
+    std::vector<std::vector<TrackedVertex>> mVertexPool;
+    size_t mPoolBytes = 0;
     uint64_t mLastFrame = 0;
     bool mFrameDone = false;
 };

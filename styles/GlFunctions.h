@@ -37,6 +37,8 @@ namespace nprgl::styles {
     X(Uniform4f) X(Uniform4fv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)            \
     X(Uniform2i) \
     X(CopyTexSubImage2D) \
+    X(ClearBufferuiv) \
+    X(Uniform4i) \
     X(VertexAttrib4f) X(VertexAttribPointer) X(Viewport)
 
 struct GlFunctions {

@@ -11,12 +11,16 @@ struct CornerVertex {
     float normal[3];
     float color[4];
     float texcoord[2];
+    float faceNormal[3];
 };
 
 void fill(const reconstruct::ObjectMesh& mesh, std::vector<CornerVertex>& out)
 {
     out.resize(size_t(mesh.faceCount()) * 3);
     for (uint32_t f = 0; f < mesh.faceCount(); ++f) {
+        const glm::vec3 p0 = mesh.corner(f, 0).position;
+        const glm::vec3 face =
+            glm::cross(mesh.corner(f, 1).position - p0, mesh.corner(f, 2).position - p0);
         for (int k = 0; k < 3; ++k) {
             const reconstruct::Vertex& c = mesh.corner(f, k);
             const glm::vec3 n =
@@ -25,7 +29,8 @@ void fill(const reconstruct::ObjectMesh& mesh, std::vector<CornerVertex>& out)
             v = {{c.position.x, c.position.y, c.position.z},
                  {n.x, n.y, n.z},
                  {c.color.r, c.color.g, c.color.b, c.color.a},
-                 {c.texcoord.x, c.texcoord.y}};
+                 {c.texcoord.x, c.texcoord.y},
+                 {face.x, face.y, face.z}};
         }
     }
 }
@@ -55,7 +60,9 @@ GLsizei MeshBuffers::bind(const GlFunctions& gl, const reconstruct::ObjectMesh& 
     gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(CornerVertex, normal)));
     gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, at(offsetof(CornerVertex, color)));
     gl.VertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(CornerVertex, texcoord)));
-    for (GLuint i = 0; i < 4; ++i) gl.EnableVertexAttribArray(i);
+    gl.VertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, stride,
+                           at(offsetof(CornerVertex, faceNormal)));
+    for (GLuint i = 0; i < 5; ++i) gl.EnableVertexAttribArray(i);
     return e.vertices;
 }
 

@@ -11,11 +11,12 @@ namespace nprgl::styles {
 
 // GPU copies of the scene's meshes, one vertex per face corner (3 per face, in face order):
 // attribute 0 position (the program's, object space), 1 normal (the program's at that
-// corner, else the welded vertex normal), 2 colour, 3 texcoord. Kept while a mesh with that
+// corner, else the welded vertex normal), 2 colour, 3 texcoord, 4 the face's geometric
+// normal (cross(p1 - p0, p2 - p0), unnormalised, object space). Kept while a mesh with that
 // content and geometry version is drawn; dropped when unused for a few flushes.
 class MeshBuffers {
 public:
-    // Binds the mesh's corner buffer and points attributes 0-3 at it (the caller's VAO is
+    // Binds the mesh's corner buffer and points attributes 0-4 at it (the caller's VAO is
     // bound). Returns the number of vertices to draw as GL_TRIANGLES.
     GLsizei bind(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
     // Draws the mesh's triangles with the current program.

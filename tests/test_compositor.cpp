@@ -206,3 +206,57 @@ TEST(Compositor, GlxgearsInToonKeepsItsRedGreenAndBlueGears)
     ASSERT_TRUE(fs::exists(dir + "/glxgears_20.png")) << r.err;
     expectGlxgearsPicture(dir + "/glxgears_20.png");
 }
+
+struct DemoCase {
+    std::string app;
+    std::vector<std::string> args;
+};
+
+void PrintTo(const DemoCase& c, std::ostream* os) { *os << c.app; }
+
+class DefaultStyle : public ::testing::TestWithParam<DemoCase> {};
+
+// With no configuration at all: every demo app (lit or not, with or without normals,
+// textured, overlays, the character) runs under the default chain, prints what it prints
+// natively, and its picture is the chain's, not the program's.
+TEST_P(DefaultStyle, EveryDemoAppRunsAndIsStylised)
+{
+    const DemoCase& c = GetParam();
+    if (c.app == "character" && !fs::exists("/usr/share/assimp/models/X/Testwuson.X")) {
+        GTEST_SKIP() << "assimp-testmodels is not installed";
+    }
+    const std::string native = freshDir("default_native_" + c.app);
+    const std::string styled = freshDir("default_styled_" + c.app);
+    std::vector<std::string> args = {demo(c.app), "--offscreen", "--frames", "3", "--size",
+                                     "160x120", "--save-frames", "3"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    std::vector<std::string> n = args, s = {nprglCommand(), "--"};
+    n.insert(n.end(), {"--save-dir", native});
+    s.insert(s.end(), args.begin(), args.end());
+    s.insert(s.end(), {"--save-dir", styled});
+    ProcessResult a = runProcess(n), b = runProcess(s, {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""}});
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_EQ(b.out, a.out);
+    EXPECT_EQ(b.err.find("nprgl: error"), std::string::npos) << b.err;
+    EXPECT_EQ(b.err.find("nprgl: warning"), std::string::npos) << b.err;
+    const std::string file = "/" + c.app + "_3.png";
+    ImageDiff diff = compareImages(native + file, styled + file, 24);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_GT(diff.differingPixels, 160u * 120u / 20) << "the default style changed too little";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Demos, DefaultStyle,
+    ::testing::Values(DemoCase{"immediate", {}}, DemoCase{"arrays", {}},
+                      DemoCase{"arrays", {"--vbo"}}, DemoCase{"displaylist", {}},
+                      DemoCase{"textured", {}}, DemoCase{"overlay", {}},
+                      DemoCase{"state", {}},
+                      DemoCase{"character",
+                               {"--model", "/usr/share/assimp/models/X/Testwuson.X"}},
+                      DemoCase{"character",
+                               {"--model", "/usr/share/assimp/models/MD2/sydney.md2"}}),
+    [](const auto& info) {
+        std::string name = info.param.app + std::to_string(info.index);
+        return name;
+    });

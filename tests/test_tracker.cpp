@@ -4,6 +4,8 @@
 #include "capture/CaptureReader.h"
 #include "shim/CaptureBlobs.h"
 #include "shim/StateTracker.h"
+#include "stream/CallWriter.h"
+#include "stream/Opcodes.h"
 #include "tests/support/Process.h"
 
 #include <gtest/gtest.h>
@@ -113,6 +115,86 @@ TEST(StateTracker, TheOverlayIsNotThreeDimensional)
     for (const TrackedBatch& b : batches) (b.is3D ? deep : flat)++;
     EXPECT_GT(deep, 0u);
     EXPECT_GT(flat, 0u); // the HUD panel and bar
+}
+
+TEST(StateTracker, VerticesCarryTheirBatchNormalFlagAndContentHash)
+{
+    // The compositor lends the vertices to the reconstruction as they are: each vertex's
+    // hasNormal must be its batch's, and the hash taken at the draw that of the vertices.
+    const std::pair<const char*, uint64_t> cases[] = {
+        {"glxgears", 2}, {"immediate", 2}, {"displaylist", 3}, {"arrays", 2},
+        {"arrays_vbo", 2}, {"overlay", 1}, {"character_skin", 2}, {"textured", 2}};
+    for (const auto& [name, frame] : cases) {
+        std::vector<TrackedBatch> batches = frameBatches(name, frame);
+        ASSERT_FALSE(batches.empty()) << name;
+        for (const TrackedBatch& b : batches) {
+            for (const TrackedVertex& v : b.vertices) ASSERT_EQ(v.hasNormal, b.hasNormals) << name;
+            EXPECT_EQ(b.contentHash,
+                      reconstruct::hashVertices(b.vertices.data(), b.vertices.size(), b.mode))
+                << name;
+        }
+    }
+}
+
+TEST(StateTracker, StaticGeometryHashesTheSameEveryFrame)
+{
+    // The demo turns its shapes with the modelview only: the reconstruction cache must hit.
+    std::vector<TrackedBatch> second = frameBatches("immediate", 2);
+    std::vector<TrackedBatch> third = frameBatches("immediate", 3);
+    ASSERT_EQ(second.size(), third.size());
+    for (size_t i = 0; i < second.size(); ++i) {
+        EXPECT_EQ(second[i].contentHash, third[i].contentHash) << i;
+    }
+}
+
+TEST(StateTracker, TheFirstNormalInsideABatchCountsForItsEarlierVertices)
+{
+    CallWriter w;
+    w.op(op::glBegin);
+    w.put<GLenum>(GL_TRIANGLES);
+    const float positions[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (int i = 0; i < 3; ++i) {
+        if (i == 1) {
+            w.op(op::glNormal3f);
+            for (float c : {0.0f, 0.0f, 1.0f}) w.put<float>(c);
+        }
+        w.op(op::glVertex3f);
+        for (float c : positions[i]) w.put<float>(c);
+    }
+    w.op(op::glEnd);
+    w.op(op::kFrameEnd);
+    w.put<uint64_t>(1);
+    StateTracker tracker;
+    std::string error;
+    ASSERT_TRUE(tracker.runFrame(w.data(), w.size(), nullptr, error)) << error;
+    ASSERT_EQ(tracker.frameBatches().size(), 1u);
+    const TrackedBatch& b = tracker.frameBatches()[0];
+    EXPECT_TRUE(b.hasNormals);
+    for (const TrackedVertex& v : b.vertices) EXPECT_TRUE(v.hasNormal);
+}
+
+TEST(StateTracker, FramesReuseTheirVertexStorage)
+{
+    // A frame's vertex vectors come back to the tracker and serve the next frame's batches
+    // of the same sizes: no allocation (and no page faults) per frame.
+    capture::CaptureReader reader;
+    std::string error;
+    ASSERT_TRUE(reader.open(std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/immediate.nprgl",
+                            error))
+        << error;
+    ASSERT_GE(reader.frames().size(), 3u);
+    CaptureBlobs blobs(reader);
+    StateTracker tracker;
+    std::vector<uint8_t> calls;
+    std::set<const TrackedVertex*> previous;
+    for (size_t i = 0; i < reader.frames().size(); ++i) {
+        ASSERT_TRUE(reader.readFrame(i, calls, error)) << error;
+        ASSERT_TRUE(tracker.runFrame(calls.data(), calls.size(), &blobs, error)) << error;
+        std::set<const TrackedVertex*> storage;
+        for (const TrackedBatch& b : tracker.frameBatches()) storage.insert(b.vertices.data());
+        if (i > 0) EXPECT_EQ(storage, previous) << "frame " << i;
+        previous = std::move(storage);
+    }
 }
 
 // From a capture to meshes: the tracker's batches through the reconstruction.

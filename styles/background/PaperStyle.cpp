@@ -85,7 +85,7 @@ StyleInfo paperStyleInfo()
     info.role = StyleRole::Background;
     info.create = &create;
     info.params = {
-        ParamInfo::text("color", "paper colour, hex rrggbb", kDefaultColour),
+        ParamInfo::colour("color", "paper colour, hex rrggbb", kDefaultColour),
         ParamInfo::flag("background",
                         "replace the program's untouched background (far depth, clear "
                         "colour) with paper (on/off)",

@@ -24,29 +24,27 @@ bool EdgeTargets::ensure(const GlFunctions& gl, int width, int height)
     destroy(gl);
     mWidth = width;
     mHeight = height;
-    gl.GenTextures(5, mTex);
+    gl.GenTextures(3, mTex);
     gl.GenFramebuffers(3, mFbo);
-    makeTexture(gl, mTex[0], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
-    makeTexture(gl, mTex[1], GL_RGBA16F, GL_RGBA, GL_FLOAT, width, height);
-    makeTexture(gl, mTex[2], GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width,
-                height);
-    makeTexture(gl, mTex[3], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
-    makeTexture(gl, mTex[4], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
+    gl.GenRenderbuffers(1, &mDepth);
+    makeTexture(gl, mTex[0], GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, width, height);
+    makeTexture(gl, mTex[1], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
+    makeTexture(gl, mTex[2], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
     gl.BindTexture(GL_TEXTURE_2D, 0);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, mDepth);
+    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, 0);
 
     mComplete = true;
-    const GLenum two[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    gl.BindFramebuffer(GL_FRAMEBUFFER, mFbo[0]);
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, mTex[0], 0);
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, mTex[1], 0);
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, mTex[2], 0);
-    gl.DrawBuffers(2, two);
-    mComplete = mComplete && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-    for (int i = 1; i < 3; ++i) {
+    const GLenum one[] = {GL_COLOR_ATTACHMENT0};
+    for (int i = 0; i < 3; ++i) {
         gl.BindFramebuffer(GL_FRAMEBUFFER, mFbo[i]);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                mTex[i + 2], 0);
-        gl.DrawBuffers(1, two);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, mTex[i], 0);
+        if (i == 0) {
+            gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                       mDepth);
+        }
+        gl.DrawBuffers(1, one);
         mComplete =
             mComplete && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     }
@@ -56,9 +54,11 @@ bool EdgeTargets::ensure(const GlFunctions& gl, int width, int height)
 void EdgeTargets::destroy(const GlFunctions& gl)
 {
     if (mFbo[0]) gl.DeleteFramebuffers(3, mFbo);
-    if (mTex[0]) gl.DeleteTextures(5, mTex);
+    if (mTex[0]) gl.DeleteTextures(3, mTex);
+    if (mDepth) gl.DeleteRenderbuffers(1, &mDepth);
     for (GLuint& f : mFbo) f = 0;
     for (GLuint& t : mTex) t = 0;
+    mDepth = 0;
     mWidth = mHeight = 0;
     mComplete = false;
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace nprgl::styles {
 
@@ -35,10 +36,14 @@ void main()
 }
 )";
 
-// Target 0: view depth, object id, the colour packed exactly into one float, coverage.
-// Target 1: the unit eye normal facing the viewer. An orthographic view may put the eye
-// anywhere, so there the depth is measured from one depth range in front of the near plane
-// (relative jumps are then relative to the range).
+// One RGBA32UI target, so the edge operator fetches each pixel once:
+//   x: log2 of the view depth in 8.24 fixed point (relative depth jumps become differences),
+//      0 for the background;
+//   y: window depth (24 bits; the background is cleared to 1) | id bits 0-7 << 24;
+//   z: colour, 8 bits a channel | id bits 8-15 << 24;
+//   w: the unit eye normal facing the viewer, 10 bits a component.
+// An orthographic view may put the eye anywhere, so there the depth is measured from one
+// depth range in front of the near plane (relative jumps are then relative to the range).
 const char* kGeometryFragment = R"(#version 130
 uniform float objectId;
 uniform bool orthographic;
@@ -46,15 +51,20 @@ uniform float depthRange;
 in vec3 eyeNormal;
 in float viewDepth;
 in vec4 baseColor;
+out uvec4 fragColor;
 void main()
 {
     vec3 n = normalize(eyeNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 c = floor(clamp(baseColor.rgb, 0.0, 1.0) * 255.0 + 0.5);
     float z = orthographic ? (1.0 + gl_FragCoord.z) * depthRange : max(viewDepth, 1e-6);
-    gl_FragData[0] = vec4(z, objectId, c.r * 65536.0 + c.g * 256.0 + c.b,
-                          1.0);
-    gl_FragData[1] = vec4(n, 0.0);
+    uint logDepth = uint(clamp((log2(z) + 64.0) * 16777216.0, 1.0, 2147483520.0));
+    uint window = uint(clamp(gl_FragCoord.z, 0.0, 1.0) * 16777215.0 + 0.5);
+    uvec3 c = uvec3(clamp(baseColor.rgb, 0.0, 1.0) * 255.0 + 0.5);
+    uvec3 q = uvec3(clamp(n * 0.5 + 0.5, 0.0, 1.0) * 1023.0 + 0.5);
+    uint id = uint(objectId) & 0xffffu;
+    fragColor = uvec4(logDepth, window | (id << 24),
+                      (c.r << 16) | (c.g << 8) | c.b | ((id >> 8) << 24),
+                      q.x | (q.y << 10) | (q.z << 20));
 }
 )";
 
@@ -68,57 +78,102 @@ void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }
 // band is centred on the true edge). Silhouettes: a jump of view depth relative to the
 // nearer depth (5% matters as much far away as near), or object against background.
 // Creases: normals further apart than the crease angle. Material edges: another object id or
-// colour at continuous depth. Alpha keeps the window depth of the near side.
-const char* kDetectFragment = R"(#version 130
-uniform sampler2D attributes;
-uniform sampler2D normals;
-uniform sampler2D depth;
-uniform ivec2 size;
-uniform float depthThreshold;
+// colour at continuous depth. Neighbours are clamped into the scissored rectangle (outside
+// it the target holds stale pixels); a pixel compared with itself finds nothing, and the
+// rectangle's rim is background, so that equals skipping them.
+const char* kOperator = R"(#version 130
+uniform usampler2D attributes;
+uniform ivec4 rect;          // lowest and highest pixel of the scissored rectangle
+uniform float depthStep;     // log2(1 + threshold) in the depth's fixed point
 uniform float creaseCosine;
-uniform float colourThreshold;
+uniform float colourThreshold; // in 1/255 steps
 out vec4 fragColor;
 
-vec3 unpackColour(float code)
+float windowDepth(uint y) { return float(y & 0xffffffu) * (1.0 / 16777215.0); }
+vec3 unpackColour(uint z) { return vec3(uvec3(z >> 16, z >> 8, z) & 255u); }
+// Quantised from a unit vector, so within 0.2% of unit length: no normalize needed.
+vec3 unpackNormal(uint w)
 {
-    float r = floor(code / 65536.0);
-    float g = floor((code - r * 65536.0) / 256.0);
-    return vec3(r, g, code - r * 65536.0 - g * 256.0) / 255.0;
+    return vec3(uvec3(w, w >> 10, w >> 20) & 1023u) * (2.0 / 1023.0) - 1.0;
 }
 
+void compare(uvec4 c, vec3 n, vec3 colour, uvec4 s, inout vec3 found, inout float nearest)
+{
+    if (c.x == 0u && s.x == 0u) return;
+    if (c.x == 0u || s.x == 0u || float(max(s.x, c.x) - min(s.x, c.x)) > depthStep) {
+        found.r = 1.0;
+        nearest = min(nearest, windowDepth(s.y));
+    } else if ((((s.y ^ c.y) | (s.z ^ c.z)) >> 24) != 0u ||
+               any(greaterThan(abs(unpackColour(s.z) - colour), vec3(colourThreshold)))) {
+        found.b = 1.0;
+    } else if (dot(n, unpackNormal(s.w)) < creaseCosine) {
+        found.g = 1.0;
+    }
+}
+
+// Line classes starting at p (r silhouette, g crease, b material); a the window depth of the
+// nearest side; own: p's window depth (1 for the background).
+vec4 detect(ivec2 p, out float own)
+{
+    uvec4 c = texelFetch(attributes, p, 0);
+    uvec4 e = texelFetch(attributes, ivec2(min(p.x + 1, rect.z), p.y), 0);
+    uvec4 w = texelFetch(attributes, ivec2(max(p.x - 1, rect.x), p.y), 0);
+    uvec4 n = texelFetch(attributes, ivec2(p.x, min(p.y + 1, rect.w)), 0);
+    uvec4 s = texelFetch(attributes, ivec2(p.x, max(p.y - 1, rect.y)), 0);
+    vec3 normal = unpackNormal(c.w);
+    vec3 colour = unpackColour(c.z);
+    vec3 found = vec3(0.0);
+    own = windowDepth(c.y);
+    float nearest = own;
+    compare(c, normal, colour, e, found, nearest);
+    compare(c, normal, colour, w, found, nearest);
+    compare(c, normal, colour, n, found, nearest);
+    compare(c, normal, colour, s, found, nearest);
+    return vec4(found, nearest);
+}
+)";
+
+const char* kDetectMain = R"(
 void main()
 {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    vec4 c = texelFetch(attributes, p, 0);
-    vec3 n = texelFetch(normals, p, 0).xyz;
-    vec3 colour = unpackColour(c.z);
-    float nearest = texelFetch(depth, p, 0).r;
-    vec3 found = vec3(0.0);
-    ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
-    for (int k = 0; k < 4; ++k) {
-        ivec2 q = p + offsets[k];
-        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-        vec4 s = texelFetch(attributes, q, 0);
-        if (c.w == 0.0 && s.w == 0.0) continue;
-        if (c.w == 0.0 || s.w == 0.0 || abs(s.x - c.x) > depthThreshold * min(s.x, c.x)) {
-            found.r = 1.0;
-            nearest = min(nearest, texelFetch(depth, q, 0).r);
-        } else if (s.y != c.y || any(greaterThan(abs(unpackColour(s.z) - colour),
-                                                 vec3(colourThreshold)))) {
-            found.b = 1.0;
-        } else if (dot(n, texelFetch(normals, q, 0).xyz) < creaseCosine) {
-            found.g = 1.0;
-        }
-    }
-    fragColor = vec4(found, found.r + found.g + found.b > 0.0 ? nearest : 1.0);
+    float own;
+    vec4 e = detect(ivec2(gl_FragCoord.xy), own);
+    fragColor = vec4(e.rgb, e.r + e.g + e.b > 0.0 ? e.a : 1.0);
+}
+)";
+
+// Lines of up to two pixels: a pixel d >= 1 from the marked band gets clamp(w/2 - d) = 0
+// (see kCompositeFragment), so the coverage is min(w/2, 1) on the band and none elsewhere,
+// and the operator feeds the composite directly.
+const char* kDirectMain = R"(
+uniform ivec2 origin;
+uniform vec3 cover;
+uniform vec3 colours[3];
+uniform float depthBias;
+void main()
+{
+    float own;
+    vec4 e = detect(ivec2(gl_FragCoord.xy) - origin, own);
+    if (e.r + e.g + e.b == 0.0) discard;
+    vec3 c = e.rgb * cover;
+    vec3 colour = colours[2] * c.b;
+    float alpha = c.b;
+    colour = colours[1] * c.g + colour * (1.0 - c.g);
+    alpha = c.g + alpha * (1.0 - c.g);
+    colour = colours[0] * c.r + colour * (1.0 - c.r);
+    alpha = c.r + alpha * (1.0 - c.r);
+    if (alpha <= 0.0) discard;
+    gl_FragDepth = max((own < 1.0 ? own : e.a) - depthBias, 0.0);
+    fragColor = vec4(colour / alpha, alpha);
 }
 )";
 
 // Width by dilation as an exact Euclidean distance search in two passes: first the nearest
-// edge pixel of each class along the row (squared), then along the column.
+// edge pixel of each class along the row (squared), then along the column. A neighbour
+// clamped into the rectangle was also visited at its true distance, so the minimum holds.
 const char* kDilateFragment = R"(#version 130
 uniform sampler2D edges;
-uniform ivec2 size;
+uniform ivec4 rect;
 uniform int radius;
 out vec4 fragColor;
 void main()
@@ -127,9 +182,7 @@ void main()
     vec3 best = vec3(1e6);
     float nearest = 1.0;
     for (int dx = -radius; dx <= radius; ++dx) {
-        int x = p.x + dx;
-        if (x < 0 || x >= size.x) continue;
-        vec4 e = texelFetch(edges, ivec2(x, p.y), 0);
+        vec4 e = texelFetch(edges, ivec2(clamp(p.x + dx, rect.x, rect.z), p.y), 0);
         best = min(best, mix(vec3(1e6), vec3(float(dx * dx)), e.rgb));
         if (e.r + e.g + e.b > 0.0) nearest = min(nearest, e.a);
     }
@@ -145,8 +198,8 @@ void main()
 // so it covers the background but not what the program drew in front.
 const char* kCompositeFragment = R"(#version 130
 uniform sampler2D dilated;
-uniform sampler2D depth;
-uniform ivec2 size;
+uniform usampler2D attributes;
+uniform ivec4 rect;
 uniform ivec2 origin;
 uniform int radius;
 uniform vec3 widths;
@@ -159,9 +212,7 @@ void main()
     vec3 best = vec3(1e6);
     float nearest = 1.0;
     for (int dy = -radius; dy <= radius; ++dy) {
-        int y = p.y + dy;
-        if (y < 0 || y >= size.y) continue;
-        vec4 v = texelFetch(dilated, ivec2(p.x, y), 0);
+        vec4 v = texelFetch(dilated, ivec2(p.x, clamp(p.y + dy, rect.y, rect.w)), 0);
         best = min(best, v.rgb + vec3(float(dy * dy)));
         nearest = min(nearest, v.a);
     }
@@ -173,7 +224,7 @@ void main()
     colour = colours[0] * cover.r + colour * (1.0 - cover.r);
     alpha = cover.r + alpha * (1.0 - cover.r);
     if (alpha <= 0.0) discard;
-    float own = texelFetch(depth, p, 0).r;
+    float own = float(texelFetch(attributes, p, 0).y & 0xffffffu) * (1.0 / 16777215.0);
     gl_FragDepth = max((own < 1.0 ? own : nearest) - depthBias, 0.0);
     fragColor = vec4(colour / alpha, alpha);
 }
@@ -221,8 +272,11 @@ StyleInfo edgesStyleInfo()
 bool EdgesStyle::init(StyleContext& ctx, std::string& error)
 {
     const GlFunctions& gl = ctx.gl;
+    const std::string detect = std::string(kOperator) + kDetectMain;
+    const std::string direct = std::string(kOperator) + kDirectMain;
     if (!mGeometry.build(gl, kGeometryVertex, kGeometryFragment, error) ||
-        !mDetect.build(gl, kFullscreenVertex, kDetectFragment, error) ||
+        !mDetect.build(gl, kFullscreenVertex, detect.c_str(), error) ||
+        !mDirect.build(gl, kFullscreenVertex, direct.c_str(), error) ||
         !mDilate.build(gl, kFullscreenVertex, kDilateFragment, error) ||
         !mComposite.build(gl, kFullscreenVertex, kCompositeFragment, error)) {
         return false;
@@ -230,14 +284,17 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mGeo = {mGeometry.uniform(gl, "modelview"),    mGeometry.uniform(gl, "projection"),
             mGeometry.uniform(gl, "normalMatrix"), mGeometry.uniform(gl, "objectId"),
             mGeometry.uniform(gl, "orthographic"), mGeometry.uniform(gl, "depthRange")};
-    mDet = {mDetect.uniform(gl, "attributes"),     mDetect.uniform(gl, "normals"),
-            mDetect.uniform(gl, "depth"),          mDetect.uniform(gl, "size"),
-            mDetect.uniform(gl, "depthThreshold"), mDetect.uniform(gl, "creaseCosine"),
-            mDetect.uniform(gl, "colourThreshold")};
-    mDil = {mDilate.uniform(gl, "edges"), mDilate.uniform(gl, "size"),
+    for (auto [program, op] : {std::pair{&mDetect, &mDet}, std::pair{&mDirect, &mDir}}) {
+        *op = {program->uniform(gl, "attributes"), program->uniform(gl, "rect"),
+               program->uniform(gl, "depthStep"), program->uniform(gl, "creaseCosine"),
+               program->uniform(gl, "colourThreshold")};
+    }
+    mDirU = {mDirect.uniform(gl, "origin"), mDirect.uniform(gl, "cover"),
+             mDirect.uniform(gl, "colours"), mDirect.uniform(gl, "depthBias")};
+    mDil = {mDilate.uniform(gl, "edges"), mDilate.uniform(gl, "rect"),
             mDilate.uniform(gl, "radius")};
-    mCom = {mComposite.uniform(gl, "dilated"), mComposite.uniform(gl, "depth"),
-            mComposite.uniform(gl, "size"),    mComposite.uniform(gl, "origin"),
+    mCom = {mComposite.uniform(gl, "dilated"), mComposite.uniform(gl, "attributes"),
+            mComposite.uniform(gl, "rect"),    mComposite.uniform(gl, "origin"),
             mComposite.uniform(gl, "radius"),  mComposite.uniform(gl, "widths"),
             mComposite.uniform(gl, "colours"), mComposite.uniform(gl, "depthBias")};
 
@@ -253,6 +310,8 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     // Far enough for the widest class (see the composite's coverage).
     const float widest = std::max({mWidths.x, mWidths.y, mWidths.z});
     mRadius = int(std::ceil(0.5f * widest));
+    // The band's outer side lies one pixel off the scene, the line up to the radius beyond.
+    mMargin = mRadius + 2;
 
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     gl.GenBuffers(1, &mTriangle);
@@ -271,11 +330,83 @@ void EdgesStyle::drawFullscreen(const GlFunctions& gl)
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+const EdgesStyle::Bounds& EdgesStyle::bounds(const reconstruct::ObjectMesh& mesh)
+{
+    Bounds& b = mBounds[&mesh];
+    b.lastUsed = mFlush;
+    if (b.cached && b.contentKey == mesh.contentKey &&
+        b.geometryVersion == mesh.geometryVersion) {
+        return b;
+    }
+    b.cached = true;
+    b.contentKey = mesh.contentKey;
+    b.geometryVersion = mesh.geometryVersion;
+    b.empty = true;
+    b.lo = glm::vec3(INFINITY);
+    b.hi = glm::vec3(-INFINITY);
+    // The corners drawn (MeshBuffers draws faces' source vertices).
+    for (uint32_t corner : mesh.faceCorners) {
+        const glm::vec3& p = mesh.sourceVertices[corner].position;
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+        b.lo = glm::min(b.lo, p);
+        b.hi = glm::max(b.hi, p);
+        b.empty = false;
+    }
+    return b;
+}
+
+bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect)
+{
+    ++mFlush;
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    bool whole = false;
+    for (const SceneObject& o : scene.objects) {
+        if (!o.mesh) continue;
+        const Bounds& b = bounds(*o.mesh);
+        if (b.empty) continue;
+        const glm::mat4 m = o.projection * o.modelview;
+        for (int k = 0; k < 8 && !whole; ++k) {
+            const glm::vec3 p((k & 1) ? b.hi.x : b.lo.x, (k & 2) ? b.hi.y : b.lo.y,
+                              (k & 4) ? b.hi.z : b.lo.z);
+            const glm::vec4 clip = m * glm::vec4(p, 1.0f);
+            // A corner at or behind the eye projects nowhere useful: take the viewport.
+            if (!(clip.w > 1e-6f)) {
+                whole = true;
+                break;
+            }
+            const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+            lo = glm::min(lo, ndc);
+            hi = glm::max(hi, ndc);
+        }
+        if (whole) break;
+    }
+    // Forget meshes no longer drawn.
+    if (mBounds.size() > 2 * scene.objects.size() + 64) {
+        std::erase_if(mBounds, [&](const auto& e) { return e.second.lastUsed != mFlush; });
+    }
+    if (whole) {
+        rect = {0, 0, width, height};
+        return true;
+    }
+    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return false;
+    const glm::vec2 size{float(width), float(height)};
+    // Clamp in NDC first: far-off corners would overflow an int.
+    lo = (glm::clamp(lo, -2.0f, 2.0f) * 0.5f + 0.5f) * size;
+    hi = (glm::clamp(hi, -2.0f, 2.0f) * 0.5f + 0.5f) * size;
+    rect = {std::max(int(std::floor(lo.x)) - mMargin, 0),
+            std::max(int(std::floor(lo.y)) - mMargin, 0),
+            std::min(int(std::ceil(hi.x)) + mMargin, width),
+            std::min(int(std::ceil(hi.y)) + mMargin, height)};
+    return rect.x < rect.z && rect.y < rect.w;
+}
+
 void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
     const int width = scene.viewport.z, height = scene.viewport.w;
     if (scene.objects.empty() || width <= 0 || height <= 0) return;
+    glm::ivec4 rect; // [x0, y0, x1, y1) in the targets' pixels
+    if (!coveredRect(scene, width, height, rect)) return;
     GLint drawFbo = 0, readFbo = 0;
     gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);
     gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFbo);
@@ -287,15 +418,20 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         bindBack();
         return;
     }
+    // Every pass only touches the covered rectangle; the operators read nothing outside it.
+    const glm::ivec4 inclusive(rect.x, rect.y, rect.z - 1, rect.w - 1);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(rect.x, rect.y, rect.z - rect.x, rect.w - rect.y);
 
     // 1. The scene's attributes off screen. The polygon offset is stronger than the one a
     // shading style draws with, so the stored depth never loses against the program's.
     gl.BindFramebuffer(GL_FRAMEBUFFER, mTargets.geometryFbo());
     gl.Viewport(0, 0, width, height);
-    gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     gl.ClearDepth(1.0);
     gl.DepthMask(GL_TRUE);
-    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const GLuint background[4] = {0, 0xffffffu, 0, 0}; // no depth, window depth 1, id 0
+    gl.ClearBufferuiv(GL_COLOR, 0, background);
+    gl.Clear(GL_DEPTH_BUFFER_BIT);
     gl.DepthFunc(GL_LESS);
     gl.PolygonOffset(-2.0f, -4.0f);
     gl.UseProgram(mGeometry.id());
@@ -316,61 +452,77 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Disable(GL_DEPTH_TEST);
     gl.DepthMask(GL_FALSE);
 
-    // 2. Edge operator.
-    gl.BindFramebuffer(GL_FRAMEBUFFER, mTargets.edgeFbo());
-    gl.UseProgram(mDetect.id());
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.BindTexture(GL_TEXTURE_2D, mTargets.attributes());
-    gl.ActiveTexture(GL_TEXTURE1);
-    gl.BindTexture(GL_TEXTURE_2D, mTargets.normals());
-    gl.ActiveTexture(GL_TEXTURE2);
-    gl.BindTexture(GL_TEXTURE_2D, mTargets.depth());
-    gl.Uniform1i(mDet.attributes, 0);
-    gl.Uniform1i(mDet.normals, 1);
-    gl.Uniform1i(mDet.depth, 2);
-    gl.Uniform2i(mDet.size, width, height);
-    gl.Uniform1f(mDet.depthThreshold, mDepthThreshold);
-    gl.Uniform1f(mDet.creaseCosine, mCreaseCosine);
-    gl.Uniform1f(mDet.colourThreshold, mColourThreshold);
-    drawFullscreen(gl);
+    auto setOperator = [&](const Operator& op) {
+        gl.Uniform1i(op.attributes, 0);
+        gl.Uniform4i(op.rect, inclusive.x, inclusive.y, inclusive.z, inclusive.w);
+        gl.Uniform1f(op.depthStep, std::log2(1.0f + mDepthThreshold) * 16777216.0f);
+        gl.Uniform1f(op.creaseCosine, mCreaseCosine);
+        gl.Uniform1f(op.colourThreshold, mColourThreshold * 255.0f);
+    };
+    GLint depthBits = 0;
+    const bool direct = mRadius <= 1;
+    if (!direct) {
+        // 2. Edge operator.
+        gl.BindFramebuffer(GL_FRAMEBUFFER, mTargets.edgeFbo());
+        gl.UseProgram(mDetect.id());
+        gl.ActiveTexture(GL_TEXTURE0);
+        gl.BindTexture(GL_TEXTURE_2D, mTargets.attributes());
+        setOperator(mDet);
+        drawFullscreen(gl);
 
-    // 3. Rows of the distance search.
-    gl.BindFramebuffer(GL_FRAMEBUFFER, mTargets.dilateFbo());
-    gl.UseProgram(mDilate.id());
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.BindTexture(GL_TEXTURE_2D, mTargets.edges());
-    gl.Uniform1i(mDil.edges, 0);
-    gl.Uniform2i(mDil.size, width, height);
-    gl.Uniform1i(mDil.radius, mRadius);
-    drawFullscreen(gl);
+        // 3. Rows of the distance search.
+        gl.BindFramebuffer(GL_FRAMEBUFFER, mTargets.dilateFbo());
+        gl.UseProgram(mDilate.id());
+        gl.BindTexture(GL_TEXTURE_2D, mTargets.edges());
+        gl.Uniform1i(mDil.edges, 0);
+        gl.Uniform4i(mDil.rect, inclusive.x, inclusive.y, inclusive.z, inclusive.w);
+        gl.Uniform1i(mDil.radius, mRadius);
+        drawFullscreen(gl);
+    }
 
-    // 4. Columns, coverage and the composite into the program's framebuffer.
+    // 4. Columns (or the operator itself), coverage and the composite into the program's
+    // framebuffer.
     bindBack();
     gl.Viewport(scene.viewport.x, scene.viewport.y, width, height);
-    GLint depthBits = 0;
+    gl.Scissor(scene.viewport.x + rect.x, scene.viewport.y + rect.y, rect.z - rect.x,
+               rect.w - rect.y);
     gl.GetIntegerv(GL_DEPTH_BITS, &depthBits);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LEQUAL);
     gl.Enable(GL_BLEND);
     gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    gl.UseProgram(mComposite.id());
-    gl.ActiveTexture(GL_TEXTURE0);
-    gl.BindTexture(GL_TEXTURE_2D, mTargets.dilated());
-    gl.ActiveTexture(GL_TEXTURE1);
-    gl.BindTexture(GL_TEXTURE_2D, mTargets.depth());
-    gl.Uniform1i(mCom.dilated, 0);
-    gl.Uniform1i(mCom.depth, 1);
-    gl.Uniform2i(mCom.size, width, height);
-    gl.Uniform2i(mCom.origin, scene.viewport.x, scene.viewport.y);
-    gl.Uniform1i(mCom.radius, mRadius);
-    gl.Uniform3fv(mCom.widths, 1, glm::value_ptr(mWidths));
-    gl.Uniform3fv(mCom.colours, 3, glm::value_ptr(mColours[0]));
     // Two steps of the program's depth format: its rounding must not hide the ink.
     const int bits = std::clamp(int(depthBits), 8, 24);
-    gl.Uniform1f(mCom.depthBias, 2.0f / float(1 << bits));
+    const float depthBias = 2.0f / float(1 << bits);
+    if (direct) {
+        gl.UseProgram(mDirect.id());
+        gl.ActiveTexture(GL_TEXTURE0);
+        gl.BindTexture(GL_TEXTURE_2D, mTargets.attributes());
+        setOperator(mDir);
+        gl.Uniform2i(mDirU.origin, scene.viewport.x, scene.viewport.y);
+        const glm::vec3 cover = glm::min(0.5f * mWidths, glm::vec3(1.0f));
+        gl.Uniform3fv(mDirU.cover, 1, glm::value_ptr(cover));
+        gl.Uniform3fv(mDirU.colours, 3, glm::value_ptr(mColours[0]));
+        gl.Uniform1f(mDirU.depthBias, depthBias);
+    } else {
+        gl.UseProgram(mComposite.id());
+        gl.ActiveTexture(GL_TEXTURE0);
+        gl.BindTexture(GL_TEXTURE_2D, mTargets.dilated());
+        gl.ActiveTexture(GL_TEXTURE1);
+        gl.BindTexture(GL_TEXTURE_2D, mTargets.attributes());
+        gl.Uniform1i(mCom.dilated, 0);
+        gl.Uniform1i(mCom.attributes, 1);
+        gl.Uniform4i(mCom.rect, inclusive.x, inclusive.y, inclusive.z, inclusive.w);
+        gl.Uniform2i(mCom.origin, scene.viewport.x, scene.viewport.y);
+        gl.Uniform1i(mCom.radius, mRadius);
+        gl.Uniform3fv(mCom.widths, 1, glm::value_ptr(mWidths));
+        gl.Uniform3fv(mCom.colours, 3, glm::value_ptr(mColours[0]));
+        gl.Uniform1f(mCom.depthBias, depthBias);
+    }
     drawFullscreen(gl);
 
-    for (GLenum unit : {GL_TEXTURE2, GL_TEXTURE1, GL_TEXTURE0}) {
+    gl.Disable(GL_SCISSOR_TEST);
+    for (GLenum unit : {GL_TEXTURE1, GL_TEXTURE0}) {
         gl.ActiveTexture(unit);
         gl.BindTexture(GL_TEXTURE_2D, 0);
     }
@@ -382,7 +534,10 @@ void EdgesStyle::shutdown(StyleContext& ctx)
     mTargets.destroy(gl);
     if (mTriangle) gl.DeleteBuffers(1, &mTriangle);
     mTriangle = 0;
-    for (ShaderProgram* p : {&mGeometry, &mDetect, &mDilate, &mComposite}) p->destroy(gl);
+    for (ShaderProgram* p : {&mGeometry, &mDetect, &mDirect, &mDilate, &mComposite}) {
+        p->destroy(gl);
+    }
+    mBounds.clear();
 }
 
 } // namespace nprgl::styles

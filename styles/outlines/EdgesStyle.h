@@ -6,6 +6,9 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+#include <unordered_map>
+
 namespace nprgl::styles {
 
 // Image-space outlines (thesis §4.1.2 and §3.1.4): the whole scene is rendered off screen
@@ -14,6 +17,11 @@ namespace nprgl::styles {
 // (material edges); a distance search widens each class to its width; the three layers are
 // stacked like cels and composited over the framebuffer, depth-tested against the program's
 // depth so that anything in front of an outline still hides it.
+//
+// Cost on a software rasteriser is per pixel, so every pass is scissored to the window
+// rectangle the scene's bounding boxes cover, the attributes are packed into one target,
+// and lines of up to two pixels (the default) take a single pass from attributes to the
+// composite: their coverage depends only on the pixel's own edge classes.
 class EdgesStyle : public Style {
 public:
     bool init(StyleContext& ctx, std::string& error) override;
@@ -21,9 +29,22 @@ public:
     void shutdown(StyleContext& ctx) override;
 
 private:
-    void drawFullscreen(const GlFunctions& gl);
+    struct Bounds {
+        uint64_t contentKey = 0;
+        uint32_t geometryVersion = 0;
+        uint64_t lastUsed = 0;
+        bool cached = false;
+        bool empty = true;
+        glm::vec3 lo{0.0f}, hi{0.0f};
+    };
 
-    ShaderProgram mGeometry, mDetect, mDilate, mComposite;
+    void drawFullscreen(const GlFunctions& gl);
+    // The pixels [lo, hi) of the width x height target the scene (grown by the lines) can
+    // touch; false when none.
+    bool coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect);
+    const Bounds& bounds(const reconstruct::ObjectMesh& mesh);
+
+    ShaderProgram mGeometry, mDetect, mDilate, mComposite, mDirect;
     EdgeTargets mTargets;
     GLuint mTriangle = 0; // one triangle covering the viewport
     glm::vec3 mWidths{2.0f};
@@ -32,21 +53,29 @@ private:
     float mCreaseCosine = 0.6f;
     float mColourThreshold = 0.15f;
     int mRadius = 2;
+    int mMargin = 4; // pixels around the scene's bounds that lines may reach
+    std::unordered_map<const reconstruct::ObjectMesh*, Bounds> mBounds;
+    uint64_t mFlush = 0;
     struct {
         GLint modelview = -1, projection = -1, normalMatrix = -1, objectId = -1,
               orthographic = -1, depthRange = -1;
     } mGeo;
+    // The edge operator's uniforms, in both programs that run it.
+    struct Operator {
+        GLint attributes = -1, rect = -1, depthStep = -1, creaseCosine = -1,
+              colourThreshold = -1;
+    };
+    Operator mDet, mDir;
     struct {
-        GLint attributes = -1, normals = -1, depth = -1, size = -1, depthThreshold = -1,
-              creaseCosine = -1, colourThreshold = -1;
-    } mDet;
-    struct {
-        GLint edges = -1, size = -1, radius = -1;
+        GLint edges = -1, rect = -1, radius = -1;
     } mDil;
     struct {
-        GLint dilated = -1, depth = -1, size = -1, origin = -1, radius = -1, widths = -1,
+        GLint dilated = -1, attributes = -1, rect = -1, origin = -1, radius = -1, widths = -1,
               colours = -1, depthBias = -1;
     } mCom;
+    struct {
+        GLint origin = -1, cover = -1, colours = -1, depthBias = -1;
+    } mDirU;
 };
 
 } // namespace nprgl::styles

@@ -5,8 +5,6 @@
 #include "styles/shading/ShadingCommon.h"
 #include "styles/textures/HalftoneScreens.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -15,22 +13,12 @@ namespace nprgl::styles {
 
 namespace {
 
+// The parameters arrive as #defines and constants (see fragmentSource()).
 const char* kFragment = R"(
 uniform vec3 lightDir;
-uniform float ambient;    // a
-uniform float diffuse;    // d
-uniform float gamma;      // alpha of eq. 3.13
-uniform float smoothness; // S of eq. 3.14
 uniform sampler2D screen; // H: the combined screens A'B'C'
 uniform sampler2D detail; // T: the program's texture
-uniform bool useDetail;
-uniform float detailStrength;
-uniform bool objectSpace;
 uniform vec2 anchor;      // window pixel of the object's origin
-uniform float scale;      // s_H
-uniform bool inkFromObject;
-uniform vec3 ink;
-uniform vec3 paper;
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
@@ -39,20 +27,29 @@ out vec4 fragColor;
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    float I = ambient + pow(clamp((dot(n, lightDir) + 1.0) * 0.5, 0.0, 1.0), gamma) * diffuse;
-    float T = 1.0;
-    if (useDetail) {
-        vec4 t = texture(detail, uv);
-        T = mix(1.0, dot(t.rgb, vec3(0.299, 0.587, 0.114)), t.a * detailStrength);
-    }
+    float x = clamp((dot(n, lightDir) + 1.0) * 0.5, 0.0, 1.0);
+#if GAMMA_ONE
+    float I = ambient + x * diffuse;
+#else
+    float I = ambient + pow(x, gamma) * diffuse;
+#endif
+#if DETAIL
+    vec4 t = texture(detail, uv);
+    float T = mix(1.0, dot(t.rgb, vec3(0.299, 0.587, 0.114)), t.a * detailStrength);
+    float IT = I * T;
+#else
+    float IT = I;
+#endif
     // Screen coordinates: texcoords x s_H (x 8 tiles per unit) in object space, else window
-    // pixels x s_H / tile size anchored at the object's origin.
-    vec2 p = objectSpace ? uv * 8.0 * scale
-                         : (gl_FragCoord.xy - anchor) * scale / vec2(textureSize(screen, 0));
-    float H = texture(screen, p).r;
-    float C = clamp(1.0 - smoothness * (1.0 - I * T - H), 0.0, 1.0);
-    vec3 inkColor = inkFromObject ? baseColor.rgb * 0.6 : ink;
-    fragColor = vec4(mix(inkColor, paper, C), baseColor.a);
+    // pixels x s_H / tile size anchored at the object's origin, where the level of detail
+    // is the same everywhere.
+#if OBJECT_SPACE
+    float H = texture(screen, uv * 8.0 * scale).r;
+#else
+    float H = textureLod(screen, (gl_FragCoord.xy - anchor) * screenStep, screenLod).r;
+#endif
+    float C = clamp(1.0 - smoothness * (1.0 - IT - H), 0.0, 1.0);
+    fragColor = vec4(mix(INK_COLOR, paper, C), baseColor.a);
 }
 )";
 
@@ -119,25 +116,46 @@ StyleInfo halftoneStyleInfo()
                           {"screen", "object"}, 0),
         ParamInfo::choice("ink", "ink colour: black, or a darkened object colour",
                           {"black", "object"}, 0),
-        ParamInfo::text("paper_color", "paper colour, hex rrggbb", "faf7ee"),
+        ParamInfo::colour("paper_color", "paper colour, hex rrggbb", "faf7ee"),
     };
     return info;
 }
 
+bool HalftoneStyle::screenMipmaps() const
+{
+    // In screen space at s_H <= 1 a texel covers a pixel or more: never minified.
+    return mObjectSpace || mScale > 1.0f;
+}
+
+std::string HalftoneStyle::fragmentSource(bool textured) const
+{
+    auto f = [](float v) { return ShadingCommon::glslFloat(v); };
+    auto flag = [](const char* name, bool on) {
+        return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
+    };
+    std::string s = "#version 130\n";
+    s += flag("DETAIL", mDetail && textured);
+    s += flag("OBJECT_SPACE", mObjectSpace && textured);
+    s += flag("GAMMA_ONE", mGamma == 1.0f);
+    s += "const float ambient = " + f(mAmbient) + ";\n";
+    s += "const float diffuse = " + f(mDiffuse) + ";\n";
+    s += "const float gamma = " + f(mGamma) + ";\n";
+    s += "const float smoothness = " + f(mSmoothness) + ";\n";
+    s += "const float scale = " + f(mScale) + ";\n";
+    s += "const float detailStrength = " + f(mDetailStrength) + ";\n";
+    s += "const vec2 screenStep = " +
+         ShadingCommon::glslVec2(mScale / glm::vec2(mScreenImage.width, mScreenImage.height)) +
+         ";\n";
+    // The screen-space derivative of the coordinates is s_H texels per pixel.
+    s += "const float screenLod = " + f(std::max(std::log2(mScale), 0.0f)) + ";\n";
+    s += "const vec3 paper = " + ShadingCommon::glslVec3(mPaper) + ";\n";
+    s += std::string("#define INK_COLOR ") +
+         (mInkFromObject ? "(baseColor.rgb * 0.6)" : ShadingCommon::glslVec3(mInk)) + "\n";
+    return s + ShadingCommon::normalFunction() + kFragment;
+}
+
 bool HalftoneStyle::init(StyleContext& ctx, std::string& error)
 {
-    const std::string fragment =
-        std::string("#version 130\n") + ShadingCommon::normalFunction() + kFragment;
-    if (!mProgram.build(ctx.gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
-        return false;
-    }
-    const GlFunctions& gl = ctx.gl;
-    auto at = [&](const char* name) { return mProgram.uniform(gl, name); };
-    mU = {at("modelview"), at("projection"), at("normalMatrix"), at("lightDir"), at("ambient"),
-          at("diffuse"),   at("gamma"),      at("smoothness"),   at("screen"),   at("detail"),
-          at("useDetail"), at("objectSpace"), at("anchor"),      at("scale"),
-          at("inkFromObject"), at("ink"),    at("paper"),        at("detailStrength")};
-
     mAmbient = float(ctx.param("halftone", "ambient"));
     mDiffuse = float(ctx.param("halftone", "diffuse"));
     mGamma = float(ctx.param("halftone", "gamma"));
@@ -157,15 +175,35 @@ bool HalftoneStyle::init(StyleContext& ctx, std::string& error)
     static const char* kPatterns[] = {"dots", "lines", "noise", "bricks"};
     const int index = std::clamp(int(std::lround(ctx.param("halftone", "pattern"))), 0, 3);
     const std::string png = ctx.text("halftone", "screen_png");
+    bool loaded = false;
     if (!png.empty()) {
         std::string why;
-        if (loadScreens(png, mScreenImage, why)) return true;
-        NPRGL_ERROR("halftone: cannot use screen_png=%s (%s); using the procedural '%s' screens",
-                    png.c_str(), why.c_str(), kPatterns[index]);
+        loaded = loadScreens(png, mScreenImage, why);
+        if (!loaded) {
+            NPRGL_ERROR("halftone: cannot use screen_png=%s (%s); using the procedural '%s' "
+                        "screens",
+                        png.c_str(), why.c_str(), kPatterns[index]);
+        }
     }
-    HalftoneScreens::Pattern pattern = HalftoneScreens::Pattern::Dots;
-    HalftoneScreens::parsePattern(kPatterns[index], pattern);
-    mScreenImage = HalftoneScreens::combine(HalftoneScreens::make(pattern));
+    if (!loaded) {
+        HalftoneScreens::Pattern pattern = HalftoneScreens::Pattern::Dots;
+        HalftoneScreens::parsePattern(kPatterns[index], pattern);
+        mScreenImage = HalftoneScreens::combine(HalftoneScreens::make(pattern));
+    }
+
+    // The programs know the screen's size, so they come after it.
+    const GlFunctions& gl = ctx.gl;
+    for (int v = 0; v < 2; ++v) {
+        const std::string fragment = fragmentSource(v == 1);
+        Variant& variant = mVariants[v];
+        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
+                                   error)) {
+            return false;
+        }
+        variant.u.find(gl, variant.program.id());
+        variant.anchor = variant.program.uniform(gl, "anchor");
+        variant.screen = variant.program.uniform(gl, "screen");
+    }
     return true;
 }
 
@@ -175,34 +213,25 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
     gl.ActiveTexture(GL_TEXTURE1);
     if (!mScreen.valid()) {
         // First use: the compositor has saved the program's state around render().
-        mScreen.upload(gl, mScreenImage);
+        mScreen.upload(gl, mScreenImage, screenMipmaps());
     }
     gl.BindTexture(GL_TEXTURE_2D, mScreen.id());
     gl.ActiveTexture(GL_TEXTURE0);
-    gl.UseProgram(mProgram.id());
-    gl.Uniform1f(mU.ambient, mAmbient);
-    gl.Uniform1f(mU.diffuse, mDiffuse);
-    gl.Uniform1f(mU.gamma, mGamma);
-    gl.Uniform1f(mU.smoothness, mSmoothness);
-    gl.Uniform1f(mU.scale, mScale);
-    gl.Uniform1i(mU.screen, 1);
-    gl.Uniform1i(mU.detail, 0);
-    gl.Uniform1i(mU.inkFromObject, mInkFromObject ? 1 : 0);
-    gl.Uniform1f(mU.detailStrength, mDetailStrength);
-    gl.Uniform3f(mU.ink, mInk.r, mInk.g, mInk.b);
-    gl.Uniform3f(mU.paper, mPaper.r, mPaper.g, mPaper.b);
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
+    GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
-        gl.UniformMatrix4fv(mU.modelview, 1, GL_FALSE, glm::value_ptr(object.modelview));
-        gl.UniformMatrix4fv(mU.projection, 1, GL_FALSE, glm::value_ptr(object.projection));
-        const glm::mat3 normalMatrix = ShadingCommon::normalMatrix(object.modelview);
-        gl.UniformMatrix3fv(mU.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-        gl.Uniform3fv(mU.lightDir, 1, glm::value_ptr(object.lightDir));
-        const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
-        gl.Uniform2f(mU.anchor, anchor.x, anchor.y);
         const bool textured = object.texture != 0;
-        gl.Uniform1i(mU.objectSpace, mObjectSpace && textured ? 1 : 0);
-        gl.Uniform1i(mU.useDetail, mDetail && textured ? 1 : 0);
+        Variant& variant = mVariants[textured ? 1 : 0];
+        if (variant.program.id() != current) {
+            current = variant.program.id();
+            gl.UseProgram(current);
+            // The detail map is unit 0, the default of sampler uniforms.
+            if (!variant.configured) gl.Uniform1i(variant.screen, 1);
+            variant.configured = true;
+        }
+        variant.u.set(gl, object, frontIsCcw);
+        const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
+        gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
         ShadingCommon::drawTwoSided(ctx, *object.mesh, frontIsCcw);
     }
@@ -211,7 +240,7 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
 void HalftoneStyle::shutdown(StyleContext& ctx)
 {
     mScreen.destroy(ctx.gl);
-    mProgram.destroy(ctx.gl);
+    for (Variant& variant : mVariants) variant.program.destroy(ctx.gl);
 }
 
 } // namespace nprgl::styles

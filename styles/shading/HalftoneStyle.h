@@ -2,10 +2,13 @@
 
 #include "styles/ShaderProgram.h"
 #include "styles/Style.h"
+#include "styles/shading/ShadingCommon.h"
 #include "styles/textures/GlTexture.h"
 #include "styles/textures/TextureImage.h"
 
 #include <glm/glm.hpp>
+
+#include <string>
 
 namespace nprgl::styles {
 
@@ -20,14 +23,17 @@ public:
     void shutdown(StyleContext& ctx) override;
 
 private:
-    struct Uniforms {
-        GLint modelview = -1, projection = -1, normalMatrix = -1, lightDir = -1, ambient = -1,
-              diffuse = -1, gamma = -1, smoothness = -1, screen = -1, detail = -1,
-              useDetail = -1, objectSpace = -1, anchor = -1, scale = -1, inkFromObject = -1,
-              ink = -1, paper = -1, detailStrength = -1;
+    // One program per kind of object: [0] untextured, [1] textured (detail map, object space).
+    struct Variant {
+        ShaderProgram program;
+        ShadingCommon::ObjectUniforms u;
+        GLint anchor = -1, screen = -1;
+        bool configured = false; // its sampler units are set
     };
-    ShaderProgram mProgram;
-    Uniforms mU;
+    std::string fragmentSource(bool textured) const;
+    bool screenMipmaps() const;
+
+    Variant mVariants[2];
     TextureImage mScreenImage; // combined H, uploaded on first render
     GlTexture mScreen;
     float mAmbient = 0.0f, mDiffuse = 1.0f, mGamma = 1.0f, mSmoothness = 6.0f, mScale = 1.0f;

@@ -1,32 +1,40 @@
 #include "styles/shading/ShadingCommon.h"
 
-#include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
 
+#include <cstdio>
+#include <cstring>
 
 namespace nprgl::styles {
 
 const char* ShadingCommon::vertexShader()
 {
     return R"(#version 130
+#extension GL_ARB_explicit_attrib_location : require
 uniform mat4 modelview;
 uniform mat4 projection;
 uniform mat3 normalMatrix;
+uniform float faceSign;
 in vec3 position;
 in vec3 normal;
 in vec4 color;
 in vec2 texcoord;
+layout(location = 4) in vec3 faceNormal;
 out vec3 eyeNormal;
 out vec4 baseColor;
 out vec2 uv;
-out vec3 eyePos;
+out float facing;
 void main()
 {
     eyeNormal = normalMatrix * normal;
+    // The normal against the face's geometric normal in eye space (cross products of
+    // positions transform by det(M) times the normal matrix; faceSign holds that sign and
+    // the program's front-face winding). Linear in the normal, so the interpolated value has
+    // the sign of the interpolated normal's dot product.
+    facing = faceSign * dot(eyeNormal, normalMatrix * faceNormal);
     baseColor = color;
     uv = texcoord;
-    vec4 eye = modelview * vec4(position, 1.0);
-    eyePos = eye.xyz / eye.w;
-    gl_Position = projection * eye;
+    gl_Position = projection * (modelview * vec4(position, 1.0));
 }
 )";
 }
@@ -34,17 +42,41 @@ void main()
 const char* ShadingCommon::normalFunction()
 {
     return R"(
-in vec3 eyePos;
+in float facing;
 vec3 shadingNormal(vec3 eyeNormal)
 {
     vec3 n = normalize(eyeNormal);
-    // The visible side of the triangle, from its screen-space derivatives: this does not
-    // depend on the program's winding, which legacy programs often get backwards while
-    // their normals are right. A normal pointing to the other side is flipped (two-sided).
-    vec3 face = cross(dFdx(eyePos), dFdy(eyePos));
-    return dot(n, face) < 0.0 ? -n : n;
+    // The visible side of the triangle from its window-space winding (gl_FrontFacing) and
+    // its geometric normal: this does not depend on the program's winding, which legacy
+    // programs often get backwards while their normals are right. A normal pointing to the
+    // other side is flipped (two-sided). Same as testing n against
+    // cross(dFdx(eyePos), dFdy(eyePos)), without the per-pixel derivatives.
+    return (facing < 0.0) == gl_FrontFacing ? -n : n;
 }
 )";
+}
+
+void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
+{
+    modelview = gl.GetUniformLocation(program, "modelview");
+    projection = gl.GetUniformLocation(program, "projection");
+    normalMatrix = gl.GetUniformLocation(program, "normalMatrix");
+    faceSign = gl.GetUniformLocation(program, "faceSign");
+    lightDir = gl.GetUniformLocation(program, "lightDir");
+}
+
+void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject& object,
+                                        bool frontIsCcw) const
+{
+    gl.UniformMatrix4fv(modelview, 1, GL_FALSE, glm::value_ptr(object.modelview));
+    gl.UniformMatrix4fv(projection, 1, GL_FALSE, glm::value_ptr(object.projection));
+    const glm::mat3 linear(object.modelview);
+    const glm::mat3 normals = ShadingCommon::normalMatrix(object.modelview);
+    gl.UniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normals));
+    // A mirroring modelview turns the faces' winding around, and so does a clockwise front.
+    const bool mirrored = glm::determinant(linear) < 0.0f;
+    gl.Uniform1f(faceSign, mirrored == frontIsCcw ? -1.0f : 1.0f);
+    gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
 }
 
 bool ShadingCommon::beginTwoSided(const GlFunctions& gl)
@@ -96,6 +128,26 @@ bool ShadingCommon::parseColor(const std::string& text, glm::vec3& out)
     out = glm::vec3(float(value >> 16 & 0xff), float(value >> 8 & 0xff), float(value & 0xff)) /
           255.0f;
     return true;
+}
+
+std::string ShadingCommon::glslFloat(float value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(value));
+    // A bare integer would be an int literal.
+    if (!std::strpbrk(text, ".e")) std::strcat(text, ".0");
+    return text;
+}
+
+std::string ShadingCommon::glslVec3(const glm::vec3& value)
+{
+    return "vec3(" + glslFloat(value.x) + ", " + glslFloat(value.y) + ", " + glslFloat(value.z) +
+           ")";
+}
+
+std::string ShadingCommon::glslVec2(const glm::vec2& value)
+{
+    return "vec2(" + glslFloat(value.x) + ", " + glslFloat(value.y) + ")";
 }
 
 } // namespace nprgl::styles

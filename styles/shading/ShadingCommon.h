@@ -10,14 +10,26 @@
 namespace nprgl::styles {
 
 // What the chapter-3 shading styles share: one vertex shader and a few helpers.
+//
+// Their parameters are fixed for a chain's life, so each style bakes them into its fragment
+// shader as constants and #if variants (llvmpipe runs both sides of uniform branches and
+// pays for texture fetches it does not use); what changes per object is a variant (textured
+// or not) and the uniforms below.
 class ShadingCommon {
 public:
-    // Eye-space normal, the program's colour and texcoord, and the eye position. Uniforms:
-    // mat4 modelview, mat4 projection, mat3 normalMatrix (see normalMatrix()).
+    // Eye-space normal, the program's colour and texcoord, and `facing` for shadingNormal().
+    // Uniforms: see ObjectUniforms.
     static const char* vertexShader();
     // GLSL helper for fragment shaders: `vec3 shadingNormal(vec3 eyeNormal)` normalises and
     // flips it when it points away from the visible side (two-sided lighting).
     static const char* normalFunction();
+    // The per-object uniforms of vertexShader(), plus the fragment shaders' lightDir.
+    struct ObjectUniforms {
+        GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
+
+        void find(const GlFunctions& gl, GLuint program);
+        void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;
+    };
     // Returns whether the program's front faces are counter-clockwise (once per render()).
     static bool beginTwoSided(const GlFunctions& gl);
     // Draws the mesh, both sides, in one pass with depth writes (the shading baseline).
@@ -29,6 +41,10 @@ public:
     static glm::vec2 screenAnchor(const SceneObject& object, const glm::ivec4& viewport);
     // "rrggbb" or "#rrggbb" (hex) into a colour; false when empty or malformed.
     static bool parseColor(const std::string& text, glm::vec3& out);
+    // GLSL literals that read back as exactly these floats.
+    static std::string glslFloat(float value);
+    static std::string glslVec3(const glm::vec3& value);
+    static std::string glslVec2(const glm::vec2& value);
 };
 
 } // namespace nprgl::styles

@@ -6,8 +6,6 @@
 #include "styles/textures/HatchTexture.h"
 #include "styles/textures/StippleTexture.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -17,48 +15,9 @@ namespace nprgl::styles {
 
 namespace {
 
+// The parameters arrive as #defines and constants, the layers as lightLayer() and
+// shadowLayer() (see fragmentSource()).
 const char* kFragment = R"(
-uniform vec3 lightDir;
-uniform float diffuseThreshold;
-uniform float highlightThreshold;
-uniform int tones;
-uniform float shadowScale;
-uniform float highlightMix;
-uniform bool tint;
-uniform float bandLow;  // ta_l
-uniform float bandHigh; // ta_u
-uniform bool asymmetric;
-uniform float falloff;  // share of the band over which each layer fades (non-symmetric)
-uniform int lightMode;  // 0 blank, 1 grey pattern, 2 program texture, 3 colour pattern
-uniform int shadowMode;
-uniform sampler2D lightTex;
-uniform sampler2D shadowTex;
-uniform sampler2D programTex;
-uniform bool objectSpace;
-uniform vec2 anchor;    // window pixel of the object's origin
-uniform float scale;
-in vec3 eyeNormal;
-in vec4 baseColor;
-in vec2 uv;
-out vec4 fragColor;
-
-vec3 layer(int mode, sampler2D tex)
-{
-    if (mode == 0) return vec3(1.0);
-    vec4 t;
-    if (mode == 2) {
-        t = texture(programTex, uv);
-    } else {
-        // Object space: the program's texcoords, 8 tiles per unit; screen space: one texel
-        // per pixel at scale 1, anchored at the object's origin.
-        vec2 p = objectSpace ? uv * 8.0 * scale
-                             : (gl_FragCoord.xy - anchor) * scale / vec2(textureSize(tex, 0));
-        t = texture(tex, p);
-        if (mode == 1) t = vec4(t.rrr, 1.0);
-    }
-    return mix(vec3(1.0), t.rgb, t.a); // transparent texels show the shading colour
-}
-
 float ramp(float x, float lo, float hi)
 {
     return clamp((x - lo) / max(hi - lo, 1e-4), 0.0, 1.0);
@@ -70,27 +29,30 @@ void main()
     float d = dot(n, lightDir);
     float pixel = max(fwidth(d), 1e-5);
     // The shading colours (the 1D shading texture's colour channels), antialiased bands.
-    vec3 base = tint ? baseColor.rgb : vec3(1.0);
+#if TINT
+    vec3 base = baseColor.rgb;
+#else
+    vec3 base = vec3(1.0);
+#endif
     float lit = clamp((d - diffuseThreshold) / pixel + 0.5, 0.0, 1.0);
     vec3 shade = mix(base * shadowScale, base, lit);
-    if (tones == 3) {
-        vec3 ch = mix(base, vec3(1.0), highlightMix);
-        shade = mix(shade, ch, clamp((d - highlightThreshold) / pixel + 0.5, 0.0, 1.0));
-    }
-    vec3 L = layer(lightMode, lightTex);
-    vec3 S = layer(shadowMode, shadowTex);
-    vec3 c;
-    if (!asymmetric) {
-        // The thesis's two passes: shadow layer, then the light layer blended over it by the
-        // shading texture's alpha ramp.
-        c = shade * mix(S, L, ramp(d, bandLow, bandHigh));
-    } else {
-        // Both layers overlap inside the band; each falls off steeply at its own end.
-        float w = (bandHigh - bandLow) * falloff;
-        float wl = ramp(d, bandLow, bandLow + w);
-        float ws = 1.0 - ramp(d, bandHigh - w, bandHigh);
-        c = shade * mix(vec3(1.0), L, wl) * mix(vec3(1.0), S, ws);
-    }
+#if TONES == 3
+    vec3 ch = mix(base, vec3(1.0), highlightMix);
+    shade = mix(shade, ch, clamp((d - highlightThreshold) / pixel + 0.5, 0.0, 1.0));
+#endif
+    vec3 L = lightLayer();
+    vec3 S = shadowLayer();
+#if !ASYMMETRIC
+    // The thesis's two passes: shadow layer, then the light layer blended over it by the
+    // shading texture's alpha ramp.
+    vec3 c = shade * mix(S, L, ramp(d, bandLow, bandHigh));
+#else
+    // Both layers overlap inside the band; each falls off steeply at its own end.
+    float w = (bandHigh - bandLow) * falloff;
+    float wl = ramp(d, bandLow, bandLow + w);
+    float ws = 1.0 - ramp(d, bandHigh - w, bandHigh);
+    vec3 c = shade * mix(vec3(1.0), L, wl) * mix(vec3(1.0), S, ws);
+#endif
     fragColor = vec4(c, baseColor.a);
 }
 )";
@@ -203,22 +165,85 @@ void TexturedStyle::prepareLayer(StyleContext& ctx, Layer& layer, const char* ch
     layer.image = procedural(layer.source);
 }
 
+bool TexturedStyle::layerMipmaps() const
+{
+    // In screen space at a scale <= 1 a texel covers a pixel or more: never minified.
+    return mObjectSpace || mScale > 1.0f;
+}
+
+// Modes: 0 blank, 1 grey pattern, 2 program texture, 3 colour pattern.
+std::string TexturedStyle::layerFunction(const char* name, const Layer& layer, int mode,
+                                         const char* sampler, bool objectSpace) const
+{
+    auto f = [](float v) { return ShadingCommon::glslFloat(v); };
+    std::string body;
+    if (mode == 0) {
+        body = "    return vec3(1.0);\n";
+    } else if (mode == 2) {
+        body = "    vec4 t = texture(programTex, uv);\n"
+               "    return mix(vec3(1.0), t.rgb, t.a);\n";
+    } else {
+        // Object space: the program's texcoords, 8 tiles per unit; screen space: one texel
+        // per pixel at scale 1, anchored at the object's origin, one level of detail.
+        std::string fetch;
+        if (objectSpace) {
+            fetch = std::string("texture(") + sampler + ", uv * 8.0 * " + f(mScale) + ")";
+        } else {
+            const glm::vec2 step = mScale / glm::vec2(layer.image.width, layer.image.height);
+            fetch = std::string("textureLod(") + sampler + ", (gl_FragCoord.xy - anchor) * " +
+                    ShadingCommon::glslVec2(step) + ", " +
+                    f(std::max(std::log2(mScale), 0.0f)) + ")";
+        }
+        body = mode == 1 ? "    return vec3(" + fetch + ".r);\n"
+                         : "    vec4 t = " + fetch + ";\n" +
+                               "    return mix(vec3(1.0), t.rgb, t.a); // transparent: shading\n";
+    }
+    return std::string("vec3 ") + name + "()\n{\n" + body + "}\n";
+}
+
+std::string TexturedStyle::fragmentSource(bool textured) const
+{
+    auto f = [](float v) { return ShadingCommon::glslFloat(v); };
+    auto flag = [](const char* name, bool on) {
+        return std::string("#define ") + name + (on ? " 1\n" : " 0\n");
+    };
+    int lightMode = modeOf(mLight.source, mLight.image, textured);
+    int shadowMode = modeOf(mShadow.source, mShadow.image, textured);
+    if (mHighlightVariant) {
+        // The detail below the highlight band, nothing inside the highlight.
+        if (textured) shadowMode = 2;
+        lightMode = 0;
+    }
+    // Untextured objects have no meaningful texcoords: their patterns lie in screen space.
+    const bool objectSpace = mObjectSpace && textured;
+    std::string s = "#version 130\n";
+    s += "#define TONES " + std::to_string(mTones) + "\n";
+    s += flag("TINT", mTint);
+    s += flag("ASYMMETRIC", mAsymmetric);
+    s += "const float diffuseThreshold = " + f(mDiffuseThreshold) + ";\n";
+    s += "const float highlightThreshold = " + f(mHighlightThreshold) + ";\n";
+    s += "const float shadowScale = " + f(mShadowScale) + ";\n";
+    s += "const float highlightMix = " + f(mHighlightMix) + ";\n";
+    s += "const float bandLow = " + f(mBandLow) + ";\n";   // ta_l
+    s += "const float bandHigh = " + f(mBandHigh) + ";\n"; // ta_u
+    s += "const float falloff = " + f(mFalloff) + ";\n";
+    s += ShadingCommon::normalFunction();
+    s += "uniform vec3 lightDir;\n"
+         "uniform sampler2D lightTex;\n"
+         "uniform sampler2D shadowTex;\n"
+         "uniform sampler2D programTex;\n"
+         "uniform vec2 anchor; // window pixel of the object's origin\n"
+         "in vec3 eyeNormal;\n"
+         "in vec4 baseColor;\n"
+         "in vec2 uv;\n"
+         "out vec4 fragColor;\n";
+    s += layerFunction("lightLayer", mLight, lightMode, "lightTex", objectSpace);
+    s += layerFunction("shadowLayer", mShadow, shadowMode, "shadowTex", objectSpace);
+    return s + kFragment;
+}
+
 bool TexturedStyle::init(StyleContext& ctx, std::string& error)
 {
-    const std::string fragment =
-        std::string("#version 130\n") + ShadingCommon::normalFunction() + kFragment;
-    if (!mProgram.build(ctx.gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
-        return false;
-    }
-    const GlFunctions& gl = ctx.gl;
-    auto at = [&](const char* name) { return mProgram.uniform(gl, name); };
-    mU = {at("modelview"),   at("projection"),   at("normalMatrix"), at("lightDir"),
-          at("diffuseThreshold"), at("highlightThreshold"), at("tones"), at("shadowScale"),
-          at("highlightMix"), at("tint"),         at("bandLow"),      at("bandHigh"),
-          at("asymmetric"),  at("falloff"),      at("lightMode"),    at("shadowMode"),
-          at("lightTex"),    at("shadowTex"),    at("programTex"),   at("objectSpace"),
-          at("anchor"),      at("scale")};
-
     mTones = int(std::lround(ctx.param("textured", "tones"))) <= 2 ? 2 : 3;
     mDiffuseThreshold = float(ctx.param("textured", "diffuse_threshold"));
     mHighlightThreshold = float(ctx.param("textured", "highlight_threshold"));
@@ -254,6 +279,21 @@ bool TexturedStyle::init(StyleContext& ctx, std::string& error)
     mScale = float(ctx.param("textured", "texture_scale"));
     prepareLayer(ctx, mLight, "light_texture", "light_png");
     prepareLayer(ctx, mShadow, "shadow_texture", "shadow_png");
+
+    // The programs know the layers' sizes, so they come after them.
+    const GlFunctions& gl = ctx.gl;
+    for (int v = 0; v < 2; ++v) {
+        const std::string fragment = fragmentSource(v == 1);
+        Variant& variant = mVariants[v];
+        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
+                                   error)) {
+            return false;
+        }
+        variant.u.find(gl, variant.program.id());
+        variant.anchor = variant.program.uniform(gl, "anchor");
+        variant.lightTex = variant.program.uniform(gl, "lightTex");
+        variant.shadowTex = variant.program.uniform(gl, "shadowTex");
+    }
     return true;
 }
 
@@ -265,51 +305,33 @@ void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
         for (Layer* layer : {&mLight, &mShadow}) {
             if (layer->image.empty()) continue;
             gl.ActiveTexture(layer == &mLight ? GL_TEXTURE1 : GL_TEXTURE2);
-            layer->texture.upload(gl, layer->image);
+            layer->texture.upload(gl, layer->image, layerMipmaps());
         }
         mUploaded = true;
     }
-    gl.UseProgram(mProgram.id());
-    gl.Uniform1f(mU.diffuseThreshold, mDiffuseThreshold);
-    gl.Uniform1f(mU.highlightThreshold, mHighlightThreshold);
-    gl.Uniform1i(mU.tones, mTones);
-    gl.Uniform1f(mU.shadowScale, mShadowScale);
-    gl.Uniform1f(mU.highlightMix, mHighlightMix);
-    gl.Uniform1i(mU.tint, mTint ? 1 : 0);
-    gl.Uniform1f(mU.bandLow, mBandLow);
-    gl.Uniform1f(mU.bandHigh, mBandHigh);
-    gl.Uniform1i(mU.asymmetric, mAsymmetric ? 1 : 0);
-    gl.Uniform1f(mU.falloff, mFalloff);
-    gl.Uniform1i(mU.programTex, 0);
-    gl.Uniform1i(mU.lightTex, 1);
-    gl.Uniform1i(mU.shadowTex, 2);
-    gl.Uniform1f(mU.scale, mScale);
     gl.ActiveTexture(GL_TEXTURE1);
     gl.BindTexture(GL_TEXTURE_2D, mLight.texture.id());
     gl.ActiveTexture(GL_TEXTURE2);
     gl.BindTexture(GL_TEXTURE_2D, mShadow.texture.id());
     gl.ActiveTexture(GL_TEXTURE0);
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
+    GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
-        gl.UniformMatrix4fv(mU.modelview, 1, GL_FALSE, glm::value_ptr(object.modelview));
-        gl.UniformMatrix4fv(mU.projection, 1, GL_FALSE, glm::value_ptr(object.projection));
-        const glm::mat3 normalMatrix = ShadingCommon::normalMatrix(object.modelview);
-        gl.UniformMatrix3fv(mU.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-        gl.Uniform3fv(mU.lightDir, 1, glm::value_ptr(object.lightDir));
-        const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
-        gl.Uniform2f(mU.anchor, anchor.x, anchor.y);
         const bool textured = object.texture != 0;
-        // Untextured objects have no meaningful texcoords: their patterns lie in screen space.
-        gl.Uniform1i(mU.objectSpace, mObjectSpace && textured ? 1 : 0);
-        int lightMode = modeOf(mLight.source, mLight.image, textured);
-        int shadowMode = modeOf(mShadow.source, mShadow.image, textured);
-        if (mHighlightVariant) {
-            // The detail below the highlight band, nothing inside the highlight.
-            if (textured) shadowMode = 2;
-            lightMode = 0;
+        Variant& variant = mVariants[textured ? 1 : 0];
+        if (variant.program.id() != current) {
+            current = variant.program.id();
+            gl.UseProgram(current);
+            // The program's texture is unit 0, the default of sampler uniforms.
+            if (!variant.configured) {
+                gl.Uniform1i(variant.lightTex, 1);
+                gl.Uniform1i(variant.shadowTex, 2);
+            }
+            variant.configured = true;
         }
-        gl.Uniform1i(mU.lightMode, lightMode);
-        gl.Uniform1i(mU.shadowMode, shadowMode);
+        variant.u.set(gl, object, frontIsCcw);
+        const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
+        gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
         ShadingCommon::drawTwoSided(ctx, *object.mesh, frontIsCcw);
     }
@@ -319,7 +341,7 @@ void TexturedStyle::shutdown(StyleContext& ctx)
 {
     mLight.texture.destroy(ctx.gl);
     mShadow.texture.destroy(ctx.gl);
-    mProgram.destroy(ctx.gl);
+    for (Variant& variant : mVariants) variant.program.destroy(ctx.gl);
 }
 
 } // namespace nprgl::styles

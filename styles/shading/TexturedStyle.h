@@ -2,10 +2,13 @@
 
 #include "styles/ShaderProgram.h"
 #include "styles/Style.h"
+#include "styles/shading/ShadingCommon.h"
 #include "styles/textures/GlTexture.h"
 #include "styles/textures/TextureImage.h"
 
 #include <glm/glm.hpp>
+
+#include <string>
 
 namespace nprgl::styles {
 
@@ -30,17 +33,20 @@ private:
         TextureImage image; // procedural or PNG, uploaded on first render
         GlTexture texture;
     };
-    struct Uniforms {
-        GLint modelview = -1, projection = -1, normalMatrix = -1, lightDir = -1,
-              diffuseThreshold = -1, highlightThreshold = -1, tones = -1, shadowScale = -1,
-              highlightMix = -1, tint = -1, bandLow = -1, bandHigh = -1, asymmetric = -1,
-              falloff = -1, lightMode = -1, shadowMode = -1, lightTex = -1, shadowTex = -1,
-              programTex = -1, objectSpace = -1, anchor = -1, scale = -1;
+    // One program per kind of object: [0] untextured, [1] textured (the program's texture
+    // as a layer, object space).
+    struct Variant {
+        ShaderProgram program;
+        ShadingCommon::ObjectUniforms u;
+        GLint anchor = -1, lightTex = -1, shadowTex = -1;
+        bool configured = false; // its sampler units are set
     };
     void prepareLayer(StyleContext& ctx, Layer& layer, const char* choice, const char* png);
-
-    ShaderProgram mProgram;
-    Uniforms mU;
+    std::string fragmentSource(bool textured) const;
+    std::string layerFunction(const char* name, const Layer& layer, int mode, const char* sampler,
+                              bool objectSpace) const;
+    bool layerMipmaps() const;
+    Variant mVariants[2];
     Layer mLight, mShadow;
     bool mUploaded = false;
     int mTones = 2;

@@ -4,8 +4,6 @@
 #include "styles/StyleRegistry.h"
 #include "styles/shading/ShadingCommon.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -14,33 +12,24 @@ namespace nprgl::styles {
 
 namespace {
 
+// The parameters arrive as #defines and constants (see fragmentSource()).
 const char* kFragment = R"(
 uniform vec3 lightDir;
-uniform float diffuseThreshold;
-uniform float highlightThreshold;
-uniform int tones;
-uniform float shadowScale;
-uniform float highlightMix;
-uniform bool smoothBands;
-uniform int detailMode; // 0 off, 1 modulate, 2 decal
 uniform sampler2D detail;
-uniform bool bandLines;
-uniform float lineWidth;
-uniform int fixedColors; // bits: shadow, diffuse, highlight
-uniform vec3 shadowColor;
-uniform vec3 diffuseColor;
-uniform vec3 highlightColor;
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
 out vec4 fragColor;
 
-// 0 below the threshold, 1 above; with smoothBands a one-pixel ramp (screen-space
-// antialiasing of the band boundary, thesis 3.1.4).
+// 0 below the threshold, 1 above; with SMOOTH a one-pixel ramp (screen-space antialiasing of
+// the band boundary, thesis 3.1.4).
 float above(float d, float t, float pixel)
 {
-    if (!smoothBands) return d < t ? 0.0 : 1.0;
+#if SMOOTH
     return clamp((d - t) / pixel + 0.5, 0.0, 1.0);
+#else
+    return d < t ? 0.0 : 1.0;
+#endif
 }
 
 // Ink coverage of a line lineWidth pixels wide centred on the boundary d == t.
@@ -54,22 +43,29 @@ void main()
 {
     vec3 n = shadingNormal(eyeNormal);
     float d = dot(n, lightDir);
+#if SMOOTH || BAND_LINES
     float pixel = max(fwidth(d), 1e-5);
+#else
+    float pixel = 1.0;
+#endif
     vec3 base = baseColor.rgb;
-    vec3 cs = (fixedColors & 1) != 0 ? shadowColor : base * shadowScale;
-    vec3 cd = (fixedColors & 2) != 0 ? diffuseColor : base;
-    vec3 ch = (fixedColors & 4) != 0 ? highlightColor : mix(base, vec3(1.0), highlightMix);
-    vec3 c = mix(cs, cd, above(d, diffuseThreshold, pixel));
-    if (tones == 3) c = mix(c, ch, above(d, highlightThreshold, pixel));
-    if (detailMode != 0) {
-        vec4 t = texture(detail, uv);
-        c = detailMode == 1 ? c * t.rgb : mix(c, t.rgb, t.a);
-    }
-    if (bandLines) {
-        float ink = boundaryInk(d, diffuseThreshold, pixel);
-        if (tones == 3) ink = max(ink, boundaryInk(d, highlightThreshold, pixel));
-        c *= 1.0 - ink;
-    }
+    vec3 c = mix(SHADOW_COLOR, DIFFUSE_COLOR, above(d, diffuseThreshold, pixel));
+#if TONES == 3
+    c = mix(c, HIGHLIGHT_COLOR, above(d, highlightThreshold, pixel));
+#endif
+#if DETAIL == 1
+    c = c * texture(detail, uv).rgb;
+#elif DETAIL == 2
+    vec4 t = texture(detail, uv);
+    c = mix(c, t.rgb, t.a);
+#endif
+#if BAND_LINES
+    float ink = boundaryInk(d, diffuseThreshold, pixel);
+#if TONES == 3
+    ink = max(ink, boundaryInk(d, highlightThreshold, pixel));
+#endif
+    c *= 1.0 - ink;
+#endif
     fragColor = vec4(c, baseColor.a);
 }
 )";
@@ -94,10 +90,10 @@ StyleInfo toonStyleInfo()
         ParamInfo::number("shadow_scale", "shadow colour = base colour x this", 0.55, 0.0, 1.0),
         ParamInfo::number("highlight_mix", "highlight colour = base mixed with white by this",
                           0.55, 0.0, 1.0),
-        ParamInfo::text("shadow_color", "fixed shadow colour, hex rrggbb (empty: derived)"),
-        ParamInfo::text("diffuse_color", "fixed diffuse colour, hex rrggbb (empty: the "
+        ParamInfo::colour("shadow_color", "fixed shadow colour, hex rrggbb (empty: derived)"),
+        ParamInfo::colour("diffuse_color", "fixed diffuse colour, hex rrggbb (empty: the "
                                          "program's colour)"),
-        ParamInfo::text("highlight_color", "fixed highlight colour, hex rrggbb (empty: derived)"),
+        ParamInfo::colour("highlight_color", "fixed highlight colour, hex rrggbb (empty: derived)"),
         ParamInfo::choice("band", "band boundaries: nearest (hard, like a nearest-filtered "
                                   "shading texture) or smooth (antialiased over one pixel)",
                           {"nearest", "smooth"}, 1),
@@ -111,21 +107,34 @@ StyleInfo toonStyleInfo()
     return info;
 }
 
+std::string ToonStyle::fragmentSource(int detail) const
+{
+    auto f = [](float v) { return ShadingCommon::glslFloat(v); };
+    std::string s = "#version 130\n";
+    s += "#define TONES " + std::to_string(mTones) + "\n";
+    s += std::string("#define SMOOTH ") + (mSmooth ? "1" : "0") + "\n";
+    s += "#define DETAIL " + std::to_string(detail) + "\n";
+    s += std::string("#define BAND_LINES ") + (mBandLines ? "1" : "0") + "\n";
+    s += "const float diffuseThreshold = " + f(mDiffuseThreshold) + ";\n";
+    s += "const float highlightThreshold = " + f(mHighlightThreshold) + ";\n";
+    s += "const float lineWidth = " + f(mLineWidth) + ";\n";
+    // The band colours: configured constants, else derived from the program's colour.
+    s += "#define SHADOW_COLOR " +
+         ((mFixed & 1) ? ShadingCommon::glslVec3(mColors[0])
+                       : "(base * " + f(mShadowScale) + ")") +
+         "\n";
+    s += "#define DIFFUSE_COLOR " +
+         ((mFixed & 2) ? ShadingCommon::glslVec3(mColors[1]) : std::string("base")) + "\n";
+    s += "#define HIGHLIGHT_COLOR " +
+         ((mFixed & 4) ? ShadingCommon::glslVec3(mColors[2])
+                       : "mix(base, vec3(1.0), " + f(mHighlightMix) + ")") +
+         "\n";
+    return s + ShadingCommon::normalFunction() + kFragment;
+}
+
 bool ToonStyle::init(StyleContext& ctx, std::string& error)
 {
-    const std::string fragment =
-        std::string("#version 130\n") + ShadingCommon::normalFunction() + kFragment;
-    if (!mProgram.build(ctx.gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
-        return false;
-    }
     const GlFunctions& gl = ctx.gl;
-    auto at = [&](const char* name) { return mProgram.uniform(gl, name); };
-    mU = {at("modelview"),   at("projection"),  at("normalMatrix"), at("lightDir"),
-          at("diffuseThreshold"), at("highlightThreshold"), at("tones"), at("shadowScale"),
-          at("highlightMix"), at("smoothBands"), at("detailMode"),  at("detail"),
-          at("bandLines"),   at("lineWidth"),   at("fixedColors"),  at("shadowColor"),
-          at("diffuseColor"), at("highlightColor")};
-
     mTones = int(std::lround(ctx.param("toon", "tones"))) <= 2 ? 2 : 3;
     mDiffuseThreshold = float(ctx.param("toon", "diffuse_threshold"));
     mHighlightThreshold = float(ctx.param("toon", "highlight_threshold"));
@@ -157,42 +166,42 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
                         colorNames[i], text.c_str());
         }
     }
+    // Untextured objects, and the detail mode for textured ones (when it is on).
+    for (int v = 0; v < (mDetail != 0 ? 2 : 1); ++v) {
+        const std::string fragment = fragmentSource(v == 0 ? 0 : mDetail);
+        Variant& variant = mVariants[v];
+        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
+                                   error)) {
+            return false;
+        }
+        variant.u.find(gl, variant.program.id());
+    }
     return true;
 }
 
 void ToonStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
-    gl.UseProgram(mProgram.id());
-    gl.Uniform1f(mU.diffuseThreshold, mDiffuseThreshold);
-    gl.Uniform1f(mU.highlightThreshold, mHighlightThreshold);
-    gl.Uniform1i(mU.tones, mTones);
-    gl.Uniform1f(mU.shadowScale, mShadowScale);
-    gl.Uniform1f(mU.highlightMix, mHighlightMix);
-    gl.Uniform1i(mU.smoothBands, mSmooth ? 1 : 0);
-    gl.Uniform1i(mU.bandLines, mBandLines ? 1 : 0);
-    gl.Uniform1f(mU.lineWidth, mLineWidth);
-    gl.Uniform1i(mU.detail, 0);
-    gl.Uniform3f(mU.shadowColor, mColors[0].r, mColors[0].g, mColors[0].b);
-    gl.Uniform3f(mU.diffuseColor, mColors[1].r, mColors[1].g, mColors[1].b);
-    gl.Uniform3f(mU.highlightColor, mColors[2].r, mColors[2].g, mColors[2].b);
-    gl.Uniform1i(mU.fixedColors, mFixed);
-    gl.ActiveTexture(GL_TEXTURE0);
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
+    // The detail sampler is unit 0, the default of sampler uniforms.
+    GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
-        gl.UniformMatrix4fv(mU.modelview, 1, GL_FALSE, glm::value_ptr(object.modelview));
-        gl.UniformMatrix4fv(mU.projection, 1, GL_FALSE, glm::value_ptr(object.projection));
-        const glm::mat3 normalMatrix = ShadingCommon::normalMatrix(object.modelview);
-        gl.UniformMatrix3fv(mU.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-        gl.Uniform3fv(mU.lightDir, 1, glm::value_ptr(object.lightDir));
         const bool textured = object.texture != 0 && mDetail != 0;
-        gl.Uniform1i(mU.detailMode, textured ? mDetail : 0);
+        const Variant& variant = mVariants[textured ? 1 : 0];
+        if (variant.program.id() != current) {
+            current = variant.program.id();
+            gl.UseProgram(current);
+        }
+        variant.u.set(gl, object, frontIsCcw);
         // The program's texture keeps its own filtering and wrapping.
         if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
         ShadingCommon::drawTwoSided(ctx, *object.mesh, frontIsCcw);
     }
 }
 
-void ToonStyle::shutdown(StyleContext& ctx) { mProgram.destroy(ctx.gl); }
+void ToonStyle::shutdown(StyleContext& ctx)
+{
+    for (Variant& variant : mVariants) variant.program.destroy(ctx.gl);
+}
 
 } // namespace nprgl::styles

@@ -2,8 +2,11 @@
 
 #include "styles/ShaderProgram.h"
 #include "styles/Style.h"
+#include "styles/shading/ShadingCommon.h"
 
 #include <glm/glm.hpp>
+
+#include <string>
 
 namespace nprgl::styles {
 
@@ -19,15 +22,14 @@ public:
     void shutdown(StyleContext& ctx) override;
 
 private:
-    struct Uniforms {
-        GLint modelview = -1, projection = -1, normalMatrix = -1, lightDir = -1,
-              diffuseThreshold = -1, highlightThreshold = -1, tones = -1, shadowScale = -1,
-              highlightMix = -1, smoothBands = -1, detailMode = -1, detail = -1, bandLines = -1,
-              lineWidth = -1, fixedColors = -1, shadowColor = -1, diffuseColor = -1,
-              highlightColor = -1;
+    // One program per detail mode actually drawn: [0] untextured objects, [1] the detail.
+    struct Variant {
+        ShaderProgram program;
+        ShadingCommon::ObjectUniforms u;
     };
-    ShaderProgram mProgram;
-    Uniforms mU;
+    std::string fragmentSource(int detail) const;
+
+    Variant mVariants[2];
     // Parameters: fixed for the chain's life, so read once at init.
     int mTones = 3;
     float mDiffuseThreshold = 0.0f, mHighlightThreshold = 0.9f;

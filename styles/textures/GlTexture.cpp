@@ -6,7 +6,7 @@
 
 namespace nprgl::styles {
 
-void GlTexture::upload(const GlFunctions& gl, const TextureImage& image)
+void GlTexture::upload(const GlFunctions& gl, const TextureImage& image, bool mipmaps)
 {
     if (!mTexture) gl.GenTextures(1, &mTexture);
     gl.BindTexture(GL_TEXTURE_2D, mTexture);
@@ -19,8 +19,9 @@ void GlTexture::upload(const GlFunctions& gl, const TextureImage& image)
     const bool grey = image.channels == 1;
     gl.TexImage2D(GL_TEXTURE_2D, 0, grey ? GL_R8 : GL_RGBA8, image.width, image.height, 0,
                   grey ? GL_RED : GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
-    gl.GenerateMipmap(GL_TEXTURE_2D);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    if (mipmaps) gl.GenerateMipmap(GL_TEXTURE_2D);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+                     mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);

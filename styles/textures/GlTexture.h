@@ -7,12 +7,15 @@
 
 namespace nprgl::styles {
 
-// One repeating, mipmapped GL texture made from a TextureImage (grey images become GL_R8,
-// RGBA ones GL_RGBA8). Call upload() from a style's render(), where the compositor has saved
-// the program's state: it sets the unpack state and the texture binding of the active unit.
+// One repeating GL texture made from a TextureImage (grey images become GL_R8, RGBA ones
+// GL_RGBA8), mipmapped unless asked not to. Call upload() from a style's render(), where the
+// compositor has saved the program's state: it sets the unpack state and the texture binding
+// of the active unit.
 class GlTexture {
 public:
-    void upload(const GlFunctions& gl, const TextureImage& image);
+    // Without mipmaps the texture is bilinear at every size: for screens that are never
+    // minified (one texel per pixel or larger), where mipmaps only cost sampling time.
+    void upload(const GlFunctions& gl, const TextureImage& image, bool mipmaps = true);
     void destroy(const GlFunctions& gl);
     GLuint id() const { return mTexture; }
     bool valid() const { return mTexture != 0; }
