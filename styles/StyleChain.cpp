@@ -57,6 +57,7 @@ void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
     gl.Viewport(scene.viewport.x, scene.viewport.y, scene.viewport.z, scene.viewport.w);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthMask(GL_TRUE);
+    gl.DepthRange(0.0, 1.0);
     gl.PolygonOffset(-1.0f, -1.0f);
     // The shading pass lays down the scene's depth; the passes after it draw onto it.
     gl.DepthFunc(shadingPass ? GL_LESS : GL_LEQUAL);

@@ -185,8 +185,10 @@ TEST(Paper, GrainDarkensThePageSubtlyAndRepeatably)
     ASSERT_TRUE(harness.ok());
     const styles::Scene scene = sphereScene(harness);
     const PngImage toon = render(harness, scene, "toon", "");
-    const PngImage grained = render(harness, scene, "toon+paper", "paper.grain=0.3");
-    const PngImage again = render(harness, scene, "toon+paper", "paper.grain=0.3");
+    const PngImage grained =
+        render(harness, scene, "toon+paper", "paper.grain=0.3,paper.grain_scene=on");
+    const PngImage again =
+        render(harness, scene, "toon+paper", "paper.grain=0.3,paper.grain_scene=on");
     save(grained, "toon_paper_grain");
     EXPECT_EQ(grained.rgba, again.rgba); // deterministic, fixed to the screen
     std::set<Rgb> paperShades;
@@ -208,6 +210,14 @@ TEST(Paper, GrainDarkensThePageSubtlyAndRepeatably)
     }
     EXPECT_GT(paperShades.size(), 20u); // a structure, not a flat tint
     EXPECT_GT(darkenedScene, 100);      // the scene is drawn on the paper too
+    // By default only the page is grained: the scene keeps its colours exactly.
+    const PngImage pageOnly = render(harness, scene, "toon+paper", "paper.grain=0.3");
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const Rgb before = pixel(toon, x, y);
+            if (before != Rgb{0, 0, 0}) ASSERT_EQ(pixel(pageOnly, x, y), before) << x << "," << y;
+        }
+    }
 }
 
 TEST(Paper, BackgroundOffLeavesTheProgramsBackground)
@@ -268,7 +278,8 @@ TEST(Paper, StaysInsideTheViewport)
     ASSERT_TRUE(harness.ok());
     styles::Scene scene = sphereScene(harness);
     scene.viewport = {20, 30, 60, 50};
-    const PngImage image = renderOver(harness, scene, "paper", "paper.grain=0.5", [](auto&) {});
+    const PngImage image = renderOver(harness, scene, "paper", "paper.grain=0.5,paper.grain_scene=on",
+                                       [](auto&) {});
     save(image, "viewport");
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
@@ -291,7 +302,7 @@ TEST(Paper, EmptySceneChangesNothing)
     styles::Scene scene = sphereScene(harness);
     scene.objects.clear();
     const glm::vec4 grey(0.25f, 0.5f, 0.75f, 1.0f);
-    const PngImage image = render(harness, scene, "toon+paper", "paper.grain=1", grey);
+    const PngImage image = render(harness, scene, "toon+paper", "paper.grain=1,paper.grain_scene=on", grey);
     for (int y = 0; y < kSize; y += 7) {
         for (int x = 0; x < kSize; x += 7) EXPECT_EQ(pixel(image, x, y), (Rgb{64, 128, 191}));
     }
@@ -304,7 +315,8 @@ TEST(Paper, InkIsDrawnOverThePaper)
     const styles::Scene scene = sphereScene(harness);
     // A coloured ink and a strong grain: ink drawn before the paper would be grained.
     const std::string config =
-        "paper.grain=0.8,edges.ink_red=0.2,edges.ink_green=0.4,edges.ink_blue=1,"
+        "paper.grain=0.8,paper.grain_scene=on,edges.ink_red=0.2,edges.ink_green=0.4,"
+        "edges.ink_blue=1,"
         "edges.silhouette_width=3";
     const PngImage image = render(harness, scene, "toon+edges+paper", config);
     const PngImage named = render(harness, scene, "toon+paper+edges", config);

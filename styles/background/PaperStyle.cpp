@@ -16,24 +16,25 @@ namespace {
 const char* kStyle = "paper";
 const char* kDefaultColour = "f4efe1";
 
+// The triangle covers the viewport at the far plane: with depth test GL_LEQUAL the fill pass
+// reaches only pixels whose depth is still the cleared far value (the depth test rejects
+// the scene before any shading, which is what makes the pass cheap on a software rasteriser).
 const char* kVertex = R"(#version 130
 in vec3 position;
-void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }
+void main() { gl_Position = vec4(position.xy, 1.0, 1.0); }
 )";
 
-// Two passes over the viewport, both classifying pixels from the same copy. Pass 0 grains
-// the scene: multiplied (blend DST_COLOR, ZERO) by the grain factor, background discarded.
-// Pass 1 lays the page: background pixels replaced by the grained paper, opaque (a page has
-// no holes, even where the program cleared alpha to 0), the scene discarded.
+// Pass 0 (grain_scene) grains the whole viewport: multiplied (blend DST_COLOR, ZERO).
+// Pass 1 lays the page where nothing drew depth and the colour (copied before pass 0) is
+// still the clear colour (a 2D backdrop drawn without depth keeps its pixels): the grained
+// paper, opaque (a page has no holes, even where the program cleared alpha to 0), blended
+// in by an alpha of 1 there and 0 elsewhere.
 const char* kFragment = R"(#version 130
-uniform sampler2D colour;    // copy of the viewport's colour
-uniform sampler2D depth;     // copy of its depth
+uniform sampler2D colour;    // copy of the viewport's colour before the grain
 uniform sampler2D grainTex;  // grey, 1 = untouched
 uniform sampler2D paperTex;  // the user's paper scan
 uniform int pass;
 uniform ivec2 origin;
-uniform bool fill;
-uniform bool haveDepth;
 uniform bool usePaperTex;
 uniform vec3 paperColour;
 uniform vec3 clearColour;
@@ -47,28 +48,23 @@ void main()
 {
     ivec2 p = ivec2(gl_FragCoord.xy) - origin;
     vec2 q = vec2(p) + 0.5;
-    float factor = 1.0 - grain * (1.0 - texture(grainTex, q / grainSize).r);
-    bool background = false;
-    if (fill) {
-        // Untouched: nothing drew depth here and the colour is still the clear colour (a
-        // 2D backdrop the program drew without depth keeps its pixels).
-        bool far = !haveDepth || texelFetch(depth, p, 0).r >= 1.0;
-        vec3 d = abs(texelFetch(colour, p, 0).rgb - clearColour);
-        background = far && max(d.r, max(d.g, d.b)) <= tolerance;
-    }
+    // No mipmaps: the grain is drawn at (about) its own size, level 0 is the right one.
+    float factor = 1.0 - grain * (1.0 - textureLod(grainTex, q / grainSize, 0.0).r);
     if (pass == 0) {
-        if (background) discard;
         fragColor = vec4(vec3(factor), 1.0);
         return;
     }
-    if (!background) discard;
+    // No discard (it would turn off the early depth test that skips the scene's pixels):
+    // alpha 0 leaves the pixel as it is through the blend.
+    vec3 d = abs(texelFetch(colour, p, 0).rgb - clearColour);
+    float untouched = max(d.r, max(d.g, d.b)) > tolerance ? 0.0 : 1.0;
     vec3 paper = paperColour;
     if (usePaperTex) {
         // Upright: the image's top row was uploaded first (t = 0).
         vec4 t = texture(paperTex, vec2(q.x, -q.y) / paperSize);
         paper = mix(paperColour, t.rgb, t.a);
     }
-    fragColor = vec4(paper * factor, 1.0);
+    fragColor = vec4(paper * factor, untouched);
 }
 )";
 
@@ -92,6 +88,11 @@ StyleInfo paperStyleInfo()
                         true),
         ParamInfo::number("grain", "strength of the paper grain multiplied over the viewport",
                           0.12, 0.0, 1.0),
+        ParamInfo::flag("grain_scene",
+                        "the grain over the scene too, not only the paper (a full-screen "
+                        "pass: on a software rasteriser it costs about a frame of a small "
+                        "program)",
+                        false),
         ParamInfo::number("grain_scale", "size of the grain (and of texture_png's tiles)", 1.0,
                           0.25, 8.0),
         ParamInfo::text("texture_png", "a paper scan tiled over the background instead of the "
@@ -105,10 +106,9 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
     const GlFunctions& gl = ctx.gl;
     if (!mProgram.build(gl, kVertex, kFragment, error)) return false;
     auto at = [&](const char* name) { return mProgram.uniform(gl, name); };
-    mU = {at("colour"),      at("depth"),       at("grainTex"),    at("paperTex"),
-          at("origin"),      at("fill"),        at("haveDepth"),   at("usePaperTex"),
-          at("paperColour"), at("clearColour"), at("tolerance"),   at("grain"),
-          at("pass"),        at("grainSize"),   at("paperSize")};
+    mU = {at("colour"),      at("grainTex"),    at("paperTex"),    at("origin"),
+          at("usePaperTex"), at("paperColour"), at("clearColour"), at("tolerance"),
+          at("grain"),       at("pass"),        at("grainSize"),   at("paperSize")};
 
     const std::string colour = ctx.text(kStyle, "color");
     if (!ShadingCommon::parseColor(colour, mPaperColour)) {
@@ -120,6 +120,7 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
     }
     mFill = ctx.param(kStyle, "background") >= 0.5;
     mGrain = float(std::clamp(ctx.param(kStyle, "grain"), 0.0, 1.0));
+    mGrainScene = ctx.param(kStyle, "grain_scene") >= 0.5;
     mGrainScale = float(std::clamp(ctx.param(kStyle, "grain_scale"), 0.25, 8.0));
     if (mGrain > 0.0f) mGrainImage = PaperGrain::make(PaperGrain::Options{});
 
@@ -162,7 +163,7 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     const glm::ivec4 vp = scene.viewport;
     // An empty flush drew nothing; its page is whatever the program left.
     if (scene.objects.empty() || vp.z <= 0 || vp.w <= 0) return;
-    const bool grainScene = mGrain > 0.0f && !grainedThisFrame(scene);
+    const bool grainScene = mGrainScene && mGrain > 0.0f && !grainedThisFrame(scene);
     bool fill = mFill;
     if (fill && !mCopy.capture(gl, vp)) {
         if (!mWarnedCopy) {
@@ -175,17 +176,16 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     if (!fill && !grainScene) return;
 
     // Textures are uploaded here, where the program's state is saved (GlTexture::upload).
-    if (!mGrainImage.empty() && !mGrainTexture.valid()) mGrainTexture.upload(gl, mGrainImage);
+    if (!mGrainImage.empty() && !mGrainTexture.valid()) {
+        mGrainTexture.upload(gl, mGrainImage, false);
+    }
     if (!mPaperImage.empty() && !mPaperTexture.valid()) mPaperTexture.upload(gl, mPaperImage);
 
     gl.UseProgram(mProgram.id());
     gl.Uniform1i(mU.colour, 0);
-    gl.Uniform1i(mU.depth, 1);
     gl.Uniform1i(mU.grainTex, 2);
     gl.Uniform1i(mU.paperTex, 3);
     gl.Uniform2i(mU.origin, vp.x, vp.y);
-    gl.Uniform1i(mU.fill, fill ? 1 : 0);
-    gl.Uniform1i(mU.haveDepth, mCopy.hasDepth() ? 1 : 0);
     gl.Uniform1i(mU.usePaperTex, mPaperTexture.valid() ? 1 : 0);
     gl.Uniform3f(mU.paperColour, mPaperColour.r, mPaperColour.g, mPaperColour.b);
     const glm::vec3 clear = glm::clamp(glm::vec3(scene.clearColor), 0.0f, 1.0f);
@@ -199,8 +199,7 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Uniform2f(mU.paperSize, float(std::max(mPaperImage.width, 1)) * mGrainScale,
                  float(std::max(mPaperImage.height, 1)) * mGrainScale);
 
-    const GLuint textures[4] = {mCopy.colour(), mCopy.depth(), mGrainTexture.id(),
-                                mPaperTexture.id()};
+    const GLuint textures[4] = {mCopy.colour(), 0, mGrainTexture.id(), mPaperTexture.id()};
     for (int i = 3; i >= 0; --i) {
         gl.ActiveTexture(GL_TEXTURE0 + GLenum(i));
         gl.BindTexture(GL_TEXTURE_2D, textures[i]);
@@ -209,7 +208,6 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     // Only the viewport; the scene's depth stays for the outline styles.
     gl.Enable(GL_SCISSOR_TEST);
     gl.Scissor(vp.x, vp.y, vp.z, vp.w);
-    gl.Disable(GL_DEPTH_TEST);
     gl.DepthMask(GL_FALSE);
     gl.BindBuffer(GL_ARRAY_BUFFER, mTriangle);
     gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -217,6 +215,7 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     for (GLuint a = 1; a < 4; ++a) gl.DisableVertexAttribArray(a);
     if (grainScene) {
         // Multiplied into colour only: the program's alpha over its scene stays.
+        gl.Disable(GL_DEPTH_TEST);
         gl.Uniform1i(mU.pass, 0);
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
         gl.Enable(GL_BLEND);
@@ -228,7 +227,19 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     if (fill) {
         gl.Uniform1i(mU.pass, 1);
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        // Depth still at the far plane: nothing was drawn there (without a depth buffer
+        // every pixel passes and the colour alone decides).
+        gl.Enable(GL_DEPTH_TEST);
+        gl.DepthFunc(GL_LEQUAL);
+        gl.Disable(GL_POLYGON_OFFSET_FILL);
+        gl.DepthRange(0.0, 1.0);
+        // Paper where untouched (alpha 1, and the page's alpha becomes 1), else unchanged.
+        gl.Enable(GL_BLEND);
+        gl.BlendEquation(GL_FUNC_ADD);
+        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
+                             GL_ONE_MINUS_SRC_ALPHA);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
+        gl.Disable(GL_BLEND);
     }
     gl.DisableVertexAttribArray(0);
     gl.BindBuffer(GL_ARRAY_BUFFER, 0);

@@ -26,9 +26,9 @@ public:
 
 private:
     struct Uniforms {
-        GLint colour = -1, depth = -1, grainTex = -1, paperTex = -1, origin = -1, fill = -1,
-              haveDepth = -1, usePaperTex = -1, paperColour = -1, clearColour = -1,
-              tolerance = -1, grain = -1, pass = -1, grainSize = -1, paperSize = -1;
+        GLint colour = -1, grainTex = -1, paperTex = -1, origin = -1, usePaperTex = -1,
+              paperColour = -1, clearColour = -1, tolerance = -1, grain = -1, pass = -1,
+              grainSize = -1, paperSize = -1;
     };
     // Whether this frame's grain already lies over the viewport (a second flush in one
     // frame must not darken the page twice).
@@ -47,6 +47,7 @@ private:
     glm::vec3 mPaperColour{0.957f, 0.937f, 0.882f};
     bool mFill = true;
     float mGrain = 0.12f;
+    bool mGrainScene = false; // grain over the scene too, not only the paper
     float mGrainScale = 1.0f;
 };
 

@@ -9,15 +9,11 @@ void makeTexture(const GlFunctions& gl, GLuint tex, GLint internal, GLenum forma
 {
     gl.BindTexture(GL_TEXTURE_2D, tex);
     gl.TexImage2D(GL_TEXTURE_2D, 0, internal, width, height, 0, format, type, nullptr);
-    // texelFetch only; nearest keeps the texture complete without mipmaps, and no compare
-    // mode so the depth reads as a value.
+    // texelFetch only; nearest keeps the texture complete without mipmaps.
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (format == GL_DEPTH_COMPONENT) {
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    }
 }
 
 } // namespace
@@ -29,10 +25,7 @@ void ScreenCopy::ensure(const GlFunctions& gl, int width, int height)
     mWidth = width;
     mHeight = height;
     gl.GenTextures(1, &mColour);
-    gl.GenTextures(1, &mDepth);
     makeTexture(gl, mColour, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
-    makeTexture(gl, mDepth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, width,
-                height);
 }
 
 bool ScreenCopy::capture(const GlFunctions& gl, const glm::ivec4& viewport)
@@ -46,10 +39,8 @@ bool ScreenCopy::capture(const GlFunctions& gl, const glm::ivec4& viewport)
     if (samples > 0 || drawBuffer == GL_NONE) return false;
     // ReadBuffer takes one side; the back buffer is the one being drawn.
     if (drawBuffer == GL_FRONT_AND_BACK) drawBuffer = GL_BACK;
-    GLint depthBits = 0, redBits = 0;
-    gl.GetIntegerv(GL_DEPTH_BITS, &depthBits);
+    GLint redBits = 0;
     gl.GetIntegerv(GL_RED_BITS, &redBits);
-    mHasDepth = depthBits > 0;
     mColourBits = redBits > 0 ? redBits : 8;
 
     gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);
@@ -64,10 +55,6 @@ bool ScreenCopy::capture(const GlFunctions& gl, const glm::ivec4& viewport)
     ensure(gl, width, height);
     gl.BindTexture(GL_TEXTURE_2D, mColour);
     gl.CopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, viewport.x, viewport.y, width, height);
-    if (mHasDepth) {
-        gl.BindTexture(GL_TEXTURE_2D, mDepth);
-        gl.CopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, viewport.x, viewport.y, width, height);
-    }
     gl.BindTexture(GL_TEXTURE_2D, 0);
 
     if (readBuffer != drawBuffer) gl.ReadBuffer(GLenum(readBuffer));
@@ -78,8 +65,7 @@ bool ScreenCopy::capture(const GlFunctions& gl, const glm::ivec4& viewport)
 void ScreenCopy::destroy(const GlFunctions& gl)
 {
     if (mColour) gl.DeleteTextures(1, &mColour);
-    if (mDepth) gl.DeleteTextures(1, &mDepth);
-    mColour = mDepth = 0;
+    mColour = 0;
     mWidth = mHeight = 0;
 }
 

@@ -6,8 +6,8 @@
 
 namespace nprgl::styles {
 
-// A copy of the viewport's colour and depth as the bound draw framebuffer holds them, for
-// passes that read the picture while they write it. The textures are the viewport's size,
+// A copy of the viewport's colour as the bound draw framebuffer holds it, for passes that
+// read the picture while they write it. The textures are the viewport's size,
 // recreated when it changes, and read with texelFetch (pixel (0, 0) = the viewport's corner).
 class ScreenCopy {
 public:
@@ -16,9 +16,6 @@ public:
     void destroy(const GlFunctions& gl);
 
     GLuint colour() const { return mColour; }
-    GLuint depth() const { return mDepth; }
-    // False when the framebuffer has no depth buffer (then the depth copy is meaningless).
-    bool hasDepth() const { return mHasDepth; }
     // The bits of the framebuffer's red channel: how finely it can store a colour.
     int colourBits() const { return mColourBits; }
 
@@ -26,10 +23,8 @@ private:
     void ensure(const GlFunctions& gl, int width, int height);
 
     GLuint mColour = 0;
-    GLuint mDepth = 0;
     int mWidth = 0;
     int mHeight = 0;
-    bool mHasDepth = false;
     int mColourBits = 8;
 };
 
