@@ -36,7 +36,7 @@ MODELS = "/usr/share/assimp/models"
 def demo_cases(build: str) -> list[tuple[str, list[str], int]]:
     b = os.path.join(build, "bin")
     return [
-        ("immediate (~1M vertices)", [f"{b}/demo_immediate", "--detail", "275"], 8),
+        ("immediate (~1M vertices)", [f"{b}/demo_immediate", "--detail", "275"], 30),
         ("immediate (3.7k vertices)", [f"{b}/demo_immediate"], 300),
         ("arrays", [f"{b}/demo_arrays"], 200),
         ("display lists", [f"{b}/demo_displaylist"], 300),

@@ -6,33 +6,34 @@ namespace nprgl::styles {
 
 namespace {
 
-struct CornerVertex {
-    float position[3];
-    float normal[3];
-    float color[4];
-    float texcoord[2];
-    float faceNormal[3];
-};
+using SourceVertex = MeshBuffers::SourceVertexData;
 
-void fill(const reconstruct::ObjectMesh& mesh, std::vector<CornerVertex>& out)
+// One vertex per vertex the program sent (strips and fans share theirs), faces as indices:
+// a third of the vertex work of one vertex per face corner.
+void fill(const reconstruct::ObjectMesh& mesh, std::vector<SourceVertex>& vertices,
+          std::vector<uint32_t>& indices)
 {
-    out.resize(size_t(mesh.faceCount()) * 3);
+    vertices.resize(mesh.sourceVertices.size());
+    for (size_t i = 0; i < mesh.sourceVertices.size(); ++i) {
+        const reconstruct::Vertex& c = mesh.sourceVertices[i];
+        vertices[i] = {{c.position.x, c.position.y, c.position.z},
+                       {c.normal.x, c.normal.y, c.normal.z},
+                       {c.color.r, c.color.g, c.color.b, c.color.a},
+                       {c.texcoord.x, c.texcoord.y}};
+    }
+    // Where the program gave no normal, the welded vertex's.
     for (uint32_t f = 0; f < mesh.faceCount(); ++f) {
-        const glm::vec3 p0 = mesh.corner(f, 0).position;
-        const glm::vec3 face =
-            glm::cross(mesh.corner(f, 1).position - p0, mesh.corner(f, 2).position - p0);
         for (int k = 0; k < 3; ++k) {
-            const reconstruct::Vertex& c = mesh.corner(f, k);
-            const glm::vec3 n =
-                c.hasNormal ? c.normal : mesh.vertexNormal(mesh.faceVertices[3 * f + k]);
-            CornerVertex& v = out[3 * size_t(f) + k];
-            v = {{c.position.x, c.position.y, c.position.z},
-                 {n.x, n.y, n.z},
-                 {c.color.r, c.color.g, c.color.b, c.color.a},
-                 {c.texcoord.x, c.texcoord.y},
-                 {face.x, face.y, face.z}};
+            const uint32_t source = mesh.faceCorners[3 * f + k];
+            if (mesh.sourceVertices[source].hasNormal) continue;
+            const glm::vec3 n = mesh.vertexNormal(mesh.faceVertices[3 * f + k]);
+            float* out = vertices[source].normal;
+            out[0] = n.x;
+            out[1] = n.y;
+            out[2] = n.z;
         }
     }
+    indices.assign(mesh.faceCorners.begin(), mesh.faceCorners.end());
 }
 
 } // namespace
@@ -42,34 +43,39 @@ GLsizei MeshBuffers::bind(const GlFunctions& gl, const reconstruct::ObjectMesh& 
     Entry& e = mEntries[&mesh];
     const bool stale = !e.buffer || e.contentKey != mesh.contentKey ||
                        e.geometryVersion != mesh.geometryVersion;
-    if (!e.buffer) gl.GenBuffers(1, &e.buffer);
+    if (!e.buffer) {
+        gl.GenBuffers(1, &e.buffer);
+        gl.GenBuffers(1, &e.indexBuffer);
+    }
     gl.BindBuffer(GL_ARRAY_BUFFER, e.buffer);
+    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, e.indexBuffer); // into the styles' own VAO
     if (stale) {
-        std::vector<CornerVertex> corners;
-        fill(mesh, corners);
-        gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(corners.size() * sizeof(CornerVertex)),
-                      corners.data(), GL_STREAM_DRAW);
-        e.vertices = GLsizei(corners.size());
+        fill(mesh, mVertices, mIndices);
+        gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(mVertices.size() * sizeof(SourceVertex)),
+                      mVertices.data(), GL_STREAM_DRAW);
+        gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mIndices.size() * sizeof(uint32_t)),
+                      mIndices.data(), GL_STREAM_DRAW);
+        e.indices = GLsizei(mIndices.size());
         e.contentKey = mesh.contentKey;
         e.geometryVersion = mesh.geometryVersion;
     }
     e.lastUsed = mFlush;
-    const GLsizei stride = sizeof(CornerVertex);
+    const GLsizei stride = sizeof(SourceVertex);
     auto at = [](size_t offset) { return reinterpret_cast<const void*>(offset); };
-    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(CornerVertex, position)));
-    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(CornerVertex, normal)));
-    gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, at(offsetof(CornerVertex, color)));
-    gl.VertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(CornerVertex, texcoord)));
-    gl.VertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, stride,
-                           at(offsetof(CornerVertex, faceNormal)));
-    for (GLuint i = 0; i < 5; ++i) gl.EnableVertexAttribArray(i);
-    return e.vertices;
+    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(SourceVertex, position)));
+    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(SourceVertex, normal)));
+    gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, at(offsetof(SourceVertex, color)));
+    gl.VertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(SourceVertex, texcoord)));
+    for (GLuint i = 0; i < 4; ++i) gl.EnableVertexAttribArray(i);
+    // Arrays another style left enabled in the shared VAO would be read past their end.
+    for (GLuint i = 4; i < 8; ++i) gl.DisableVertexAttribArray(i);
+    return e.indices;
 }
 
 void MeshBuffers::draw(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh)
 {
     const GLsizei count = bind(gl, mesh);
-    if (count > 0) gl.DrawArrays(GL_TRIANGLES, 0, count);
+    if (count > 0) gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
 }
 
 void MeshBuffers::endFlush(const GlFunctions& gl)
@@ -79,6 +85,7 @@ void MeshBuffers::endFlush(const GlFunctions& gl)
         // A mesh pointer unused for 8 flushes may be freed and its address reused.
         if (mFlush - it->second.lastUsed > 8) {
             gl.DeleteBuffers(1, &it->second.buffer);
+            gl.DeleteBuffers(1, &it->second.indexBuffer);
             it = mEntries.erase(it);
         } else {
             ++it;
@@ -88,7 +95,10 @@ void MeshBuffers::endFlush(const GlFunctions& gl)
 
 void MeshBuffers::destroy(const GlFunctions& gl)
 {
-    for (auto& [mesh, e] : mEntries) gl.DeleteBuffers(1, &e.buffer);
+    for (auto& [mesh, e] : mEntries) {
+        gl.DeleteBuffers(1, &e.buffer);
+        gl.DeleteBuffers(1, &e.indexBuffer);
+    }
     mEntries.clear();
 }
 

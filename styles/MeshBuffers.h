@@ -6,18 +6,25 @@
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
+#include <vector>
 
 namespace nprgl::styles {
 
-// GPU copies of the scene's meshes, one vertex per face corner (3 per face, in face order):
-// attribute 0 position (the program's, object space), 1 normal (the program's at that
-// corner, else the welded vertex normal), 2 colour, 3 texcoord, 4 the face's geometric
-// normal (cross(p1 - p0, p2 - p0), unnormalised, object space). Kept while a mesh with that
+// GPU copies of the scene's meshes: one vertex per vertex the program sent (attribute 0
+// position, object space; 1 normal, the program's, else the welded vertex normal; 2 colour;
+// 3 texcoord) and the faces as indices into them, in face order. Kept while a mesh with that
 // content and geometry version is drawn; dropped when unused for a few flushes.
 class MeshBuffers {
 public:
-    // Binds the mesh's corner buffer and points attributes 0-4 at it (the caller's VAO is
-    // bound). Returns the number of vertices to draw as GL_TRIANGLES.
+    struct SourceVertexData {
+        float position[3];
+        float normal[3];
+        float color[4];
+        float texcoord[2];
+    };
+
+    // Binds the mesh's vertex and index buffers and points attributes 0-3 at them (the
+    // styles' VAO is bound). Returns the number of indices to draw as GL_TRIANGLES.
     GLsizei bind(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
     // Draws the mesh's triangles with the current program.
     void draw(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
@@ -28,13 +35,16 @@ public:
 private:
     struct Entry {
         GLuint buffer = 0;
-        GLsizei vertices = 0;
+        GLuint indexBuffer = 0;
+        GLsizei indices = 0;
         uint64_t contentKey = 0;
         uint32_t geometryVersion = 0;
         uint64_t lastUsed = 0;
     };
     std::unordered_map<const reconstruct::ObjectMesh*, Entry> mEntries;
     uint64_t mFlush = 0;
+    std::vector<SourceVertexData> mVertices; // reused upload staging
+    std::vector<uint32_t> mIndices;
 };
 
 } // namespace nprgl::styles

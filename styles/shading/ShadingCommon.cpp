@@ -10,28 +10,19 @@ namespace nprgl::styles {
 const char* ShadingCommon::vertexShader()
 {
     return R"(#version 130
-#extension GL_ARB_explicit_attrib_location : require
 uniform mat4 modelview;
 uniform mat4 projection;
 uniform mat3 normalMatrix;
-uniform float faceSign;
 in vec3 position;
 in vec3 normal;
 in vec4 color;
 in vec2 texcoord;
-layout(location = 4) in vec3 faceNormal;
 out vec3 eyeNormal;
 out vec4 baseColor;
 out vec2 uv;
-out float facing;
 void main()
 {
     eyeNormal = normalMatrix * normal;
-    // The normal against the face's geometric normal in eye space (cross products of
-    // positions transform by det(M) times the normal matrix; faceSign holds that sign and
-    // the program's front-face winding). Linear in the normal, so the interpolated value has
-    // the sign of the interpolated normal's dot product.
-    facing = faceSign * dot(eyeNormal, normalMatrix * faceNormal);
     baseColor = color;
     uv = texcoord;
     gl_Position = projection * (modelview * vec4(position, 1.0));
@@ -42,16 +33,15 @@ void main()
 const char* ShadingCommon::normalFunction()
 {
     return R"(
-in float facing;
+uniform float faceSign;
 vec3 shadingNormal(vec3 eyeNormal)
 {
     vec3 n = normalize(eyeNormal);
-    // The visible side of the triangle from its window-space winding (gl_FrontFacing) and
-    // its geometric normal: this does not depend on the program's winding, which legacy
-    // programs often get backwards while their normals are right. A normal pointing to the
-    // other side is flipped (two-sided). Same as testing n against
-    // cross(dFdx(eyePos), dFdy(eyePos)), without the per-pixel derivatives.
-    return (facing < 0.0) == gl_FrontFacing ? -n : n;
+    // Is the visible side the one the program's normals point out of? From the window-space
+    // winding (gl_FrontFacing) and faceSign, which folds in the program's front face, a
+    // mirroring modelview and which winding the mesh's normals follow (legacy programs often
+    // wind backwards while their normals are right). The other side is lit flipped.
+    return gl_FrontFacing == (faceSign > 0.0) ? n : -n;
 }
 )";
 }
@@ -65,6 +55,21 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightDir = gl.GetUniformLocation(program, "lightDir");
 }
 
+bool ShadingCommon::normalsFollowCcw(const reconstruct::ObjectMesh& mesh)
+{
+    // A sample of faces is enough: meshes are consistent or not at all.
+    const uint32_t faces = mesh.faceCount();
+    const uint32_t step = std::max(1u, faces / 64);
+    int agree = 0;
+    for (uint32_t f = 0; f < faces; f += step) {
+        const reconstruct::Vertex& c = mesh.corner(f, 0);
+        const glm::vec3 n = c.hasNormal ? c.normal : mesh.vertexNormal(mesh.faceVertices[3 * f]);
+        const float d = glm::dot(mesh.faceNormal(f), n); // faceNormal follows CCW winding
+        agree += d > 0.0f ? 1 : d < 0.0f ? -1 : 0;
+    }
+    return agree >= 0;
+}
+
 void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject& object,
                                         bool frontIsCcw) const
 {
@@ -73,9 +78,11 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     const glm::mat3 linear(object.modelview);
     const glm::mat3 normals = ShadingCommon::normalMatrix(object.modelview);
     gl.UniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normals));
-    // A mirroring modelview turns the faces' winding around, and so does a clockwise front.
+    // A mirroring modelview turns the faces' winding around, and so do a clockwise front and
+    // normals that follow the clockwise side.
     const bool mirrored = glm::determinant(linear) < 0.0f;
-    gl.Uniform1f(faceSign, mirrored == frontIsCcw ? -1.0f : 1.0f);
+    const bool flip = !frontIsCcw ^ mirrored ^ !normalsFollowCcw(*object.mesh);
+    gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
 }
 

@@ -32,6 +32,8 @@ public:
     };
     // Returns whether the program's front faces are counter-clockwise (once per render()).
     static bool beginTwoSided(const GlFunctions& gl);
+    // Whether the program's normals point out of the counter-clockwise side of its faces.
+    static bool normalsFollowCcw(const reconstruct::ObjectMesh& mesh);
     // Draws the mesh, both sides, in one pass with depth writes (the shading baseline).
     static void drawTwoSided(StyleContext& ctx, const reconstruct::ObjectMesh& mesh,
                              bool frontIsCcw);
