@@ -14,8 +14,8 @@ trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
 rm -f "$out"/*.png
 models=/usr/share/assimp/models
-styles=(none toon textured halftone toon+edges toon+wireframe toon+perpixel toon+strokes
-        halftone+edges textured+strokes)
+styles=(none toon+paper+edges toon textured halftone toon+edges toon+wireframe
+        toon+perpixel toon+strokes halftone+paper+edges textured+paper+strokes)
 
 record() { # name frames command...
     local name=$1 frames=$2
@@ -30,7 +30,7 @@ record wuson 20 "$build/bin/demo_character" --model "$models/X/Testwuson.X" --of
     --frames 20 --size 320x240
 "$root/scripts/with-display.sh" sh -c \
     "timeout 3 '$nprgl' record -o '$tmp/glxgears.nprgl' --frames 1-30 --style none -- \
-     glxgears -geometry 320x240 >/dev/null 2>&1 || true"
+     glxgears -geometry 300x300 >/dev/null 2>&1 || true"
 
 scenes=()
 for capture in "$tmp"/*.nprgl; do
