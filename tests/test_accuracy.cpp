@@ -31,19 +31,19 @@ struct AccuracyCase {
     std::vector<std::string> settings; // --set values
     // Floors: the measured minimum over the frames minus about 0.05 (docs/benchmarks.md).
     double minPrecision = 0, minRecall = 0;
-    bool optional = false; // still being written: skipped, not failed, when not registered
+    bool optional = false; // skipped, not failed, when the style is not registered
 };
 
 void PrintTo(const AccuracyCase& c, std::ostream* os) { *os << c.name; }
 
-// Wireframe and perpixel precision is low mostly because demo_shapes' tori render inside out
-// (their outer faces are culled) and both styles then ink the whole torus; see the docs.
+// Wireframe's lines are 4 px wide, half outside the silhouette, and perpixel's band widens
+// where the surface turns slowly: both lose precision within 1.5 px by design (the docs).
 const std::vector<AccuracyCase> kCases = {
-    {"wireframe", "wireframe", {}, 0.16, 0.95},
-    {"perpixel", "perpixel", {}, 0.12, 0.84},
+    {"wireframe", "wireframe", {}, 0.62, 0.94},
+    {"perpixel", "perpixel", {}, 0.67, 0.84},
     {"edges", "edges", {}, 0.89, 0.95},
-    {"strokes_depth", "strokes", {"strokes.visibility=depth"}, 0.82, 0.94, true},
-    {"strokes_query", "strokes", {"strokes.visibility=query"}, 0.80, 0.94, true},
+    {"strokes_depth", "strokes", {"strokes.visibility=depth"}, 0.83, 0.94, true},
+    {"strokes_query", "strokes", {"strokes.visibility=query"}, 0.82, 0.94, true},
 };
 
 using Mask = std::vector<uint8_t>;
