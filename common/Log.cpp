@@ -79,7 +79,8 @@ void logMessage(LogLevel level, const char* fmt, ...)
 {
     // One write() per line, so lines from several threads or processes do not interleave.
     char buf[1024];
-    int n = std::snprintf(buf, sizeof buf, "nprgl: %s%s", level == LogLevel::Info ? "" : levelName(level),
+    int n = std::snprintf(buf, sizeof buf, "nprgl: %s%s",
+                          level == LogLevel::Info ? "" : levelName(level),
                           level == LogLevel::Info ? "" : ": ");
     va_list ap;
     va_start(ap, fmt);

@@ -103,7 +103,8 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
     meta.height = ctx.drawableHeight();
     meta.pid = uint32_t(getpid());
     meta.startTimeUnix = uint64_t(std::time(nullptr));
-    if (!mFrames.empty()) meta.extra.emplace_back("recorded_frames", std::getenv("NPRGL_RECORD_FRAMES"));
+    if (!mFrames.empty())
+        meta.extra.emplace_back("recorded_frames", std::getenv("NPRGL_RECORD_FRAMES"));
     std::string error;
     if (!mWriter.open(mPath, meta, error)) {
         NPRGL_ERROR("cannot record: %s", error.c_str());

@@ -190,7 +190,8 @@ void Recorder::after_glEnd()
 
 void Recorder::before_glDrawArrays(GLenum, GLint first, GLsizei count)
 {
-    if (first >= 0 && count > 0 && anyClientArray()) emitArrays(size_t(first), size_t(first) + count);
+    if (first >= 0 && count > 0 && anyClientArray())
+        emitArrays(size_t(first), size_t(first) + count);
 }
 
 void Recorder::before_glDrawElements(GLenum, GLsizei count, GLenum type, const void* indices)

@@ -55,10 +55,22 @@ void APIENTRY tLoadMatrixf(const GLfloat* m) { T().topMatrix() = toMat(m); }
 void APIENTRY tLoadMatrixd(const GLdouble* m) { T().topMatrix() = toMat(m); }
 void APIENTRY tMultMatrixf(const GLfloat* m) { T().topMatrix() *= toMat(m); }
 void APIENTRY tMultMatrixd(const GLdouble* m) { T().topMatrix() *= toMat(m); }
-void APIENTRY tLoadTransposeMatrixf(const GLfloat* m) { T().topMatrix() = glm::transpose(toMat(m)); }
-void APIENTRY tLoadTransposeMatrixd(const GLdouble* m) { T().topMatrix() = glm::transpose(toMat(m)); }
-void APIENTRY tMultTransposeMatrixf(const GLfloat* m) { T().topMatrix() *= glm::transpose(toMat(m)); }
-void APIENTRY tMultTransposeMatrixd(const GLdouble* m) { T().topMatrix() *= glm::transpose(toMat(m)); }
+void APIENTRY tLoadTransposeMatrixf(const GLfloat* m)
+{
+    T().topMatrix() = glm::transpose(toMat(m));
+}
+void APIENTRY tLoadTransposeMatrixd(const GLdouble* m)
+{
+    T().topMatrix() = glm::transpose(toMat(m));
+}
+void APIENTRY tMultTransposeMatrixf(const GLfloat* m)
+{
+    T().topMatrix() *= glm::transpose(toMat(m));
+}
+void APIENTRY tMultTransposeMatrixd(const GLdouble* m)
+{
+    T().topMatrix() *= glm::transpose(toMat(m));
+}
 void rotate(float angle, float x, float y, float z)
 {
     glm::vec3 axis(x, y, z);
@@ -75,12 +87,18 @@ void APIENTRY tTranslatef(GLfloat x, GLfloat y, GLfloat z)
 {
     T().topMatrix() = glm::translate(T().topMatrix(), glm::vec3(x, y, z));
 }
-void APIENTRY tTranslated(GLdouble x, GLdouble y, GLdouble z) { tTranslatef(GLfloat(x), GLfloat(y), GLfloat(z)); }
+void APIENTRY tTranslated(GLdouble x, GLdouble y, GLdouble z)
+{
+    tTranslatef(GLfloat(x), GLfloat(y), GLfloat(z));
+}
 void APIENTRY tScalef(GLfloat x, GLfloat y, GLfloat z)
 {
     T().topMatrix() = glm::scale(T().topMatrix(), glm::vec3(x, y, z));
 }
-void APIENTRY tScaled(GLdouble x, GLdouble y, GLdouble z) { tScalef(GLfloat(x), GLfloat(y), GLfloat(z)); }
+void APIENTRY tScaled(GLdouble x, GLdouble y, GLdouble z)
+{
+    tScalef(GLfloat(x), GLfloat(y), GLfloat(z));
+}
 void APIENTRY tFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f)
 {
     T().topMatrix() *= glm::frustum(float(l), float(r), float(b), float(t), float(n), float(f));
@@ -93,7 +111,10 @@ void APIENTRY tPushMatrix() { T().pushMatrix(); }
 void APIENTRY tPopMatrix() { T().popMatrix(); }
 void APIENTRY tEnable(GLenum cap) { T().setEnabled(cap, true); }
 void APIENTRY tDisable(GLenum cap) { T().setEnabled(cap, false); }
-void APIENTRY tMaterialfv(GLenum face, GLenum pname, const GLfloat* v) { T().material(face, pname, v); }
+void APIENTRY tMaterialfv(GLenum face, GLenum pname, const GLfloat* v)
+{
+    T().material(face, pname, v);
+}
 void APIENTRY tMaterialf(GLenum face, GLenum pname, GLfloat v)
 {
     // Only single-valued pnames are valid here (the driver refuses the others).
@@ -164,7 +185,10 @@ void APIENTRY tRectd(GLdouble a, GLdouble b, GLdouble c, GLdouble d)
 {
     T().rect(float(a), float(b), float(c), float(d));
 }
-void APIENTRY tRecti(GLint a, GLint b, GLint c, GLint d) { T().rect(float(a), float(b), float(c), float(d)); }
+void APIENTRY tRecti(GLint a, GLint b, GLint c, GLint d)
+{
+    T().rect(float(a), float(b), float(c), float(d));
+}
 void APIENTRY tRects(GLshort a, GLshort b, GLshort c, GLshort d)
 {
     T().rect(float(a), float(b), float(c), float(d));
@@ -893,7 +917,8 @@ void StateTracker::enableArray(GLenum cap, bool on)
 
 void StateTracker::clientActiveTexture(GLenum unit)
 {
-    if (unit >= GL_TEXTURE0 && unit < GL_TEXTURE0 + 8) mClientActiveTexture = int(unit - GL_TEXTURE0);
+    if (unit >= GL_TEXTURE0 && unit < GL_TEXTURE0 + 8)
+        mClientActiveTexture = int(unit - GL_TEXTURE0);
 }
 
 void StateTracker::arrayPointer(int slot, GLint size, GLenum type, GLsizei stride,

@@ -55,7 +55,9 @@ const std::vector<uint8_t>* CallReader::getBlobRef()
     std::string error;
     const std::vector<uint8_t>* blob = mBlobs ? mBlobs->blob(hash, error) : nullptr;
     if (!blob || blob->size() != size) {
-        fail(blob ? "blob size mismatch" : mBlobs ? error : "blob reference without a capture file");
+        fail(blob     ? "blob size mismatch"
+             : mBlobs ? error
+                      : "blob reference without a capture file");
         return nullptr;
     }
     return blob;

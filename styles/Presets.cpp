@@ -105,7 +105,8 @@ bool Presets::load(const std::string& nameOrFile, std::string& chain, std::strin
             if (nameOrFile == p.name) return parse(p.text, p.name, chain, config, error);
         }
         std::string known;
-        for (const Preset& p : shipped()) known += (known.empty() ? "" : ", ") + std::string(p.name);
+        for (const Preset& p : shipped())
+            known += (known.empty() ? "" : ", ") + std::string(p.name);
         error = "unknown preset '" + nameOrFile + "' (shipped: " + known +
                 "; or give a file name)";
         return false;

@@ -41,7 +41,8 @@ bool StyleSettings::parse(const std::string& chain, const std::string& config,
             return false;
         }
         if (param->kind == ParamKind::Colour && !text.empty() && !ParamInfo::isColour(text)) {
-            error = "parameter " + key + ": '" + text + "' is not a colour (use rrggbb, e.g. 1a2b3c)";
+            error =
+                "parameter " + key + ": '" + text + "' is not a colour (use rrggbb, e.g. 1a2b3c)";
             return false;
         }
         if (param->kind == ParamKind::Text || param->kind == ParamKind::Colour) {

@@ -71,9 +71,9 @@ TEST_P(Golden, ReplayMatchesTheGoldenImage)
 {
     const GoldenCase& c = GetParam();
     const std::string dir = freshDir("golden_" + goldenName(c));
-    ProcessResult r = runProcess({nprglCommand(), "replay", source("/fixtures/" + c.fixture + ".nprgl"),
-                                  "-o", dir, "--style", c.style, "--frames",
-                                  std::to_string(c.frame)});
+    ProcessResult r =
+        runProcess({nprglCommand(), "replay", source("/fixtures/" + c.fixture + ".nprgl"), "-o",
+                    dir, "--style", c.style, "--frames", std::to_string(c.frame)});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string golden = source("/golden/" + goldenName(c) + ".png");
     ASSERT_TRUE(fs::exists(golden)) << golden << " is missing: run scripts/rebase-goldens.sh";
@@ -116,8 +116,10 @@ TEST(Compositor, StylesChangeTheSceneAndKeepTheOverlayOnTop)
     for (int y = 0; y < a.height; ++y) {
         for (int x = 0; x < a.width; ++x) {
             const size_t i = (size_t(y) * a.width + x) * 4;
-            const bool differs = std::abs(a.rgba[i] - b.rgba[i]) + std::abs(a.rgba[i + 1] - b.rgba[i + 1]) +
-                                     std::abs(a.rgba[i + 2] - b.rgba[i + 2]) > 6;
+            const bool differs = std::abs(a.rgba[i] - b.rgba[i]) +
+                                     std::abs(a.rgba[i + 1] - b.rgba[i + 1]) +
+                                     std::abs(a.rgba[i + 2] - b.rgba[i + 2]) >
+                                 6;
             if (y < 32 && x < 170) titleDiffers += differs;
             if (y > 150 && y < 420) sceneDiffers += differs;
         }
@@ -130,7 +132,8 @@ TEST(Compositor, CoreProfileProgramsArePassedThroughWithOneWarning)
 {
     ProcessResult n = runProcess({binDir() + "/probe_core"});
     ASSERT_EQ(n.exitCode, 0) << n.err;
-    ProcessResult s = runProcess({nprglCommand(), "--style", "toon", "--", binDir() + "/probe_core"});
+    ProcessResult s =
+        runProcess({nprglCommand(), "--style", "toon", "--", binDir() + "/probe_core"});
     ASSERT_EQ(s.exitCode, 0) << s.err;
     EXPECT_EQ(s.out, n.out);
     size_t warnings = 0;

@@ -278,8 +278,8 @@ TEST(Paper, StaysInsideTheViewport)
     ASSERT_TRUE(harness.ok());
     styles::Scene scene = sphereScene(harness);
     scene.viewport = {20, 30, 60, 50};
-    const PngImage image = renderOver(harness, scene, "paper", "paper.grain=0.5,paper.grain_scene=on",
-                                       [](auto&) {});
+    const PngImage image =
+        renderOver(harness, scene, "paper", "paper.grain=0.5,paper.grain_scene=on", [](auto&) {});
     save(image, "viewport");
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
@@ -302,7 +302,8 @@ TEST(Paper, EmptySceneChangesNothing)
     styles::Scene scene = sphereScene(harness);
     scene.objects.clear();
     const glm::vec4 grey(0.25f, 0.5f, 0.75f, 1.0f);
-    const PngImage image = render(harness, scene, "toon+paper", "paper.grain=1,paper.grain_scene=on", grey);
+    const PngImage image =
+        render(harness, scene, "toon+paper", "paper.grain=1,paper.grain_scene=on", grey);
     for (int y = 0; y < kSize; y += 7) {
         for (int x = 0; x < kSize; x += 7) EXPECT_EQ(pixel(image, x, y), (Rgb{64, 128, 191}));
     }

@@ -85,9 +85,10 @@ TEST_P(RecordReplay, ReplayIsPixelIdenticalToTheLiveFrames)
     }
     std::string dir = freshDir("rec"), live = dir + "/live", replay = dir + "/replay";
     std::string file = dir + "/capture.nprgl";
-    std::vector<std::string> cmd = {nprglCommand(), "record", "--style", "none", "-o", file, "--", demo(c.app),
-                                    "--frames", "3", "--size", "96x72", "--save-dir", live,
-                                    "--save-frames", "1-3"};
+    std::vector<std::string> cmd = {
+        nprglCommand(), "record",    "--style",       "none", "-o",     file,
+        "--",           demo(c.app), "--frames",      "3",    "--size", "96x72",
+        "--save-dir",   live,        "--save-frames", "1-3"};
     cmd.insert(cmd.end(), c.args.begin(), c.args.end());
     if (c.offscreen) cmd.push_back("--offscreen");
     ProcessResult r = runProcess(cmd);
@@ -122,7 +123,8 @@ TEST(Fixtures, EveryDemoFixtureReplaysAsTheDemoDrawsToday)
         cmd.insert(cmd.end(), args.begin(), args.end());
         ProcessResult r = runProcess(cmd);
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", fixture(name), "-o", replay});
+        ProcessResult p =
+            runProcess({nprglCommand(), "replay", "--style", "none", fixture(name), "-o", replay});
         ASSERT_EQ(p.exitCode, 0) << name << ": " << p.err;
         expectSameFrames(live, app, replay, 3);
     }
@@ -142,7 +144,8 @@ TEST(Fixtures, CharacterFixturesReplayAsTheDemoDrawsToday)
                                       "--offscreen", "--frames", "3", "--size", "160x120",
                                       "--save-dir", live});
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", fixture(name), "-o", replay});
+        ProcessResult p =
+            runProcess({nprglCommand(), "replay", "--style", "none", fixture(name), "-o", replay});
         ASSERT_EQ(p.exitCode, 0) << name << ": " << p.err;
         expectSameFrames(live, "character", replay, 3);
     }
@@ -151,7 +154,8 @@ TEST(Fixtures, CharacterFixturesReplayAsTheDemoDrawsToday)
 TEST(Fixtures, GlxgearsReplaysAsGlxgears)
 {
     std::string replay = freshDir("gears");
-    ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", fixture("glxgears"), "-o", replay});
+    ProcessResult p = runProcess(
+        {nprglCommand(), "replay", "--style", "none", fixture("glxgears"), "-o", replay});
     ASSERT_EQ(p.exitCode, 0) << p.err;
     expectGlxgearsPicture(framePng(replay, 3));
 }
@@ -186,9 +190,9 @@ TEST(Dump, PrintsOneCallPerLineWithNamedArguments)
 TEST(Info, ReportsProgramFramesCallsAndWhatWasNotCaptured)
 {
     std::string dir = freshDir("info"), file = dir + "/d.nprgl";
-    ProcessResult r = runProcess({nprglCommand(), "record", "--style", "none", "-o", file, "--", demo("displaylist"),
-                                  "--offscreen", "--frames", "4", "--size", "64x64",
-                                  "--save-dir", dir + "/live"});
+    ProcessResult r = runProcess({nprglCommand(), "record", "--style", "none", "-o", file, "--",
+                                  demo("displaylist"), "--offscreen", "--frames", "4", "--size",
+                                  "64x64", "--save-dir", dir + "/live"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("not captured: glReadPixels"), std::string::npos) << r.err;
     ProcessResult i = runProcess({nprglCommand(), "info", file});
@@ -257,7 +261,8 @@ TEST(Record, ProgramsStoppedBySignalsOrUnderscoreExitLeaveReadableFiles)
         std::smatch m;
         ASSERT_TRUE(std::regex_search(i.out, m, std::regex(R"(frames:\s+(\d+))"))) << i.out;
         EXPECT_GE(std::stoi(m[1]), 1);
-        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", dir + "/r"});
+        ProcessResult p =
+            runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", dir + "/r"});
         EXPECT_EQ(p.exitCode, 0) << p.err;
         EXPECT_TRUE(fs::exists(framePng(dir + "/r", 1)));
     }
@@ -301,8 +306,8 @@ TEST(Record, EachContextHasItsOwnStream)
     // Context 1 cleared to red, context 2 to blue.
     for (int ctx : {1, 2}) {
         std::string out = dir + "/ctx" + std::to_string(ctx);
-        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "--context",
-                                      std::to_string(ctx), "-o", out});
+        ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file,
+                                      "--context", std::to_string(ctx), "-o", out});
         ASSERT_EQ(p.exitCode, 0) << p.err;
         PngImage image;
         std::string error;

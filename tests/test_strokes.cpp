@@ -349,15 +349,8 @@ TEST(StrokeSimplification, MergesOnlyExactlyCollinearVisibleSegments)
 
 namespace {
 
-const char* kDepthVertex = R"(#version 130
-uniform mat4 mvp;
-in vec3 position;
-void main() { gl_Position = mvp * vec4(position, 1.0); }
-)";
-const char* kDepthFragment = R"(#version 130
-out vec4 fragColor;
-void main() { fragColor = vec4(1.0); }
-)";
+const char* const kDepthVertex = StyleHarness::depthVertexShader();
+const char* const kDepthFragment = StyleHarness::depthFragmentShader();
 
 // The state a method gave to the point at `fraction` along mesh edge `edge`.
 uint8_t stateAt(const reconstruct::ObjectMesh& mesh, const Polylines& lines, uint32_t edge,

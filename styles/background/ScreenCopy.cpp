@@ -1,22 +1,8 @@
 #include "styles/background/ScreenCopy.h"
 
+#include "styles/textures/GlTexture.h"
+
 namespace nprgl::styles {
-
-namespace {
-
-void makeTexture(const GlFunctions& gl, GLuint tex, GLint internal, GLenum format, GLenum type,
-                 int width, int height)
-{
-    gl.BindTexture(GL_TEXTURE_2D, tex);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, internal, width, height, 0, format, type, nullptr);
-    // texelFetch only; nearest keeps the texture complete without mipmaps.
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
-
-} // namespace
 
 void ScreenCopy::ensure(const GlFunctions& gl, int width, int height)
 {
@@ -25,7 +11,7 @@ void ScreenCopy::ensure(const GlFunctions& gl, int width, int height)
     mWidth = width;
     mHeight = height;
     gl.GenTextures(1, &mColour);
-    makeTexture(gl, mColour, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    GlTexture::allocateNearest(gl, mColour, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
 }
 
 bool ScreenCopy::capture(const GlFunctions& gl, const glm::ivec4& viewport)

@@ -1,22 +1,8 @@
 #include "styles/outlines/EdgeTargets.h"
 
+#include "styles/textures/GlTexture.h"
+
 namespace nprgl::styles {
-
-namespace {
-
-void makeTexture(const GlFunctions& gl, GLuint tex, GLint internal, GLenum format, GLenum type,
-                 int width, int height)
-{
-    gl.BindTexture(GL_TEXTURE_2D, tex);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, internal, width, height, 0, format, type, nullptr);
-    // Read with texelFetch only; nearest keeps the texture complete without mipmaps.
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
-
-} // namespace
 
 bool EdgeTargets::ensure(const GlFunctions& gl, int width, int height)
 {
@@ -27,9 +13,10 @@ bool EdgeTargets::ensure(const GlFunctions& gl, int width, int height)
     gl.GenTextures(3, mTex);
     gl.GenFramebuffers(3, mFbo);
     gl.GenRenderbuffers(1, &mDepth);
-    makeTexture(gl, mTex[0], GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, width, height);
-    makeTexture(gl, mTex[1], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
-    makeTexture(gl, mTex[2], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
+    GlTexture::allocateNearest(gl, mTex[0], GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, width,
+                               height);
+    GlTexture::allocateNearest(gl, mTex[1], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
+    GlTexture::allocateNearest(gl, mTex[2], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);
     gl.BindTexture(GL_TEXTURE_2D, 0);
     gl.BindRenderbuffer(GL_RENDERBUFFER, mDepth);
     gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);

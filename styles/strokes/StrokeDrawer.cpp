@@ -1,5 +1,7 @@
 #include "styles/strokes/StrokeDrawer.h"
 
+#include "styles/textures/GlTexture.h"
+
 #include <algorithm>
 #include <cstddef>
 
@@ -106,11 +108,7 @@ void StrokeDrawer::setTexture(const GlFunctions& gl, const PngImage& image)
     if (!mTexture) gl.GenTextures(1, &mTexture);
     gl.ActiveTexture(GL_TEXTURE0);
     gl.BindTexture(GL_TEXTURE_2D, mTexture);
-    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    GlTexture::resetUnpack(gl);
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA,
                   GL_UNSIGNED_BYTE, image.rgba.data());
     gl.GenerateMipmap(GL_TEXTURE_2D);

@@ -16,22 +16,18 @@ bool collinear(const Polylines& lines, uint32_t previous, uint32_t current, uint
     return glm::dot(a, b) > 0.0f && glm::dot(c, c) <= 1e-12f * la * lb;
 }
 
-} // namespace
-
-uint32_t StrokeSimplifier::simplify(Polylines& lines) const
+// Drops the inner points `drop(last, i)` picks, polyline by polyline, compacting in place
+// (`last` is the index, after compaction, of the previous kept point). Returns how many.
+template <typename Drop>
+uint32_t compact(Polylines& lines, Drop&& drop)
 {
-    uint32_t write = 0;
-    uint32_t removed = 0;
-    uint32_t newStart = 0;
+    uint32_t write = 0, removed = 0, newStart = 0;
     for (uint32_t p = 0; p < lines.count(); ++p) {
         const uint32_t begin = lines.start[p], end = lines.start[p + 1];
         lines.start[p] = newStart;
-        uint32_t last = 0; // index (after compaction) of the previous kept point
+        uint32_t last = 0;
         for (uint32_t i = begin; i < end; ++i) {
-            const bool inner = i > begin && i + 1 < end;
-            if (inner && lines.state[last] == kVisible && lines.state[i] == kVisible &&
-                collinear(lines, last, i, i + 1)) {
-                // Drop point i: the kept previous point's segment now reaches i + 1.
+            if (i > begin && i + 1 < end && drop(last, i)) {
                 ++removed;
                 continue;
             }
@@ -49,41 +45,32 @@ uint32_t StrokeSimplifier::simplify(Polylines& lines) const
     return removed;
 }
 
+} // namespace
+
+uint32_t StrokeSimplifier::simplify(Polylines& lines) const
+{
+    // Point i goes when it joins two visible, exactly collinear segments: the kept previous
+    // point's segment then reaches i + 1.
+    return compact(lines, [&lines](uint32_t last, uint32_t i) {
+        return lines.state[last] == kVisible && lines.state[i] == kVisible &&
+               collinear(lines, last, i, i + 1);
+    });
+}
+
 uint32_t StrokeSimplifier::removeFolds(Polylines& lines, float maxLength) const
 {
     if (maxLength <= 0.0f) return 0;
     constexpr float kTurnBack = -0.5f; // cos 120 degrees
-    uint32_t write = 0, removed = 0, newStart = 0;
-    for (uint32_t p = 0; p < lines.count(); ++p) {
-        const uint32_t begin = lines.start[p], end = lines.start[p + 1];
-        lines.start[p] = newStart;
-        uint32_t last = 0;
-        for (uint32_t i = begin; i < end; ++i) {
-            if (i > begin && i + 1 < end && lines.state[last] == kVisible &&
-                lines.state[i] == kVisible) {
-                const glm::vec2 a = glm::vec2(lines.points[i].window) -
-                                    glm::vec2(lines.points[last].window);
-                const glm::vec2 b = glm::vec2(lines.points[i + 1].window) -
-                                    glm::vec2(lines.points[i].window);
-                const float la = glm::length(a), lb = glm::length(b);
-                if (la > 0.0f && lb > 0.0f && std::min(la, lb) < maxLength &&
-                    glm::dot(a, b) < kTurnBack * la * lb) {
-                    ++removed;
-                    continue;
-                }
-            }
-            lines.points[write] = lines.points[i];
-            lines.edge[write] = lines.edge[i];
-            lines.state[write] = lines.state[i];
-            last = write++;
-        }
-        newStart = write;
-    }
-    lines.start[lines.count()] = newStart;
-    lines.points.resize(write);
-    lines.edge.resize(write);
-    lines.state.resize(write);
-    return removed;
+    return compact(lines, [&](uint32_t last, uint32_t i) {
+        if (lines.state[last] != kVisible || lines.state[i] != kVisible) return false;
+        const glm::vec2 a =
+            glm::vec2(lines.points[i].window) - glm::vec2(lines.points[last].window);
+        const glm::vec2 b =
+            glm::vec2(lines.points[i + 1].window) - glm::vec2(lines.points[i].window);
+        const float la = glm::length(a), lb = glm::length(b);
+        return la > 0.0f && lb > 0.0f && std::min(la, lb) < maxLength &&
+               glm::dot(a, b) < kTurnBack * la * lb;
+    });
 }
 
 } // namespace nprgl::styles::strokes

@@ -10,12 +10,7 @@ void GlTexture::upload(const GlFunctions& gl, const TextureImage& image, bool mi
 {
     if (!mTexture) gl.GenTextures(1, &mTexture);
     gl.BindTexture(GL_TEXTURE_2D, mTexture);
-    // The program may have left any unpack state or a pixel-unpack buffer bound.
-    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    resetUnpack(gl);
     const bool grey = image.channels == 1;
     gl.TexImage2D(GL_TEXTURE_2D, 0, grey ? GL_R8 : GL_RGBA8, image.width, image.height, 0,
                   grey ? GL_RED : GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
@@ -58,6 +53,26 @@ bool GlTexture::loadPng(const std::string& path, bool grey, TextureImage& out,
         out.pixels[i] = uint8_t(std::lround(255.0f * (lum * a + (1.0f - a))));
     }
     return true;
+}
+
+void GlTexture::resetUnpack(const GlFunctions& gl)
+{
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+}
+
+void GlTexture::allocateNearest(const GlFunctions& gl, GLuint tex, GLint internalFormat,
+                                GLenum format, GLenum type, int width, int height)
+{
+    gl.BindTexture(GL_TEXTURE_2D, tex);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 } // namespace nprgl::styles

@@ -20,6 +20,13 @@ public:
     GLuint id() const { return mTexture; }
     bool valid() const { return mTexture != 0; }
 
+    // The default unpack state and no pixel-unpack buffer: the program may have left any.
+    static void resetUnpack(const GlFunctions& gl);
+    // Allocates level 0 of texture `tex` (width x height, no data) for texelFetch reads:
+    // nearest filtering (complete without mipmaps), clamped to the edge. Leaves it bound.
+    static void allocateNearest(const GlFunctions& gl, GLuint tex, GLint internalFormat,
+                                GLenum format, GLenum type, int width, int height);
+
     // Reads a PNG as a texture: grey (its luminance) or RGBA. False with a message on a
     // missing or unreadable file.
     static bool loadPng(const std::string& path, bool grey, TextureImage& out,

@@ -19,7 +19,8 @@ ImageDiff compareImages(const std::string& a, const std::string& b, int toleranc
     diff.comparable = true;
     for (size_t i = 0; i < ia.rgba.size(); i += 4) {
         int delta = 0;
-        for (int c = 0; c < 3; ++c) delta = std::max(delta, std::abs(ia.rgba[i + c] - ib.rgba[i + c]));
+        for (int c = 0; c < 3; ++c)
+            delta = std::max(delta, std::abs(ia.rgba[i + c] - ib.rgba[i + c]));
         if (delta > tolerance) ++diff.differingPixels;
         diff.maxChannelDelta = std::max(diff.maxChannelDelta, delta);
     }

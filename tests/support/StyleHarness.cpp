@@ -68,6 +68,9 @@ styles::Scene StyleHarness::makeScene(const std::vector<reconstruct::Batch>& bat
     return scene;
 }
 
+const char* StyleHarness::depthVertexShader() { return kDepthVertex; }
+const char* StyleHarness::depthFragmentShader() { return kDepthFragment; }
+
 bool StyleHarness::drawDepth(const styles::Scene& scene, styles::StyleChain& styleChain,
                              std::string& error)
 {

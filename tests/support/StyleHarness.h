@@ -31,6 +31,9 @@ public:
     bool render(const styles::Scene& scene, const std::string& chain, const std::string& config,
                 PngImage& out, std::string& error, glm::vec4 background = glm::vec4(1.0f));
     const styles::GlFunctions& gl() const { return mGl; }
+    // A depth-only program's sources (uniform mat4 mvp; attribute 0 position).
+    static const char* depthVertexShader();
+    static const char* depthFragmentShader();
 
 private:
     bool drawDepth(const styles::Scene& scene, styles::StyleChain& chain, std::string& error);
