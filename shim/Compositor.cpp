@@ -10,6 +10,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+
 namespace nprgl {
 
 namespace {
@@ -264,11 +266,24 @@ bool Compositor::startStyles()
     return true;
 }
 
+void Compositor::noteUnstyled(bool polygonal)
+{
+    // Say once per reason why 3D polygons are left as the program draws them: the picture
+    // is then partly the program's own, and the user should know why.
+    if (!polygonal || !mTracker.is3D()) return;
+    const char* why = mTracker.unstylableState();
+    if (!why || std::find(mReported.begin(), mReported.end(), why) != mReported.end()) return;
+    mReported.push_back(why);
+    NPRGL_INFO("context %u: 3D polygons drawn with %s are left as the program draws them",
+               mContext.serial(), why);
+}
+
 bool Compositor::holdDraw(GLenum mode)
 {
     if (!ready()) return false;
     syncStream();
     if (!mTracker.wouldHold(mode)) {
+        noteUnstyled(mode >= GL_TRIANGLES && mode <= GL_POLYGON);
         if (mHeld) flush();
         return false;
     }
@@ -281,6 +296,7 @@ bool Compositor::holdList(GLuint list)
     if (!ready()) return false;
     syncStream();
     if (!mTracker.wouldHoldList(list)) {
+        noteUnstyled(true);
         if (mHeld) flush();
         return false;
     }

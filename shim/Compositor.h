@@ -72,6 +72,7 @@ private:
     bool ready();
     bool startStyles();
     void noteHeld();
+    void noteUnstyled(bool polygonal);
     void buildScene();
     void render();
     bool saveState();
@@ -102,6 +103,7 @@ private:
     GLint mHeldFramebuffer = 0;
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
+    std::vector<const char*> mReported; // reasons for unstyled 3D polygons, said once each
 
     std::vector<TrackedBatch> mTracked;
     std::vector<reconstruct::Batch> mBatches;

@@ -428,11 +428,27 @@ std::vector<TrackedVertex> StateTracker::takeVertices()
 
 bool StateTracker::wouldHold(GLenum mode) const
 {
-    const AttribState& a = mAttrib;
     return mHolding && isPolygonMode(mode) && !mCompiling && mRenderMode == GL_RENDER &&
-           (a.depthTest || mProjection.back()[3][3] == 0.0f) && !a.blend && !a.alphaTest &&
-           !a.stencilTest && a.fillFront && a.fillBack && a.colorMaskAll && a.textureUnits == 0 &&
-           !multitexturedArrays();
+           is3D() && !unstylableState();
+}
+
+bool StateTracker::is3D() const
+{
+    return mAttrib.depthTest || mProjection.back()[3][3] == 0.0f;
+}
+
+const char* StateTracker::unstylableState() const
+{
+    const AttribState& a = mAttrib;
+    if (a.blend) return "blending";
+    if (a.alphaTest) return "the alpha test";
+    if (a.stencilTest) return "the stencil test";
+    if (!a.fillFront || !a.fillBack) return "glPolygonMode lines or points";
+    if (!a.colorMaskAll) return "a colour mask";
+    if (a.textureUnits != 0 || multitexturedArrays()) {
+        return "multitexturing or generated texture coordinates";
+    }
+    return nullptr;
 }
 
 bool StateTracker::multitexturedArrays() const

@@ -80,6 +80,10 @@ public:
     // Would glCallList(list) issued now be held back as a whole? Its draws are all polygonal
     // (no bitmaps, pixels, lines or points, also in the lists it calls).
     bool wouldHoldList(GLuint list) const;
+    // A 3D polygon draw issued now would not be held because of this state (for the log), or
+    // null. 2D drawing (no depth test, no perspective) is not held and needs no reason.
+    const char* unstylableState() const;
+    bool is3D() const;
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
     void setViewport(const glm::ivec4& v) { mAttrib.viewport = v; }
     const glm::ivec4& viewport() const { return mAttrib.viewport; }
