@@ -27,7 +27,9 @@ const std::vector<std::string> kStyles = {"none",           "toon",           "t
                                           "halftone",       "wireframe",      "perpixel",
                                           "edges",          "strokes",        "toon+edges",
                                           "halftone+wireframe", "textured+strokes",
-                                          "toon+perpixel"};
+                                          "toon+perpixel",  "halftone+strokes",
+                                          "textured+edges", "toon+paper+edges",
+                                          "paper"};
 
 std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
 
