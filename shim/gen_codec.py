@@ -357,6 +357,8 @@ def emitDecode(cmds, groups):
                 if p.base == "GLenum":
                     gid = groups.get(p.group, 0)
                     out.append(f'            sink.argEnum("{p.name}", {n}, {gid});')
+                elif p.base == "GLbitfield":
+                    out.append(f'            sink.argBits("{p.name}", {n});')
                 else:
                     out.append(f'            sink.arg("{p.name}", {n});')
             elif p.kind == "array":

@@ -77,6 +77,14 @@ void CallPrinter::arg(const char* name, double value)
     appendNumber(value);
 }
 
+void CallPrinter::argBits(const char* name, uint32_t value)
+{
+    startArg(name);
+    char text[16];
+    std::snprintf(text, sizeof text, "0x%x", value);
+    mLine += text;
+}
+
 void CallPrinter::argEnum(const char* name, uint32_t value, int group)
 {
     startArg(name);

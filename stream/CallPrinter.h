@@ -23,6 +23,8 @@ public:
     void begin(const char* name);
     void arg(const char* name, double value);
     void argEnum(const char* name, uint32_t value, int group);
+    // A bitfield (glClear's mask, glPushAttrib's): hexadecimal, as the GL headers write them.
+    void argBits(const char* name, uint32_t value);
     template <typename T>
     void argArray(const char* name, const T* values, size_t count)
     {
