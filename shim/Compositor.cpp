@@ -523,17 +523,4 @@ void Compositor::restoreState()
     gl.glPopAttrib();
 }
 
-void Compositor::shutdown()
-{
-    flush();
-    if (mPhase == Phase::Ready) {
-        const GLenum appError = gRealGl.glGetError();
-        mChain.shutdown();
-        while (gRealGl.glGetError() != GL_NO_ERROR) {
-        }
-        if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
-    }
-    mPhase = Phase::Off;
-}
-
 } // namespace nprgl

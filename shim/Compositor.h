@@ -49,8 +49,6 @@ public:
 
     // Renders what is held back, if anything.
     void flush();
-    // The context is going away or switching: flush, and drop the styles with it current.
-    void shutdown();
 
     // Dispatch entry points (through the current context's compositor).
     void begin(GLenum mode);
