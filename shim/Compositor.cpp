@@ -222,10 +222,13 @@ bool Compositor::ready()
         mPhase = Phase::Off;
         return false;
     }
-    GLint viewport[4] = {};
+    GLint viewport[4] = {}, maxAttrib = 16, maxClient = 16;
     gRealGl.glGetIntegerv(GL_VIEWPORT, viewport);
+    gRealGl.glGetIntegerv(GL_MAX_ATTRIB_STACK_DEPTH, &maxAttrib);
+    gRealGl.glGetIntegerv(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, &maxClient);
     syncStream();
     mTracker.setViewport({viewport[0], viewport[1], viewport[2], viewport[3]});
+    mTracker.setStackLimits(maxAttrib, maxClient);
     mTracker.setHolding(true);
     // While a held glBegin..glEnd is open: the context's table with vertices recorded only.
     mHeldNext = mNext;
@@ -420,8 +423,7 @@ void Compositor::buildScene()
         s.mesh = o.mesh;
         s.modelview = o.modelview;
         s.projection = t.projection;
-        s.material = {t.material.ambient, t.material.diffuse, t.material.specular,
-                      t.material.shininess};
+        s.material = t.material;
         s.lit = t.lit;
         s.hasNormals = t.hasNormals;
         s.flat = t.flat;
@@ -445,10 +447,13 @@ void Compositor::render()
         gRealGl.glGetFloatv(GL_COLOR_CLEAR_VALUE, glm::value_ptr(mScene.clearColor));
         mChain.render(mScene);
         restoreState();
-    } else if (mFlushes == 0) {
-        NPRGL_WARN("context %u: the program's attribute stacks are full; this scene is drawn "
-                   "without style",
+    } else if (!mStackWarned) {
+        // The tracker holds nothing while the stacks are full, so only a program that
+        // overflowed them (a GL error of its own) gets here.
+        NPRGL_WARN("context %u: the attribute stacks are full although nprgl counted room; "
+                   "held-back geometry of this frame is not drawn",
                    mContext.serial());
+        mStackWarned = true;
     }
     ++mFlushes;
     GLenum ours = gRealGl.glGetError();

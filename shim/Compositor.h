@@ -98,6 +98,7 @@ private:
     bool mHeld = false;         // held batches wait for the next flush
     bool mHoldingBegin = false; // inside a held glBegin..glEnd
     GLboolean mSavedDiscard = GL_FALSE;
+    bool mStackWarned = false;
     GLint mHeldFramebuffer = 0;
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
@@ -113,7 +114,7 @@ private:
     struct Saved {
         GLint program = 0, arrayBuffer = 0, vertexArray = 0, drawFramebuffer = 0,
               readFramebuffer = 0, activeTexture = 0, renderbuffer = 0, packBuffer = 0,
-              unpackBuffer = 0, elementBuffer = 0;
+              unpackBuffer = 0;
         GLint textures[4] = {};
     } mSaved;
     PFNGLBINDFRAMEBUFFERPROC mBindFramebuffer = nullptr;

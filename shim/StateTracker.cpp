@@ -229,6 +229,8 @@ void APIENTRY tViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 }
 void APIENTRY tPushAttrib(GLbitfield mask) { T().pushAttrib(mask); }
 void APIENTRY tPopAttrib() { T().popAttrib(); }
+void APIENTRY tPushClientAttrib(GLbitfield) { T().pushClientAttrib(); }
+void APIENTRY tPopClientAttrib() { T().popClientAttrib(); }
 void APIENTRY tBitmap(GLsizei, GLsizei, GLfloat, GLfloat, GLfloat, GLfloat, const GLubyte*)
 {
     T().otherDraw();
@@ -352,6 +354,8 @@ StateTracker::StateTracker()
     d.glViewport = tViewport;
     d.glPushAttrib = tPushAttrib;
     d.glPopAttrib = tPopAttrib;
+    d.glPushClientAttrib = tPushClientAttrib;
+    d.glPopClientAttrib = tPopClientAttrib;
     d.glBitmap = tBitmap;
     d.glDrawPixels = tDrawPixels;
     d.glCopyPixels = tCopyPixels;
@@ -445,6 +449,11 @@ const char* StateTracker::unstylableState() const
     if (a.stencilTest) return "the stencil test";
     if (!a.fillFront || !a.fillBack) return "glPolygonMode lines or points";
     if (!a.colorMaskAll) return "a colour mask";
+    // The styles run inside one more glPushAttrib/glPushClientAttrib: a full stack would
+    // leave the held scene undrawn.
+    if (int(mAttribStack.size()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
+        return "a full attribute stack";
+    }
     if (a.textureUnits != 0 || multitexturedArrays()) {
         return "multitexturing or generated texture coordinates";
     }

@@ -5,6 +5,7 @@
 #include "shim/ClientArrays.h"
 #include "shim/ShadowArrays.h"
 #include "stream/CallReader.h"
+#include "styles/Scene.h"
 
 #include <glm/glm.hpp>
 
@@ -23,13 +24,8 @@ enum class Attrib { Vertex, Normal, Color, TexCoord };
 // Reconstructor without converting them. hasNormal always equals its batch's hasNormals.
 using TrackedVertex = reconstruct::Vertex;
 
-// The front material as glMaterial set it.
-struct TrackedMaterial {
-    glm::vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f};
-    glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
-    glm::vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};
-    float shininess = 0.0f;
-};
+// The front material as glMaterial set it (what the styles receive).
+using TrackedMaterial = styles::SceneMaterial;
 
 // One polygonal draw of a frame, with the state reconstruction and the styles need.
 struct TrackedBatch {
@@ -85,6 +81,12 @@ public:
     const char* unstylableState() const;
     bool is3D() const;
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
+    // The driver's attribute stack depths (GL_MAX_ATTRIB_STACK_DEPTH, ..._CLIENT_...).
+    void setStackLimits(int attrib, int client)
+    {
+        mMaxAttribDepth = attrib;
+        mMaxClientDepth = client;
+    }
     void setViewport(const glm::ivec4& v) { mAttrib.viewport = v; }
     const glm::ivec4& viewport() const { return mAttrib.viewport; }
     // Moves the held batches out (the frame's batch list starts empty again). The batches
@@ -151,6 +153,8 @@ public:
     }
     void pushAttrib(GLbitfield mask);
     void popAttrib();
+    void pushClientAttrib() { mClientDepth += mClientDepth < 64; }
+    void popClientAttrib() { mClientDepth -= mClientDepth > 0; }
     void otherDraw(); // a bitmap, pixel rectangle, line or point: never held
 
 private:
@@ -234,6 +238,8 @@ private:
     bool mHolding = false;
     int mHoldingList = 0; // > 0 while a held glCallList expands
     GLenum mRenderMode = GL_RENDER;
+    int mClientDepth = 0;
+    int mMaxAttribDepth = 16, mMaxClientDepth = 16; // GL's minimum until told
     bool mLiveFrame = false;
     std::map<std::array<float, 7>, uint32_t> mMaterialIds;
 

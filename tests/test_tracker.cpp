@@ -173,6 +173,44 @@ TEST(StateTracker, TheFirstNormalInsideABatchCountsForItsEarlierVertices)
     for (const TrackedVertex& v : b.vertices) EXPECT_TRUE(v.hasNormal);
 }
 
+TEST(StateTracker, NothingIsHeldWhileTheAttributeStacksHaveNoRoomForTheStyles)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    tracker.setStackLimits(3, 2);
+    std::string error;
+    auto run = [&](auto&& write) {
+        CallWriter w;
+        write(w);
+        ASSERT_TRUE(tracker.feed(w.data(), w.size(), nullptr, error)) << error;
+    };
+    run([](CallWriter& w) {
+        w.op(op::glEnable);
+        w.put<GLenum>(GL_DEPTH_TEST);
+    });
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+    for (int i = 0; i < 3; ++i) {
+        run([](CallWriter& w) {
+            w.op(op::glPushAttrib);
+            w.put<GLbitfield>(GL_CURRENT_BIT);
+        });
+    }
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
+    ASSERT_NE(tracker.unstylableState(), nullptr);
+    EXPECT_STREQ(tracker.unstylableState(), "a full attribute stack");
+    run([](CallWriter& w) { w.op(op::glPopAttrib); });
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+    for (int i = 0; i < 2; ++i) {
+        run([](CallWriter& w) {
+            w.op(op::glPushClientAttrib);
+            w.put<GLbitfield>(GL_CLIENT_PIXEL_STORE_BIT);
+        });
+    }
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
+    run([](CallWriter& w) { w.op(op::glPopClientAttrib); });
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+}
+
 TEST(StateTracker, FramesReuseTheirVertexStorage)
 {
     // A frame's vertex vectors come back to the tracker and serve the next frame's batches
