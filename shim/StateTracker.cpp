@@ -372,17 +372,12 @@ StateTracker::~StateTracker() = default;
 bool StateTracker::runFrame(const uint8_t* data, size_t size, BlobSource* blobs,
                             std::string& error)
 {
-    StateTracker* previous = tTracker;
-    tTracker = this;
-    mBlobs = blobs;
     if (mFrameDone) {
         recycle(mFrameBatches);
         mFrameBatches.clear();
         mFrameDone = false;
     }
-    bool ok = runCalls(data, size, true, error);
-    tTracker = previous;
-    return ok;
+    return feed(data, size, blobs, error);
 }
 
 bool StateTracker::feed(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error)
@@ -390,7 +385,6 @@ bool StateTracker::feed(const uint8_t* data, size_t size, BlobSource* blobs, std
     StateTracker* previous = tTracker;
     tTracker = this;
     mBlobs = blobs;
-    mLiveFrame = true;
     bool ok = runCalls(data, size, true, error);
     tTracker = previous;
     return ok;

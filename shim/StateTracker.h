@@ -240,7 +240,6 @@ private:
     GLenum mRenderMode = GL_RENDER;
     int mClientDepth = 0;
     int mMaxAttribDepth = 16, mMaxClientDepth = 16; // GL's minimum until told
-    bool mLiveFrame = false;
     std::map<std::array<float, 7>, uint32_t> mMaterialIds;
 
     bool mInBegin = false;

@@ -1,6 +1,7 @@
 #include "styles/Presets.h"
 
 #include "styles/StyleRegistry.h"
+#include "styles/StyleSettings.h"
 
 #include <fstream>
 #include <sstream>
@@ -68,11 +69,10 @@ bool Presets::parse(const std::string& text, const std::string& origin, std::str
             outChain = value;
             continue;
         }
-        const size_t dot = key.find('.');
-        const StyleInfo* style = dot == std::string::npos ? nullptr
-                                                          : registry.find(key.substr(0, dot));
-        if (!style || !style->findParam(key.substr(dot + 1))) {
-            error = where + "unknown parameter '" + key + "' (see `nprgl styles`)";
+        const ParamInfo* param = nullptr;
+        double ignored = 0.0;
+        if (!StyleSettings::check(key, value, param, ignored, error)) {
+            error = where + error;
             return false;
         }
         if (value.find(',') != std::string::npos) {

@@ -128,6 +128,13 @@ const StyleInfo* StyleRegistry::find(std::string_view name) const
     return it == mStyles.end() ? nullptr : &*it;
 }
 
+const ParamInfo* StyleRegistry::findParam(std::string_view key) const
+{
+    const size_t dot = key.find('.');
+    const StyleInfo* style = dot == std::string_view::npos ? nullptr : find(key.substr(0, dot));
+    return style ? style->findParam(key.substr(dot + 1)) : nullptr;
+}
+
 bool StyleRegistry::parseChain(std::string_view chain, std::vector<const StyleInfo*>& out,
                                std::string& error) const
 {

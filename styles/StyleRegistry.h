@@ -62,6 +62,8 @@ public:
 
     const std::vector<StyleInfo>& styles() const { return mStyles; }
     const StyleInfo* find(std::string_view name) const;
+    // The parameter a "style.param" key names, or null.
+    const ParamInfo* findParam(std::string_view key) const;
     // The style used when none is named.
     const std::string& defaultStyle() const { return mDefault; }
 

@@ -20,6 +20,42 @@ bool parseValue(const std::string& text, double& out)
 
 } // namespace
 
+bool StyleSettings::check(const std::string& key, const std::string& text,
+                          const ParamInfo*& param, double& value, std::string& error)
+{
+    param = StyleRegistry::instance().findParam(key);
+    if (!param) {
+        error = "unknown parameter '" + key + "' (see `nprgl styles`)";
+        return false;
+    }
+    switch (param->kind) {
+    case ParamKind::Text: return true;
+    case ParamKind::Colour:
+        if (text.empty() || ParamInfo::isColour(text)) return true;
+        error = "parameter " + key + ": '" + text + "' is not a colour (use rrggbb, e.g. 1a2b3c)";
+        return false;
+    case ParamKind::Choice: {
+        auto it = std::find(param->choices.begin(), param->choices.end(), text);
+        if (it == param->choices.end()) {
+            error = "parameter " + key + ": '" + text + "' is not one of " + param->rangeString();
+            return false;
+        }
+        value = double(it - param->choices.begin());
+        return true;
+    }
+    case ParamKind::Number: break;
+    }
+    if (!parseValue(text, value)) {
+        error = "parameter " + key + ": '" + text + "' is not a number";
+        return false;
+    }
+    if (value < param->minValue || value > param->maxValue) {
+        error = "parameter " + key + "=" + text + " is out of range " + param->rangeString();
+        return false;
+    }
+    return true;
+}
+
 bool StyleSettings::parse(const std::string& chain, const std::string& config,
                           StyleSettings& out, std::string& error)
 {
@@ -32,40 +68,14 @@ bool StyleSettings::parse(const std::string& chain, const std::string& config,
     KeyValueList pairs;
     if (!parseKeyValues(config, ',', pairs, error)) return false;
     for (const auto& [key, text] : pairs) {
-        size_t dot = key.find('.');
-        const StyleInfo* style = dot == std::string::npos ? nullptr
-                                                          : registry.find(key.substr(0, dot));
-        const ParamInfo* param = style ? style->findParam(key.substr(dot + 1)) : nullptr;
-        if (!param) {
-            error = "unknown parameter '" + key + "' (see `nprgl styles`)";
-            return false;
-        }
-        if (param->kind == ParamKind::Colour && !text.empty() && !ParamInfo::isColour(text)) {
-            error =
-                "parameter " + key + ": '" + text + "' is not a colour (use rrggbb, e.g. 1a2b3c)";
-            return false;
-        }
+        const ParamInfo* param = nullptr;
+        double value = 0.0;
+        if (!check(key, text, param, value, error)) return false;
         if (param->kind == ParamKind::Text || param->kind == ParamKind::Colour) {
             settings.mTexts[key] = text;
-            continue;
+        } else {
+            settings.mValues[key] = value;
         }
-        double value;
-        if (param->kind == ParamKind::Choice) {
-            auto it = std::find(param->choices.begin(), param->choices.end(), text);
-            if (it == param->choices.end()) {
-                error = "parameter " + key + ": '" + text + "' is not one of " +
-                        param->rangeString();
-                return false;
-            }
-            value = double(it - param->choices.begin());
-        } else if (!parseValue(text, value)) {
-            error = "parameter " + key + ": '" + text + "' is not a number";
-            return false;
-        } else if (value < param->minValue || value > param->maxValue) {
-            error = "parameter " + key + "=" + text + " is out of range " + param->rangeString();
-            return false;
-        }
-        settings.mValues[key] = value;
     }
     out = std::move(settings);
     return true;
@@ -80,9 +90,9 @@ std::string StyleSettings::chainName() const
 
 double StyleSettings::value(const std::string& style, const std::string& param) const
 {
-    if (auto it = mValues.find(style + "." + param); it != mValues.end()) return it->second;
-    const StyleInfo* info = StyleRegistry::instance().find(style);
-    const ParamInfo* p = info ? info->findParam(param) : nullptr;
+    const std::string key = style + "." + param;
+    if (auto it = mValues.find(key); it != mValues.end()) return it->second;
+    const ParamInfo* p = StyleRegistry::instance().findParam(key);
     return p ? p->defaultValue : 0.0;
 }
 
@@ -92,9 +102,9 @@ namespace nprgl {
 
 std::string StyleSettings::text(const std::string& style, const std::string& param) const
 {
-    if (auto it = mTexts.find(style + "." + param); it != mTexts.end()) return it->second;
-    const StyleInfo* info = StyleRegistry::instance().find(style);
-    const ParamInfo* p = info ? info->findParam(param) : nullptr;
+    const std::string key = style + "." + param;
+    if (auto it = mTexts.find(key); it != mTexts.end()) return it->second;
+    const ParamInfo* p = StyleRegistry::instance().findParam(key);
     return p ? p->defaultText : std::string();
 }
 

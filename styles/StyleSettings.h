@@ -17,6 +17,12 @@ public:
     static bool parse(const std::string& chain, const std::string& config,
                       StyleSettings& out, std::string& error);
 
+    // Checks one "style.param" = text: the parameter exists and the text is a valid value
+    // of it (a number in range, one of its choices, a colour). `value` is the number or
+    // choice index (unset for text and colours).
+    static bool check(const std::string& key, const std::string& text, const ParamInfo*& param,
+                      double& value, std::string& error);
+
     const std::vector<const StyleInfo*>& chain() const { return mChain; }
     std::string chainName() const;
     // The value of style.param: the configured one, else the registry default.

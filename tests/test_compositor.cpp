@@ -169,9 +169,15 @@ TEST(Compositor, BadStylesParametersAndPresetsAreRefusedBeforeTheProgramStarts)
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_EQ(r.err.rfind("nprgl: ", 0), 0u) << r.err;
     }
-    // The bad preset's message names the file and the line.
+    // The bad presets' messages name the file and the line.
     ProcessResult r = runProcess({nprglCommand(), "--preset", bad, "--", "true"});
     EXPECT_NE(r.err.find(bad + ":3:"), std::string::npos) << r.err;
+    const std::string range = dir + "/range.conf";
+    std::ofstream(range) << "style=toon\ntoon.tones=9\n";
+    r = runProcess({nprglCommand(), "--preset", range, "--", "true"});
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find(range + ":2: parameter toon.tones=9 is out of range"), std::string::npos)
+        << r.err;
 }
 
 TEST(Compositor, EveryShippedPresetRuns)
