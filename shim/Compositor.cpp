@@ -423,13 +423,8 @@ void Compositor::buildScene()
         s.mesh = o.mesh;
         s.modelview = o.modelview;
         s.projection = t.projection;
-        s.material = t.material;
-        s.lit = t.lit;
-        s.hasNormals = t.hasNormals;
-        s.flat = t.flat;
         s.lightDir = lightDirection(t);
         s.texture = t.texture;
-        s.textureEnv = t.textureEnv;
         s.id = uint32_t(mScene.objects.size() + 1);
         mScene.objects.push_back(std::move(s));
     }

@@ -202,26 +202,9 @@ void APIENTRY tLightiv(GLenum light, GLenum pname, const GLint* v)
     T().light(light, pname, f);
 }
 void APIENTRY tPolygonMode(GLenum face, GLenum mode) { T().polygonMode(face, mode); }
-void APIENTRY tShadeModel(GLenum mode) { T().shadeModel(mode); }
 void APIENTRY tColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
 {
     T().colorMask(r, g, b, a);
-}
-void APIENTRY tTexEnvi(GLenum target, GLenum pname, GLint v)
-{
-    if (target == GL_TEXTURE_ENV) T().texEnv(pname, GLenum(v));
-}
-void APIENTRY tTexEnvf(GLenum target, GLenum pname, GLfloat v)
-{
-    if (target == GL_TEXTURE_ENV) T().texEnv(pname, GLenum(v));
-}
-void APIENTRY tTexEnviv(GLenum target, GLenum pname, const GLint* v)
-{
-    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE) T().texEnv(pname, GLenum(*v));
-}
-void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* v)
-{
-    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE) T().texEnv(pname, GLenum(*v));
 }
 void APIENTRY tViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 {
@@ -345,12 +328,7 @@ StateTracker::StateTracker()
     d.glLightfv = tLightfv;
     d.glLightiv = tLightiv;
     d.glPolygonMode = tPolygonMode;
-    d.glShadeModel = tShadeModel;
     d.glColorMask = tColorMask;
-    d.glTexEnvi = tTexEnvi;
-    d.glTexEnvf = tTexEnvf;
-    d.glTexEnviv = tTexEnviv;
-    d.glTexEnvfv = tTexEnvfv;
     d.glViewport = tViewport;
     d.glPushAttrib = tPushAttrib;
     d.glPopAttrib = tPopAttrib;
@@ -520,9 +498,8 @@ void StateTracker::popAttrib()
         a.lighting = saved.lighting;
         a.colorMaterial = saved.colorMaterial;
         a.light0On = saved.light0On;
-        a.material = saved.material;
+        a.materialDiffuse = saved.materialDiffuse;
         a.light0 = saved.light0;
-        a.flat = saved.flat;
     }
     if (mask & GL_DEPTH_BUFFER_BIT) a.depthTest = saved.depthTest;
     if (mask & GL_COLOR_BUFFER_BIT) {
@@ -540,7 +517,6 @@ void StateTracker::popAttrib()
         a.textureUnits = saved.textureUnits;
     }
     if (mask & GL_TEXTURE_BIT) {
-        a.textureEnv = saved.textureEnv;
     }
     if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
 }
@@ -715,7 +691,7 @@ uint32_t StateTracker::currentMaterialId()
     std::array<float, 7> key = {float(a.lighting), float(a.colorMaterial),
                                 float(a.texture2D ? mBoundTexture : 0), 0.0f, 0.0f, 0.0f, 0.0f};
     if (a.lighting && !a.colorMaterial) {
-        const glm::vec4& d = a.material.diffuse;
+        const glm::vec4& d = a.materialDiffuse;
         key[3] = d.r;
         key[4] = d.g;
         key[5] = d.b;
@@ -756,7 +732,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     const AttribState& a = mAttrib;
     // What the program's picture shows: lit surfaces take the material's colour.
     if (a.lighting && !a.colorMaterial) {
-        for (TrackedVertex& v : batch.vertices) v.color = a.material.diffuse;
+        for (TrackedVertex& v : batch.vertices) v.color = a.materialDiffuse;
     }
     batch.is3D = a.depthTest || batch.projection[3][3] == 0.0f;
     if (mHolding) {
@@ -764,12 +740,9 @@ bool StateTracker::keep(TrackedBatch& batch)
         if (!batch.held) return false; // the compositor keeps only what it re-draws
     }
     batch.lit = a.lighting;
-    batch.flat = a.flat;
-    batch.material = a.material;
     batch.light0 = a.light0;
     batch.light0On = a.light0On;
     batch.texture = a.texture2D ? mBoundTexture : 0;
-    batch.textureEnv = a.textureEnv;
     batch.viewport = a.viewport;
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
@@ -837,15 +810,8 @@ void StateTracker::setEnabled(GLenum cap, bool on)
 void StateTracker::material(GLenum face, GLenum pname, const float* v)
 {
     if (face == GL_BACK || !v) return;
-    TrackedMaterial& m = mAttrib.material;
-    const glm::vec4 value(v[0], v[1], v[2], v[3]);
-    switch (pname) {
-    case GL_AMBIENT: m.ambient = value; break;
-    case GL_DIFFUSE: m.diffuse = value; break;
-    case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = value; break;
-    case GL_SPECULAR: m.specular = value; break;
-    case GL_SHININESS: m.shininess = v[0]; break;
-    default: break;
+    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
+        mAttrib.materialDiffuse = {v[0], v[1], v[2], v[3]};
     }
 }
 

@@ -5,7 +5,6 @@
 #include "shim/ClientArrays.h"
 #include "shim/ShadowArrays.h"
 #include "stream/CallReader.h"
-#include "styles/Scene.h"
 
 #include <glm/glm.hpp>
 
@@ -24,8 +23,6 @@ enum class Attrib { Vertex, Normal, Color, TexCoord };
 // Reconstructor without converting them. hasNormal always equals its batch's hasNormals.
 using TrackedVertex = reconstruct::Vertex;
 
-// The front material as glMaterial set it (what the styles receive).
-using TrackedMaterial = styles::SceneMaterial;
 
 // One polygonal draw of a frame, with the state reconstruction and the styles need.
 struct TrackedBatch {
@@ -38,12 +35,9 @@ struct TrackedBatch {
     bool is3D = false; // perspective projection or depth test on: what nprgl stylises
     bool held = false; // the compositor held it back (only when holding is on)
     bool lit = false;
-    bool flat = false;
-    TrackedMaterial material;
     glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f}; // GL_LIGHT0's position in eye space
     bool light0On = false;
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
-    GLenum textureEnv = GL_MODULATE;
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
 };
@@ -145,12 +139,7 @@ public:
     bool executing() const { return !mCompiling || mCompileAndExecute; }
     void light(GLenum light, GLenum pname, const float* v);
     void polygonMode(GLenum face, GLenum mode);
-    void shadeModel(GLenum mode) { mAttrib.flat = mode == GL_FLAT; }
     void colorMask(bool r, bool g, bool b, bool a) { mAttrib.colorMaskAll = r && g && b && a; }
-    void texEnv(GLenum pname, GLenum value)
-    {
-        if (pname == GL_TEXTURE_ENV_MODE) mAttrib.textureEnv = value;
-    }
     void pushAttrib(GLbitfield mask);
     void popAttrib();
     void pushClientAttrib() { mClientDepth += mClientDepth < 64; }
@@ -177,9 +166,8 @@ private:
         bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
         uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
         bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
-        bool fillFront = true, fillBack = true, flat = false, colorMaskAll = true;
-        GLenum textureEnv = GL_MODULATE;
-        TrackedMaterial material;
+        bool fillFront = true, fillBack = true, colorMaskAll = true;
+        glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
         glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
         glm::ivec4 viewport{0, 0, 0, 0};
     };

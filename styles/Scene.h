@@ -11,14 +11,6 @@
 
 namespace nprgl::styles {
 
-// The program's material at the draw (front face), as glMaterial set it.
-struct SceneMaterial {
-    glm::vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f};
-    glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
-    glm::vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};
-    float shininess = 0.0f;
-};
-
 // One object the compositor held back: a welded mesh and the state it was drawn with.
 // Colours per corner (mesh->corner(f, k).color) are what the program's picture shows: the
 // current colour, or the material's diffuse when it lit the object without colour-material.
@@ -26,15 +18,10 @@ struct SceneObject {
     std::shared_ptr<const reconstruct::ObjectMesh> mesh;
     glm::mat4 modelview{1.0f};
     glm::mat4 projection{1.0f};
-    SceneMaterial material;
-    bool lit = false;        // GL_LIGHTING was on
-    bool hasNormals = false; // the program gave normals (else the mesh's computed ones)
-    bool flat = false;       // GL_FLAT shade model
     // Towards the light in eye space, unit: GL_LIGHT0's position (or direction) when the
     // program lit the object, else a head-light from the upper left.
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
-    GLenum textureEnv = GL_MODULATE;
     uint32_t id = 0;               // 1, 2, ... in drawing order: for ID buffers
 };
 

@@ -10,8 +10,8 @@
 namespace nprgl::styles {
 
 // The styles of one chain in one GL context: created and initialised on first use, run in
-// order (the shading style first, then the outline styles as named) with the baseline state
-// of Style.h set before each.
+// order (the shading style first, then the background, then the outline styles as named)
+// with the baseline state of Style.h set before each.
 class StyleChain {
 public:
     // getProc resolves the real driver's entry points. False with a message when the driver
@@ -22,7 +22,6 @@ public:
     void shutdown();
 
     bool hasShading() const { return mHasShading; }
-    bool empty() const { return mStyles.empty(); }
     StyleContext& context() { return mContext; }
 
     // Sets the baseline state of Style.h: the shading pass's, or the one of the passes after.

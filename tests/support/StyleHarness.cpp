@@ -56,12 +56,7 @@ styles::Scene StyleHarness::makeScene(const std::vector<reconstruct::Batch>& bat
         s.mesh = o.mesh;
         s.modelview = o.modelview;
         s.projection = projection;
-        s.lit = true;
-        s.hasNormals = true;
         s.lightDir = glm::normalize(lightDir);
-        s.material.diffuse = batches[o.firstBatch].vertices.empty()
-                                 ? glm::vec4(0.8f)
-                                 : batches[o.firstBatch].vertices[0].color;
         s.id = ++id;
         scene.objects.push_back(std::move(s));
     }
