@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace nprgl {
 
@@ -44,11 +45,17 @@ ParamInfo ParamInfo::colour(std::string name, std::string help, std::string def)
     return p;
 }
 
-bool ParamInfo::isColour(const std::string& text)
+bool ParamInfo::parseColour(const std::string& text, glm::vec3& out)
 {
     const size_t skip = !text.empty() && text[0] == '#' ? 1 : 0;
-    if (text.size() != skip + 6) return false;
-    return text.find_first_not_of("0123456789abcdefABCDEF", skip) == std::string::npos;
+    if (text.size() != skip + 6 ||
+        text.find_first_not_of("0123456789abcdefABCDEF", skip) != std::string::npos) {
+        return false;
+    }
+    const unsigned long value = std::stoul(text.substr(skip), nullptr, 16);
+    out = glm::vec3(float(value >> 16 & 0xff), float(value >> 8 & 0xff), float(value & 0xff)) /
+          255.0f;
+    return true;
 }
 
 ParamInfo ParamInfo::choice(std::string name, std::string help, std::vector<std::string> names,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <glm/glm.hpp>
+
 #include <memory>
 #include <string>
 #include <string_view>
@@ -36,8 +38,9 @@ struct ParamInfo {
     static ParamInfo text(std::string name, std::string help, std::string def = {});
     // "rrggbb" or "#rrggbb"; empty means "derived" where the style says so.
     static ParamInfo colour(std::string name, std::string help, std::string def = {});
-    // True when `text` is a valid value of a Colour parameter.
-    static bool isColour(const std::string& text);
+    // "rrggbb" or "#rrggbb" (hex: the configuration separates its items with commas) into
+    // a colour; false when empty or malformed.
+    static bool parseColour(const std::string& text, glm::vec3& out);
     // The default as it is written in a preset ("0.5", "dots", "on", a file name).
     std::string defaultString() const;
     // The range as `nprgl styles` prints it.

@@ -31,7 +31,7 @@ bool StyleSettings::check(const std::string& key, const std::string& text,
     switch (param->kind) {
     case ParamKind::Text: return true;
     case ParamKind::Colour:
-        if (text.empty() || ParamInfo::isColour(text)) return true;
+        if (glm::vec3 c; text.empty() || ParamInfo::parseColour(text, c)) return true;
         error = "parameter " + key + ": '" + text + "' is not a colour (use rrggbb, e.g. 1a2b3c)";
         return false;
     case ParamKind::Choice: {

@@ -3,7 +3,6 @@
 #include "common/Log.h"
 #include "styles/StyleRegistry.h"
 #include "styles/background/PaperGrain.h"
-#include "styles/shading/ShadingCommon.h"
 
 #include <algorithm>
 #include <cmath>
@@ -111,12 +110,12 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
           at("grain"),       at("pass"),        at("grainSize"),   at("paperSize")};
 
     const std::string colour = ctx.text(kStyle, "color");
-    if (!ShadingCommon::parseColor(colour, mPaperColour)) {
+    if (!ParamInfo::parseColour(colour, mPaperColour)) {
         if (!colour.empty()) {
             NPRGL_ERROR("paper: color='%s' is not a hex colour rrggbb; using %s",
                         colour.c_str(), kDefaultColour);
         }
-        ShadingCommon::parseColor(kDefaultColour, mPaperColour);
+        ParamInfo::parseColour(kDefaultColour, mPaperColour);
     }
     mFill = ctx.param(kStyle, "background") >= 0.5;
     mGrain = float(std::clamp(ctx.param(kStyle, "grain"), 0.0, 1.0));

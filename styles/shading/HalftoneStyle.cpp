@@ -166,7 +166,7 @@ bool HalftoneStyle::init(StyleContext& ctx, std::string& error)
     mObjectSpace = ctx.param("halftone", "space") >= 0.5;
     mInkFromObject = ctx.param("halftone", "ink") >= 0.5;
     const std::string paper = ctx.text("halftone", "paper_color");
-    if (!ShadingCommon::parseColor(paper, mPaper)) {
+    if (!ParamInfo::parseColour(paper, mPaper)) {
         NPRGL_ERROR("halftone: paper_color='%s' is not a hex colour rrggbb; using white",
                     paper.c_str());
         mPaper = glm::vec3(1.0f);
@@ -233,7 +233,7 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
         gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
-        ShadingCommon::drawTwoSided(ctx, *object.mesh, frontIsCcw);
+        ctx.meshes.draw(gl, *object.mesh); // both sides, one pass (shadingNormal)
     }
 }
 

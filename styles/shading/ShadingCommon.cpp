@@ -93,13 +93,6 @@ bool ShadingCommon::beginTwoSided(const GlFunctions& gl)
     return frontFace == GL_CCW;
 }
 
-void ShadingCommon::drawTwoSided(StyleContext& ctx, const reconstruct::ObjectMesh& mesh, bool)
-{
-    // One pass: the shading pass draws the held scene's depth itself (GL_LESS), so nearer
-    // surfaces win whatever the order, and shadingNormal() lights both sides.
-    ctx.meshes.draw(ctx.gl, mesh);
-}
-
 glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)
 {
     // The inverse transpose keeps normals perpendicular under non-uniform scaling.
@@ -115,26 +108,6 @@ glm::vec2 ShadingCommon::screenAnchor(const SceneObject& object, const glm::ivec
                             (ndc * 0.5f + 0.5f) * glm::vec2(viewport.z, viewport.w);
     // Whole pixels: sub-pixel shifts would re-sample the pattern and shimmer.
     return glm::floor(pixel);
-}
-
-bool ShadingCommon::parseColor(const std::string& text, glm::vec3& out)
-{
-    // Hex, because the configuration separates its items with commas.
-    const size_t skip = !text.empty() && text[0] == '#' ? 1 : 0;
-    if (text.size() != skip + 6) return false;
-    unsigned value = 0;
-    for (size_t i = skip; i < text.size(); ++i) {
-        const char c = text[i];
-        const int digit = c >= '0' && c <= '9'   ? c - '0'
-                          : c >= 'a' && c <= 'f' ? c - 'a' + 10
-                          : c >= 'A' && c <= 'F' ? c - 'A' + 10
-                                                 : -1;
-        if (digit < 0) return false;
-        value = value * 16 + unsigned(digit);
-    }
-    out = glm::vec3(float(value >> 16 & 0xff), float(value >> 8 & 0xff), float(value & 0xff)) /
-          255.0f;
-    return true;
 }
 
 std::string ShadingCommon::glslFloat(float value)

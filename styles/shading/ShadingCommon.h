@@ -34,15 +34,10 @@ public:
     static bool beginTwoSided(const GlFunctions& gl);
     // Whether the program's normals point out of the counter-clockwise side of its faces.
     static bool normalsFollowCcw(const reconstruct::ObjectMesh& mesh);
-    // Draws the mesh, both sides, in one pass with depth writes (the shading baseline).
-    static void drawTwoSided(StyleContext& ctx, const reconstruct::ObjectMesh& mesh,
-                             bool frontIsCcw);
     static glm::mat3 normalMatrix(const glm::mat4& modelview);
     // Where the object's origin lands, in window pixels: screen-space textures are anchored
     // there, so they follow the object when it moves across the screen instead of swimming.
     static glm::vec2 screenAnchor(const SceneObject& object, const glm::ivec4& viewport);
-    // "rrggbb" or "#rrggbb" (hex) into a colour; false when empty or malformed.
-    static bool parseColor(const std::string& text, glm::vec3& out);
     // GLSL literals that read back as exactly these floats.
     static std::string glslFloat(float value);
     static std::string glslVec3(const glm::vec3& value);

@@ -333,7 +333,7 @@ void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
         gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
-        ShadingCommon::drawTwoSided(ctx, *object.mesh, frontIsCcw);
+        ctx.meshes.draw(gl, *object.mesh); // both sides, one pass (shadingNormal)
     }
 }
 

@@ -159,7 +159,7 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
     const char* colorNames[3] = {"shadow_color", "diffuse_color", "highlight_color"};
     for (int i = 0; i < 3; ++i) {
         const std::string text = ctx.text("toon", colorNames[i]);
-        const bool fixed = ShadingCommon::parseColor(text, mColors[i]);
+        const bool fixed = ParamInfo::parseColour(text, mColors[i]);
         if (fixed) mFixed |= 1 << i;
         if (!text.empty() && !fixed) {
             NPRGL_ERROR("toon: %s='%s' is not a hex colour rrggbb; using the derived colour",
@@ -195,7 +195,7 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
         variant.u.set(gl, object, frontIsCcw);
         // The program's texture keeps its own filtering and wrapping.
         if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
-        ShadingCommon::drawTwoSided(ctx, *object.mesh, frontIsCcw);
+        ctx.meshes.draw(gl, *object.mesh); // both sides, one pass (shadingNormal)
     }
 }
 
