@@ -1,6 +1,7 @@
 // demo_overlay: a lit 3D scene, then a 2D HUD drawn over it in an orthographic projection:
 // a translucent panel, GL_LINES and glBitmap text from a tiny built-in font.
 
+#include "BitmapFont.h"
 #include "Demo.h"
 
 #include <GL/gl.h>
@@ -15,61 +16,6 @@
 namespace {
 
 constexpr float pi = std::numbers::pi_v<float>;
-
-// 5x7 glyphs, top row first; drawn at double size.
-struct Glyph {
-    char character;
-    std::array<const char*, 7> rows;
-};
-
-constexpr Glyph font[] = {
-    {'0', {".###.", "#...#", "#..##", "#.#.#", "##..#", "#...#", ".###."}},
-    {'1', {"..#..", ".##..", "..#..", "..#..", "..#..", "..#..", ".###."}},
-    {'2', {".###.", "#...#", "....#", "...#.", "..#..", ".#...", "#####"}},
-    {'3', {"####.", "....#", "....#", ".###.", "....#", "....#", "####."}},
-    {'4', {"...#.", "..##.", ".#.#.", "#..#.", "#####", "...#.", "...#."}},
-    {'5', {"#####", "#....", "####.", "....#", "....#", "#...#", ".###."}},
-    {'6', {"..##.", ".#...", "#....", "####.", "#...#", "#...#", ".###."}},
-    {'7', {"#####", "....#", "...#.", "..#..", ".#...", ".#...", ".#..."}},
-    {'8', {".###.", "#...#", "#...#", ".###.", "#...#", "#...#", ".###."}},
-    {'9', {".###.", "#...#", "#...#", ".####", "....#", "...#.", ".##.."}},
-    {'A', {".###.", "#...#", "#...#", "#####", "#...#", "#...#", "#...#"}},
-    {'D', {"####.", "#...#", "#...#", "#...#", "#...#", "#...#", "####."}},
-    {'E', {"#####", "#....", "#....", "####.", "#....", "#....", "#####"}},
-    {'F', {"#####", "#....", "#....", "####.", "#....", "#....", "#...."}},
-    {'L', {"#....", "#....", "#....", "#....", "#....", "#....", "#####"}},
-    {'M', {"#...#", "##.##", "#.#.#", "#.#.#", "#...#", "#...#", "#...#"}},
-    {'O', {".###.", "#...#", "#...#", "#...#", "#...#", "#...#", ".###."}},
-    {'R', {"####.", "#...#", "#...#", "####.", "#.#..", "#..#.", "#...#"}},
-    {'V', {"#...#", "#...#", "#...#", "#...#", "#...#", ".#.#.", "..#.."}},
-    {'Y', {"#...#", "#...#", ".#.#.", "..#..", "..#..", "..#..", "..#.."}},
-    {':', {".....", "..#..", "..#..", ".....", "..#..", "..#..", "....."}},
-    {' ', {".....", ".....", ".....", ".....", ".....", ".....", "....."}},
-};
-constexpr int glyphCount = sizeof(font) / sizeof(font[0]);
-constexpr int glyphWidth = 10; // pixels after doubling
-constexpr int glyphHeight = 14;
-constexpr int glyphAdvance = 12;
-
-// Glyph bitmaps for glBitmap: bottom row first, two bytes per row, most significant bit left.
-using GlyphBitmap = std::array<uint8_t, glyphHeight * 2>;
-
-GlyphBitmap makeBitmap(const Glyph& glyph)
-{
-    GlyphBitmap bitmap{};
-    for (int row = 0; row < glyphHeight; ++row) {
-        const char* source = glyph.rows[6 - row / 2];
-        uint16_t bits = 0;
-        for (int x = 0; x < glyphWidth; ++x) {
-            if (source[x / 2] == '#') {
-                bits |= static_cast<uint16_t>(0x8000u >> x);
-            }
-        }
-        bitmap[row * 2] = static_cast<uint8_t>(bits >> 8);
-        bitmap[row * 2 + 1] = static_cast<uint8_t>(bits & 0xff);
-    }
-    return bitmap;
-}
 
 void drawTorus(float major, float minor, int rings, int sides)
 {
@@ -94,9 +40,6 @@ public:
     {
         width_ = options.width;
         height_ = options.height;
-        for (int i = 0; i < glyphCount; ++i) {
-            bitmaps_[i] = makeBitmap(font[i]);
-        }
         glViewport(0, 0, width_, height_);
         glClearColor(0.12f, 0.1f, 0.14f, 1.0f);
         glEnable(GL_NORMALIZE);
@@ -214,16 +157,7 @@ private:
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         // The raster colour is latched here from the current colour.
         glRasterPos2i(x, y);
-        for (char c : text) {
-            int index = glyphCount - 1; // unknown characters draw as a space
-            for (int i = 0; i < glyphCount; ++i) {
-                if (font[i].character == c) {
-                    index = i;
-                }
-            }
-            glBitmap(glyphWidth, glyphHeight, 0.0f, 0.0f, glyphAdvance, 0.0f,
-                     bitmaps_[index].data());
-        }
+        font_.draw(text);
     }
 
     static void setColour(float r, float g, float b)
@@ -234,7 +168,7 @@ private:
 
     int width_ = 0;
     int height_ = 0;
-    std::array<GlyphBitmap, glyphCount> bitmaps_{};
+    demo::BitmapFont font_;
 };
 
 } // namespace

@@ -7,6 +7,7 @@
 // Declares the GL 1.3-2.0 functions; must precede every include that may pull in GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
 
+#include "BitmapFont.h"
 #include "Demo.h"
 
 #include <GL/gl.h>
@@ -196,17 +197,6 @@ bool sameValues(const Values& expected, const Values& actual, bool transformed)
     return true;
 }
 
-// 5x7 glyphs for the overlay, drawn at double size with glBitmap.
-constexpr std::array<const char*, 7> glyphRows[] = {
-    {"#####", "#....", "#....", ".###.", "....#", "....#", "####."}, // S
-    {"#####", "..#..", "..#..", "..#..", "..#..", "..#..", "..#.."}, // T
-    {".###.", "#...#", "#...#", "#####", "#...#", "#...#", "#...#"}, // A
-    {"#####", "..#..", "..#..", "..#..", "..#..", "..#..", "..#.."}, // T
-    {"#####", "#....", "#....", "####.", "#....", "#....", "#####"}, // E
-};
-constexpr int glyphCount = 5;
-constexpr int glyphWidth = 10;
-constexpr int glyphHeight = 14;
 constexpr int imageSize = 16; // the glDrawPixels badge
 
 constexpr float pi = 3.14159265358979f;
@@ -218,7 +208,6 @@ public:
         width_ = options.width;
         height_ = options.height;
         report_ = options.report;
-        buildGlyphs();
         buildBadge();
         buildCube();
 
@@ -1079,9 +1068,7 @@ private:
         glSecondaryColor3f(0.0f, 0.0f, 0.0f);
         glColor3f(1.0f, 0.95f, 0.4f);
         glRasterPos2i(12, height_ - 26);
-        for (const auto& glyph : glyphs_) {
-            glBitmap(glyphWidth, glyphHeight, 0.0f, 0.0f, 12.0f, 0.0f, glyph.data());
-        }
+        font_.draw("STATE");
         glRasterPos2i(width_ - imageSize * 2 - 12, 12 + (frame % 4) * 4);
         glPixelZoom(2.0f, 2.0f);
         glDrawPixels(imageSize, imageSize, GL_RGBA, GL_UNSIGNED_BYTE, badge_.data());
@@ -1109,24 +1096,6 @@ private:
                 }
             }
             glEnd();
-        }
-    }
-
-    void buildGlyphs()
-    {
-        for (int g = 0; g < glyphCount; ++g) {
-            auto& bitmap = glyphs_[g];
-            for (int row = 0; row < glyphHeight; ++row) {
-                const char* source = glyphRows[g][6 - row / 2];
-                uint16_t bits = 0;
-                for (int x = 0; x < glyphWidth; ++x) {
-                    if (source[x / 2] == '#') {
-                        bits |= static_cast<uint16_t>(0x8000u >> x);
-                    }
-                }
-                bitmap[row * 2] = static_cast<uint8_t>(bits >> 8);
-                bitmap[row * 2 + 1] = static_cast<uint8_t>(bits & 0xff);
-            }
         }
     }
 
@@ -1203,7 +1172,7 @@ private:
     GLuint listBase_ = 0;
     std::array<float, 16> modelview1_{};
     std::vector<float> cube_;
-    std::array<std::array<uint8_t, glyphHeight * 2>, glyphCount> glyphs_{};
+    demo::BitmapFont font_;
     std::array<uint8_t, imageSize * imageSize * 4> badge_{};
     std::vector<Item> items_;
 };
