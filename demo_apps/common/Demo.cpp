@@ -75,4 +75,22 @@ void drawSphere(float radius, int stacks, int slices, float textureRepeats)
     }
 }
 
+void drawTorus(float major, float minor, int rings, int sides)
+{
+    const float pi = 3.14159265358979f;
+    for (int i = 0; i < rings; ++i) {
+        glBegin(GL_QUAD_STRIP);
+        for (int j = 0; j <= sides; ++j) {
+            float v = 2.0f * pi * j / sides;
+            for (int k = 1; k >= 0; --k) {
+                float u = 2.0f * pi * (i + k) / rings;
+                float r = major + minor * std::cos(v);
+                glNormal3f(std::cos(u) * std::cos(v), std::sin(u) * std::cos(v), std::sin(v));
+                glVertex3f(r * std::cos(u), r * std::sin(u), minor * std::sin(v));
+            }
+        }
+        glEnd();
+    }
+}
+
 } // namespace demo

@@ -14,4 +14,9 @@ void setPerspective(double fovYDegrees, double aspect, double zNear, double zFar
 // textureRepeats > 0, texture coordinates that wrap that many times around it.
 void drawSphere(float radius, int stacks, int slices, float textureRepeats = 0.0f);
 
+// A lit torus around the z axis, one GL_QUAD_STRIP per ring. Its quads are wound clockwise
+// seen from outside (the pictures of the demos that draw it, and their captures, depend on
+// it; they do not cull).
+void drawTorus(float major, float minor, int rings, int sides);
+
 } // namespace demo

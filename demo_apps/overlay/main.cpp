@@ -1,5 +1,5 @@
 // demo_overlay: a lit 3D scene, then a 2D HUD drawn over it in an orthographic projection:
-// a translucent panel, GL_LINES and glBitmap text from a tiny built-in font.
+// a translucent panel, GL_LINES and glBitmap text in the demos' tiny bitmap font.
 
 #include "BitmapFont.h"
 #include "Demo.h"
@@ -10,29 +10,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <numbers>
 #include <string_view>
 
 namespace {
-
-constexpr float pi = std::numbers::pi_v<float>;
-
-void drawTorus(float major, float minor, int rings, int sides)
-{
-    for (int i = 0; i < rings; ++i) {
-        glBegin(GL_QUAD_STRIP);
-        for (int j = 0; j <= sides; ++j) {
-            float v = 2.0f * pi * j / sides;
-            for (int k = 1; k >= 0; --k) {
-                float u = 2.0f * pi * (i + k) / rings;
-                float r = major + minor * std::cos(v);
-                glNormal3f(std::cos(u) * std::cos(v), std::sin(u) * std::cos(v), std::sin(v));
-                glVertex3f(r * std::cos(u), r * std::sin(u), minor * std::sin(v));
-            }
-        }
-        glEnd();
-    }
-}
 
 class OverlayScene : public demo::Scene {
 public:
@@ -73,7 +53,7 @@ private:
         glRotatef(frame * 2.0f, 0.0f, 1.0f, 0.0f);
         glRotatef(90.0f, 1.0f, 0.0f, 0.0f);
         setColour(0.85f, 0.75f, 0.3f);
-        drawTorus(1.3f, 0.3f, 40, 20);
+        demo::drawTorus(1.3f, 0.3f, 40, 20);
         glPopMatrix();
 
         const float colours[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.2f, 0.4f, 0.9f},

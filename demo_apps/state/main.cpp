@@ -199,7 +199,6 @@ bool sameValues(const Values& expected, const Values& actual, bool transformed)
 
 constexpr int imageSize = 16; // the glDrawPixels badge
 
-constexpr float pi = 3.14159265358979f;
 
 class StateScene : public demo::Scene {
 public:
@@ -228,7 +227,7 @@ public:
             return false;
         }
         glNewList(listBase_, GL_COMPILE);
-        drawTorus(0.55f, 0.18f, 32, 12);
+        demo::drawTorus(0.55f, 0.18f, 32, 12);
         glEndList();
         GLenum initError = glGetError();
         if (initError != GL_NO_ERROR) {
@@ -1079,24 +1078,6 @@ private:
         glPopMatrix();
         glPopClientAttrib();
         glPopAttrib();
-    }
-
-    static void drawTorus(float major, float minor, int rings, int sides)
-    {
-        for (int i = 0; i < rings; ++i) {
-            glBegin(GL_QUAD_STRIP);
-            for (int j = 0; j <= sides; ++j) {
-                float v = 2.0f * pi * j / sides;
-                for (int k = 1; k >= 0; --k) {
-                    float u = 2.0f * pi * (i + k) / rings;
-                    float r = major + minor * std::cos(v);
-                    glNormal3f(std::cos(u) * std::cos(v), std::sin(u) * std::cos(v),
-                               std::sin(v));
-                    glVertex3f(r * std::cos(u), r * std::sin(u), minor * std::sin(v));
-                }
-            }
-            glEnd();
-        }
     }
 
     void buildBadge()
