@@ -6,9 +6,7 @@
 
 #include <GL/gl.h>
 
-#include <array>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <string_view>
 
