@@ -2,7 +2,7 @@
 # Installs the Debian packages nprgl needs to build, test and benchmark.
 set -euo pipefail
 pkgs=(
-    build-essential cmake ninja-build pkg-config python3
+    build-essential cmake ninja-build pkg-config python3 ccache
     khronos-api libgl-dev libegl-dev libx11-dev libosmesa6-dev libgl1-mesa-dri
     libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
     libcli11-dev libassimp-dev assimp-testmodels
