@@ -115,6 +115,12 @@ int runProgram(const RunOptions& options)
             preload += std::string(":") + old;
         }
     }
+#ifdef NPRGL_SANITIZER_RUNTIME
+    // A sanitizer build of the library: the runtime must be the first library loaded.
+    if (preload.find(NPRGL_SANITIZER_RUNTIME) == std::string::npos) {
+        preload = std::string(NPRGL_SANITIZER_RUNTIME) + ":" + preload;
+    }
+#endif
     setenv("LD_PRELOAD", preload.c_str(), 1);
 
     std::vector<char*> argv;

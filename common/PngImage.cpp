@@ -1,6 +1,8 @@
 #include "common/PngImage.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <png.h>
 
@@ -18,8 +20,17 @@ bool PngImage::write(const std::string& path, std::string& error) const
     image.width = static_cast<png_uint_32>(width);
     image.height = static_cast<png_uint_32>(height);
     image.format = PNG_FORMAT_RGBA;
-    if (!png_image_write_to_file(&image, path.c_str(), 0, rgba.data(), 0, nullptr)) {
+    // Written beside and renamed into place: whoever watches for the file (a viewer, a
+    // script waiting for frame N) never reads half a picture.
+    const std::string partial = path + ".part";
+    if (!png_image_write_to_file(&image, partial.c_str(), 0, rgba.data(), 0, nullptr)) {
         error = "cannot write " + path + ": " + image.message;
+        std::remove(partial.c_str());
+        return false;
+    }
+    if (std::rename(partial.c_str(), path.c_str()) != 0) {
+        error = "cannot write " + path + ": " + std::strerror(errno);
+        std::remove(partial.c_str());
         return false;
     }
     return true;

@@ -1,21 +1,29 @@
 #!/usr/bin/env bash
 # Sets everything up and runs all tests: dependencies, the build, the unit and end-to-end
-# tests under Xvfb, then the unit tests again under AddressSanitizer + UBSan.
+# tests under Xvfb, then again under AddressSanitizer + UBSan (unit tests and end-to-end
+# tests with the sanitized library preloaded), then the libFuzzer targets.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
-"$root/scripts/build.sh" "$root/build"
+# Warnings are errors here: the build stays warning-free.
+"$root/scripts/build.sh" "$root/build" -DNPRGL_WERROR=ON
 cd "$root/build"
 "$root/scripts/with-display.sh" ctest --output-on-failure -j 2
 
-# Sanitizers: the pure and in-process tests (the end-to-end ones preload into other programs).
-# Debug (-O0): the sanitizers need no optimiser, and the generated sources compile far faster.
+# Sanitizers on the whole pipeline. Debug (-O0): the sanitizers need no optimiser, and the
+# generated sources compile far faster. First the unit and in-process tests (styles, tracker,
+# capture, reconstruction); then end-to-end tests with the ASan build of libnprgl.so preloaded
+# into the demo apps and glxgears (the nprgl command puts the ASan runtime first in
+# LD_PRELOAD), and the recorder and replayer run through the ASan-built nprgl command.
 "$root/scripts/build.sh" "$root/build-asan" -DNPRGL_SANITIZE=ON -DNPRGL_BUILD_BENCH=OFF \
-    -DCMAKE_BUILD_TYPE=Debug >/dev/null
+    -DCMAKE_BUILD_TYPE=Debug -DNPRGL_WERROR=ON
 cd "$root/build-asan"
 # Mesa's llvmpipe leaks at exit by design; leaks are not what this run looks for.
-ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --output-on-failure -j 2 -L unit
+export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --output-on-failure -j 2 -L unit
+"$root/scripts/with-display.sh" ctest --output-on-failure -j 2 -L e2e \
+    -R 'DefaultStyle|Golden|StateUnderNprgl/(none|toon_paper_edges|strokes)_|Record|Replay'
+unset ASAN_OPTIONS UBSAN_OPTIONS
 
 # The capture reader's libFuzzer target (clang, ASan + UBSan) on a generated seed corpus.
 "$root/scripts/fuzz.sh" 20000

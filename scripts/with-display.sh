@@ -8,15 +8,18 @@ if ! command -v Xvfb >/dev/null; then
     echo "with-display: no DISPLAY and no Xvfb (run scripts/install-deps.sh)" >&2
     exit 1
 fi
-for n in $(seq 90 120); do
-    [ -e "/tmp/.X11-unix/X$n" ] || [ -e "/tmp/.X$n-lock" ] || break
-done
-Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 &
+# -displayfd: Xvfb picks a free display itself and writes its number once it accepts
+# clients, so two runs side by side never race for one number.
+numfile=$(mktemp)
+Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$numfile" >/dev/null 2>&1 &
 xvfb=$!
-trap 'kill $xvfb 2>/dev/null || true' EXIT
-for _ in $(seq 50); do
-    [ -e "/tmp/.X11-unix/X$n" ] && break
+trap 'kill $xvfb 2>/dev/null || true; rm -f "$numfile"' EXIT
+until [ -s "$numfile" ]; do
+    if ! kill -0 "$xvfb" 2>/dev/null; then
+        echo "with-display: Xvfb did not start" >&2
+        exit 1
+    fi
     sleep 0.1
 done
-export DISPLAY=":$n"
+export DISPLAY=":$(head -n1 "$numfile")"
 "$@"

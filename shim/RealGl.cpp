@@ -130,9 +130,7 @@ void openDefaultLibraries()
         if (!tried) {
             tried = true;
             gOverrideLibrary = realDlopen(path, RTLD_NOW | RTLD_LOCAL);
-            static bool tried = false;
-        if (!tried) {
-            tried = true;
+            if (!gOverrideLibrary) {
                 NPRGL_ERROR("cannot load NPRGL_REAL_LIBGL=%s: %s", path, dlerror());
             }
         }

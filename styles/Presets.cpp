@@ -28,6 +28,7 @@ const std::vector<Preset>& Presets::shipped()
          "style=toon+paper+edges\n"
          "toon.tones=2\n"
          "toon.diffuse_threshold=0.15\n"
+         "toon.band_lines=on\n"
          "edges.silhouette_width=3\n"},
         {"newspaper", "halftone dots in print black with ink outlines",
          "style=halftone+paper+edges\n"

@@ -203,4 +203,4 @@ TEST_P(OutlineAccuracy, OutlinesLieOnTheAnalyticSilhouettes)
 }
 
 INSTANTIATE_TEST_SUITE_P(Styles, OutlineAccuracy, ::testing::ValuesIn(kCases),
-                         [](const auto& info) { return info.param.name; });
+                         [](const auto& p) { return p.param.name; });

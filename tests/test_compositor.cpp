@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace nprgl;
@@ -58,7 +59,30 @@ std::string goldenName(const GoldenCase& c)
 {
     std::string name = c.fixture + "_" + c.style;
     std::replace(name.begin(), name.end(), '+', '-');
+    std::replace(name.begin(), name.end(), ':', '_');
     return name;
+}
+
+constexpr const char* kLive = "live:";
+
+// Renders the case's frame: a replay of a capture, or a demo app run live under nprgl.
+// Returns the PNG's path, or "" with the failure reported.
+std::string renderGoldenCase(const GoldenCase& c, const std::string& dir)
+{
+    const std::string frame = std::to_string(c.frame);
+    if (c.fixture.rfind(kLive, 0) == 0) {
+        const std::string app = c.fixture.substr(std::string(kLive).size());
+        ProcessResult r = runProcess({nprglCommand(), "--style", c.style, "--", demo(app),
+                                      "--offscreen", "--size", "256x192", "--frames", frame,
+                                      "--save-frames", frame, "--save-dir", dir});
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r.exitCode == 0 ? dir + "/" + app + "_" + frame + ".png" : "";
+    }
+    ProcessResult r = runProcess({nprglCommand(), "replay",
+                                  source("/fixtures/" + c.fixture + ".nprgl"), "-o", dir,
+                                  "--style", c.style, "--frames", frame});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return r.exitCode == 0 ? framePng(dir, c.frame) : "";
 }
 
 } // namespace
@@ -67,29 +91,27 @@ class Golden : public ::testing::TestWithParam<GoldenCase> {};
 
 // The tolerance absorbs llvmpipe's rounding differences between machines (a few levels on
 // antialiased edges), not a changed look: at most 0.5% of pixels may differ by more than 24.
-TEST_P(Golden, ReplayMatchesTheGoldenImage)
+TEST_P(Golden, FrameMatchesTheGoldenImage)
 {
     const GoldenCase& c = GetParam();
     const std::string dir = freshDir("golden_" + goldenName(c));
-    ProcessResult r =
-        runProcess({nprglCommand(), "replay", source("/fixtures/" + c.fixture + ".nprgl"), "-o",
-                    dir, "--style", c.style, "--frames", std::to_string(c.frame)});
-    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string rendered = renderGoldenCase(c, dir);
+    ASSERT_FALSE(rendered.empty());
     const std::string golden = source("/golden/" + goldenName(c) + ".png");
     ASSERT_TRUE(fs::exists(golden)) << golden << " is missing: run scripts/rebase-goldens.sh";
-    ImageDiff diff = compareImages(golden, framePng(dir, c.frame), 24);
+    ImageDiff diff = compareImages(golden, rendered, 24);
     ASSERT_TRUE(diff.comparable) << diff.error;
     PngImage image;
     std::string error;
     ASSERT_TRUE(PngImage::read(golden, image, error)) << error;
     EXPECT_LE(diff.differingPixels, size_t(image.width) * image.height / 200)
-        << c.fixture << " in " << c.style << " differs from " << golden << " (see "
-        << framePng(dir, c.frame) << ")";
+        << c.fixture << " in " << c.style << " differs from " << golden << " (see " << rendered
+        << ")";
 }
 
 INSTANTIATE_TEST_SUITE_P(Styles, Golden, ::testing::ValuesIn(goldenCases()),
-                         [](const auto& info) {
-                             std::string name = goldenName(info.param);
+                         [](const auto& p) {
+                             std::string name = goldenName(p.param);
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });
@@ -205,15 +227,62 @@ TEST(Compositor, EveryShippedPresetRuns)
     EXPECT_GE(count, 3);
 }
 
+// The comic preset promises ink between the bands: its frame differs from the same preset
+// without band lines, and where it differs it is darker.
+TEST(Compositor, ComicPresetDrawsInkBetweenTheBands)
+{
+    const std::string ink = freshDir("comic_ink"), plain = freshDir("comic_plain");
+    const std::vector<std::string> app = {demo("displaylist"), "--offscreen", "--frames", "2",
+                                          "--size", "256x192", "--save-frames", "2",
+                                          "--save-dir"};
+    std::vector<std::string> a = {nprglCommand(), "--preset", "comic", "--"};
+    a.insert(a.end(), app.begin(), app.end());
+    a.push_back(ink);
+    std::vector<std::string> b = {nprglCommand(), "--preset", "comic", "--set",
+                                  "toon.band_lines=off", "--"};
+    b.insert(b.end(), app.begin(), app.end());
+    b.push_back(plain);
+    ProcessResult ra = runProcess(a), rb = runProcess(b);
+    ASSERT_EQ(ra.exitCode, 0) << ra.err;
+    ASSERT_EQ(rb.exitCode, 0) << rb.err;
+    PngImage withInk, without;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(ink + "/displaylist_2.png", withInk, error)) << error;
+    ASSERT_TRUE(PngImage::read(plain + "/displaylist_2.png", without, error)) << error;
+    ASSERT_EQ(withInk.rgba.size(), without.rgba.size());
+    size_t differing = 0, darker = 0;
+    for (size_t i = 0; i < withInk.rgba.size(); i += 4) {
+        const int lumInk = withInk.rgba[i] + withInk.rgba[i + 1] + withInk.rgba[i + 2];
+        const int lumPlain = without.rgba[i] + without.rgba[i + 1] + without.rgba[i + 2];
+        if (std::abs(lumInk - lumPlain) <= 24) continue;
+        ++differing;
+        darker += lumInk < lumPlain;
+    }
+    EXPECT_GT(differing, 256u * 192u / 500) << "no ink between the bands";
+    EXPECT_GE(darker * 10, differing * 9) << "the band lines are not ink";
+}
+
+// glxgears turns its gears by the time between frames, and its first frame has had none:
+// frame 1 shows the gears at angle 0 in every run, so style none and toon can be compared.
 TEST(Compositor, GlxgearsInToonKeepsItsRedGreenAndBlueGears)
 {
     if (!std::getenv("DISPLAY") || !*std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY";
-    const std::string dir = freshDir("glxgears_toon");
-    ProcessResult r = runProcess({nprglCommand(), "--style", "toon", "--screenshot",
-                                  "frames=20;dir=" + dir, "--", "glxgears"},
-                                 {}, 3);
-    ASSERT_TRUE(fs::exists(dir + "/glxgears_20.png")) << r.err;
-    expectGlxgearsPicture(dir + "/glxgears_20.png");
+    const std::string plain = freshDir("glxgears_none"), toon = freshDir("glxgears_toon");
+    ProcessResult n = runUntilFile({nprglCommand(), "--style", "none", "--screenshot",
+                                    "frames=1;dir=" + plain, "--", "glxgears"},
+                                   {}, plain + "/glxgears_1.png");
+    ASSERT_TRUE(n.stopped) << n.err;
+    ProcessResult t = runUntilFile({nprglCommand(), "--style", "toon", "--screenshot",
+                                    "frames=1,20;dir=" + toon, "--", "glxgears"},
+                                   {}, toon + "/glxgears_20.png");
+    ASSERT_TRUE(t.stopped) << t.err;
+    EXPECT_EQ(t.err.find("nprgl: error"), std::string::npos) << t.err;
+    expectGlxgearsPicture(toon + "/glxgears_1.png");
+    expectGlxgearsPicture(toon + "/glxgears_20.png");
+    // The same gears, shaded in bands instead of by the program's lighting.
+    ImageDiff diff = compareImages(plain + "/glxgears_1.png", toon + "/glxgears_1.png", 24);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_GT(diff.differingPixels, 300u * 300u / 20) << "toon left glxgears as it was";
 }
 
 struct DemoCase {
@@ -225,34 +294,126 @@ void PrintTo(const DemoCase& c, std::ostream* os) { *os << c.app; }
 
 class DefaultStyle : public ::testing::TestWithParam<DemoCase> {};
 
+namespace {
+
+int channelDelta(const PngImage& a, const PngImage& b, size_t i)
+{
+    return std::abs(a.rgba[i] - b.rgba[i]) + std::abs(a.rgba[i + 1] - b.rgba[i + 1]) +
+           std::abs(a.rgba[i + 2] - b.rgba[i + 2]);
+}
+
+// The program's drawing: pixels of the native frame away from its most common colour.
+std::vector<bool> drawnMask(const PngImage& native)
+{
+    std::map<uint32_t, size_t> histogram;
+    for (size_t i = 0; i < native.rgba.size(); i += 4) {
+        ++histogram[uint32_t(native.rgba[i]) << 16 | uint32_t(native.rgba[i + 1]) << 8 |
+                    native.rgba[i + 2]];
+    }
+    const uint32_t bg =
+        std::max_element(histogram.begin(), histogram.end(), [](const auto& a, const auto& b) {
+            return a.second < b.second;
+        })->first;
+    std::vector<bool> mask(native.rgba.size() / 4);
+    for (size_t i = 0; i < native.rgba.size(); i += 4) {
+        const int delta = std::abs(native.rgba[i] - int(bg >> 16)) +
+                          std::abs(native.rgba[i + 1] - int(bg >> 8 & 255)) +
+                          std::abs(native.rgba[i + 2] - int(bg & 255));
+        mask[i / 4] = delta > 24;
+    }
+    return mask;
+}
+
+} // namespace
+
 // With no configuration at all: every demo app (lit or not, with or without normals,
 // textured, overlays, the character) runs under the default chain, prints what it prints
-// natively, and its picture is the chain's, not the program's.
+// natively, and its picture is the chain's: the toon shading covers what the program drew
+// (not the paper), and the edges add ink to toon+paper.
 TEST_P(DefaultStyle, EveryDemoAppRunsAndIsStylised)
 {
     const DemoCase& c = GetParam();
     if (c.app == "character" && !fs::exists("/usr/share/assimp/models/X/Testwuson.X")) {
         GTEST_SKIP() << "assimp-testmodels is not installed";
     }
-    const std::string native = freshDir("default_native_" + c.app);
-    const std::string styled = freshDir("default_styled_" + c.app);
     std::vector<std::string> args = {demo(c.app), "--offscreen", "--frames", "3", "--size",
                                      "160x120", "--save-frames", "3"};
     args.insert(args.end(), c.args.begin(), c.args.end());
-    std::vector<std::string> n = args, s = {nprglCommand(), "--"};
-    n.insert(n.end(), {"--save-dir", native});
-    s.insert(s.end(), args.begin(), args.end());
-    s.insert(s.end(), {"--save-dir", styled});
-    ProcessResult a = runProcess(n), b = runProcess(s, {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""}});
+    const std::string file = "/" + c.app + "_3.png";
+    // chain "" is the default (no style set anywhere); "native" runs without nprgl.
+    auto run = [&](const std::string& chain, PngImage& image) {
+        const std::string dir = freshDir("default_" + c.app);
+        std::vector<std::string> argv;
+        if (chain != "native") {
+            argv = {nprglCommand()};
+            if (!chain.empty()) argv.insert(argv.end(), {"--style", chain});
+            argv.push_back("--");
+        }
+        argv.insert(argv.end(), args.begin(), args.end());
+        argv.insert(argv.end(), {"--save-dir", dir});
+        ProcessResult r = runProcess(argv, {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""},
+                                            {"NPRGL_PRESET", ""}});
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + file, image, error)) << chain << ": " << error;
+        return r;
+    };
+    PngImage native, styled, inkless, paperOnly;
+    ProcessResult a = run("native", native);
+    ProcessResult b = run("", styled);
     ASSERT_EQ(a.exitCode, 0) << a.err;
     ASSERT_EQ(b.exitCode, 0) << b.err;
     EXPECT_EQ(b.out, a.out);
     EXPECT_EQ(b.err.find("nprgl: error"), std::string::npos) << b.err;
     EXPECT_EQ(b.err.find("nprgl: warning"), std::string::npos) << b.err;
-    const std::string file = "/" + c.app + "_3.png";
-    ImageDiff diff = compareImages(native + file, styled + file, 24);
-    ASSERT_TRUE(diff.comparable) << diff.error;
-    EXPECT_GT(diff.differingPixels, 160u * 120u / 20) << "the default style changed too little";
+    ASSERT_EQ(run("toon+paper", inkless).exitCode, 0);
+    ASSERT_EQ(run("paper", paperOnly).exitCode, 0);
+    ASSERT_EQ(native.rgba.size(), styled.rgba.size());
+    ASSERT_EQ(inkless.rgba.size(), styled.rgba.size());
+    ASSERT_EQ(paperOnly.rgba.size(), styled.rgba.size());
+
+    // Toon redrew what the program drew: there, the frame is not paper alone's (the
+    // program's own shading on paper) ...
+    const std::vector<bool> drawn = drawnMask(native);
+    size_t covered = 0, redrawn = 0, vivid = 0, vividKept = 0;
+    auto chroma = [](const PngImage& image, size_t i) {
+        const auto [lo, hi] = std::minmax({image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]});
+        return int(hi) - int(lo);
+    };
+    auto dominant = [](const PngImage& image, size_t i) {
+        return std::max_element(&image.rgba[i], &image.rgba[i] + 3) - &image.rgba[i];
+    };
+    for (size_t i = 0; i < styled.rgba.size(); i += 4) {
+        if (!drawn[i / 4]) continue;
+        ++covered;
+        redrawn += channelDelta(styled, paperOnly, i) > 24;
+        // ... and nothing was lost: where the program drew a vivid colour, the frame keeps
+        // a vivid colour of the same hue (a missing object shows paper or what was behind).
+        if (chroma(native, i) < 60) continue;
+        ++vivid;
+        vividKept += chroma(styled, i) >= 40 && dominant(styled, i) == dominant(native, i);
+    }
+    ASSERT_GT(covered, 160u * 120u / 50) << "the program drew almost nothing";
+    // Measured with toon working: redrawn 21-98% of the drawing, vivid colours kept 58-96%;
+    // paper alone: 0% redrawn; toon drawing nothing: 0% kept on all but the demos whose
+    // vivid pixels are mostly 2D (overlay, state).
+    EXPECT_GT(redrawn * 100, covered * 12) << "the program's drawing is as it drew it: no toon";
+    if (vivid * 20 >= covered) {
+        EXPECT_GE(vividKept * 10, vivid * 4) << "the program's objects are missing: toon drew nothing";
+    }
+    size_t changed = 0;
+    for (size_t i = 0; i < styled.rgba.size(); i += 4) changed += channelDelta(native, styled, i) > 24;
+    EXPECT_GT(changed, 160u * 120u / 20) << "the default style changed too little";
+
+    // The edges' share: ink that toon+paper alone does not have.
+    size_t inked = 0, darker = 0;
+    for (size_t i = 0; i < styled.rgba.size(); i += 4) {
+        if (channelDelta(styled, inkless, i) <= 24) continue;
+        ++inked;
+        darker += styled.rgba[i] + styled.rgba[i + 1] + styled.rgba[i + 2] <
+                  inkless.rgba[i] + inkless.rgba[i + 1] + inkless.rgba[i + 2];
+    }
+    EXPECT_GT(inked, 160u * 120u / 200) << "the edges drew no ink";
+    EXPECT_GE(darker * 10, inked * 8) << "what the edges added is not ink";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -265,7 +426,4 @@ INSTANTIATE_TEST_SUITE_P(
                                {"--model", "/usr/share/assimp/models/X/Testwuson.X"}},
                       DemoCase{"character",
                                {"--model", "/usr/share/assimp/models/MD2/sydney.md2"}}),
-    [](const auto& info) {
-        std::string name = info.param.app + std::to_string(info.index);
-        return name;
-    });
+    [](const auto& p) { return p.param.app + std::to_string(p.index); });

@@ -280,7 +280,7 @@ INSTANTIATE_TEST_SUITE_P(
         WidthCase{"wireframe", "wireframe.silhouette_width=2", "wireframe.silhouette_width=8"},
         WidthCase{"perpixel", "perpixel.epsilon=0.15", "perpixel.epsilon=0.4"},
         WidthCase{"edges", "edges.silhouette_width=2", "edges.silhouette_width=6"}),
-    [](const auto& info) { return info.param.chain; });
+    [](const auto& p) { return p.param.chain; });
 
 // A box behind the sphere: its edges must not show through the sphere, while the sphere's
 // outline stays complete over the box.
@@ -372,8 +372,9 @@ TEST(Edges, RecreatesBuffersWhenTheViewportChanges)
     chain.shutdown();
 }
 
-// Pictures of the options for looking at (no assertions beyond rendering).
-TEST(Gallery, Options)
+// Each option visibly changes its chain's picture (the pictures are kept in /tmp/outlines
+// for looking at); widening a line adds ink.
+TEST(Gallery, EveryOptionChangesThePicture)
 {
     StyleHarness harness(320, 320);
     ASSERT_TRUE(harness.ok());
@@ -383,20 +384,39 @@ TEST(Gallery, Options)
     auto scene = harness.makeScene({boxBatch(box, glm::vec3(1.2f), kPale, 2),
                                     sphereBatch(sphere, 1.2f, 32, 16, kRed)},
                                    perspective());
-    const std::pair<const char*, const char*> cases[] = {
-        {"toon+wireframe", ""},
-        {"toon+wireframe", "wireframe.antialias=on,wireframe.silhouette_width=6"},
-        {"toon+wireframe", "wireframe.stencil=on,wireframe.silhouette_width=10"},
-        {"toon+wireframe", "wireframe.silhouette_width=10,wireframe.vertex_points=off"},
-        {"wireframe", "wireframe.depth_cue=1,wireframe.crease_lightness=0.5"},
-        {"toon+perpixel", ""},
-        {"toon+edges", ""},
-        {"toon+edges", "edges.silhouette_width=5,edges.crease_lightness=0.4"},
-        {"edges", ""},
+    struct Case {
+        const char* chain;
+        const char* config;
+        bool moreInk; // the option widens lines
+    };
+    const Case cases[] = {
+        {"toon+wireframe", "wireframe.antialias=on,wireframe.silhouette_width=6", true},
+        {"toon+wireframe", "wireframe.stencil=on,wireframe.silhouette_width=10", true},
+        {"toon+wireframe", "wireframe.silhouette_width=10,wireframe.vertex_points=off", true},
+        {"wireframe", "wireframe.depth_cue=1,wireframe.crease_lightness=0.5", false},
+        {"toon+edges", "edges.silhouette_width=5,edges.crease_lightness=0.4", false},
     };
     int i = 0;
-    for (const auto& [chain, config] : cases) {
-        render(harness, scene, chain, config, "gallery_" + std::to_string(i++));
+    for (const auto& c : cases) {
+        const std::string name = "gallery_" + std::to_string(i++);
+        const PngImage base = render(harness, scene, c.chain, "", name + "_base");
+        const PngImage option = render(harness, scene, c.chain, c.config, name);
+        ASSERT_EQ(base.rgba.size(), option.rgba.size());
+        int differing = 0;
+        for (size_t p = 0; p < base.rgba.size(); p += 4) {
+            int delta = 0;
+            for (int k = 0; k < 3; ++k) delta += std::abs(base.rgba[p + k] - option.rgba[p + k]);
+            differing += delta > 24;
+        }
+        EXPECT_GT(differing, 320 * 320 / 1000) << c.chain << " " << c.config << " changed nothing";
+        if (c.moreInk) {
+            EXPECT_GT(countInk(option), countInk(base)) << c.chain << " " << c.config;
+        }
+    }
+    // The other chains of the gallery render, for looking at.
+    for (const char* chain : {"toon+perpixel", "edges"}) {
+        const PngImage image = render(harness, scene, chain, "", std::string("gallery_") + chain);
+        EXPECT_GT(countInk(image), 0) << chain;
     }
 }
 

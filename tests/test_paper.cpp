@@ -215,7 +215,9 @@ TEST(Paper, GrainDarkensThePageSubtlyAndRepeatably)
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
             const Rgb before = pixel(toon, x, y);
-            if (before != Rgb{0, 0, 0}) ASSERT_EQ(pixel(pageOnly, x, y), before) << x << "," << y;
+            if (before != Rgb{0, 0, 0}) {
+                ASSERT_EQ(pixel(pageOnly, x, y), before) << x << "," << y;
+            }
         }
     }
 }

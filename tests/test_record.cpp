@@ -225,27 +225,17 @@ TEST(Record, DefaultFileIsNamedAfterTheProgramAndFramesLimitTheRecording)
 
 namespace {
 
-// Starts a recording of an endless offscreen demo, lets it draw, then stops it.
+// Starts a recording of an endless offscreen demo, lets it draw until the file holds some
+// frames, then stops it.
 ProcessResult recordAndStop(const std::string& file, int signal)
 {
-    pid_t pid = fork();
-    if (pid == 0) {
-        int null = open("/dev/null", O_WRONLY);
-        dup2(null, 2);
-        execl(nprglCommand().c_str(), "nprgl", "record", "-o", file.c_str(), "--",
-              demo("immediate").c_str(), "--offscreen", "--frames", "0", "--size", "64x64",
-              static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    ProcessResult result;
-    for (int i = 0; i < 200 && (!fs::exists(file) || fs::file_size(file) < 20000); ++i) {
-        usleep(20000);
-    }
-    kill(pid, signal);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return result;
+    auto enough = [&] {
+        std::error_code ec;
+        return fs::file_size(file, ec) >= 20000 && !ec;
+    };
+    return runUntil({nprglCommand(), "record", "-o", file, "--", demo("immediate"),
+                     "--offscreen", "--frames", "0", "--size", "64x64"},
+                    {}, enough, signal);
 }
 
 } // namespace
@@ -392,7 +382,7 @@ TEST(Export, LiveExportWritesTheRequestedFrame)
     EXPECT_GE(groups.size(), 4u) << r.err; // the back plate and three gears
     EXPECT_FALSE(fs::exists(dir + "/demo_displaylist_4.obj"));
     ProcessResult bad = runProcess({demo("displaylist"), "--offscreen", "--frames", "2"},
-                                   {{"LD_PRELOAD", libPath()}, {"NPRGL_EXPORT", "frame=x"}});
+                                   {{"LD_PRELOAD", preloadValue()}, {"NPRGL_EXPORT", "frame=x"}});
     EXPECT_EQ(bad.exitCode, 0);
     EXPECT_NE(bad.err.find("NPRGL_EXPORT"), std::string::npos) << bad.err;
 }
@@ -416,7 +406,7 @@ void expectRefusedOrPrefix(const std::string& path, bool mustRefuse)
     for (const char* command : {"info", "dump", "replay"}) {
         std::vector<std::string> cmd = {nprglCommand(), command, path};
         if (std::string(command) == "replay") cmd.insert(cmd.end(), {"-o", path + ".out"});
-        ProcessResult r = runProcess(cmd, {}, 60);
+        ProcessResult r = runProcess(cmd);
         ASSERT_LT(r.exitCode, 128) << command << " crashed on " << path << ": " << r.err;
         if (r.exitCode != 0) {
             EXPECT_NE(r.err.find("nprgl: "), std::string::npos) << r.err;

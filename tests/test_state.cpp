@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <regex>
 #include <string>
 #include <tuple>
@@ -78,6 +80,16 @@ TEST(StateNative, EveryQueryAnswersWhatWasSet)
         ASSERT_EQ(r.exitCode, 0) << (offscreen ? "offscreen: " : "glx: ") << r.err;
         EXPECT_EQ(r.err, "");
         EXPECT_GE(reportedItems(r.out, 5), 100) << r.out;
+        // README tells users how many pieces of state are checked: it must be this run's.
+        std::ifstream readme(std::string(NPRGL_TEST_SOURCE_DIR) + "/../README.md");
+        const std::string text{std::istreambuf_iterator<char>(readme), {}};
+        std::regex claim("([0-9]+) pieces of GL state");
+        int claims = 0;
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), claim);
+             it != std::sregex_iterator(); ++it, ++claims) {
+            EXPECT_EQ(std::stoi((*it)[1]), reportedItems(r.out, 5)) << "README: " << it->str();
+        }
+        EXPECT_GE(claims, 1) << "README no longer says how many pieces of state are checked";
     }
 }
 

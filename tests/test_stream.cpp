@@ -8,25 +8,33 @@
 #include <GL/glext.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace nprgl;
 
 namespace {
 
-// Encodes calls as the generated recorder does (same layout), for the decoder to read.
-std::vector<uint8_t> sampleFrame()
+// Encodes calls as the generated recorder does (same layout), for the decoder to read;
+// boundaries, if given, receives the offset at which each call ends.
+std::vector<uint8_t> sampleFrame(std::vector<size_t>* boundaries = nullptr)
 {
     CallWriter w;
+    auto ended = [&] {
+        if (boundaries) boundaries->push_back(w.size());
+    };
     w.op(op::glBegin);
     w.put<GLenum>(GL_TRIANGLES);
+    ended();
     for (int i = 0; i < 3; ++i) {
         w.op(op::glVertex3f);
         w.put<GLfloat>(float(i));
         w.put<GLfloat>(0.5f);
         w.put<GLfloat>(-1.0f);
+        ended();
     }
     w.op(op::glEnd);
+    ended();
     w.op(op::glLightfv);
     size_t mark = w.beginPayload();
     w.put<GLenum>(GL_LIGHT0);
@@ -34,8 +42,10 @@ std::vector<uint8_t> sampleFrame()
     const float position[4] = {1, 2, 3, 0};
     w.putBytes(position, sizeof position);
     w.endPayload(mark);
+    ended();
     w.op(op::kFrameEnd);
     w.put<uint64_t>(7);
+    ended();
     return std::vector<uint8_t>(w.data(), w.data() + w.size());
 }
 
@@ -76,12 +86,19 @@ TEST(CallCodec, AnArrayOfTheWrongLengthIsRefused)
 
 TEST(CallCodec, TruncatedAndMutatedFramesNeverCrash)
 {
-    std::vector<uint8_t> frame = sampleFrame();
+    std::vector<size_t> boundaries = {0};
+    std::vector<uint8_t> frame = sampleFrame(&boundaries);
+    ASSERT_EQ(boundaries.back(), frame.size());
     std::string out, error;
     for (size_t cut = 0; cut < frame.size(); ++cut) {
         out.clear();
+        error.clear();
         bool ok = CallPrinter::printFrame(frame.data(), cut, nullptr, "", out, error);
-        // A cut on a call boundary is a shorter valid frame; anywhere else an error.
+        // A cut on a call boundary is a shorter valid frame; anywhere else an error that
+        // says where.
+        const bool onBoundary =
+            std::find(boundaries.begin(), boundaries.end(), cut) != boundaries.end();
+        EXPECT_EQ(ok, onBoundary) << "cut at " << cut << ": " << error;
         if (!ok) {
             EXPECT_NE(error.find("offset"), std::string::npos) << error;
         }

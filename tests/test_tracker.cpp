@@ -230,7 +230,9 @@ TEST(StateTracker, FramesReuseTheirVertexStorage)
         ASSERT_TRUE(tracker.runFrame(calls.data(), calls.size(), &blobs, error)) << error;
         std::set<const TrackedVertex*> storage;
         for (const TrackedBatch& b : tracker.frameBatches()) storage.insert(b.vertices.data());
-        if (i > 0) EXPECT_EQ(storage, previous) << "frame " << i;
+        if (i > 0) {
+            EXPECT_EQ(storage, previous) << "frame " << i;
+        }
         previous = std::move(storage);
     }
 }

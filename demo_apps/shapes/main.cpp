@@ -126,10 +126,10 @@ public:
         detail_ = options.intValue("detail", 96);
         truthDir_ = options.textValue("truth", "");
         if (!truthDir_.empty()) {
-            std::error_code ec;
-            std::filesystem::create_directories(truthDir_, ec);
-            if (ec) {
-                error = "cannot create " + truthDir_ + ": " + ec.message();
+            std::error_code dirError;
+            std::filesystem::create_directories(truthDir_, dirError);
+            if (dirError) {
+                error = "cannot create " + truthDir_ + ": " + dirError.message();
                 return false;
             }
         }

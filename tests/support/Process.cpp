@@ -31,6 +31,21 @@ std::string slurp(const std::string& path)
 ProcessResult runProcess(const std::vector<std::string>& argv,
                          const std::map<std::string, std::string>& env, int timeoutSeconds)
 {
+    return runUntil(argv, env, nullptr, SIGINT, timeoutSeconds);
+}
+
+ProcessResult runUntilFile(const std::vector<std::string>& argv,
+                           const std::map<std::string, std::string>& env,
+                           const std::string& stopFile, int stopSignal, int timeoutSeconds)
+{
+    return runUntil(argv, env, [&] { return std::filesystem::exists(stopFile); }, stopSignal,
+                    timeoutSeconds);
+}
+
+ProcessResult runUntil(const std::vector<std::string>& argv,
+                       const std::map<std::string, std::string>& env,
+                       const std::function<bool()>& stopWhen, int stopSignal, int timeoutSeconds)
+{
     ProcessResult result;
     std::map<std::string, std::string> merged;
     for (char** e = environ; *e; ++e) {
@@ -71,7 +86,14 @@ ProcessResult runProcess(const std::vector<std::string>& argv,
     for (int waited = 0;; ++waited) {
         pid_t done = waitpid(pid, &status, WNOHANG);
         if (done == pid) break;
-        if (timeoutSeconds > 0 && waited == timeoutSeconds * 20) kill(pid, SIGTERM);
+        if (stopWhen && !result.stopped && stopWhen()) {
+            result.stopped = true;
+            kill(pid, stopSignal);
+        }
+        if (timeoutSeconds > 0 && waited == timeoutSeconds * 20) {
+            result.hung = true;
+            kill(pid, SIGTERM);
+        }
         usleep(50000);
     }
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -83,6 +105,15 @@ ProcessResult runProcess(const std::vector<std::string>& argv,
 std::string binDir() { return NPRGL_TEST_BIN_DIR; }
 
 std::string libPath() { return NPRGL_TEST_LIB_PATH; }
+
+std::string preloadValue()
+{
+#ifdef NPRGL_SANITIZER_RUNTIME
+    return std::string(NPRGL_SANITIZER_RUNTIME) + ":" + libPath();
+#else
+    return libPath();
+#endif
+}
 
 namespace {
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <csignal>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -10,17 +12,37 @@ struct ProcessResult {
     int exitCode = -1; // -1: did not start; 128+N: killed by signal N
     std::string out;
     std::string err;
+    bool hung = false;    // the hang guard ran out and sent SIGTERM
+    bool stopped = false; // runUntilFile's file appeared and the program was told to stop
 };
 
 // Runs argv with extra environment variables (an empty value removes the variable) and waits,
-// capturing stdout and stderr. timeoutSeconds > 0 sends SIGTERM when it runs out.
+// capturing stdout and stderr. The hang guard (timeoutSeconds > 0) sends SIGTERM when it runs
+// out; it is a guard against a hung program, never a speed check: how long a run takes is a
+// benchmark's business.
 ProcessResult runProcess(const std::vector<std::string>& argv,
                          const std::map<std::string, std::string>& env = {},
-                         int timeoutSeconds = 120);
+                         int timeoutSeconds = 300);
+
+// For programs that run until they are told to stop (glxgears): runs argv until stopFile
+// exists (a screenshot of frame N, written whole by a rename), then sends stopSignal. The
+// run lasts a number of frames, however fast the machine is.
+ProcessResult runUntilFile(const std::vector<std::string>& argv,
+                           const std::map<std::string, std::string>& env,
+                           const std::string& stopFile, int stopSignal = SIGINT,
+                           int timeoutSeconds = 300);
+// The same with any condition on what the program has done so far (a file's size...).
+ProcessResult runUntil(const std::vector<std::string>& argv,
+                       const std::map<std::string, std::string>& env,
+                       const std::function<bool()>& stopWhen, int stopSignal = SIGINT,
+                       int timeoutSeconds = 300);
 
 // Paths of the build tree, passed in by CMake.
 std::string binDir();
 std::string libPath();
+// The LD_PRELOAD value that loads libnprgl.so into an uninstrumented program: the library,
+// behind the sanitizer runtime in a sanitizer build (the runtime must be loaded first).
+std::string preloadValue();
 // A fresh empty directory under the test's temporary area.
 std::string freshDir(const std::string& name);
 
