@@ -5,11 +5,12 @@ Runs the character demo offscreen under nprgl (default style unless --style) for
 frames with `--rss-every N`, so the demo itself prints its VmRSS (from /proc/self/status)
 every N frames: the samples are taken by frame number, never by time. Reports the first,
 last and largest sample, and the least-squares slope of RSS over frames after the warm-up
-(KiB per 1,000 frames). Target: flat after warm-up.
+(KiB per 1,000 frames), the frame of the last new high and the slope over the second half.
+Target: flat after warm-up.
 
   bench/soak.py [--build DIR] [--frames N] [--every N] [--warmup N] [--model FILE]
                 [--size WxH] [--style S | --native] [--tolerance KIB] [--json FILE]
-                [-- DEMO ARGS...]
+                [--reanalyse JSON] [-- DEMO ARGS...]
 
 Default: 100,000 frames at 128x128 (a per-frame leak shows at any frame size, and a small
 frame keeps the run to minutes on a software rasteriser), a sample every 1,000, the first
@@ -60,7 +61,7 @@ def command(args: argparse.Namespace) -> list[str]:
     return nprgl + ["--"] + demo
 
 
-def run(cmd: list[str], every: int, quiet: bool) -> tuple[list[tuple[int, int]], int, str]:
+def run(cmd: list[str], quiet: bool) -> tuple[list[tuple[int, int]], int, str]:
     """Runs cmd; returns the (frame, kib) samples, the exit code and the other stderr lines."""
     samples: list[tuple[int, int]] = []
     other: list[str] = []
@@ -96,20 +97,31 @@ def main() -> int:
                         help="largest slope called flat, KiB per 1,000 frames (default 1)")
     parser.add_argument("--json", help="also write the figures and samples here")
     parser.add_argument("--quiet", action="store_true", help="no progress lines")
+    parser.add_argument("--reanalyse", metavar="JSON",
+                        help="report on the samples a previous --json run wrote, without running")
     parser.add_argument("demo_args", nargs="*", help="more demo_character arguments")
     args = parser.parse_args()
     if args.frames < 1 or args.every < 1:
         parser.error("--frames and --every must be positive")
     warmup = args.warmup if args.warmup is not None else args.frames // 10
 
-    cmd = command(args)
-    print("soak: " + " ".join(cmd), flush=True)
-    samples, code, stderr = run(cmd, args.every, args.quiet)
-    expected = args.frames // args.every
-    if code != 0 or len(samples) != expected:
-        print(f"soak: run failed (exit {code}, {len(samples)} of {expected} samples)\n{stderr}",
-              file=sys.stderr)
-        return 1
+    if args.reanalyse:
+        with open(args.reanalyse, encoding="utf-8") as f:
+            old = json.load(f)
+        cmd = old["command"]
+        samples = [(int(frame), int(k)) for frame, k in old["samples_kib"]]
+        args.frames, args.every = old["frames"], old["every"]
+        warmup = args.warmup if args.warmup is not None else args.frames // 10
+        print("soak (from " + args.reanalyse + "): " + " ".join(cmd))
+    else:
+        cmd = command(args)
+        print("soak: " + " ".join(cmd), flush=True)
+        samples, code, stderr = run(cmd, args.quiet)
+        expected = args.frames // args.every
+        if code != 0 or len(samples) != expected:
+            print(f"soak: run failed (exit {code}, {len(samples)} of {expected} samples)\n"
+                  f"{stderr}", file=sys.stderr)
+            return 1
     steady = [s for s in samples if s[0] > warmup]
     if len(steady) < 2:
         print(f"soak: fewer than 2 samples after the warm-up of {warmup} frames",
@@ -122,6 +134,22 @@ def main() -> int:
     kib = [k for _, k in samples]
     at_max = max(samples, key=lambda s: s[1])
     flat = per_kframe <= args.tolerance
+    # A step (an allocator arena or a reused buffer reaching a new high-water mark) tilts the
+    # fit without being a leak: say when RSS last reached a new high, and fit the second half
+    # of the samples after the warm-up alone.
+    last_high = samples[0]
+    for frame, k in samples[1:]:
+        if k > last_high[1]:
+            last_high = (frame, k)
+    tail = steady[len(steady) // 2:]
+    tail_per_kframe = least_squares(tail)[0] * 1000.0 if len(tail) >= 2 else 0.0
+    if flat:
+        verdict = "flat"
+    elif tail_per_kframe <= args.tolerance and last_high[0] <= tail[0][0]:
+        verdict = (f"bounded: grew in steps until frame {last_high[0]}, no new high in the "
+                   f"{steady[-1][0] - last_high[0]} frames since")
+    else:
+        verdict = "GROWING"
     figures = {
         "command": cmd,
         "frames": args.frames,
@@ -139,7 +167,10 @@ def main() -> int:
         "slope_kib_per_1000_frames": per_kframe,
         "fitted_growth_after_warmup_kib": slope * span,
         "tolerance_kib_per_1000_frames": args.tolerance,
+        "last_new_high_frame": last_high[0],
+        "second_half_slope_kib_per_1000_frames": tail_per_kframe,
         "flat": flat,
+        "verdict": verdict,
     }
     print(f"frames {args.frames}, a sample every {args.every} ({len(samples)} samples), "
           f"warm-up {warmup} frames")
@@ -149,8 +180,10 @@ def main() -> int:
     print(f"after warm-up: min {figures['min_after_warmup_kib']} KiB, max "
           f"{figures['max_after_warmup_kib']} KiB; least-squares slope {per_kframe:.3f} KiB "
           f"per 1,000 frames ({slope * span:.0f} KiB over {span} frames)")
-    print(f"verdict: {'flat' if flat else 'GROWING'} (tolerance {args.tolerance} KiB per "
-          f"1,000 frames)")
+    print(f"last new high at frame {last_high[0]}; slope over the second half after the "
+          f"warm-up (frames {tail[0][0]}-{tail[-1][0]}): {tail_per_kframe:.3f} KiB per 1,000 "
+          f"frames")
+    print(f"verdict: {verdict} (tolerance {args.tolerance} KiB per 1,000 frames)")
     if args.json:
         figures["samples_kib"] = samples
         with open(args.json, "w", encoding="utf-8") as f:
