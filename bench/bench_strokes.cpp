@@ -2,8 +2,12 @@
 // depth visibility (against a depth buffer rasterised on the CPU before timing), simplification
 // and stroke building, and the quad generation of the renderer; on UV spheres and tori of
 // 10k, 100k and 1M faces, viewed from an eye that turns around them. Prints the median CPU time
-// of each stage over the frames. Usage: bench_strokes [frames] (Release/RelWithDebInfo)
+// of each stage over the frames. Then, in an OSMesa context, the two visibility methods side by
+// side on the same lines of the same frames: depth (read-back + sampling) against occlusion
+// queries, in wall time (the GL work runs in the driver's threads), alternating which goes
+// first. Usage: bench_strokes [frames] (Release/RelWithDebInfo)
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,6 +26,14 @@
 #include "styles/strokes/StrokeBuilder.h"
 #include "styles/strokes/StrokePainter.h"
 #include "styles/strokes/StrokeSimplifier.h"
+#if NPRGL_BENCH_GL
+#include "styles/MeshBuffers.h"
+#include "styles/ShaderProgram.h"
+#include "styles/strokes/QueryVisibility.h"
+#include "tests/support/StyleHarness.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#endif
 
 using namespace nprgl;
 using namespace nprgl::reconstruct;
@@ -146,6 +158,150 @@ struct Stage {
     std::vector<double> ms;
 };
 
+#if NPRGL_BENCH_GL
+
+double wallMs()
+{
+    using namespace std::chrono;
+    return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+Batch placed(Batch b, const glm::mat4& modelview)
+{
+    b.modelview = modelview;
+    b.contentHash = hashBatch(b);
+    return b;
+}
+
+// Depth read-back + DepthVisibility against QueryVisibility on the silhouettes of every object,
+// per frame: the depth pre-pass is drawn and finished first (both methods need it), and the
+// lines are extracted and projected (untimed); then the two methods classify copies of the
+// same lines, alternating which runs first. Prints the median wall ms of each and the ratio.
+void visibilitySideBySide(int frames)
+{
+    constexpr int kSize = 512;
+    test::StyleHarness harness(kSize, kSize);
+    if (!harness.ok()) {
+        std::printf("visibility: no OSMesa context, skipped\n");
+        return;
+    }
+    const styles::GlFunctions& gl = harness.gl();
+    std::string error;
+    styles::ShaderProgram depthProgram;
+    QueryVisibility queries;
+    if (!depthProgram.build(gl, test::StyleHarness::depthVertexShader(),
+                            test::StyleHarness::depthFragmentShader(), error) ||
+        !queries.init(gl, error)) {
+        std::printf("visibility: %s\n", error.c_str());
+        return;
+    }
+    GLuint vao = 0;
+    gl.GenVertexArrays(1, &vao);
+    styles::MeshBuffers buffers;
+    const glm::mat4 projection = glm::perspective(glm::radians(40.0f), 1.0f, 1.0f, 20.0f);
+    struct Case {
+        const char* name;
+        std::vector<Batch> batches; // modelviews relative to the turning eye
+    };
+    const Case cases[] = {
+        {"half-hidden spheres 4.6k",
+         {placed(sphere(48, 25), glm::scale(glm::translate(glm::mat4(1.0f),
+                                                           glm::vec3(-0.7f, 0.1f, 1.25f)),
+                                            glm::vec3(1.0f / 1.5f))),
+          placed(sphere(48, 25), glm::scale(glm::translate(glm::mat4(1.0f),
+                                                           glm::vec3(0.8f, 0.0f, -1.25f)),
+                                            glm::vec3(1.6f / 1.5f)))}},
+        {"torus 100k", {placed(torus(316, 158), glm::mat4(1.0f))}},
+    };
+    std::printf("\nvisibility side by side, %dx%d OSMesa, wall ms per frame (median of %d "
+                "frames, eye turning)\n",
+                kSize, kSize, frames);
+    std::printf("%-26s %9s %8s | %9s %9s | %7s\n", "scene", "sil.edges", "queries", "depth",
+                "query", "q/d");
+    std::vector<float> depth(size_t(kSize) * kSize);
+    for (const Case& c : cases) {
+        std::vector<double> depthMs, queryMs;
+        size_t edges = 0;
+        uint32_t queryCount = 0;
+        for (int frame = 0; frame < frames; ++frame) {
+            const glm::mat4 eye =
+                glm::rotate(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -7.5f)),
+                                        0.5f + 0.1f * float(frame), glm::vec3(1, 0, 0)),
+                            0.37f * float(frame), glm::vec3(0, 1, 0));
+            std::vector<Batch> batches;
+            for (const Batch& b : c.batches) batches.push_back(placed(b, eye * b.modelview));
+            const styles::Scene scene = harness.makeScene(batches, projection);
+
+            gl.BindVertexArray(vao);
+            gl.Viewport(0, 0, kSize, kSize);
+            gl.ClearDepth(1.0);
+            gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            gl.Enable(GL_DEPTH_TEST);
+            gl.DepthFunc(GL_LESS);
+            gl.UseProgram(depthProgram.id());
+            for (const auto& o : scene.objects) {
+                const glm::mat4 mvp = o.projection * o.modelview;
+                gl.UniformMatrix4fv(depthProgram.uniform(gl, "mvp"), 1, GL_FALSE,
+                                    glm::value_ptr(mvp));
+                buffers.draw(gl, *o.mesh);
+            }
+            gl.Finish();
+
+            std::vector<Polylines> lines(scene.objects.size());
+            ChainExtractor extractor;
+            ChainProjector projector;
+            EdgeChains chains;
+            edges = 0;
+            for (size_t k = 0; k < scene.objects.size(); ++k) {
+                const auto& o = scene.objects[k];
+                extractor.extract(*o.mesh, eyeInObjectSpace(o.modelview), {}, chains);
+                projector.project(*o.mesh, chains, o.modelview, o.projection, scene.viewport,
+                                  0.01f, lines[k]);
+                edges += chains.edges.size();
+            }
+            DepthVisibility depthVisibility;
+            auto runDepth = [&] {
+                std::vector<Polylines> work = lines;
+                const double start = wallMs();
+                gl.ReadPixels(0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+                const DepthImage image{depth.data(), 0, 0, kSize, kSize};
+                for (size_t k = 0; k < work.size(); ++k)
+                    depthVisibility.classify(*scene.objects[k].mesh, image, {}, work[k]);
+                depthMs.push_back(wallMs() - start);
+            };
+            auto runQueries = [&] {
+                std::vector<Polylines> work = lines;
+                gl.BindVertexArray(vao);
+                queryCount = 0;
+                const double start = wallMs();
+                for (size_t k = 0; k < work.size(); ++k) {
+                    queries.classify(gl, *scene.objects[k].mesh, scene.viewport, {}, work[k]);
+                    queryCount += queries.queryCount();
+                }
+                queryMs.push_back(wallMs() - start);
+            };
+            if (frame % 2) {
+                runQueries();
+                runDepth();
+            } else {
+                runDepth();
+                runQueries();
+            }
+        }
+        const double d = median(depthMs), q = median(queryMs);
+        std::printf("%-26s %9zu %8u | %9.3f %9.3f | %7.1f\n", c.name, edges, queryCount, d, q,
+                    d > 0 ? q / d : 0.0);
+    }
+    std::printf("depth: glReadPixels of the depth buffer + sampling; query: two occlusion "
+                "queries per segment, refined, each result waited on; q/d: query / depth\n");
+    queries.destroy(gl);
+    buffers.destroy(gl);
+    depthProgram.destroy(gl);
+    gl.DeleteVertexArrays(1, &vao);
+}
+
+#endif
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -239,5 +395,8 @@ int main(int argc, char** argv)
     }
     std::printf("test: eq. 4.1 over all edges alone (reference); extract: test + chaining; "
                 "total: extract .. build (targets: 10k <= 2 ms, 100k <= 20 ms)\n");
+#if NPRGL_BENCH_GL
+    visibilitySideBySide(frames);
+#endif
     return 0;
 }

@@ -18,7 +18,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <sys/stat.h>
@@ -115,19 +114,6 @@ void expectEachSilhouetteOnce(const reconstruct::ObjectMesh& mesh, glm::vec3 eye
         ASSERT_NE(it, uses.end()) << "silhouette edge " << e << " in no chain";
         EXPECT_EQ(it->second, 1) << "edge " << e;
     }
-}
-
-double msSince(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
-void savePng(const PngImage& image, const std::string& name)
-{
-    ::mkdir("/tmp/strokes", 0755);
-    std::string error;
-    image.write("/tmp/strokes/" + name + ".png", error);
 }
 
 } // namespace
@@ -406,10 +392,7 @@ TEST(StrokeVisibility, QueryAndDepthAgreeOnHalfHiddenSphere)
         buffers.draw(gl, *o.mesh);
     }
     std::vector<float> depthBuffer(size_t(kSize) * kSize);
-    gl.Finish();
-    const auto readStart = std::chrono::steady_clock::now();
     gl.ReadPixels(0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT, depthBuffer.data());
-    const double readMs = msSince(readStart);
     const DepthImage image{depthBuffer.data(), 0, 0, kSize, kSize};
 
     const auto& far = scene.objects[1];
@@ -423,15 +406,11 @@ TEST(StrokeVisibility, QueryAndDepthAgreeOnHalfHiddenSphere)
                       original);
     byDepth = byQuery = original;
     DepthVisibility depthVisibility;
-    const auto depthStart = std::chrono::steady_clock::now();
     depthVisibility.classify(mesh, image, {}, byDepth);
-    const double depthMs = msSince(depthStart) + readMs;
     QueryVisibility queryVisibility;
     ASSERT_TRUE(queryVisibility.init(gl, error)) << error;
     gl.BindVertexArray(vao);
-    const auto queryStart = std::chrono::steady_clock::now();
     queryVisibility.classify(gl, mesh, scene.viewport, {}, byQuery);
-    const double queryMs = msSince(queryStart);
     EXPECT_GT(queryVisibility.queryCount(), 0u);
 
     // Compare both, and the truth (is the far silhouette point behind the near sphere?),
@@ -475,11 +454,10 @@ TEST(StrokeVisibility, QueryAndDepthAgreeOnHalfHiddenSphere)
     EXPECT_GE(depthRight / total, 0.9f);
     EXPECT_GE(queryRight / total, 0.9f);
     std::printf("far silhouette %.0f px (%zu segments), hidden %.0f%%; depth right %.1f%%, "
-                "query right %.1f%%, agree %.1f%%; depth %.3f ms (read-back %.3f), query "
-                "%.3f ms (%u queries)\n",
+                "query right %.1f%%, agree %.1f%% (%u queries)\n",
                 total, original.points.size() - original.count(), 100 * hiddenLength / total,
                 100 * depthRight / total, 100 * queryRight / total, 100 * agree / total,
-                depthMs, readMs, queryMs, queryVisibility.queryCount());
+                queryVisibility.queryCount());
     queryVisibility.destroy(gl);
     buffers.destroy(gl);
     depth.destroy(gl);
@@ -594,22 +572,182 @@ TEST(StrokeRendering, MissingTextureFileFallsBackWithOneError)
     EXPECT_GT(darkness(custom), 1.1 * darkness(procedural));
 }
 
-TEST(StrokeRendering, Pictures)
+namespace {
+
+// A pixel mask over a kSize x kSize picture.
+using Mask = std::vector<uint8_t>;
+
+// Pixels that are not exactly the background colour: the footprint of a style that covers
+// the objects and nothing else (toon).
+Mask footprint(const PngImage& image, glm::u8vec3 background)
 {
-    // Not a check: pictures to look at in /tmp/strokes.
+    Mask mask(size_t(kSize) * kSize);
+    for (size_t i = 0; i < mask.size(); ++i) {
+        const uint8_t* p = &image.rgba[i * 4];
+        mask[i] = p[0] != background.r || p[1] != background.g || p[2] != background.b;
+    }
+    return mask;
+}
+
+// Pixels at least `amount` (summed over r, g, b) darker than the same pixel of `reference`.
+Mask darker(const PngImage& image, const PngImage& reference, int amount = 150)
+{
+    Mask mask(size_t(kSize) * kSize);
+    for (size_t i = 0; i < mask.size(); ++i) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d += reference.rgba[i * 4 + c] - image.rgba[i * 4 + c];
+        mask[i] = d >= amount;
+    }
+    return mask;
+}
+
+// Footprint pixels with a 4-neighbour outside it: the outline as the picture shows it.
+Mask outline(const Mask& inside)
+{
+    Mask mask(inside.size());
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (!inside[size_t(y) * kSize + x]) continue;
+            bool edge = x == 0 || y == 0 || x == kSize - 1 || y == kSize - 1;
+            for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                const int nx = x + dx, ny = y + dy;
+                if (nx >= 0 && ny >= 0 && nx < kSize && ny < kSize)
+                    edge = edge || !inside[size_t(ny) * kSize + nx];
+            }
+            mask[size_t(y) * kSize + x] = edge;
+        }
+    }
+    return mask;
+}
+
+// Distance in pixels from every pixel to the nearest pixel of `seeds` (3-4 chamfer, within
+// 8% of the Euclidean distance); large where there are no seeds.
+std::vector<float> distanceTo(const Mask& seeds)
+{
+    constexpr int kFar = 1 << 20;
+    std::vector<int> d(seeds.size());
+    for (size_t i = 0; i < d.size(); ++i) d[i] = seeds[i] ? 0 : kFar;
+    auto relax = [&](int x, int y, int dx, int dy, int cost) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx < 0 || ny < 0 || nx >= kSize || ny >= kSize) return;
+        int& here = d[size_t(y) * kSize + x];
+        here = std::min(here, d[size_t(ny) * kSize + nx] + cost);
+    };
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            relax(x, y, -1, 0, 3);
+            relax(x, y, -1, -1, 4);
+            relax(x, y, 0, -1, 3);
+            relax(x, y, 1, -1, 4);
+        }
+    }
+    for (int y = kSize - 1; y >= 0; --y) {
+        for (int x = kSize - 1; x >= 0; --x) {
+            relax(x, y, 1, 0, 3);
+            relax(x, y, 1, 1, 4);
+            relax(x, y, 0, 1, 3);
+            relax(x, y, -1, 1, 4);
+        }
+    }
+    std::vector<float> out(d.size());
+    for (size_t i = 0; i < d.size(); ++i) out[i] = float(d[i]) / 3.0f;
+    return out;
+}
+
+Mask invert(const Mask& mask)
+{
+    Mask out(mask.size());
+    for (size_t i = 0; i < mask.size(); ++i) out[i] = !mask[i];
+    return out;
+}
+
+// What the outline checks found in one picture.
+struct InkReport {
+    int ink = 0;             // ink pixels
+    int outside = 0;         // ink farther than kOutside px outside the footprint
+    int deepInside = 0;      // ink farther than kInside px inside `region` (when given)
+    float covered = 0.0f;    // share of the outline with ink within kReach px
+};
+
+constexpr float kOutside = 6.0f, kInside = 6.0f, kReach = 3.0f;
+
+InkReport inspect(const Mask& ink, const Mask& inside, const Mask* region)
+{
+    InkReport r;
+    const std::vector<float> toFootprint = distanceTo(inside);
+    const std::vector<float> toInk = distanceTo(ink);
+    std::vector<float> depth;
+    if (region) depth = distanceTo(invert(*region));
+    const Mask edge = outline(inside);
+    int edgePixels = 0, reached = 0;
+    for (size_t i = 0; i < ink.size(); ++i) {
+        if (edge[i]) {
+            ++edgePixels;
+            reached += toInk[i] <= kReach;
+        }
+        if (!ink[i]) continue;
+        ++r.ink;
+        r.outside += toFootprint[i] > kOutside;
+        if (region) r.deepInside += depth[i] > kInside;
+    }
+    r.covered = edgePixels ? float(reached) / float(edgePixels) : 0.0f;
+    return r;
+}
+
+// Of the pixels a stroke darkened on white, the share that is neither nearly white nor at the
+// stroke's full darkness: the soft coverage of a texture's alpha.
+float intermediateShare(const PngImage& image)
+{
+    int marked = 0, soft = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        const int v = image.rgba[i];
+        if (v > 235) continue;
+        ++marked;
+        soft += v > 60;
+    }
+    return marked ? float(soft) / float(marked) : 0.0f;
+}
+
+} // namespace
+
+TEST(StrokeTexture, EveryKindHasCapsAndSoftCoverage)
+{
+    std::vector<std::vector<uint8_t>> alphas;
     for (int kind = 0; kind < 4; ++kind) {
-        // The textures on white, rows doubled so thin details show.
+        SCOPED_TRACE(kind);
         PngImage texture;
         StrokeTexture::generate(StrokeTexture::Kind(kind), texture);
-        PngImage shown = texture;
-        for (size_t i = 0; i < shown.rgba.size(); i += 4) {
-            const float a = texture.rgba[i + 3] / 255.0f;
-            for (int c = 0; c < 3; ++c)
-                shown.rgba[i + c] = uint8_t(255.0f * (1.0f - a) + 0.1f * texture.rgba[i + c] * a);
-            shown.rgba[i + 3] = 255;
+        ASSERT_EQ(texture.width, StrokeTexture::kWidth);
+        ASSERT_EQ(texture.height, StrokeTexture::kHeight);
+        std::vector<uint8_t> alpha;
+        int opaque = 0, clear = 0, soft = 0;
+        for (size_t i = 3; i < texture.rgba.size(); i += 4) {
+            const uint8_t a = texture.rgba[i];
+            alpha.push_back(a);
+            opaque += a >= 200;
+            clear += a <= 16;
+            soft += a > 16 && a < 200;
         }
-        savePng(shown, "texture_" + std::to_string(kind));
+        const float n = float(alpha.size());
+        EXPECT_GT(opaque / n, 0.05f);
+        EXPECT_GT(clear / n, 0.05f);
+        EXPECT_GT(soft / n, 0.05f) << "no intermediate alphas";
+        // The caps taper: the first and last columns hold less ink than the middle one.
+        auto column = [&](int x) {
+            int sum = 0;
+            for (int y = 0; y < texture.height; ++y) sum += alpha[size_t(y) * texture.width + x];
+            return sum;
+        };
+        EXPECT_LT(column(0), column(texture.width / 2));
+        EXPECT_LT(column(texture.width - 1), column(texture.width / 2));
+        alphas.push_back(alpha);
     }
+    for (size_t a = 0; a < alphas.size(); ++a)
+        for (size_t b = a + 1; b < alphas.size(); ++b) EXPECT_NE(alphas[a], alphas[b]) << a << b;
+}
+
+TEST(StrokeRendering, EveryLookInksTheOutlinesOfEveryShapeAndHidesHiddenLines)
+{
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
     const glm::vec4 red(0.85f, 0.35f, 0.3f, 1.0f), blue(0.35f, 0.5f, 0.85f, 1.0f);
@@ -620,20 +758,27 @@ TEST(StrokeRendering, Pictures)
     const glm::mat4 cubeMv = glm::rotate(
         glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -6)), 0.5f, glm::vec3(1, 0, 0)),
         0.6f, glm::vec3(0, 1, 0));
+    const reconstruct::Batch nearSphere = sphereBatch(
+        glm::translate(glm::mat4(1.0f), glm::vec3(-0.7f, 0.1f, -5.0f)), 1.0f, 40, 20, red);
     struct Shot {
         const char* name;
         std::vector<reconstruct::Batch> batches;
+        // Where no ink may be deeper than kInside px: the smooth sphere's inside (no creases,
+        // no inner silhouettes), the near sphere hiding part of the far one (hidden lines).
+        std::vector<reconstruct::Batch> clean;
     };
-    std::vector<Shot> shots = {
-        {"sphere", {sphereBatch(sphereMv, 1.5f, 48, 24, red)}},
-        {"torus", {torusBatch(torusMv, 2.0f, 0.7f, 48, 24)}},
-        {"cube", {boxBatch(cubeMv, glm::vec3(1.0f), blue)}},
+    const std::vector<Shot> shots = {
+        {"sphere", {sphereBatch(sphereMv, 1.5f, 48, 24, red)},
+         {sphereBatch(sphereMv, 1.5f, 48, 24, red)}},
+        {"torus", {torusBatch(torusMv, 2.0f, 0.7f, 48, 24)}, {}},
+        {"cube", {boxBatch(cubeMv, glm::vec3(1.0f), blue)}, {}},
         {"two_spheres",
-         {sphereBatch(glm::translate(glm::mat4(1.0f), glm::vec3(-0.7f, 0.1f, -5.0f)), 1.0f, 40,
-                      20, red),
-          sphereBatch(glm::translate(glm::mat4(1.0f), glm::vec3(0.8f, 0.0f, -7.5f)), 1.6f, 40,
-                      20, blue, 2)}},
+         {nearSphere, sphereBatch(glm::translate(glm::mat4(1.0f), glm::vec3(0.8f, 0.0f, -7.5f)),
+                                  1.6f, 40, 20, blue, 2)},
+         {nearSphere}},
     };
+    // Looks after the first must each change the picture, except "query" (the same lines
+    // through the other visibility test).
     const std::vector<std::pair<std::string, std::string>> looks = {
         {"default", ""},
         {"sketchy", "strokes.renderer=sketchy"},
@@ -648,53 +793,61 @@ TEST(StrokeRendering, Pictures)
         {"zbuffer", "strokes.renderer=sketchy,strokes.zbuffer=on,strokes.jitter_mode=normal,"
                     "strokes.jitter=1.5"},
     };
+    const glm::vec4 green(0, 1, 0, 1);
+    std::string error;
     for (const Shot& shot : shots) {
-        auto scene = harness.makeScene(shot.batches, perspective());
-        // One contact sheet per shape: a column per look, strokes alone above toon+strokes.
-        PngImage sheet;
-        sheet.width = kSize * int(looks.size());
-        sheet.height = 2 * kSize;
-        sheet.rgba.assign(size_t(sheet.width) * sheet.height * 4, 255);
-        for (size_t column = 0; column < looks.size(); ++column) {
-            const auto& [look, config] = looks[column];
-            int row = 0;
+        SCOPED_TRACE(shot.name);
+        const auto scene = harness.makeScene(shot.batches, perspective());
+        PngImage toon, cover;
+        ASSERT_TRUE(harness.render(scene, "toon", "", toon, error)) << error;
+        ASSERT_TRUE(harness.render(scene, "toon", "", cover, error, green)) << error;
+        const Mask inside = footprint(cover, glm::u8vec3(0, 255, 0));
+        Mask clean;
+        if (!shot.clean.empty()) {
+            PngImage cleanCover;
+            ASSERT_TRUE(harness.render(harness.makeScene(shot.clean, perspective()), "toon", "",
+                                       cleanCover, error, green))
+                << error;
+            clean = footprint(cleanCover, glm::u8vec3(0, 255, 0));
+        }
+        PngImage white = toon;
+        std::fill(white.rgba.begin(), white.rgba.end(), uint8_t(255));
+        std::vector<PngImage> alone;
+        for (const auto& [look, config] : looks) {
+            SCOPED_TRACE(look);
+            // Strokes alone on white, then over toon shading (ink = darker than toon alone).
             for (const char* chain : {"strokes", "toon+strokes"}) {
+                SCOPED_TRACE(chain);
+                const bool overToon = chain[0] == 't';
                 PngImage image;
-                std::string error;
                 ASSERT_TRUE(harness.render(scene, chain, config, image, error)) << error;
-                savePng(image, shot.name + std::string("_") + look + (row ? "_toon" : ""));
-                for (int y = 0; y < kSize; ++y) {
-                    std::copy_n(&image.rgba[size_t(y) * kSize * 4], kSize * 4,
-                                &sheet.rgba[((size_t(row) * kSize + y) * sheet.width +
-                                             column * kSize) * 4]);
+                const InkReport r = inspect(darker(image, overToon ? toon : white), inside,
+                                            clean.empty() ? nullptr : &clean);
+                EXPECT_EQ(r.outside, 0) << "ink far from the objects (of " << r.ink << ")";
+                EXPECT_EQ(r.deepInside, 0) << "ink inside a smooth or hiding object";
+                EXPECT_GE(r.covered, 0.9f) << "outline not inked";
+                if (overToon) continue;
+                // Textured strokes draw their texture's soft coverage; sketchy lines and
+                // the ink texture are mostly solid.
+                const float soft = intermediateShare(image);
+                if (look == "default" || look == "brush" || look == "chalk") {
+                    EXPECT_GT(soft, 0.8f) << "no soft coverage";
                 }
-                ++row;
+                if (look == "sketchy" || look == "ink") {
+                    EXPECT_LT(soft, 0.7f);
+                }
+                alone.push_back(image);
             }
         }
-        savePng(sheet, std::string("sheet_") + shot.name);
+        // Each look changes the picture; the textured ones draw soft coverage, the sketchy
+        // lines mostly full ink.
+        ASSERT_EQ(alone.size(), looks.size());
+        for (size_t a = 0; a < looks.size(); ++a) {
+            for (size_t b = a + 1; b < looks.size(); ++b) {
+                if (looks[a].first == "query" || looks[b].first == "query") continue;
+                EXPECT_NE(alone[a].rgba, alone[b].rgba) << looks[a].first << " = "
+                                                        << looks[b].first;
+            }
+        }
     }
-}
-
-TEST(StrokeRendering, DepthVisibilityIsFasterThanQueries)
-{
-    // Whole style renders of a 100k-face torus: the only difference is the visibility test.
-    StyleHarness harness(512, 512);
-    ASSERT_TRUE(harness.ok());
-    const glm::mat4 mv = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -8)),
-                                     glm::radians(35.0f), glm::vec3(1, 0.2f, 0));
-    auto scene = harness.makeScene({torusBatch(mv, 2.0f, 0.7f, 316, 158)}, perspective());
-    double ms[2] = {};
-    const char* configs[2] = {"strokes.visibility=depth", "strokes.visibility=query"};
-    for (int method = 0; method < 2; ++method) {
-        PngImage image;
-        std::string error;
-        ASSERT_TRUE(harness.render(scene, "strokes", configs[method], image, error)) << error;
-        const auto start = std::chrono::steady_clock::now();
-        for (int k = 0; k < 3; ++k)
-            ASSERT_TRUE(harness.render(scene, "strokes", configs[method], image, error));
-        ms[method] = msSince(start) / 3.0;
-    }
-    std::printf("100k-face torus, 512x512, whole render: depth %.1f ms, query %.1f ms\n", ms[0],
-                ms[1]);
-    EXPECT_LT(ms[0], ms[1]);
 }

@@ -1,7 +1,8 @@
 // demo_character: the three character-animation techniques on models from assimp-testmodels:
 // morphing between MD2 keyframes, linear-blend skinning of a boned mesh, and rigid limbs
 // driven by a BVH motion clip. The geometry goes to GL every frame through client arrays,
-// immediate mode (--immediate) or buffer objects (--vbo).
+// immediate mode (--immediate) or buffer objects (--vbo). --rss-every N prints the process's
+// resident memory every N frames to stderr, for soak benchmarks (bench/soak.py).
 
 #include "Demo.h"
 #include "Md2Animator.h"
@@ -15,8 +16,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <memory>
 #include <numbers>
 
@@ -46,11 +49,13 @@ public:
                 {"clip", Kind::Text, "animation or MD2 frame group to play"},
                 {"texture", Kind::Text, "MD2 skin (BMP; default: the one beside the model)"},
                 {"immediate", Kind::Flag, "draw in immediate mode"},
-                {"vbo", Kind::Flag, "draw from buffer objects refilled every frame"}};
+                {"vbo", Kind::Flag, "draw from buffer objects refilled every frame"},
+                {"rss-every", Kind::Int, "print VmRSS to stderr every N frames"}};
     }
 
     bool init(const demo::Options& options, std::string& error) override
     {
+        rssEvery_ = options.intValue("rss-every", 0);
         std::string path = options.textValue("model", defaultModel);
         if (!std::ifstream(path, std::ios::binary)) {
             error = "cannot open model file " + path;
@@ -122,6 +127,7 @@ public:
         glScalef(1.0f / radius_, 1.0f / radius_, 1.0f / radius_);
         glTranslatef(-centre_[0], -centre_[1], -centre_[2]);
         drawer_->draw(pose_);
+        if (rssEvery_ > 0 && frame % rssEvery_ == 0) printResidentMemory(frame);
     }
 
     void shutdown() override
@@ -130,6 +136,21 @@ public:
     }
 
 private:
+    // "demo_character: frame=N vmrss_kib=K", K from /proc/self/status (0 if not found). By
+    // frame number, not by time, so that samples of different runs line up.
+    static void printResidentMemory(int frame)
+    {
+        long kib = 0;
+        std::ifstream status("/proc/self/status");
+        for (std::string line; std::getline(status, line);) {
+            if (line.rfind("VmRSS:", 0) == 0) {
+                kib = std::strtol(line.c_str() + 6, nullptr, 10);
+                break;
+            }
+        }
+        std::fprintf(stderr, "demo_character: frame=%d vmrss_kib=%ld\n", frame, kib);
+    }
+
     // Centre and radius of the first pose, with every part in its place.
     void frameModel()
     {
@@ -160,6 +181,7 @@ private:
     float centre_[3] = {0.0f, 0.0f, 0.0f};
     float radius_ = 1.0f;
     float distance_ = 5.0f;
+    int rssEvery_ = 0;
 };
 
 } // namespace
