@@ -39,6 +39,9 @@ HOOK_BEFORE = {
     "glColorPointer", "glSecondaryColorPointer", "glFogCoordPointer", "glIndexPointer",
     "glEdgeFlagPointer", "glTexCoordPointer", "glVertexAttribPointer",
 }
+# Draw hooks that may refuse: the draw then goes to the driver unrecorded (nprgl could not
+# follow where its arrays or indices are), also when the compositor would have held it.
+HOOK_GATE = {"glDrawArrays", "glDrawElements", "glDrawRangeElements", "glMultiDrawArrays"}
 # Recorder hooks called after the call is encoded (before the driver's).
 HOOK_AFTER = {"glEnd"}
 CLIENT_POINTERS = {
@@ -219,7 +222,9 @@ def recordFunction(op, ret, name, params, mode, heldOnly):
         body.append(f"    return {call};")
     else:
         body.append("    Recorder& rec_ = Recorder::current();")
-        if name in HOOK_BEFORE:
+        if name in HOOK_GATE:
+            body.append(f"    if (!rec_.before_{name}({args})) return {call};")
+        elif name in HOOK_BEFORE:
             body.append(f"    rec_.before_{name}({args});")
         body.append("    CallWriter& w_ = rec_.writer();")
         variable = any(p.kind != "scalar" for p in params)
