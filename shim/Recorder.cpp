@@ -194,10 +194,20 @@ bool Recorder::clientArraysFollowed()
     for (int slot = 0; slot < kArraySlotCount; ++slot) {
         const ClientArray& a = mState.arrays[slot];
         if (!a.enabled || a.inBuffer) continue;
-        if (slot < kTexCoordArray0 && !mCanAskFixed) return false;
+        if (slot < kAttribArray0 && !mCanAskFixed) return false;
+        // ES 1 has only these four fixed arrays (asking for the others is an error).
+        if (mContext.caps().es && slot < kTexCoordArray0 && slot != kVertexArray &&
+            slot != kNormalArray && slot != kColorArray) {
+            return false;
+        }
         if (slot >= kAttribArray0 && !mCanAskAttribs) return false;
         if (slot >= kTexCoordArray0 && slot < kAttribArray0) {
-            if (maxUnits < 0) gRealGl.glGetIntegerv(GL_MAX_TEXTURE_COORDS, &maxUnits);
+            if (maxUnits < 0) {
+                const ContextCaps& caps = mContext.caps();
+                gRealGl.glGetIntegerv(caps.es || !caps.atLeast(2, 0) ? GL_MAX_TEXTURE_UNITS
+                                                                    : GL_MAX_TEXTURE_COORDS,
+                                      &maxUnits);
+            }
             if (slot - kTexCoordArray0 >= maxUnits) return false;
         }
         // The array nprgl would copy must be the driver's, in client memory: a buffer bound
