@@ -99,28 +99,35 @@ void Recorder::learnCaps()
     mCanAskVertexArray = !caps.es && !caps.core && caps.atLeast(3, 0);
 }
 
-// Image arguments: u8 mode (0 null, 1 bytes, 2 offset into the pixel-unpack buffer).
-void Recorder::putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type,
-                        GLsizei width, GLsizei height, GLsizei depth)
+bool Recorder::unpackFollowed(CallWriter& w, const void* pixels)
 {
     learnCaps();
-    bool known = mBatchStart == SIZE_MAX || !pixels; // inside glBegin the driver refuses it
-    if (known && pixels && mCanAskUnpack) {
+    if (!pixels) return true;
+    bool known = mBatchStart == SIZE_MAX; // inside glBegin the driver refuses the call
+    if (known && mCanAskUnpack) {
         GLint bound = 0;
         gRealGl.glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &bound);
         known = GLuint(bound) == mState.unpackBuffer;
     }
-    if (!known) {
-        // Bound through a call nprgl did not follow: `pixels` may be an offset. Read nothing.
-        ++mUnfollowedImages;
-        if (!mUnfollowedSaid) {
-            mUnfollowedSaid = true;
-            NPRGL_WARN("context %u: an image comes from a pixel-unpack buffer bound through a "
-                       "call nprgl does not follow; it is recorded without its pixels",
-                       mContext.serial());
-        }
-        w.put<uint8_t>(0);
-    } else if (mState.unpackBuffer) {
+    if (known) return true;
+    // Bound through a call nprgl did not follow: `pixels` may be an offset. Read nothing.
+    ++mUnfollowedImages;
+    if (!mUnfollowedImageSaid) {
+        mUnfollowedImageSaid = true;
+        NPRGL_WARN("context %u: an image comes from a pixel-unpack buffer bound through a "
+                   "call nprgl does not follow; it is recorded without its pixels",
+                   mContext.serial());
+    }
+    w.put<uint8_t>(0);
+    return false;
+}
+
+// Image arguments: u8 mode (0 null, 1 bytes, 2 offset into the pixel-unpack buffer).
+void Recorder::putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type,
+                        GLsizei width, GLsizei height, GLsizei depth)
+{
+    if (!unpackFollowed(w, pixels)) return;
+    if (mState.unpackBuffer) {
         w.put<uint8_t>(2);
         w.put<uint64_t>(reinterpret_cast<uintptr_t>(pixels));
     } else if (!pixels) {
@@ -128,6 +135,20 @@ void Recorder::putImage(CallWriter& w, const void* pixels, GLenum format, GLenum
     } else {
         w.put<uint8_t>(1);
         w.putBytes(pixels, imageBytes(format, type, width, height, depth, unpackState()));
+    }
+}
+
+void Recorder::putUnpacked(CallWriter& w, const void* data, size_t bytes)
+{
+    if (!unpackFollowed(w, data)) return;
+    if (mState.unpackBuffer) {
+        w.put<uint8_t>(2);
+        w.put<uint64_t>(reinterpret_cast<uintptr_t>(data));
+    } else if (!data) {
+        w.put<uint8_t>(0);
+    } else {
+        w.put<uint8_t>(1);
+        w.putBytes(data, bytes);
     }
 }
 

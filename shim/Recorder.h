@@ -44,6 +44,8 @@ public:
     void putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type, GLsizei width,
                   GLsizei height, GLsizei depth);
     void putIndices(CallWriter& w, const void* indices, GLsizei count, GLenum type);
+    // Encodes bytes read from the pixel-unpack buffer when one is bound (compressed images).
+    void putUnpacked(CallWriter& w, const void* data, size_t bytes);
 
     // Immediate-mode batches: a glBegin..glEnd of kBatchBlobBytes or more is stored once as
     // a blob and referenced (programs re-send the same geometry every frame).
@@ -97,6 +99,9 @@ private:
     void sendArray(int slot, const uint8_t* base, size_t offset, size_t bytes);
     void emitArrayRange(int slot, const uint8_t* base, size_t offset, size_t bytes);
     bool anyClientArray() const;
+    // Does the driver's pixel-unpack binding agree with nprgl's? If not: counted, said once,
+    // and the argument is recorded as null (nothing is read).
+    bool unpackFollowed(CallWriter& w, const void* pixels);
     void emitElementArrays(GLenum mode, GLsizei count, GLenum type, const void* indices);
     // Asks the driver whether the client arrays the cache would read (and, for elements,
     // the element buffer) are what nprgl followed. False, counted and said once, when not.
@@ -140,7 +145,8 @@ private:
     bool mCanAskUnpack = false;  // pixel-unpack buffers exist (GL 2.1, ES 3.0)
     bool mCanAskVertexArray = false; // vertex array objects exist (compatibility 3.0)
     bool mBeginFollowed = true;  // the arrays at the open glBegin were checked and followed
-    bool mUnfollowedSaid = false;
+    bool mUnfollowedSaid = false;      // about draws
+    bool mUnfollowedImageSaid = false; // about images
     std::vector<uint64_t> mUnfollowed; // draws whose arrays nprgl could not follow, by opcode
     uint64_t mUnfollowedImages = 0;    // images from an unpack buffer nprgl did not follow
     std::vector<uint64_t> mUncaptured;

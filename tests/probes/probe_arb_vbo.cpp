@@ -1,7 +1,8 @@
 // A program that draws from ARB vertex and element buffers fetched through
 // OSMesaGetProcAddress (as SDL games do), in a lit 3D scene: a cube from
 // glInterleavedArrays(GL_T2F_V3F, 0, NULL) and a ring from glDrawElements with an ARB element
-// buffer. Prints a checksum of its last frame and how many pixels the objects cover.
+// buffer, textured from an ARB pixel-unpack buffer (glTexImage2D, glCompressedTexImage2DARB
+// at offsets into it). Prints a checksum of its last frame and how many pixels the objects cover.
 //   --vao        the ring comes from a vertex array object (GL 3.0, which nprgl does not
 //                follow) while the default one points at client memory since unmapped
 //   --empty      draws nothing (the background alone)
@@ -24,6 +25,7 @@ PFNGLBINDBUFFERARBPROC bindBuffer;
 PFNGLBUFFERDATAARBPROC bufferData;
 using InterleavedArrays = void(APIENTRY*)(GLenum, GLsizei, const void*);
 InterleavedArrays interleavedArrays;
+PFNGLCOMPRESSEDTEXIMAGE2DARBPROC compressedTexImage2D;
 PFNGLGENVERTEXARRAYSPROC genVertexArrays;
 PFNGLBINDVERTEXARRAYPROC bindVertexArray;
 
@@ -102,7 +104,8 @@ int main(int argc, char** argv)
     }
     if (!fetch(genBuffers, "glGenBuffersARB") || !fetch(bindBuffer, "glBindBufferARB") ||
         !fetch(bufferData, "glBufferDataARB") ||
-        !fetch(interleavedArrays, "glInterleavedArrays")) {
+        !fetch(interleavedArrays, "glInterleavedArrays") ||
+        !fetch(compressedTexImage2D, "glCompressedTexImage2DARB")) {
         return 2;
     }
     if (vao && (!fetch(genVertexArrays, "glGenVertexArrays") ||
@@ -113,8 +116,8 @@ int main(int argc, char** argv)
     std::vector<float> ring;
     std::vector<GLushort> ringIndices;
     torus(ring, ringIndices);
-    GLuint buffers[3] = {};
-    genBuffers(3, buffers);
+    GLuint buffers[4] = {};
+    genBuffers(4, buffers);
     bindBuffer(GL_ARRAY_BUFFER_ARB, buffers[0]);
     bufferData(GL_ARRAY_BUFFER_ARB, GLsizeiptr(box.size() * sizeof(float)), box.data(),
                GL_STATIC_DRAW_ARB);
@@ -126,6 +129,29 @@ int main(int argc, char** argv)
                ringIndices.data(), GL_STATIC_DRAW_ARB);
     bindBuffer(GL_ELEMENT_ARRAY_BUFFER_ARB, 0);
     bindBuffer(GL_ARRAY_BUFFER_ARB, 0);
+    // Textures from a pixel-unpack buffer: an 8x8 checker at offset 64, one DXT1 block at 512.
+    std::vector<uint8_t> texels(520, 0);
+    for (int i = 0; i < 64; ++i) {
+        const uint8_t v = ((i % 8) / 2 + (i / 16)) % 2 ? 255 : 120;
+        for (int c = 0; c < 4; ++c) texels[64 + i * 4 + c] = c == 3 ? 255 : v;
+    }
+    texels[512] = 0xFF; // colour 0 white, colour 1 black, every texel colour 0
+    texels[513] = 0xFF;
+    bindBuffer(GL_PIXEL_UNPACK_BUFFER_ARB, buffers[3]);
+    bufferData(GL_PIXEL_UNPACK_BUFFER_ARB, GLsizeiptr(texels.size()), texels.data(),
+               GL_STATIC_DRAW_ARB);
+    GLuint textures[2] = {};
+    glGenTextures(2, textures);
+    glBindTexture(GL_TEXTURE_2D, textures[1]);
+    compressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 4, 4, 0, 8,
+                         reinterpret_cast<const void*>(512));
+    glBindTexture(GL_TEXTURE_2D, textures[0]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 reinterpret_cast<const void*>(64));
+    bindBuffer(GL_PIXEL_UNPACK_BUFFER_ARB, 0);
+
     GLuint ringArrays = 0;
     if (vao) {
         // The ring's arrays and indices live in a vertex array object...
@@ -207,7 +233,9 @@ int main(int argc, char** argv)
         glNormal3f(0.3f, 0.5f, 0.8f);
         bindBuffer(GL_ARRAY_BUFFER_ARB, buffers[0]);
         interleavedArrays(GL_T2F_V3F, 0, nullptr);
+        glEnable(GL_TEXTURE_2D);
         glDrawArrays(GL_TRIANGLES, 0, GLsizei(box.size() / 5));
+        glDisable(GL_TEXTURE_2D);
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glPopMatrix();
         glFinish();
