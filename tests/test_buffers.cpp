@@ -1,8 +1,8 @@
 // End to end: buffer offsets are never read as client pointers. probe_arb_vbo draws from ARB
-// vertex and element buffers fetched by their ARB names (as SDL games do), and, with --vao,
-// from a vertex array object nprgl does not follow while its cache holds a pointer to
-// unmapped memory. Natively, under --style none, in the default style and recorded then
-// replayed, it runs to the end, and its objects stay in the picture.
+// vertex and element buffers fetched by their ARB names (as SDL games do), textured from an
+// ARB pixel-unpack buffer, and, with --vao, from a vertex array object nprgl does not follow
+// while its cache holds a pointer to unmapped memory. Natively, under --style none, in the
+// default style and recorded then replayed, it runs to the end, and its objects stay.
 
 #include "common/PngImage.h"
 #include "tests/support/Process.h"
@@ -104,8 +104,8 @@ TEST_P(ArbBuffers, TheDefaultStyleRunsAndKeepsTheObjects)
     EXPECT_EQ(full.err.find("nprgl: error"), std::string::npos) << full.err;
     // The styled picture with the objects differs from the styled background alone over
     // most of where the objects are natively: they are drawn, styled or as they are.
-    const int changed = differingPixels(readBytes(dir + "/full.rgba"),
-                                        readBytes(dir + "/empty.rgba"));
+    const int changed =
+        differingPixels(readBytes(dir + "/full.rgba"), readBytes(dir + "/empty.rgba"));
     EXPECT_GT(changed, covered(native.out) * 3 / 4) << full.err;
     if (GetParam() == "--vao") {
         // The vertex array object's draw is passed through, and said once.

@@ -29,8 +29,7 @@ PFNGLCOMPRESSEDTEXIMAGE2DARBPROC compressedTexImage2D;
 PFNGLGENVERTEXARRAYSPROC genVertexArrays;
 PFNGLBINDVERTEXARRAYPROC bindVertexArray;
 
-template <typename T>
-bool fetch(T& fn, const char* name)
+template <typename T> bool fetch(T& fn, const char* name)
 {
     fn = reinterpret_cast<T>(OSMesaGetProcAddress(name));
     if (!fn) std::fprintf(stderr, "probe_arb_vbo: no %s\n", name);
@@ -53,7 +52,8 @@ std::vector<float> cube()
     for (const auto& face : kFaces) {
         for (int c : kCorners) {
             out.insert(out.end(), {float(c == 1 || c == 2), float(c >= 2)});
-            for (int k = 0; k < 3; ++k) out.push_back(0.5f * float(face[c][k]));
+            for (int k = 0; k < 3; ++k)
+                out.push_back(0.5f * float(face[c][k]));
         }
     }
     return out;
@@ -70,16 +70,16 @@ void torus(std::vector<float>& vertices, std::vector<GLushort>& indices)
             const float v = 6.2831853f * float(j) / sides;
             const float nx = std::cos(u) * std::cos(v), ny = std::sin(u) * std::cos(v),
                         nz = std::sin(v);
-            vertices.insert(vertices.end(), {nx, ny, nz, std::cos(u) * (big + small * std::cos(v)),
-                                             std::sin(u) * (big + small * std::cos(v)),
-                                             small * nz});
+            vertices.insert(vertices.end(),
+                            {nx, ny, nz, std::cos(u) * (big + small * std::cos(v)),
+                             std::sin(u) * (big + small * std::cos(v)), small * nz});
         }
     }
     for (int i = 0; i < rings; ++i) {
         for (int j = 0; j < sides; ++j) {
             const GLushort a = GLushort(i * (sides + 1) + j), b = GLushort(a + sides + 1);
-            indices.insert(indices.end(), {a, b, GLushort(a + 1), GLushort(a + 1), b,
-                                           GLushort(b + 1)});
+            indices.insert(indices.end(),
+                           {a, b, GLushort(a + 1), GLushort(a + 1), b, GLushort(b + 1)});
         }
     }
 }
@@ -103,8 +103,7 @@ int main(int argc, char** argv)
         return 2;
     }
     if (!fetch(genBuffers, "glGenBuffersARB") || !fetch(bindBuffer, "glBindBufferARB") ||
-        !fetch(bufferData, "glBufferDataARB") ||
-        !fetch(interleavedArrays, "glInterleavedArrays") ||
+        !fetch(bufferData, "glBufferDataARB") || !fetch(interleavedArrays, "glInterleavedArrays") ||
         !fetch(compressedTexImage2D, "glCompressedTexImage2DARB")) {
         return 2;
     }
@@ -133,7 +132,8 @@ int main(int argc, char** argv)
     std::vector<uint8_t> texels(520, 0);
     for (int i = 0; i < 64; ++i) {
         const uint8_t v = ((i % 8) / 2 + (i / 16)) % 2 ? 255 : 120;
-        for (int c = 0; c < 4; ++c) texels[64 + i * 4 + c] = c == 3 ? 255 : v;
+        for (int c = 0; c < 4; ++c)
+            texels[64 + i * 4 + c] = c == 3 ? 255 : v;
     }
     texels[512] = 0xFF; // colour 0 white, colour 1 black, every texel colour 0
     texels[513] = 0xFF;
@@ -169,8 +169,8 @@ int main(int argc, char** argv)
         // ...while the default one is left pointing at client memory that is then unmapped
         // (legal: it is never drawn from again).
         const size_t page = 4096;
-        void* gone = mmap(nullptr, page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
-                          -1, 0);
+        void* gone =
+            mmap(nullptr, page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         glVertexPointer(3, GL_FLOAT, 0, gone);
         glNormalPointer(GL_FLOAT, 0, gone);
         glEnableClientState(GL_VERTEX_ARRAY);
@@ -208,8 +208,7 @@ int main(int argc, char** argv)
         glTranslatef(0.55f, 0.0f, 0.0f);
         if (vao) {
             bindVertexArray(ringArrays);
-            glDrawElements(GL_TRIANGLES, GLsizei(ringIndices.size()), GL_UNSIGNED_SHORT,
-                           nullptr);
+            glDrawElements(GL_TRIANGLES, GLsizei(ringIndices.size()), GL_UNSIGNED_SHORT, nullptr);
             bindVertexArray(0);
         } else {
             bindBuffer(GL_ARRAY_BUFFER_ARB, buffers[1]);
@@ -219,8 +218,7 @@ int main(int argc, char** argv)
             glEnableClientState(GL_NORMAL_ARRAY);
             glEnableClientState(GL_VERTEX_ARRAY);
             bindBuffer(GL_ELEMENT_ARRAY_BUFFER_ARB, buffers[2]);
-            glDrawElements(GL_TRIANGLES, GLsizei(ringIndices.size()), GL_UNSIGNED_SHORT,
-                           nullptr);
+            glDrawElements(GL_TRIANGLES, GLsizei(ringIndices.size()), GL_UNSIGNED_SHORT, nullptr);
             glDisableClientState(GL_NORMAL_ARRAY);
             glDisableClientState(GL_VERTEX_ARRAY);
             bindBuffer(GL_ELEMENT_ARRAY_BUFFER_ARB, 0);
@@ -241,9 +239,9 @@ int main(int argc, char** argv)
         glFinish();
     }
     for (size_t i = 0; i < pixels.size(); i += 4) {
-        for (int c = 0; c < 4; ++c) sum = sum * 31 + pixels[i + c];
-        covered += pixels[i] != clear[0] || pixels[i + 1] != clear[1] ||
-                   pixels[i + 2] != clear[2];
+        for (int c = 0; c < 4; ++c)
+            sum = sum * 31 + pixels[i + c];
+        covered += pixels[i] != clear[0] || pixels[i + 1] != clear[1] || pixels[i + 2] != clear[2];
     }
     if (save) {
         if (FILE* f = std::fopen(save, "wb")) {
