@@ -263,17 +263,17 @@ bool Recorder::followed(uint16_t opcode, bool elements)
         ok = GLuint(bound) == mState.elementBuffer;
     }
     if (!ok) {
-        noteUnfollowed(opcode);
+        noteUnfollowed(opcode, true);
         // The draw goes to the driver now: what is held is drawn before it.
         if (Compositor* compositor = mContext.compositor()) compositor->barrier();
     }
     return ok;
 }
 
-void Recorder::noteUnfollowed(uint16_t opcode)
+void Recorder::noteUnfollowed(uint16_t opcode, bool uncaptured)
 {
     ++mUnfollowed[opcode];
-    countUncaptured(opcode);
+    if (uncaptured) countUncaptured(opcode);
     if (mUnfollowedSaid) return;
     mUnfollowedSaid = true;
     NPRGL_WARN("context %u: %s draws from arrays or indices bound through a call nprgl does not "
@@ -348,7 +348,7 @@ void Recorder::before_glBegin(GLenum)
 {
     // glArrayElement inside cannot ask the driver: the arrays are checked once here.
     mBeginFollowed = !anyClientArray() || (vertexArrayObjectFollowed() && clientArraysFollowed());
-    if (!mBeginFollowed) noteUnfollowed(op::glBegin);
+    if (!mBeginFollowed) noteUnfollowed(op::glBegin, false); // the batch itself is recorded
     mBatchStart = mWriter.size();
 }
 
@@ -423,9 +423,12 @@ bool Recorder::before_glDrawRangeElements(GLenum mode, GLuint, GLuint, GLsizei c
 
 void Recorder::before_glArrayElement(GLint i)
 {
+    if (i < 0 || !anyClientArray()) return;
     // Inside glBegin..glEnd the check made at glBegin stands (nothing may be asked there).
-    const bool ok = mBatchStart != SIZE_MAX ? mBeginFollowed : clientArraysFollowed();
-    if (i >= 0 && ok && anyClientArray()) emitArrays(size_t(i), size_t(i) + 1);
+    const bool ok = mBatchStart != SIZE_MAX
+                        ? mBeginFollowed
+                        : vertexArrayObjectFollowed() && clientArraysFollowed();
+    if (ok) emitArrays(size_t(i), size_t(i) + 1);
 }
 
 bool Recorder::before_glMultiDrawArrays(GLenum, const GLint* first, const GLsizei* count,

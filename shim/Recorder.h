@@ -110,7 +110,7 @@ private:
     bool vertexArrayObjectFollowed();
     // The driver's buffer and pointer of one array slot.
     void driverArray(int slot, GLint& buffer, void*& pointer) const;
-    void noteUnfollowed(uint16_t opcode);
+    void noteUnfollowed(uint16_t opcode, bool uncaptured);
     void learnCaps();
     GLuint* bindingFor(GLenum target);
     UnpackState unpackState() const;
