@@ -25,6 +25,7 @@ using Bool = int; // Xlib's Bool, as a type rather than a macro
 // GL 1.2+ and GLX extension prototypes out unless asked).
 extern "C" {
 #define NPRGL_GL(ret, name, params, args) ret name params;
+#define NPRGL_GL_ALIAS(ret, name, params, args, core) ret name params;
 #define NPRGL_WS(api, hooked, ret, name, params, args) ret name params;
 #include "nprgl_api.inc"
 }
@@ -63,5 +64,14 @@ extern const ApiEntry kGlEntries[];
 extern const size_t kGlEntryCount;
 extern const ApiEntry kWsEntries[];
 extern const size_t kWsEntryCount;
+
+// ARB/EXT names of commands of the list: their thunks take the command's own path.
+struct ApiAlias {
+    const char* name;
+    void* thunk;
+    const char* core;
+};
+extern const ApiAlias kGlAliases[];
+extern const size_t kGlAliasCount;
 
 } // namespace nprgl

@@ -8,6 +8,13 @@
 
 namespace nprgl {
 
+const ApiAlias kGlAliases[] = {
+#define NPRGL_GL_ALIAS(ret, name, params, args, core)                                          \
+    {#name, reinterpret_cast<void*>(&::name), #core},
+#include "nprgl_api.inc"
+};
+const size_t kGlAliasCount = sizeof kGlAliases / sizeof kGlAliases[0];
+
 namespace {
 
 struct Slot {
@@ -25,6 +32,12 @@ const std::unordered_map<std::string_view, Slot>& table()
         }
         for (size_t i = 0; i < kWsEntryCount; ++i) {
             m->emplace(kWsEntries[i].name, Slot{kWsEntries[i].thunk, i, false});
+        }
+        // An alias answers when its command has a real function (the thunk calls that).
+        for (size_t i = 0; i < kGlAliasCount; ++i) {
+            auto core = m->find(kGlAliases[i].core);
+            if (core == m->end()) continue;
+            m->emplace(kGlAliases[i].name, Slot{kGlAliases[i].thunk, core->second.index, true});
         }
         return m;
     }();

@@ -11,12 +11,13 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <string>
 
 namespace nprgl {
 
 Recorder::Recorder(Context& ctx, StreamSink* session)
-    : mContext(ctx), mSession(session), mUncaptured(op::kCount, 0),
-      mUncapturedReported(op::kCount, 0)
+    : mContext(ctx), mSession(session), mUnfollowed(op::kCount, 0),
+      mUncaptured(op::kCount, 0), mUncapturedReported(op::kCount, 0)
 {
     // Without a sink (the compositor alone) large arguments stay inline.
     if (!session) return;
@@ -30,6 +31,20 @@ Recorder::Recorder(Context& ctx, StreamSink* session)
 
 Recorder::~Recorder()
 {
+    std::string unfollowed;
+    for (size_t i = 0; i < mUnfollowed.size(); ++i) {
+        if (!mUnfollowed[i]) continue;
+        unfollowed += (unfollowed.empty() ? "" : ", ") + std::string(opcodeNameOf(i)) + " " +
+                      std::to_string(mUnfollowed[i]);
+    }
+    if (mUnfollowedImages) {
+        unfollowed += (unfollowed.empty() ? "" : ", ") + std::string("images ") +
+                      std::to_string(mUnfollowedImages);
+    }
+    if (!unfollowed.empty()) {
+        NPRGL_INFO("context %u: draws whose arrays nprgl could not follow: %s",
+                   mContext.serial(), unfollowed.c_str());
+    }
     if (!mSession) return;
     takeUncaptured([this](const char* name, uint64_t count) {
         mSession->addUncaptured(name, count);
@@ -70,10 +85,48 @@ UnpackState Recorder::unpackState() const
     return s;
 }
 
+void Recorder::learnCaps()
+{
+    if (mCapsKnown) return;
+    mCapsKnown = true;
+    const ContextCaps& caps = mContext.caps();
+    if (caps.major == 0) return; // no version: ask nothing, read nothing unverifiable
+    mCanAskBuffers = caps.es || caps.atLeast(1, 5);
+    mCanAskFixed = !caps.core && !(caps.es && caps.major >= 2);
+    mCanAskAttribs = caps.atLeast(2, 0);
+    mCanAskUnpack = caps.es ? caps.atLeast(3, 0) : caps.atLeast(2, 1);
+    // Core profiles have no client arrays to read, and always a vertex array object bound.
+    mCanAskVertexArray = !caps.es && !caps.core && caps.atLeast(3, 0);
+}
+
+bool Recorder::unpackFollowed(CallWriter& w, const void* pixels)
+{
+    learnCaps();
+    if (!pixels) return true;
+    bool known = mBatchStart == SIZE_MAX; // inside glBegin the driver refuses the call
+    if (known && mCanAskUnpack) {
+        GLint bound = 0;
+        gRealGl.glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &bound);
+        known = GLuint(bound) == mState.unpackBuffer;
+    }
+    if (known) return true;
+    // Bound through a call nprgl did not follow: `pixels` may be an offset. Read nothing.
+    ++mUnfollowedImages;
+    if (!mUnfollowedImageSaid) {
+        mUnfollowedImageSaid = true;
+        NPRGL_WARN("context %u: an image comes from a pixel-unpack buffer bound through a "
+                   "call nprgl does not follow; it is recorded without its pixels",
+                   mContext.serial());
+    }
+    w.put<uint8_t>(0);
+    return false;
+}
+
 // Image arguments: u8 mode (0 null, 1 bytes, 2 offset into the pixel-unpack buffer).
 void Recorder::putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type,
                         GLsizei width, GLsizei height, GLsizei depth)
 {
+    if (!unpackFollowed(w, pixels)) return;
     if (mState.unpackBuffer) {
         w.put<uint8_t>(2);
         w.put<uint64_t>(reinterpret_cast<uintptr_t>(pixels));
@@ -82,6 +135,20 @@ void Recorder::putImage(CallWriter& w, const void* pixels, GLenum format, GLenum
     } else {
         w.put<uint8_t>(1);
         w.putBytes(pixels, imageBytes(format, type, width, height, depth, unpackState()));
+    }
+}
+
+void Recorder::putUnpacked(CallWriter& w, const void* data, size_t bytes)
+{
+    if (!unpackFollowed(w, data)) return;
+    if (mState.unpackBuffer) {
+        w.put<uint8_t>(2);
+        w.put<uint64_t>(reinterpret_cast<uintptr_t>(data));
+    } else if (!data) {
+        w.put<uint8_t>(0);
+    } else {
+        w.put<uint8_t>(1);
+        w.putBytes(data, bytes);
     }
 }
 
@@ -102,6 +169,116 @@ bool Recorder::anyClientArray() const
 {
     return std::any_of(mState.arrays.begin(), mState.arrays.end(),
                        [](const ClientArray& a) { return a.enabled && !a.inBuffer; });
+}
+
+void Recorder::driverArray(int slot, GLint& buffer, void*& pointer) const
+{
+    struct Query {
+        GLenum buffer, pointer;
+    };
+    static const Query kFixed[kTexCoordArray0] = {
+        {GL_VERTEX_ARRAY_BUFFER_BINDING, GL_VERTEX_ARRAY_POINTER},
+        {GL_NORMAL_ARRAY_BUFFER_BINDING, GL_NORMAL_ARRAY_POINTER},
+        {GL_COLOR_ARRAY_BUFFER_BINDING, GL_COLOR_ARRAY_POINTER},
+        {GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING, GL_SECONDARY_COLOR_ARRAY_POINTER},
+        {GL_FOG_COORD_ARRAY_BUFFER_BINDING, GL_FOG_COORD_ARRAY_POINTER},
+        {GL_INDEX_ARRAY_BUFFER_BINDING, GL_INDEX_ARRAY_POINTER},
+        {GL_EDGE_FLAG_ARRAY_BUFFER_BINDING, GL_EDGE_FLAG_ARRAY_POINTER},
+    };
+    buffer = 0;
+    pointer = nullptr;
+    if (slot < kTexCoordArray0) {
+        gRealGl.glGetIntegerv(kFixed[slot].buffer, &buffer);
+        gRealGl.glGetPointerv(kFixed[slot].pointer, &pointer);
+    } else if (slot < kAttribArray0) {
+        // Texture coordinates are asked of the client-active unit.
+        const GLint unit = GL_TEXTURE0 + (slot - kTexCoordArray0);
+        GLint active = GL_TEXTURE0;
+        gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &active);
+        if (active != unit) gRealGl.glClientActiveTexture(GLenum(unit));
+        gRealGl.glGetIntegerv(GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, &buffer);
+        gRealGl.glGetPointerv(GL_TEXTURE_COORD_ARRAY_POINTER, &pointer);
+        if (active != unit) gRealGl.glClientActiveTexture(GLenum(active));
+    } else {
+        const GLuint index = GLuint(slot - kAttribArray0);
+        gRealGl.glGetVertexAttribiv(index, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &buffer);
+        gRealGl.glGetVertexAttribPointerv(index, GL_VERTEX_ATTRIB_ARRAY_POINTER, &pointer);
+    }
+}
+
+bool Recorder::clientArraysFollowed()
+{
+    learnCaps();
+    if (!mContext.caps().major) return !anyClientArray(); // nothing can be asked
+    if (!mCanAskBuffers) return true; // no buffer objects: every pointer is client memory
+    GLint maxUnits = -1;
+    for (int slot = 0; slot < kArraySlotCount; ++slot) {
+        const ClientArray& a = mState.arrays[slot];
+        if (!a.enabled || a.inBuffer) continue;
+        if (slot < kAttribArray0 && !mCanAskFixed) return false;
+        // ES 1 has only these four fixed arrays (asking for the others is an error).
+        if (mContext.caps().es && slot < kTexCoordArray0 && slot != kVertexArray &&
+            slot != kNormalArray && slot != kColorArray) {
+            return false;
+        }
+        if (slot >= kAttribArray0 && !mCanAskAttribs) return false;
+        if (slot >= kTexCoordArray0 && slot < kAttribArray0) {
+            if (maxUnits < 0) {
+                const ContextCaps& caps = mContext.caps();
+                gRealGl.glGetIntegerv(caps.es || !caps.atLeast(2, 0) ? GL_MAX_TEXTURE_UNITS
+                                                                    : GL_MAX_TEXTURE_COORDS,
+                                      &maxUnits);
+            }
+            if (slot - kTexCoordArray0 >= maxUnits) return false;
+        }
+        // The array nprgl would copy must be the driver's, in client memory: a buffer bound
+        // (or a pointer set, a vertex array object bound) through a call nprgl did not
+        // follow makes the cached pointer a buffer offset or a stale address.
+        GLint buffer = 0;
+        void* pointer = nullptr;
+        driverArray(slot, buffer, pointer);
+        if (buffer != 0 || pointer != a.pointer) return false;
+    }
+    return true;
+}
+
+bool Recorder::vertexArrayObjectFollowed()
+{
+    learnCaps();
+    if (!mCanAskVertexArray) return true;
+    // glBindVertexArray (GL 3.0) is not followed: while a vertex array object is bound, every
+    // array and the element buffer may be other than nprgl's cache says.
+    GLint bound = 0;
+    gRealGl.glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &bound);
+    return bound == 0;
+}
+
+bool Recorder::followed(uint16_t opcode, bool elements)
+{
+    // Inside glBegin..glEnd nothing may be asked, and the driver refuses the draw anyway.
+    bool ok = mBatchStart == SIZE_MAX && vertexArrayObjectFollowed() && clientArraysFollowed();
+    if (ok && elements && mCanAskBuffers) {
+        GLint bound = 0;
+        gRealGl.glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &bound);
+        ok = GLuint(bound) == mState.elementBuffer;
+    }
+    if (!ok) {
+        noteUnfollowed(opcode, true);
+        // The draw goes to the driver now: what is held is drawn before it.
+        if (Compositor* compositor = mContext.compositor()) compositor->barrier();
+    }
+    return ok;
+}
+
+void Recorder::noteUnfollowed(uint16_t opcode, bool uncaptured)
+{
+    ++mUnfollowed[opcode];
+    if (uncaptured) countUncaptured(opcode);
+    if (mUnfollowedSaid) return;
+    mUnfollowedSaid = true;
+    NPRGL_WARN("context %u: %s draws from arrays or indices bound through a call nprgl does not "
+               "follow; such draws go to the driver unrecorded and unstyled",
+               mContext.serial(), opcodeNameOf(opcode));
 }
 
 void Recorder::emitArrays(size_t first, size_t end)
@@ -167,7 +344,13 @@ void Recorder::emitArrayRange(int slot, const uint8_t* base, size_t offset, size
     mWriter.endPayload(mark);
 }
 
-void Recorder::before_glBegin(GLenum) { mBatchStart = mWriter.size(); }
+void Recorder::before_glBegin(GLenum)
+{
+    // glArrayElement inside cannot ask the driver: the arrays are checked once here.
+    mBeginFollowed = !anyClientArray() || (vertexArrayObjectFollowed() && clientArraysFollowed());
+    if (!mBeginFollowed) noteUnfollowed(op::glBegin, false); // the batch itself is recorded
+    mBatchStart = mWriter.size();
+}
 
 void Recorder::after_glEnd()
 {
@@ -188,13 +371,23 @@ void Recorder::after_glEnd()
     if (compositor) compositor->streamRewritten(mWriter.size());
 }
 
-void Recorder::before_glDrawArrays(GLenum, GLint first, GLsizei count)
+bool Recorder::before_glDrawArrays(GLenum, GLint first, GLsizei count)
 {
+    if (!followed(op::glDrawArrays, false)) return false;
     if (first >= 0 && count > 0 && anyClientArray())
         emitArrays(size_t(first), size_t(first) + count);
+    return true;
 }
 
-void Recorder::before_glDrawElements(GLenum, GLsizei count, GLenum type, const void* indices)
+bool Recorder::before_glDrawElements(GLenum mode, GLsizei count, GLenum type,
+                                     const void* indices)
+{
+    if (!followed(op::glDrawElements, true)) return false;
+    emitElementArrays(mode, count, type, indices);
+    return true;
+}
+
+void Recorder::emitElementArrays(GLenum, GLsizei count, GLenum type, const void* indices)
 {
     const size_t width = indexBytes(type);
     if (count <= 0 || !width || !anyClientArray()) return;
@@ -219,22 +412,30 @@ void Recorder::before_glDrawElements(GLenum, GLsizei count, GLenum type, const v
     emitArrays(lo, hi + 1);
 }
 
-void Recorder::before_glDrawRangeElements(GLenum mode, GLuint, GLuint, GLsizei count,
+bool Recorder::before_glDrawRangeElements(GLenum mode, GLuint, GLuint, GLsizei count,
                                           GLenum type, const void* indices)
 {
+    if (!followed(op::glDrawRangeElements, true)) return false;
     // The range is only a hint the program may get wrong; the indices are the truth.
-    before_glDrawElements(mode, count, type, indices);
+    emitElementArrays(mode, count, type, indices);
+    return true;
 }
 
 void Recorder::before_glArrayElement(GLint i)
 {
-    if (i >= 0 && anyClientArray()) emitArrays(size_t(i), size_t(i) + 1);
+    if (i < 0 || !anyClientArray()) return;
+    // Inside glBegin..glEnd the check made at glBegin stands (nothing may be asked there).
+    const bool ok = mBatchStart != SIZE_MAX
+                        ? mBeginFollowed
+                        : vertexArrayObjectFollowed() && clientArraysFollowed();
+    if (ok) emitArrays(size_t(i), size_t(i) + 1);
 }
 
-void Recorder::before_glMultiDrawArrays(GLenum, const GLint* first, const GLsizei* count,
+bool Recorder::before_glMultiDrawArrays(GLenum, const GLint* first, const GLsizei* count,
                                         GLsizei drawcount)
 {
-    if (!first || !count || drawcount <= 0 || !anyClientArray()) return;
+    if (!followed(op::glMultiDrawArrays, false)) return false;
+    if (!first || !count || drawcount <= 0 || !anyClientArray()) return true;
     size_t lo = std::numeric_limits<size_t>::max(), hi = 0;
     for (GLsizei i = 0; i < drawcount; ++i) {
         if (first[i] < 0 || count[i] <= 0) continue;
@@ -242,6 +443,7 @@ void Recorder::before_glMultiDrawArrays(GLenum, const GLint* first, const GLsize
         hi = std::max(hi, size_t(first[i]) + count[i]);
     }
     if (hi > lo) emitArrays(lo, hi);
+    return true;
 }
 
 void Recorder::before_glEnableClientState(GLenum cap)

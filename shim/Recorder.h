@@ -44,6 +44,8 @@ public:
     void putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type, GLsizei width,
                   GLsizei height, GLsizei depth);
     void putIndices(CallWriter& w, const void* indices, GLsizei count, GLenum type);
+    // Encodes bytes read from the pixel-unpack buffer when one is bound (compressed images).
+    void putUnpacked(CallWriter& w, const void* data, size_t bytes);
 
     // Immediate-mode batches: a glBegin..glEnd of kBatchBlobBytes or more is stored once as
     // a blob and referenced (programs re-send the same geometry every frame).
@@ -51,13 +53,15 @@ public:
     void before_glBegin(GLenum mode);
     void after_glEnd();
 
-    // State hooks, called before the call is recorded.
-    void before_glDrawArrays(GLenum mode, GLint first, GLsizei count);
-    void before_glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices);
-    void before_glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+    // State hooks, called before the call is recorded. The draw hooks return false when
+    // nprgl cannot tell where the draw's arrays or indices are (a binding made through a
+    // call it did not follow): nothing is read, and the draw goes to the driver unrecorded.
+    bool before_glDrawArrays(GLenum mode, GLint first, GLsizei count);
+    bool before_glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices);
+    bool before_glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
                                     GLenum type, const void* indices);
     void before_glArrayElement(GLint i);
-    void before_glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
+    bool before_glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
                                   GLsizei drawcount);
     void before_glEnableClientState(GLenum cap);
     void before_glDisableClientState(GLenum cap);
@@ -95,6 +99,19 @@ private:
     void sendArray(int slot, const uint8_t* base, size_t offset, size_t bytes);
     void emitArrayRange(int slot, const uint8_t* base, size_t offset, size_t bytes);
     bool anyClientArray() const;
+    // Does the driver's pixel-unpack binding agree with nprgl's? If not: counted, said once,
+    // and the argument is recorded as null (nothing is read).
+    bool unpackFollowed(CallWriter& w, const void* pixels);
+    void emitElementArrays(GLenum mode, GLsizei count, GLenum type, const void* indices);
+    // Asks the driver whether the client arrays the cache would read (and, for elements,
+    // the element buffer) are what nprgl followed. False, counted and said once, when not.
+    bool followed(uint16_t opcode, bool elements);
+    bool clientArraysFollowed();
+    bool vertexArrayObjectFollowed();
+    // The driver's buffer and pointer of one array slot.
+    void driverArray(int slot, GLint& buffer, void*& pointer) const;
+    void noteUnfollowed(uint16_t opcode, bool uncaptured);
+    void learnCaps();
     GLuint* bindingFor(GLenum target);
     UnpackState unpackState() const;
 
@@ -120,6 +137,18 @@ private:
         std::vector<uint8_t> bytes; // indexed from lo
     };
     std::array<Mirror, kArraySlotCount> mMirrors;
+    // What the driver can be asked (known once the context is current).
+    bool mCapsKnown = false;
+    bool mCanAskBuffers = false; // buffer objects exist (GL 1.5, ES)
+    bool mCanAskFixed = false;   // fixed-function arrays exist (not core, not ES 2+)
+    bool mCanAskAttribs = false; // generic attributes exist (GL 2.0, ES 2.0)
+    bool mCanAskUnpack = false;  // pixel-unpack buffers exist (GL 2.1, ES 3.0)
+    bool mCanAskVertexArray = false; // vertex array objects exist (compatibility 3.0)
+    bool mBeginFollowed = true;  // the arrays at the open glBegin were checked and followed
+    bool mUnfollowedSaid = false;      // about draws
+    bool mUnfollowedImageSaid = false; // about images
+    std::vector<uint64_t> mUnfollowed; // draws whose arrays nprgl could not follow, by opcode
+    uint64_t mUnfollowedImages = 0;    // images from an unpack buffer nprgl did not follow
     std::vector<uint64_t> mUncaptured;
     std::vector<uint64_t> mUncapturedReported;
     bool mStopped = false;

@@ -918,6 +918,29 @@ void StateTracker::arrayPointer(int slot, GLint size, GLenum type, GLsizei strid
     b.array.inBuffer = mArrayBuffer != 0;
 }
 
+void StateTracker::pushClientAttrib()
+{
+    mClientDepth += mClientDepth < 64;
+    ClientState saved;
+    std::copy(std::begin(mArrayState), std::end(mArrayState), saved.arrays.begin());
+    saved.clientActiveTexture = mClientActiveTexture;
+    saved.arrayBuffer = mArrayBuffer;
+    saved.elementBuffer = mElementBuffer;
+    mClientStack.push_back(saved);
+}
+
+void StateTracker::popClientAttrib()
+{
+    mClientDepth -= mClientDepth > 0;
+    if (mClientStack.empty()) return;
+    const ClientState& saved = mClientStack.back();
+    std::copy(saved.arrays.begin(), saved.arrays.end(), std::begin(mArrayState));
+    mClientActiveTexture = saved.clientActiveTexture;
+    mArrayBuffer = saved.arrayBuffer;
+    mElementBuffer = saved.elementBuffer;
+    mClientStack.pop_back();
+}
+
 void StateTracker::bindBuffer(GLenum target, GLuint buffer)
 {
     if (target == GL_ARRAY_BUFFER) mArrayBuffer = buffer;

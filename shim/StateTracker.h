@@ -142,8 +142,8 @@ public:
     void colorMask(bool r, bool g, bool b, bool a) { mAttrib.colorMaskAll = r && g && b && a; }
     void pushAttrib(GLbitfield mask);
     void popAttrib();
-    void pushClientAttrib() { mClientDepth += mClientDepth < 64; }
-    void popClientAttrib() { mClientDepth -= mClientDepth > 0; }
+    void pushClientAttrib();
+    void popClientAttrib();
     void otherDraw(); // a bitmap, pixel rectangle, line or point: never held
 
 private:
@@ -243,6 +243,14 @@ private:
     ArrayBinding mArrayState[kArraySlotCount];
     int mClientActiveTexture = 0;
     GLuint mArrayBuffer = 0, mElementBuffer = 0;
+    // What glPopClientAttrib restores, as the recorder does: the stream's buffer offsets are
+    // offsets exactly when the recorder's bindings say so, which must be the tracker's too.
+    struct ClientState {
+        std::array<ArrayBinding, kArraySlotCount> arrays;
+        int clientActiveTexture = 0;
+        GLuint arrayBuffer = 0, elementBuffer = 0;
+    };
+    std::vector<ClientState> mClientStack;
     std::map<GLuint, std::vector<uint8_t>> mBuffers;
 
     std::vector<TrackedBatch> mFrameBatches;

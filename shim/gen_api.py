@@ -6,6 +6,8 @@ the name table and (later) recorder opcodes and the replay switch:
 
     NPRGL_GL(ret, name, (params), (args))              every GL 1.0-2.1 compatibility command
     NPRGL_WS(api, hooked, ret, name, (params), (args)) GLX / EGL / OSMesa entry points we export
+    NPRGL_GL_ALIAS(ret, name, (params), (args), core)  ARB/EXT names the registry declares
+                                                       equivalent to a command of the list
 
 `hooked` is 1 where nprgl has its own implementation (context and frame tracking) and 0 where
 the thunk only forwards (exported so that a dlopen handle to nprgl still finds them).
@@ -63,6 +65,10 @@ OSMESA_CMDS = [
      [("OSMesaContext", "osmesa"), ("const char *", "filter"), ("unsigned", "enable_value")]),
 ]
 
+# Suffixes of the aliases nprgl answers for: promoted ARB and EXT commands, which programs
+# written before GL 1.5 (and SDL games) fetch by their extension names. Vendor aliases (NV,
+# SGIS...) are left to the driver: some differ in detail from the core command.
+ALIAS_SUFFIXES = ("ARB", "EXT")
 
 
 def paramText(elem):
@@ -89,6 +95,20 @@ def requiredCommands(root, keep):
                 if cmd.get("name") not in names:
                     names.append(cmd.get("name"))
     return names
+
+
+def aliasesOf(root, names):
+    """(alias, core) for every ARB/EXT command the registry declares an alias of a listed
+    command, in registry order."""
+    listed = set(names)
+    out = []
+    for c in root.find("commands"):
+        alias = c.find("alias")
+        name = c.find("proto").find("name").text
+        if (alias is not None and alias.get("name") in listed and name not in listed
+                and name.endswith(ALIAS_SUFFIXES)):
+            out.append((name, alias.get("name")))
+    return out
 
 
 def glVersion(feature):
@@ -125,6 +145,9 @@ def main():
         "#ifndef NPRGL_GL",
         "#define NPRGL_GL(ret, name, params, args)",
         "#endif",
+        "#ifndef NPRGL_GL_ALIAS",
+        "#define NPRGL_GL_ALIAS(ret, name, params, args, core)",
+        "#endif",
         "#ifndef NPRGL_WS",
         "#define NPRGL_WS(api, hooked, ret, name, params, args)",
         "#endif",
@@ -132,6 +155,9 @@ def main():
     for name in glNames:
         ret, name, params, args = fmtEntry(*glCmds[name])
         lines.append(f"NPRGL_GL({ret}, {name}, {params}, {args})")
+    for alias, core in aliasesOf(gl, glNames):
+        ret, name, params, args = fmtEntry(*glCmds[alias])
+        lines.append(f"NPRGL_GL_ALIAS({ret}, {name}, {params}, {args}, {core})")
     for name in glxNames:
         ret, name, params, args = fmtEntry(*glxCmds[name])
         hooked = 1 if name in GLX_HOOKED else 0
@@ -142,7 +168,7 @@ def main():
     for hooked, ret, name, params in OSMESA_CMDS:
         ret, name, params, args = fmtEntry(ret, name, params)
         lines.append(f"NPRGL_WS(OSMesa, {hooked}, {ret}, {name}, {params}, {args})")
-    lines += ["#undef NPRGL_GL", "#undef NPRGL_WS", ""]
+    lines += ["#undef NPRGL_GL", "#undef NPRGL_GL_ALIAS", "#undef NPRGL_WS", ""]
 
     with open(opts.output, "w", encoding="utf-8") as out:
         out.write("\n".join(lines))

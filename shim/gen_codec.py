@@ -39,6 +39,9 @@ HOOK_BEFORE = {
     "glColorPointer", "glSecondaryColorPointer", "glFogCoordPointer", "glIndexPointer",
     "glEdgeFlagPointer", "glTexCoordPointer", "glVertexAttribPointer",
 }
+# Draw hooks that may refuse: the draw then goes to the driver unrecorded (nprgl could not
+# follow where its arrays or indices are), also when the compositor would have held it.
+HOOK_GATE = {"glDrawArrays", "glDrawElements", "glDrawRangeElements", "glMultiDrawArrays"}
 # Recorder hooks called after the call is encoded (before the driver's).
 HOOK_AFTER = {"glEnd"}
 CLIENT_POINTERS = {
@@ -121,6 +124,10 @@ def classify(cmd, params):
             p.count = f"GL_COLOR_INDEX, GL_BITMAP, {dims}, 1"
         elif p.len == "COMPSIZE(count,type)":
             p.kind = "indices"
+        elif cmd.startswith("glCompressedTex") and p.name == "data":
+            # Read from the pixel-unpack buffer when one is bound, like images.
+            p.kind = "unpacked"
+            p.count = "size_t({a}imageSize)"
         elif p.base == "GLchar" and p.len is None and p.ctype.count("*") == 1:
             p.kind = "string"
         elif p.ctype.count("*") > 1:
@@ -145,6 +152,7 @@ CODEC = {
               "const {elem}* {n} = r.getArray<{elem}>({dcount});"),
     "image": ("rec_.putImage(w_, {name}, {count});", "const void* {n} = r.getImage();"),
     "indices": ("rec_.putIndices(w_, {name}, count, type);", "const void* {n} = r.getImage();"),
+    "unpacked": ("rec_.putUnpacked(w_, {name}, {count});", "const void* {n} = r.getImage();"),
     "string": ("w_.putString({name});", "const GLchar* {n} = r.getString();"),
     "sources": ("w_.putSources(count, {name}, length);",
                 "const CallReader::Sources {n} = r.getSources(a_count);"),
@@ -219,7 +227,9 @@ def recordFunction(op, ret, name, params, mode, heldOnly):
         body.append(f"    return {call};")
     else:
         body.append("    Recorder& rec_ = Recorder::current();")
-        if name in HOOK_BEFORE:
+        if name in HOOK_GATE:
+            body.append(f"    if (!rec_.before_{name}({args})) return {call};")
+        elif name in HOOK_BEFORE:
             body.append(f"    rec_.before_{name}({args});")
         body.append("    CallWriter& w_ = rec_.writer();")
         variable = any(p.kind != "scalar" for p in params)
@@ -363,7 +373,7 @@ def emitDecode(cmds, groups):
                     out.append(f'            sink.arg("{p.name}", {n});')
             elif p.kind == "array":
                 out.append(f'            sink.argArray("{p.name}", {n}, {sub(p.count, "a_")});')
-            elif p.kind == "image" or p.kind == "indices":
+            elif p.kind in ("image", "indices", "unpacked"):
                 out.append(f'            sink.argBlob("{p.name}", {n});')
             elif p.kind == "string":
                 out.append(f'            sink.argString("{p.name}", {n});')
