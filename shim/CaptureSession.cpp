@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <unistd.h>
 
@@ -24,13 +25,28 @@ std::vector<std::string> commandLine()
 
 // The process `nprgl record` started (it execs the program, so the pid is the same) writes
 // the file it was asked for; any other process (a forked or spawned child) its own
-// <name>.<pid>.nprgl. Without the command, the process that loaded the library first is it.
+// <name>.<pid>.nprgl. Without the command, the process that loaded the library first is it:
+// claimOwnership() exports its pid, so that an exec'd child, which inherits NPRGL_RECORD,
+// knows the name is not its own.
 bool isMainRecordingProcess()
 {
-    static const pid_t loadPid = getpid(); // first use is before any fork: see instance()
     const char* env = std::getenv("NPRGL_RECORD_PID");
-    pid_t owner = env && *env ? pid_t(std::atol(env)) : loadPid;
-    return getpid() == owner;
+    return env && *env && getpid() == pid_t(std::atol(env));
+}
+
+// Runs in the library's constructor, before the program can fork, exec or start threads.
+// The path is made absolute so a child that changed its directory still writes beside it.
+std::string claimOwnership(const char* path)
+{
+    std::error_code ec;
+    std::string absolute = std::filesystem::absolute(path, ec).string();
+    if (ec) absolute = path;
+    const char* owner = std::getenv("NPRGL_RECORD_PID");
+    if (!owner || !*owner) {
+        setenv("NPRGL_RECORD", absolute.c_str(), 1);
+        setenv("NPRGL_RECORD_PID", std::to_string(getpid()).c_str(), 1);
+    }
+    return absolute;
 }
 
 std::string pathForThisProcess(const std::string& base)
@@ -62,8 +78,8 @@ CaptureSession* CaptureSession::instance()
             NPRGL_ERROR("NPRGL_RECORD_FRAMES: %s; recording every frame", error.c_str());
             frames = FrameSet();
         }
-        isMainRecordingProcess();
-        auto* s = new CaptureSession(path, frames); // lives until exit, after atexit runs
+        // Lives until exit, after atexit runs.
+        auto* s = new CaptureSession(claimOwnership(path), frames);
         std::atexit(finishAtExit);
         return s;
     }();

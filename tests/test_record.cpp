@@ -449,3 +449,78 @@ TEST(DamagedFiles, AreRefusedCleanly)
         expectRefusedOrPrefix(path, false);
     }
 }
+
+namespace {
+
+// The pid a probe_fork child printed ("child pid=N").
+std::string childPid(const std::string& out)
+{
+    std::smatch m;
+    return std::regex_search(out, m, std::regex(R"(child pid=(\d+))")) ? m[1].str() : "";
+}
+
+// A capture of probe_fork's parent or child: complete, with only that process's frames and
+// colours (the parent clears to blue, the child to red), and replayable.
+void expectWholeCapture(const std::string& file, bool parent)
+{
+    ProcessResult i = runProcess({nprglCommand(), "info", file});
+    ASSERT_EQ(i.exitCode, 0) << file << ": " << i.err;
+    EXPECT_NE(i.out.find(parent ? "frames:      5" : "frames:      3"), std::string::npos)
+        << file << "\n" << i.out;
+    EXPECT_NE(i.out.find("program:     probe_fork"), std::string::npos) << i.out;
+    EXPECT_EQ(i.out.find("recovered"), std::string::npos) << file << "\n" << i.out;
+    ProcessResult d = runProcess({nprglCommand(), "dump", file, "--grep", "glClearColor"});
+    ASSERT_EQ(d.exitCode, 0) << d.err;
+    const std::string mine = parent ? "glClearColor(red=0, green=0, blue=1, alpha=1)"
+                                    : "glClearColor(red=1, green=0, blue=0, alpha=1)";
+    size_t clears = 0;
+    std::istringstream lines(d.out);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.rfind("==", 0) == 0) continue;
+        EXPECT_EQ(line, mine) << file;
+        ++clears;
+    }
+    EXPECT_EQ(clears, parent ? 5u : 3u) << d.out;
+    std::string out = file + ".replay";
+    ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", out});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(framePng(out, parent ? 5 : 3), image, error)) << error;
+    // The top-right corner is background (the triangle covers the lower-left half).
+    size_t corner = (size_t(image.width) - 1) * 4;
+    EXPECT_EQ(image.rgba[corner + 0], parent ? 0 : 255) << file;
+    EXPECT_EQ(image.rgba[corner + 2], parent ? 255 : 0) << file;
+}
+
+} // namespace
+
+// A GL program that starts another one (fork+exec, posix_spawn, system) while it records:
+// the child inherits NPRGL_RECORD, yet must write <name>.<pid>.nprgl and leave the parent's
+// file whole. The two draw alternately, so a shared file would be truncated or interleaved.
+TEST(Record, AnExecutedOrSpawnedChildWritesItsOwnFile)
+{
+    for (const char* mode : {"exec", "spawn", "system"}) {
+        for (bool command : {true, false}) {
+            SCOPED_TRACE(std::string(mode) + (command ? " with nprgl record" : " with LD_PRELOAD"));
+            std::string dir = freshDir(std::string("spawn_") + mode), file = dir + "/p.nprgl";
+            ProcessResult r =
+                command ? runProcess({nprglCommand(), "record", "--style", "none", "-o", file,
+                                      "--", binDir() + "/probe_fork", mode})
+                        : runProcess({binDir() + "/probe_fork", mode},
+                                     {{"LD_PRELOAD", libPath()}, {"NPRGL_RECORD", file}});
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            EXPECT_NE(r.out.find("child status=0"), std::string::npos) << r.out;
+            std::string pid = childPid(r.out);
+            ASSERT_FALSE(pid.empty()) << r.out;
+            std::string childFile = dir + "/p." + pid + ".nprgl";
+            ASSERT_TRUE(fs::exists(childFile)) << r.err;
+            size_t files = 0;
+            for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
+            EXPECT_EQ(files, 2u) << r.err;
+            expectWholeCapture(file, true);
+            expectWholeCapture(childFile, false);
+        }
+    }
+}
