@@ -488,10 +488,10 @@ void expectWholeCapture(const std::string& file, bool parent)
     PngImage image;
     std::string error;
     ASSERT_TRUE(PngImage::read(framePng(out, parent ? 5 : 3), image, error)) << error;
-    // The top-right corner is background (the triangle covers the lower-left half).
-    size_t corner = (size_t(image.width) - 1) * 4;
-    EXPECT_EQ(image.rgba[corner + 0], parent ? 0 : 255) << file;
-    EXPECT_EQ(image.rgba[corner + 2], parent ? 255 : 0) << file;
+    // The triangle covers the whole picture: yellow for the parent, green for the child.
+    EXPECT_EQ(image.rgba[0], parent ? 255 : 0) << file;
+    EXPECT_EQ(image.rgba[1], 255) << file;
+    EXPECT_EQ(image.rgba[2], 0) << file;
 }
 
 } // namespace

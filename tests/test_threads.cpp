@@ -113,7 +113,7 @@ TEST(GlxThreads, TheRecordingHasOneStreamPerContextAndBothReplay)
     std::string native = nativeFrames();
     std::string dir = freshDir("threads_record"), file = dir + "/t.nprgl";
     ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--", probe(),
-                                  std::to_string(kFrames), dir + "/live"},
+                                  std::to_string(kFrames), dir},
                                  preloadEnv());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("ThreadSanitizer"), std::string::npos) << r.err;
