@@ -27,3 +27,18 @@ unset ASAN_OPTIONS UBSAN_OPTIONS
 
 # The capture reader's libFuzzer target (clang, ASan + UBSan) on a generated seed corpus.
 "$root/scripts/fuzz.sh" 20000
+
+# ThreadSanitizer: the two-thread GLX tests with a TSan build of the library preloaded (the
+# sanitizer runtime first). Only what those tests need is built. Mesa is not instrumented:
+# tests/tsan.supp silences races reported inside it, never in nprgl's own code.
+export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
+gen=()
+command -v ninja >/dev/null && gen=(-G Ninja)
+cmake -S "$root" -B "$root/build-tsan" "${gen[@]}" -DNPRGL_TSAN=ON -DNPRGL_BUILD_BENCH=OFF \
+    -DCMAKE_BUILD_TYPE=Debug >/dev/null
+cmake --build "$root/build-tsan" -j "$(nproc)" --target nprgl nprgl_cli probe_glx_threads \
+    test_threads
+cd "$root/build-tsan"
+NPRGL_TEST_PRELOAD="$(gcc -print-file-name=libtsan.so)" \
+    TSAN_OPTIONS="suppressions=$root/tests/tsan.supp halt_on_error=1 exitcode=66" \
+    "$root/scripts/with-display.sh" bin/test_threads
