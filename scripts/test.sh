@@ -39,6 +39,5 @@ cmake -S "$root" -B "$root/build-tsan" "${gen[@]}" -DNPRGL_TSAN=ON -DNPRGL_BUILD
 cmake --build "$root/build-tsan" -j "$(nproc)" --target nprgl nprgl_cli probe_glx_threads \
     test_threads
 cd "$root/build-tsan"
-NPRGL_TEST_PRELOAD="$(gcc -print-file-name=libtsan.so)" \
-    TSAN_OPTIONS="suppressions=$root/tests/tsan.supp halt_on_error=1 exitcode=66 report_mutex_bugs=0" \
+TSAN_OPTIONS="suppressions=$root/tests/tsan.supp halt_on_error=1 exitcode=66 report_mutex_bugs=0" \
     "$root/scripts/with-display.sh" bin/test_threads

@@ -37,16 +37,6 @@ void requireDisplay()
     ASSERT_TRUE(d && *d) << "run through scripts/test.sh (Xvfb)";
 }
 
-// Under the ThreadSanitizer step NPRGL_TEST_PRELOAD names the sanitizer runtime, which must
-// come before the library in LD_PRELOAD (`nprgl` keeps a preload list that names the library
-// already as it is).
-std::map<std::string, std::string> preloadEnv()
-{
-    const char* runtime = std::getenv("NPRGL_TEST_PRELOAD");
-    if (!runtime || !*runtime) return {};
-    return {{"LD_PRELOAD", std::string(runtime) + " " + libPath()}};
-}
-
 // Share of pixels unlike the top-left one (the background): the shape is drawn.
 double drawnFraction(const PngImage& image)
 {
@@ -87,8 +77,7 @@ TEST(GlxThreads, BothThreadsAreStyledAtOnce)
     requireDisplay();
     std::string native = nativeFrames();
     std::string styled = freshDir("threads_styled");
-    ProcessResult r = runProcess({nprglCommand(), "--", probe(), std::to_string(kFrames), styled},
-                                 preloadEnv());
+    ProcessResult r = runProcess({nprglCommand(), "--", probe(), std::to_string(kFrames), styled});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, "ok\n");
     EXPECT_EQ(r.err.find("ThreadSanitizer"), std::string::npos) << r.err;
@@ -112,9 +101,8 @@ TEST(GlxThreads, TheRecordingHasOneStreamPerContextAndBothReplay)
     requireDisplay();
     std::string native = nativeFrames();
     std::string dir = freshDir("threads_record"), file = dir + "/t.nprgl";
-    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--", probe(),
-                                  std::to_string(kFrames), dir},
-                                 preloadEnv());
+    ProcessResult r = runProcess(
+        {nprglCommand(), "record", "-o", file, "--", probe(), std::to_string(kFrames), dir});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err.find("ThreadSanitizer"), std::string::npos) << r.err;
     ProcessResult i = runProcess({nprglCommand(), "info", file});
