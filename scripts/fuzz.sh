@@ -9,13 +9,15 @@
 # A crash, a sanitizer report, a leak (reader), an oversized allocation or a timeout fails
 # the run and leaves the input in BUILD_DIR.
 # Usage: scripts/fuzz.sh [RUNS] [extra libFuzzer arguments]   (RUNS: of the reader; the
-# replay target runs RUNS/10, or NPRGL_FUZZ_REPLAY_RUNS; NPRGL_FUZZ_DIR: build dir)
+# replay target, some 50 times slower (a context per input), runs RUNS/16 inputs with style
+# none and RUNS/64 with the default style, or NPRGL_FUZZ_REPLAY_RUNS and a quarter of it;
+# NPRGL_FUZZ_DIR: build dir)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${NPRGL_FUZZ_DIR:-$root/build-fuzz}
 runs=${1:-20000}
 shift || true
-replayRuns=${NPRGL_FUZZ_REPLAY_RUNS:-$((runs / 10))}
+replayRuns=${NPRGL_FUZZ_REPLAY_RUNS:-$((runs / 16))}
 cc=${NPRGL_FUZZ_CC:-clang}
 cxx=${NPRGL_FUZZ_CXX:-clang++}
 mkdir -p "$out"
@@ -72,7 +74,9 @@ echo "fuzz: $runs runs of fuzz_capture_reader"
     -print_final_stats=1 "$@" "$out/corpus" "$out/seeds"
 
 # Mesa (llvmpipe) keeps allocations past a context's end and at exit by design, so leak
-# detection would only report the driver: it is off for this target (the reader's keeps it).
+# detection would only report the driver: it is off for this target, per input and at exit
+# (the reader's keeps it).
+export ASAN_OPTIONS=detect_leaks=0
 replay=("$out/cmake/bin/fuzz_replay" -seed=1 -max_len=65536 -timeout=60 -rss_limit_mb=2048
     -malloc_limit_mb=1100 -detect_leaks=0 -dict="$out/replay.dict" -artifact_prefix="$out/"
     -print_final_stats=1 "$@" "$out/replay-corpus" "$out/replay-seeds")

@@ -35,6 +35,26 @@ bool ReplaySink::before(uint16_t opcode)
     mOpcode = opcode;
     mWork = 1;
     if (!chargeWork(1)) return false; // batch references may run a blob's calls many times
+    switch (opcode) {
+    case op::glEvalCoord1d:
+    case op::glEvalCoord1dv:
+    case op::glEvalCoord1f:
+    case op::glEvalCoord1fv:
+    case op::glEvalCoord2d:
+    case op::glEvalCoord2dv:
+    case op::glEvalCoord2f:
+    case op::glEvalCoord2fv:
+    case op::glEvalPoint1:
+    case op::glEvalPoint2:
+        // Mesa overruns a heap buffer compiling these after a vertex between glBegin and
+        // glEnd (found by fuzz_replay). glMap* is not recorded, so they evaluate nothing
+        // here anyway.
+        if (mListBegun)
+            return refuse(std::string(opcodeName(opcode)) + " between glBegin and glEnd in a " +
+                          "display list");
+        break;
+    default: break;
+    }
     // The arrays glArrayElement reads between glBegin and glEnd, asked while the driver
     // still answers.
     if (opcode == op::glBegin && !mUsesValid && idle()) queryArrays();
@@ -45,6 +65,9 @@ void ReplaySink::after(uint16_t opcode)
 {
     mLists.addWork(mWork);
     switch (opcode) {
+    case op::glBegin: mListBegun = mLists.compiling(); break;
+    case op::glEnd:
+    case op::glEndList: mListBegun = false; break;
     case op::glClientActiveTexture: {
         GLint unit = GL_TEXTURE0;
         gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);

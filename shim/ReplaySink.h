@@ -117,6 +117,7 @@ private:
     std::string mError;
     std::vector<ArrayUse> mUses;
     bool mUsesValid = false;
+    bool mListBegun = false; // a glBegin compiled into the list being defined, not yet ended
     uint64_t mWork = 1; // of the current call, for a list being compiled
     uint64_t mTotalWork = 0;
     uint64_t mTotalBytes = 0;

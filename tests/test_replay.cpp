@@ -61,8 +61,10 @@ void triangleArray(CallWriter& w)
 
 using Frame = std::function<void(CallWriter&)>;
 
-// A capture of these frames (context 1, frames 1, 2, ...), each closed by a FrameEnd.
-std::string writeCapture(const std::string& name, const std::vector<Frame>& frames)
+// A capture of these blobs and frames (context 1, frames 1, 2, ...), each frame closed by
+// a FrameEnd.
+std::string writeCapture(const std::string& name, const std::vector<Frame>& frames,
+                         const std::vector<std::vector<uint8_t>>& blobs = {})
 {
     const std::string path = freshDir("replay_" + name) + "/" + name + ".nprgl";
     capture::Metadata meta;
@@ -72,6 +74,8 @@ std::string writeCapture(const std::string& name, const std::vector<Frame>& fram
     capture::CaptureWriter writer;
     std::string error;
     EXPECT_TRUE(writer.open(path, meta, error)) << error;
+    for (const auto& blob : blobs)
+        writer.putBlob(blob.data(), blob.size());
     uint64_t number = 0;
     for (const Frame& frame : frames) {
         CallWriter w;
@@ -240,4 +244,44 @@ TEST(Replay, ImageSizesDoNotWrap)
     // 2^31 images of 2^31 rows of 2^33 bytes: no real image; it used to wrap to a small size.
     EXPECT_EQ(imageBytes(GL_RGBA, GL_FLOAT, 1, 1, 2, unpack), 0u);
     EXPECT_EQ(imageBytes(GL_RGBA, GL_UNSIGNED_BYTE, 2, 2, 1, UnpackState{}), 16u);
+}
+
+TEST(Replay, NestedBatchReferencesAreRefused)
+{
+    // Blob 0: a batch; blob 1: a batch that refers to blob 0 many times. Nesting a few such
+    // levels ran an exponential number of calls; the recorder never nests them.
+    CallWriter inner;
+    call(inner, op::glBegin, GLenum(GL_POINTS));
+    call(inner, op::glVertex2f, 0.0f, 0.0f);
+    call(inner, op::glEnd);
+    std::vector<uint8_t> innerBytes(inner.data(), inner.data() + inner.size());
+    const uint64_t innerHash = capture::hashBlob(innerBytes.data(), innerBytes.size());
+    CallWriter outer;
+    for (int i = 0; i < 100; ++i)
+        call(outer, op::kBatchRef, innerHash, uint64_t(inner.size()));
+    std::vector<uint8_t> outerBytes(outer.data(), outer.data() + outer.size());
+    const uint64_t outerHash = capture::hashBlob(outerBytes.data(), outerBytes.size());
+    std::string path = writeCapture(
+        "batches",
+        {[&](CallWriter& w) { call(w, op::kBatchRef, innerHash, uint64_t(inner.size())); },
+         [&](CallWriter& w) { call(w, op::kBatchRef, outerHash, uint64_t(outer.size())); }},
+        {innerBytes, outerBytes});
+    std::string error = replayError(path);
+    EXPECT_NE(error.find("frame 2, call 0 (BatchRef)"), std::string::npos) << error;
+    EXPECT_NE(error.find("batch reference inside a referenced batch"), std::string::npos) << error;
+}
+
+TEST(Replay, EvalCoordInsideBeginInAListIsRefused)
+{
+    // Found by fuzz_replay: Mesa's list compiler overran a heap buffer on this sequence.
+    std::string path = writeCapture("eval", {[](CallWriter& w) {
+        call(w, op::glNewList, GLuint(1), GLenum(GL_COMPILE));
+        call(w, op::glBegin, GLenum(GL_TRIANGLES));
+        call(w, op::glVertex3f, -1.0f, 0.0f, 0.0f);
+        call(w, op::glEvalCoord2d, 0.5, 0.5);
+        call(w, op::glEnd);
+        call(w, op::glEndList);
+    }});
+    std::string error = replayError(path);
+    EXPECT_NE(error.find("frame 1, call 3 (glEvalCoord2d)"), std::string::npos) << error;
 }
