@@ -9,15 +9,15 @@
 # A crash, a sanitizer report, a leak (reader), an oversized allocation or a timeout fails
 # the run and leaves the input in BUILD_DIR.
 # Usage: scripts/fuzz.sh [RUNS] [extra libFuzzer arguments]   (RUNS: of the reader; the
-# replay target, some 50 times slower (a context per input), runs RUNS/16 inputs with style
-# none and RUNS/64 with the default style, or NPRGL_FUZZ_REPLAY_RUNS and a quarter of it;
+# replay target, some 1000 times slower (a context per input), runs RUNS/20 inputs with style
+# none and RUNS/80 with the default style, or NPRGL_FUZZ_REPLAY_RUNS and a quarter of it;
 # NPRGL_FUZZ_DIR: build dir)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${NPRGL_FUZZ_DIR:-$root/build-fuzz}
 runs=${1:-20000}
 shift || true
-replayRuns=${NPRGL_FUZZ_REPLAY_RUNS:-$((runs / 16))}
+replayRuns=${NPRGL_FUZZ_REPLAY_RUNS:-$((runs / 20))}
 cc=${NPRGL_FUZZ_CC:-clang}
 cxx=${NPRGL_FUZZ_CXX:-clang++}
 mkdir -p "$out"
