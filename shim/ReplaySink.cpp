@@ -6,7 +6,9 @@
 #include "stream/GlSizes.h"
 #include "stream/Opcodes.h"
 
+#include <cctype>
 #include <limits>
+#include <string_view>
 
 namespace nprgl {
 
@@ -15,6 +17,25 @@ namespace {
 constexpr uint64_t kNoArrays = std::numeric_limits<uint64_t>::max();
 
 uint64_t satAdd(uint64_t a, uint64_t b) { return a > kNoArrays - b ? kNoArrays : a + b; }
+
+// Calls that give a vertex or its attributes (what belongs between glBegin and glEnd),
+// and glEnd.
+bool vertexCall(uint16_t opcode)
+{
+    const char* name = opcodeName(opcode);
+    if (!name) return false;
+    const std::string_view n(name);
+    auto numbered = [&](std::string_view prefix) {
+        return n.starts_with(prefix) && n.size() > prefix.size() &&
+               std::isdigit(static_cast<unsigned char>(n[prefix.size()]));
+    };
+    return numbered("glVertex") || numbered("glVertexAttrib") || numbered("glColor") ||
+           numbered("glSecondaryColor") || numbered("glNormal") || numbered("glTexCoord") ||
+           numbered("glMultiTexCoord") || n.starts_with("glMaterial") || n == "glFogCoordf" ||
+           n == "glFogCoordfv" || n == "glFogCoordd" || n == "glFogCoorddv" || n == "glEdgeFlag" ||
+           n == "glEdgeFlagv" || (n.starts_with("glIndex") && n.find_first_of("dfisu", 7) == 7) ||
+           n == "glArrayElement" || n == "glEnd";
+}
 
 } // namespace
 
@@ -35,26 +56,12 @@ bool ReplaySink::before(uint16_t opcode)
     mOpcode = opcode;
     mWork = 1;
     if (!chargeWork(1)) return false; // batch references may run a blob's calls many times
-    switch (opcode) {
-    case op::glEvalCoord1d:
-    case op::glEvalCoord1dv:
-    case op::glEvalCoord1f:
-    case op::glEvalCoord1fv:
-    case op::glEvalCoord2d:
-    case op::glEvalCoord2dv:
-    case op::glEvalCoord2f:
-    case op::glEvalCoord2fv:
-    case op::glEvalPoint1:
-    case op::glEvalPoint2:
-        // Mesa overruns a heap buffer compiling these after a vertex between glBegin and
-        // glEnd (found by fuzz_replay). glMap* is not recorded, so they evaluate nothing
-        // here anyway.
-        if (mListBegun)
-            return refuse(std::string(opcodeName(opcode)) + " between glBegin and glEnd in a " +
-                          "display list");
-        break;
-    default: break;
-    }
+    // Mesa's list compiler overruns heap buffers on several calls after a glBegin it
+    // compiled (glEndList, glCallList, glEvalCoord...; found by fuzz_replay). Programs only
+    // give vertices and their attributes there.
+    if (mListBegun && !vertexCall(opcode))
+        return refuse(std::string(opcodeName(opcode)) + " between glBegin and glEnd in a " +
+                      "display list");
     // The arrays glArrayElement reads between glBegin and glEnd, asked while the driver
     // still answers.
     if (opcode == op::glBegin && !mUsesValid && idle()) queryArrays();
@@ -65,9 +72,13 @@ void ReplaySink::after(uint16_t opcode)
 {
     mLists.addWork(mWork);
     switch (opcode) {
-    case op::glBegin: mListBegun = mLists.compiling(); break;
+    case op::glBegin:
+        mListBegun = mLists.compiling();
+        break;
     case op::glEnd:
-    case op::glEndList: mListBegun = false; break;
+    case op::glEndList:
+        mListBegun = false;
+        break;
     case op::glClientActiveTexture: {
         GLint unit = GL_TEXTURE0;
         gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);

@@ -29,10 +29,7 @@ public:
     // The slot whose region holds p, or -1.
     int slotOf(const void* p) const;
     // The end of the furthest bytes written to a slot: what a draw may read from its base.
-    size_t size(int slot) const
-    {
-        return slot >= 0 && slot < kArraySlotCount ? mSize[slot] : 0;
-    }
+    size_t size(int slot) const { return slot >= 0 && slot < kArraySlotCount ? mSize[slot] : 0; }
 
 private:
     uint8_t* mBase[kArraySlotCount] = {};

@@ -275,13 +275,31 @@ TEST(Replay, EvalCoordInsideBeginInAListIsRefused)
 {
     // Found by fuzz_replay: Mesa's list compiler overran a heap buffer on this sequence.
     std::string path = writeCapture("eval", {[](CallWriter& w) {
-        call(w, op::glNewList, GLuint(1), GLenum(GL_COMPILE));
-        call(w, op::glBegin, GLenum(GL_TRIANGLES));
-        call(w, op::glVertex3f, -1.0f, 0.0f, 0.0f);
-        call(w, op::glEvalCoord2d, 0.5, 0.5);
-        call(w, op::glEnd);
-        call(w, op::glEndList);
-    }});
+                                        call(w, op::glNewList, GLuint(1), GLenum(GL_COMPILE));
+                                        call(w, op::glBegin, GLenum(GL_TRIANGLES));
+                                        call(w, op::glVertex3f, -1.0f, 0.0f, 0.0f);
+                                        call(w, op::glEvalCoord2d, 0.5, 0.5);
+                                        call(w, op::glEnd);
+                                        call(w, op::glEndList);
+                                    }});
     std::string error = replayError(path);
     EXPECT_NE(error.find("frame 1, call 3 (glEvalCoord2d)"), std::string::npos) << error;
+}
+
+TEST(Replay, ListEndedInsideBeginIsRefused)
+{
+    // Found by fuzz_replay: Mesa's list compiler overran a heap buffer ending a list whose
+    // glBegin was still open (and on glCallList there).
+    std::string path = writeCapture("dangling", {[](CallWriter& w) {
+                                        call(w, op::glNewList, GLuint(1), GLenum(GL_COMPILE));
+                                        call(w, op::glBegin, GLenum(GL_TRIANGLES));
+                                        call(w, op::glColor3f, 1.0f, 0.0f, 0.0f);
+                                        call(w, op::glVertex3f, -1.0f, 0.0f, 0.0f);
+                                        call(w, op::glEndList);
+                                    }});
+    std::string error = replayError(path);
+    EXPECT_NE(error.find("frame 1, call 4 (glEndList)"), std::string::npos) << error;
+    EXPECT_NE(error.find("glEndList between glBegin and glEnd in a display list"),
+              std::string::npos)
+        << error;
 }
