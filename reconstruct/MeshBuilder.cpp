@@ -134,7 +134,7 @@ void MeshBuilder::fillMesh(ObjectMesh& object)
         const uint32_t* fv = &object.faceVertices[3 * size_t(f)];
         const FaceHandle fh{int(f)};
         for (int k = 0; k < 3; ++k) {
-            const HalfedgeHandle heh(int(h[k]));
+            const HalfedgeHandle heh{int(h[k])}; // braces: parentheses parse as a declaration
             mesh.set_face_handle(heh, fh);
             mesh.set_next_halfedge_handle(heh, HalfedgeHandle(int(h[(k + 1) % 3])));
             mesh.set_halfedge_handle(VertexHandle(int(fv[k])), heh); // outgoing from corner k

@@ -25,7 +25,8 @@ ctest --output-on-failure -j 2 -L unit
     -R 'DefaultStyle|Golden|StateUnderNprgl/(none|toon_paper_edges|strokes)_|Record|Replay'
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
-# The capture reader's libFuzzer target (clang, ASan + UBSan) on a generated seed corpus.
+# The libFuzzer targets (clang, ASan + UBSan) on generated seeds: the capture reader, and
+# the replayer on fuzzed calls in valid captures.
 "$root/scripts/fuzz.sh" 20000
 
 # ThreadSanitizer: the two-thread GLX tests with a TSan build of the library preloaded (the

@@ -4,8 +4,8 @@
 #include "common/PngImage.h"
 #include "shim/Api.h"
 #include "shim/CaptureBlobs.h"
-#include "shim/ClientArrays.h"
 #include "shim/RealGl.h"
+#include "shim/ReplaySink.h"
 #include "shim/ShadowArrays.h"
 #include "shim/ThreadState.h"
 #include "stream/CallDecoder.h"
@@ -20,96 +20,6 @@
 namespace nprgl {
 
 namespace {
-
-constexpr size_t kMaxScratch = size_t(1) << 24;
-
-// The replaying sink of decodeCall.
-class ReplaySink {
-public:
-    static constexpr bool kReplays = true;
-
-    ReplaySink(ShadowArrays& arrays, std::function<bool(uint64_t)> frameEnd)
-        : mArrays(arrays), mFrameEnd(std::move(frameEnd))
-    {
-    }
-
-    const GlDispatch& gl() const { return *tThread.dispatch; }
-    bool before(uint16_t opcode)
-    {
-        mOpcode = opcode;
-        if (mScratchTooBig) {
-            mError = "count too large for a generated name list";
-            return false;
-        }
-        return true;
-    }
-    void after(uint16_t opcode)
-    {
-        // The arrays and the buffers that decide where a pointer points.
-        if (opcode == op::glClientActiveTexture) {
-            GLint unit = GL_TEXTURE0;
-            gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);
-            mClientActiveTexture = unit - GL_TEXTURE0;
-        }
-    }
-    template <typename T>
-    T* scratch(size_t n)
-    {
-        mScratchTooBig = n > kMaxScratch;
-        mScratch.assign(std::min(n, kMaxScratch) * sizeof(T) + sizeof(T), 0);
-        return reinterpret_cast<T*>(mScratch.data());
-    }
-    // A recorded client-array pointer: an offset when a buffer is bound, else our shadow.
-    const void* clientPointer(uint64_t value, int attribIndex)
-    {
-        GLint buffer = 0;
-        gRealGl.glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &buffer);
-        if (buffer) return reinterpret_cast<const void*>(uintptr_t(value));
-        int slot = attribIndex >= 0 ? (attribIndex < 16 ? kAttribArray0 + attribIndex : -1)
-                                    : slotForPointerOp(mOpcode);
-        return slot >= 0 ? mArrays.base(slot) : nullptr;
-    }
-    bool pseudo(CallReader& r, uint16_t opcode)
-    {
-        if (opcode == op::kFrameEnd) {
-            uint64_t frame = r.get<uint64_t>();
-            return r.ok() && mFrameEnd(frame);
-        }
-        if (opcode == op::kArrayData) return mArrays.apply(r);
-        if (opcode == op::kBatchRef) return expandBatchRef(r, *this, mDepth);
-        r.fail("unknown opcode " + std::to_string(opcode));
-        return false;
-    }
-    const std::string& error() const { return mError; }
-
-private:
-    int slotForPointerOp(uint16_t opcode) const
-    {
-        switch (opcode) {
-        case op::glVertexPointer: return kVertexArray;
-        case op::glNormalPointer: return kNormalArray;
-        case op::glColorPointer: return kColorArray;
-        case op::glSecondaryColorPointer: return kSecondaryColorArray;
-        case op::glFogCoordPointer: return kFogCoordArray;
-        case op::glIndexPointer: return kIndexArray;
-        case op::glEdgeFlagPointer: return kEdgeFlagArray;
-        case op::glTexCoordPointer:
-            return mClientActiveTexture >= 0 && mClientActiveTexture < 8
-                       ? kTexCoordArray0 + mClientActiveTexture
-                       : -1;
-        default: return -1;
-        }
-    }
-
-    ShadowArrays& mArrays;
-    std::function<bool(uint64_t)> mFrameEnd;
-    uint16_t mOpcode = 0;
-    int mClientActiveTexture = 0;
-    std::vector<uint8_t> mScratch;
-    bool mScratchTooBig = false;
-    int mDepth = 0;
-    std::string mError;
-};
 
 void drawProgress(size_t done, size_t total)
 {
@@ -184,7 +94,7 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         ++written;
         return true;
     };
-    ReplaySink sink(arrays, frameEnd);
+    ReplaySink sink(arrays, options.limits, frameEnd);
     CaptureBlobs blobs(reader);
     std::vector<uint8_t> calls;
     bool ok = true;
@@ -196,16 +106,20 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
             break;
         }
         CallReader r(calls.data(), calls.size(), &blobs);
-        while (ok && !r.atEnd()) {
+        for (uint64_t call = 0; ok && !r.atEnd(); ++call) {
             uint16_t opcode = r.get<uint16_t>();
-            if (!r.ok() || !decodeCall(r, opcode, sink)) {
+            const bool haveOpcode = r.ok();
+            if (!haveOpcode || !decodeCall(r, opcode, sink)) {
                 std::string why = !frameError.empty()  ? frameError
                                   : !sink.error().empty() ? sink.error()
                                   : !r.ok()               ? r.error()
                                                           : "unknown opcode " +
                                                             std::to_string(opcode);
-                error = path + ": frame " + std::to_string(frames[i].frameNumber) + " at " +
-                        std::to_string(frames[i].offset) + ": " + why;
+                const char* name = haveOpcode ? opcodeName(opcode) : nullptr;
+                // The n-th call of the frame (from 0), and where its chunk is in the file.
+                error = path + ": frame " + std::to_string(frames[i].frameNumber) + ", call " +
+                        std::to_string(call) + (name ? std::string(" (") + name + ")" : "") +
+                        ", chunk at " + std::to_string(frames[i].offset) + ": " + why;
                 ok = false;
             }
         }

@@ -2,6 +2,7 @@
 
 #include "capture/CaptureReader.h"
 #include "common/FrameSet.h"
+#include "shim/ReplayLimits.h"
 
 #include <functional>
 #include <string>
@@ -15,13 +16,16 @@ struct ReplayOptions {
     int height = 0;
     uint32_t contextId = 0; // 0: the stream with the most frames
     bool progress = false;  // a progress bar on stderr
+    ReplayLimits limits;    // what a call may ask of the driver before it is refused
 };
 
 // Replays a capture headless on OSMesa through the same pipeline the library runs inside an
 // application (the context's dispatch table), writing the frames as PNG.
 class Replayer {
 public:
-    // Returns false with a one-line message naming the file and the offset on bad input.
+    // Returns false with a one-line message on bad input, naming the file, the frame and the
+    // call (its index in the frame, from 0): a malformed call, or one the driver would trust
+    // and crash or hang on (see ReplaySink).
     static bool run(const std::string& path, const ReplayOptions& options, std::string& error,
                     uint64_t* framesWritten = nullptr);
 };

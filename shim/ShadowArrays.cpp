@@ -1,5 +1,6 @@
 #include "shim/ShadowArrays.h"
 
+#include <algorithm>
 #include <cstring>
 #include <sys/mman.h>
 
@@ -29,7 +30,17 @@ bool ShadowArrays::write(int slot, uint64_t offset, const void* data, size_t siz
     uint8_t* b = base(slot);
     if (!b) return false;
     if (data && size) std::memcpy(b + offset, data, size);
+    mSize[slot] = std::max<size_t>(mSize[slot], offset + size);
     return true;
+}
+
+int ShadowArrays::slotOf(const void* p) const
+{
+    const auto* q = static_cast<const uint8_t*>(p);
+    for (int slot = 0; slot < kArraySlotCount; ++slot) {
+        if (mBase[slot] && q >= mBase[slot] && q < mBase[slot] + kReserve) return slot;
+    }
+    return -1;
 }
 
 bool ShadowArrays::apply(CallReader& r)

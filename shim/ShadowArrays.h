@@ -26,9 +26,14 @@ public:
     bool write(int slot, uint64_t offset, const void* data, size_t size);
     // Decodes an ArrayData pseudo-call (its opcode already read) and applies it.
     bool apply(CallReader& r);
+    // The slot whose region holds p, or -1.
+    int slotOf(const void* p) const;
+    // The end of the furthest bytes written to a slot: what a draw may read from its base.
+    size_t size(int slot) const { return slot >= 0 && slot < kArraySlotCount ? mSize[slot] : 0; }
 
 private:
     uint8_t* mBase[kArraySlotCount] = {};
+    size_t mSize[kArraySlotCount] = {};
 };
 
 } // namespace nprgl

@@ -58,6 +58,16 @@ SCALAR_TYPES = {
 
 FRAME_END_OPCODE = 0xFF00
 
+# Calls a replaying sink may check before they reach the driver (which trusts counts, ranges
+# and pointers): when the sink has check_<name>(decoded arguments..., [image descriptor]),
+# a false return refuses the call. Image arguments all go to sink.checkImage when it has one.
+CHECKED = {
+    "glDrawArrays", "glDrawElements", "glDrawRangeElements", "glMultiDrawArrays",
+    "glArrayElement", "glNewList", "glEndList", "glCallList", "glCallLists", "glListBase",
+    "glDeleteLists", "glGenLists", "glEvalMesh1", "glEvalMesh2", "glBufferData",
+    "glCopyTexImage1D", "glCopyTexImage2D", "glGenTextures", "glGenQueries", "glGenBuffers",
+}
+
 
 class Param:
     def __init__(self, ctype, name, length, group):
@@ -150,9 +160,15 @@ CODEC = {
     "scalar": ("w_.put<{base}>({name});", "const {base} {n} = r.get<{base}>();"),
     "array": ("w_.putBytes({name}, {name} ? ({count}) * sizeof({elem}) : 0);",
               "const {elem}* {n} = r.getArray<{elem}>({dcount});"),
-    "image": ("rec_.putImage(w_, {name}, {count});", "const void* {n} = r.getImage();"),
-    "indices": ("rec_.putIndices(w_, {name}, count, type);", "const void* {n} = r.getImage();"),
-    "unpacked": ("rec_.putUnpacked(w_, {name}, {count});", "const void* {n} = r.getImage();"),
+    "image": ("rec_.putImage(w_, {name}, {count});",
+              "const void* {n} = r.getImage();\n"
+              "        [[maybe_unused]] const CallReader::Image {n}_img = r.lastImage();"),
+    "indices": ("rec_.putIndices(w_, {name}, count, type);",
+                "const void* {n} = r.getImage();\n"
+                "        [[maybe_unused]] const CallReader::Image {n}_img = r.lastImage();"),
+    "unpacked": ("rec_.putUnpacked(w_, {name}, {count});",
+                 "const void* {n} = r.getImage();\n"
+                 "        [[maybe_unused]] const CallReader::Image {n}_img = r.lastImage();"),
     "string": ("w_.putString({name});", "const GLchar* {n} = r.getString();"),
     "sources": ("w_.putSources(count, {name}, length);",
                 "const CallReader::Sources {n} = r.getSources(a_count);"),
@@ -357,6 +373,7 @@ def emitDecode(cmds, groups):
             cargs = [c for p, c in zip(params, cargs) if p.name != "length"]
         out.append("        if constexpr (Sink::kReplays) {")
         out.append(f"            if (!sink.before({op})) return false;")
+        out += checkLines(op, name, params)
         out.append(f"            sink.gl().{name}({', '.join(cargs)});")
         out.append(f"            sink.after({op});")
         out.append("        } else {")
@@ -392,6 +409,28 @@ def emitDecode(cmds, groups):
     out.append("    }")
     out.append("}")
     return "\n".join(out) + "\n"
+
+
+def checkLines(op, name, params):
+    """The replay branch's optional checks (see CHECKED)."""
+    out = []
+
+    def guarded(call):
+        out.append(f"            if constexpr (requires {{ {call}; }}) {{")
+        out.append(f"                if (!{call}) return false;")
+        out.append("            }")
+
+    for p in params:
+        if p.kind == "image":
+            guarded(f"sink.checkImage({op}, a_{p.name}_img, {sub(p.count, 'a_')})")
+        elif p.kind == "unpacked":
+            guarded(f"sink.checkUnpacked({op}, a_{p.name}_img, {sub(p.count, 'a_')})")
+    if name in CHECKED:
+        args = [f"a_{p.name}" for p in params]
+        args += [f"a_{p.name}_img" for p in params
+                 if p.kind in ("image", "indices", "unpacked")]
+        guarded(f"sink.check_{name}({', '.join(args)})")
+    return out
 
 
 def emitEnums(gl, groups):

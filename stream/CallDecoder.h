@@ -32,14 +32,15 @@ bool decodeCalls(CallReader& r, Sink& sink)
 }
 
 // Runs the calls of a batch reference (its opcode already read) through the sink. The
-// recorder never nests them; a hostile file that does is stopped after a few levels.
+// recorder never nests them, so a nested one is refused: a few levels of blobs that each
+// refer many times to the next would otherwise run an exponential number of calls.
 template <typename Sink>
 bool expandBatchRef(CallReader& r, Sink& sink, int& depth)
 {
     const std::vector<uint8_t>* blob = r.getBlobRef();
     if (!blob) return false;
-    if (depth >= 4) {
-        r.fail("batch references nested too deep");
+    if (depth >= 1) {
+        r.fail("batch reference inside a referenced batch");
         return false;
     }
     ++depth;

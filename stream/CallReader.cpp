@@ -75,12 +75,18 @@ const void* CallReader::alignedCopy(const void* p, size_t size)
 
 const void* CallReader::getImage()
 {
+    mLastImage = Image{};
     uint8_t mode = get<uint8_t>();
-    if (mode == 2) return reinterpret_cast<const void*>(uintptr_t(get<uint64_t>()));
+    if (mode == 2) {
+        mLastImage.mode = Image::kOffset;
+        mLastImage.offset = get<uint64_t>();
+        return reinterpret_cast<const void*>(uintptr_t(mLastImage.offset));
+    }
     if (mode != 1 && mode != 0) fail("bad image mode");
     if (mode != 1) return nullptr;
     size_t size = 0;
     const void* bytes = getBytes(size); // before size is read: argument order is unspecified
+    if (bytes) mLastImage = Image{Image::kBytes, size, 0};
     return alignedCopy(bytes, size);
 }
 

@@ -60,6 +60,13 @@ public:
     // An image or index-data argument: null, bytes, or an offset into the bound pixel-unpack
     // or element buffer.
     const void* getImage();
+    // How the last getImage argument was given, for a replayer to check it against the call.
+    struct Image {
+        enum Mode : uint8_t { kNull, kBytes, kOffset } mode = kNull;
+        size_t size = 0;     // kBytes: the bytes given
+        uint64_t offset = 0; // kOffset: into the bound buffer
+    };
+    const Image& lastImage() const { return mLastImage; }
     const char* getString();
     // A batch reference (u64 hash, u64 size): the blob's bytes, or null with the error set.
     const std::vector<uint8_t>* getBlobRef();
@@ -99,6 +106,7 @@ private:
     size_t mScratchUsed = 0;
     std::vector<const char*> mSourcePointers;
     std::vector<int> mSourceLengths;
+    Image mLastImage;
 
     friend class Payload;
 };

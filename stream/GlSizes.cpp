@@ -129,33 +129,39 @@ size_t packedPixelBytes(uint32_t type)
     }
 }
 
-size_t alignUp(size_t value, size_t alignment)
-{
-    return alignment > 1 ? (value + alignment - 1) / alignment * alignment : value;
-}
-
 } // namespace
 
 size_t imageBytes(uint32_t format, uint32_t type, int width, int height, int depth,
                   const UnpackState& unpack)
 {
     if (width <= 0 || height <= 0 || depth <= 0) return 0;
-    const size_t alignment = unpack.alignment > 0 ? size_t(unpack.alignment) : 1;
-    const size_t rowPixels = unpack.rowLength > 0 ? size_t(unpack.rowLength) : size_t(width);
-    const size_t imageRows = unpack.imageHeight > 0 ? size_t(unpack.imageHeight) : size_t(height);
-    if (type == GL_BITMAP) {
-        size_t rowBytes = alignUp((rowPixels + 7) / 8, alignment);
-        size_t firstRowBytes = (size_t(unpack.skipPixels) + width + 7) / 8;
-        return (size_t(unpack.skipRows) + height - 1) * rowBytes + firstRowBytes;
+    // The driver refuses negative unpack values; any product past 2^48 is no real image
+    // (and would wrap): both are invalid here.
+    if (unpack.rowLength < 0 || unpack.imageHeight < 0 || unpack.skipPixels < 0 ||
+        unpack.skipRows < 0 || unpack.skipImages < 0) {
+        return 0;
     }
-    size_t pixelBytes = packedPixelBytes(type);
-    if (!pixelBytes) pixelBytes = formatComponents(format) * componentBytes(type);
-    if (!pixelBytes) return 0;
-    const size_t rowBytes = alignUp(rowPixels * pixelBytes, alignment);
-    const size_t imageBytes = rowBytes * imageRows;
-    return (size_t(unpack.skipImages) + depth - 1) * imageBytes +
-           (size_t(unpack.skipRows) + height - 1) * rowBytes +
-           (size_t(unpack.skipPixels) + width) * pixelBytes;
+    using Wide = unsigned __int128;
+    const Wide alignment = unpack.alignment > 0 ? Wide(unpack.alignment) : 1;
+    const Wide rowPixels = unpack.rowLength > 0 ? Wide(unpack.rowLength) : Wide(width);
+    const Wide imageRows = unpack.imageHeight > 0 ? Wide(unpack.imageHeight) : Wide(height);
+    auto alignWide = [&](Wide v) { return (v + alignment - 1) / alignment * alignment; };
+    Wide total = 0;
+    if (type == GL_BITMAP) {
+        Wide rowBytes = alignWide((rowPixels + 7) / 8);
+        Wide firstRowBytes = (Wide(unpack.skipPixels) + width + 7) / 8;
+        total = (Wide(unpack.skipRows) + height - 1) * rowBytes + firstRowBytes;
+    } else {
+        size_t pixelBytes = packedPixelBytes(type);
+        if (!pixelBytes) pixelBytes = formatComponents(format) * componentBytes(type);
+        if (!pixelBytes) return 0;
+        const Wide rowBytes = alignWide(rowPixels * pixelBytes);
+        const Wide imageBytes = rowBytes * imageRows;
+        total = (Wide(unpack.skipImages) + depth - 1) * imageBytes +
+                (Wide(unpack.skipRows) + height - 1) * rowBytes +
+                (Wide(unpack.skipPixels) + width) * pixelBytes;
+    }
+    return total > (Wide(1) << 48) ? 0 : size_t(total);
 }
 
 size_t arrayElementBytes(int size, uint32_t type)

@@ -1,0 +1,598 @@
+#include "shim/ReplaySink.h"
+
+#include "shim/ClientArrays.h"
+#include "shim/RealGl.h"
+#include "stream/CallDecoder.h"
+#include "stream/GlSizes.h"
+#include "stream/Opcodes.h"
+
+#include <cctype>
+#include <limits>
+#include <string_view>
+
+namespace nprgl {
+
+namespace {
+
+constexpr uint64_t kNoArrays = std::numeric_limits<uint64_t>::max();
+
+uint64_t satAdd(uint64_t a, uint64_t b) { return a > kNoArrays - b ? kNoArrays : a + b; }
+
+// Calls that give a vertex or its attributes (what belongs between glBegin and glEnd),
+// and glEnd.
+bool vertexCall(uint16_t opcode)
+{
+    const char* name = opcodeName(opcode);
+    if (!name) return false;
+    const std::string_view n(name);
+    auto numbered = [&](std::string_view prefix) {
+        return n.starts_with(prefix) && n.size() > prefix.size() &&
+               std::isdigit(static_cast<unsigned char>(n[prefix.size()]));
+    };
+    return numbered("glVertex") || numbered("glVertexAttrib") || numbered("glColor") ||
+           numbered("glSecondaryColor") || numbered("glNormal") || numbered("glTexCoord") ||
+           numbered("glMultiTexCoord") || n.starts_with("glMaterial") || n == "glFogCoordf" ||
+           n == "glFogCoordfv" || n == "glFogCoordd" || n == "glFogCoorddv" || n == "glEdgeFlag" ||
+           n == "glEdgeFlagv" || (n.starts_with("glIndex") && n.find_first_of("dfisu", 7) == 7) ||
+           n == "glArrayElement" || n == "glEnd";
+}
+
+} // namespace
+
+ReplaySink::ReplaySink(ShadowArrays& arrays, const ReplayLimits& limits,
+                       std::function<bool(uint64_t)> frameEnd)
+    : mArrays(arrays), mLimits(limits), mFrameEnd(std::move(frameEnd))
+{
+}
+
+bool ReplaySink::refuse(std::string message)
+{
+    if (mError.empty()) mError = std::move(message);
+    return false;
+}
+
+bool ReplaySink::before(uint16_t opcode)
+{
+    mOpcode = opcode;
+    mWork = 1;
+    if (!chargeWork(1)) return false; // batch references may run a blob's calls many times
+    // Mesa's list compiler overruns heap buffers on several calls after a glBegin it
+    // compiled (glEndList, glCallList, glEvalCoord...; found by fuzz_replay). Programs only
+    // give vertices and their attributes there.
+    if (mListBegun && !vertexCall(opcode))
+        return refuse(std::string(opcodeName(opcode)) + " between glBegin and glEnd in a " +
+                      "display list");
+    // The arrays glArrayElement reads between glBegin and glEnd, asked while the driver
+    // still answers.
+    if (opcode == op::glBegin && !mUsesValid && idle()) queryArrays();
+    return true;
+}
+
+void ReplaySink::after(uint16_t opcode)
+{
+    mLists.addWork(mWork);
+    switch (opcode) {
+    case op::glBegin:
+        mListBegun = mLists.compiling();
+        break;
+    case op::glEnd:
+    case op::glEndList:
+        mListBegun = false;
+        break;
+    case op::glClientActiveTexture: {
+        GLint unit = GL_TEXTURE0;
+        gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);
+        mClientActiveTexture = unit - GL_TEXTURE0;
+        break;
+    }
+    // What decides where a draw's vertices come from and how many there are.
+    case op::glVertexPointer:
+    case op::glNormalPointer:
+    case op::glColorPointer:
+    case op::glSecondaryColorPointer:
+    case op::glFogCoordPointer:
+    case op::glIndexPointer:
+    case op::glEdgeFlagPointer:
+    case op::glTexCoordPointer:
+    case op::glVertexAttribPointer:
+    case op::glEnableClientState:
+    case op::glDisableClientState:
+    case op::glEnableVertexAttribArray:
+    case op::glDisableVertexAttribArray:
+    case op::glPushClientAttrib:
+    case op::glPopClientAttrib:
+    case op::glBindBuffer:
+    case op::glBufferData:
+    case op::glDeleteBuffers:
+        mUsesValid = false;
+        break;
+    default:
+        break;
+    }
+}
+
+const void* ReplaySink::clientPointer(uint64_t value, int attribIndex)
+{
+    GLint buffer = 0;
+    gRealGl.glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &buffer);
+    if (buffer) return reinterpret_cast<const void*>(uintptr_t(value));
+    int slot = attribIndex >= 0 ? (attribIndex < 16 ? kAttribArray0 + attribIndex : -1)
+                                : slotForPointerOp(mOpcode);
+    return slot >= 0 ? mArrays.base(slot) : nullptr;
+}
+
+bool ReplaySink::pseudo(CallReader& r, uint16_t opcode)
+{
+    if (opcode == op::kFrameEnd) {
+        uint64_t frame = r.get<uint64_t>();
+        return r.ok() && mFrameEnd(frame);
+    }
+    if (opcode == op::kArrayData) return mArrays.apply(r);
+    if (opcode == op::kBatchRef) return expandBatchRef(r, *this, mDepth);
+    r.fail("unknown opcode " + std::to_string(opcode));
+    return false;
+}
+
+int ReplaySink::slotForPointerOp(uint16_t opcode) const
+{
+    switch (opcode) {
+    case op::glVertexPointer:
+        return kVertexArray;
+    case op::glNormalPointer:
+        return kNormalArray;
+    case op::glColorPointer:
+        return kColorArray;
+    case op::glSecondaryColorPointer:
+        return kSecondaryColorArray;
+    case op::glFogCoordPointer:
+        return kFogCoordArray;
+    case op::glIndexPointer:
+        return kIndexArray;
+    case op::glEdgeFlagPointer:
+        return kEdgeFlagArray;
+    case op::glTexCoordPointer:
+        return mClientActiveTexture >= 0 && mClientActiveTexture < 8
+                   ? kTexCoordArray0 + mClientActiveTexture
+                   : -1;
+    default:
+        return -1;
+    }
+}
+
+bool ReplaySink::idle() const
+{
+    GLint mode = -1;
+    gRealGl.glGetIntegerv(GL_MATRIX_MODE, &mode);
+    return mode != -1;
+}
+
+GLint ReplaySink::getInt(GLenum pname) const
+{
+    GLint v = 0;
+    gRealGl.glGetIntegerv(pname, &v);
+    return v;
+}
+
+uint64_t ReplaySink::bufferSize(GLenum target, GLuint buffer) const
+{
+    const GLenum binding = target == GL_ARRAY_BUFFER           ? GL_ARRAY_BUFFER_BINDING
+                           : target == GL_ELEMENT_ARRAY_BUFFER ? GL_ELEMENT_ARRAY_BUFFER_BINDING
+                                                               : GL_PIXEL_UNPACK_BUFFER_BINDING;
+    const GLint saved = getInt(binding);
+    if (GLuint(saved) != buffer) gRealGl.glBindBuffer(target, buffer);
+    GLint size = 0;
+    gRealGl.glGetBufferParameteriv(target, GL_BUFFER_SIZE, &size);
+    if (GLuint(saved) != buffer) gRealGl.glBindBuffer(target, GLuint(saved));
+    return size > 0 ? uint64_t(size) : 0;
+}
+
+void ReplaySink::addArray(GLint size, GLenum type, GLint stride, GLuint buffer, const void* pointer,
+                          bool fixedSize, int count)
+{
+    ArrayUse use;
+    use.element =
+        fixedSize ? uint64_t(count) * arrayElementBytes(1, type) : arrayElementBytes(size, type);
+    use.stride = stride > 0 ? uint64_t(stride) : use.element;
+    if (buffer) {
+        use.start = reinterpret_cast<uintptr_t>(pointer);
+        use.bufferSize = bufferSize(GL_ARRAY_BUFFER, buffer);
+    } else if (int slot = mArrays.slotOf(pointer); slot >= 0) {
+        use.slot = slot;
+        use.start = static_cast<const uint8_t*>(pointer) - mArrays.base(slot);
+    }
+    // An element size of 0 (a type this code does not know) counts as no data.
+    if (!use.element) use = ArrayUse{};
+    mUses.push_back(use);
+}
+
+bool ReplaySink::queryArrays()
+{
+    mUses.clear();
+    struct Fixed {
+        GLenum cap, size, type, stride, buffer, pointer;
+        int count; // components when the array has no size query
+    };
+    static constexpr Fixed kFixed[] = {
+        {GL_VERTEX_ARRAY, GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE,
+         GL_VERTEX_ARRAY_BUFFER_BINDING, GL_VERTEX_ARRAY_POINTER, 0},
+        {GL_NORMAL_ARRAY, 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE,
+         GL_NORMAL_ARRAY_BUFFER_BINDING, GL_NORMAL_ARRAY_POINTER, 3},
+        {GL_COLOR_ARRAY, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE,
+         GL_COLOR_ARRAY_BUFFER_BINDING, GL_COLOR_ARRAY_POINTER, 0},
+        {GL_SECONDARY_COLOR_ARRAY, GL_SECONDARY_COLOR_ARRAY_SIZE, GL_SECONDARY_COLOR_ARRAY_TYPE,
+         GL_SECONDARY_COLOR_ARRAY_STRIDE, GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING,
+         GL_SECONDARY_COLOR_ARRAY_POINTER, 0},
+        {GL_FOG_COORD_ARRAY, 0, GL_FOG_COORD_ARRAY_TYPE, GL_FOG_COORD_ARRAY_STRIDE,
+         GL_FOG_COORD_ARRAY_BUFFER_BINDING, GL_FOG_COORD_ARRAY_POINTER, 1},
+        {GL_INDEX_ARRAY, 0, GL_INDEX_ARRAY_TYPE, GL_INDEX_ARRAY_STRIDE,
+         GL_INDEX_ARRAY_BUFFER_BINDING, GL_INDEX_ARRAY_POINTER, 1},
+        {GL_EDGE_FLAG_ARRAY, 0, 0, GL_EDGE_FLAG_ARRAY_STRIDE, GL_EDGE_FLAG_ARRAY_BUFFER_BINDING,
+         GL_EDGE_FLAG_ARRAY_POINTER, 1},
+    };
+    auto addFixed = [&](const Fixed& f) {
+        if (!gRealGl.glIsEnabled(f.cap)) return;
+        const GLenum type = f.type ? GLenum(getInt(f.type)) : GL_UNSIGNED_BYTE;
+        void* pointer = nullptr;
+        gRealGl.glGetPointerv(f.pointer, &pointer);
+        addArray(f.size ? getInt(f.size) : f.count, type, getInt(f.stride),
+                 GLuint(getInt(f.buffer)), pointer, f.size == 0, f.count);
+    };
+    for (const Fixed& f : kFixed)
+        addFixed(f);
+    const GLint units = std::clamp(getInt(GL_MAX_TEXTURE_COORDS), 1, 32);
+    const GLint active = getInt(GL_CLIENT_ACTIVE_TEXTURE);
+    for (GLint unit = 0; unit < units; ++unit) {
+        gRealGl.glClientActiveTexture(GL_TEXTURE0 + unit);
+        addFixed({GL_TEXTURE_COORD_ARRAY, GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
+                  GL_TEXTURE_COORD_ARRAY_STRIDE, GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
+                  GL_TEXTURE_COORD_ARRAY_POINTER, 0});
+    }
+    gRealGl.glClientActiveTexture(GLenum(active));
+    const GLint attribs = std::clamp(getInt(GL_MAX_VERTEX_ATTRIBS), 0, 32);
+    for (GLint i = 0; i < attribs; ++i) {
+        GLint enabled = 0, size = 4, type = GL_FLOAT, stride = 0, buffer = 0;
+        gRealGl.glGetVertexAttribiv(GLuint(i), GL_VERTEX_ATTRIB_ARRAY_ENABLED, &enabled);
+        if (!enabled) continue;
+        gRealGl.glGetVertexAttribiv(GLuint(i), GL_VERTEX_ATTRIB_ARRAY_SIZE, &size);
+        gRealGl.glGetVertexAttribiv(GLuint(i), GL_VERTEX_ATTRIB_ARRAY_TYPE, &type);
+        gRealGl.glGetVertexAttribiv(GLuint(i), GL_VERTEX_ATTRIB_ARRAY_STRIDE, &stride);
+        gRealGl.glGetVertexAttribiv(GLuint(i), GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &buffer);
+        void* pointer = nullptr;
+        gRealGl.glGetVertexAttribPointerv(GLuint(i), GL_VERTEX_ATTRIB_ARRAY_POINTER, &pointer);
+        addArray(size, GLenum(type), stride, GLuint(buffer), pointer, false, 0);
+    }
+    mUsesValid = true;
+    return true;
+}
+
+uint64_t ReplaySink::readableVertices(bool reserved) const
+{
+    uint64_t n = kNoArrays;
+    for (const ArrayUse& a : mUses) {
+        uint64_t size =
+            a.slot >= 0 ? (reserved ? ShadowArrays::kReserve : mArrays.size(a.slot)) : a.bufferSize;
+        uint64_t count = size >= a.start && size - a.start >= a.element && a.element
+                             ? (size - a.start - a.element) / a.stride + 1
+                             : 0;
+        n = std::min(n, count);
+    }
+    return n;
+}
+
+bool ReplaySink::checkVertices(const char* call, uint64_t lo, uint64_t hi, bool reserved)
+{
+    if (!mUsesValid) queryArrays();
+    const uint64_t readable = readableVertices(reserved);
+    if (hi > readable) {
+        return refuse(std::string(call) + " reads vertices " + std::to_string(lo) + ".." +
+                      std::to_string(hi - 1) + " of arrays holding " + std::to_string(readable));
+    }
+    return true;
+}
+
+bool ReplaySink::chargeWork(uint64_t work)
+{
+    mTotalWork = satAdd(mTotalWork, work);
+    if (mLimits.totalWork && mTotalWork > mLimits.totalWork)
+        return refuse("the replay's work exceeds its limit");
+    return true;
+}
+
+bool ReplaySink::chargeBytes(uint64_t bytes)
+{
+    mTotalBytes = satAdd(mTotalBytes, bytes);
+    if (mLimits.totalBytes && mTotalBytes > mLimits.totalBytes)
+        return refuse("the replay's textures and buffers exceed their limit");
+    return true;
+}
+
+bool ReplaySink::checkImage(uint16_t opcode, const Image& image, GLenum format, GLenum type,
+                            GLsizei width, GLsizei height, GLsizei depth)
+{
+    if (!idle()) return true; // the driver refuses pixel calls between glBegin and glEnd
+    const char* name = opcodeName(opcode);
+    const bool texImage =
+        opcode == op::glTexImage1D || opcode == op::glTexImage2D || opcode == op::glTexImage3D;
+    if (width <= 0 || height <= 0 || depth <= 0) return true; // nothing to read or allocate
+    if (texImage) {
+        const uint64_t texels = uint64_t(width) * uint64_t(height) * uint64_t(depth);
+        if (texels > mLimits.texels)
+            return refuse(std::string(name) + " of " + std::to_string(texels) + " texels");
+        if (!chargeBytes(texels * 16)) return false;
+    }
+    UnpackState unpack;
+    unpack.alignment = getInt(GL_UNPACK_ALIGNMENT);
+    unpack.rowLength = getInt(GL_UNPACK_ROW_LENGTH);
+    unpack.imageHeight = getInt(GL_UNPACK_IMAGE_HEIGHT);
+    unpack.skipPixels = getInt(GL_UNPACK_SKIP_PIXELS);
+    unpack.skipRows = getInt(GL_UNPACK_SKIP_ROWS);
+    unpack.skipImages = getInt(GL_UNPACK_SKIP_IMAGES);
+    const uint64_t need = imageBytes(format, type, width, height, depth, unpack);
+    const GLuint pbo = GLuint(getInt(GL_PIXEL_UNPACK_BUFFER_BINDING));
+    switch (image.mode) {
+    case Image::kNull:
+        if (pbo || texImage) return true; // offset 0 (checked by the driver), or no data
+        return refuse(std::string(name) + " without pixels");
+    case Image::kBytes:
+        if (pbo) return refuse(std::string(name) + " with pixels and a pixel-unpack buffer");
+        if (!need) return refuse(std::string(name) + " with a pixel layout nprgl cannot size");
+        if (need > image.size) {
+            return refuse(std::string(name) + " reads " + std::to_string(need) +
+                          " bytes of pixels from " + std::to_string(image.size));
+        }
+        return true;
+    case Image::kOffset:
+        if (!pbo) return refuse(std::string(name) + " with an offset and no pixel-unpack buffer");
+        if (need && (image.offset > UINT64_MAX - need ||
+                     image.offset + need > bufferSize(GL_PIXEL_UNPACK_BUFFER, pbo))) {
+            return refuse(std::string(name) + " reads past its pixel-unpack buffer");
+        }
+        return true;
+    }
+    return true;
+}
+
+bool ReplaySink::checkUnpacked(uint16_t opcode, const Image& image, size_t size)
+{
+    if (!idle() || size == 0 || size > (size_t(1) << 48)) return true; // the driver refuses
+    const std::string name = opcodeName(opcode);
+    const GLuint pbo = GLuint(getInt(GL_PIXEL_UNPACK_BUFFER_BINDING));
+    switch (image.mode) {
+    case Image::kNull: return true; // no data, or offset 0 (checked by the driver)
+    case Image::kBytes:
+        if (pbo) return refuse(name + " with data and a pixel-unpack buffer");
+        if (size > image.size) {
+            return refuse(name + " reads " + std::to_string(size) + " bytes of data from " +
+                          std::to_string(image.size));
+        }
+        return true;
+    case Image::kOffset:
+        if (!pbo) return refuse(name + " with an offset and no pixel-unpack buffer");
+        if (image.offset > UINT64_MAX - size ||
+            image.offset + size > bufferSize(GL_PIXEL_UNPACK_BUFFER, pbo)) {
+            return refuse(name + " reads past its pixel-unpack buffer");
+        }
+        return true;
+    }
+    return true;
+}
+
+bool ReplaySink::check_glDrawArrays(GLenum, GLint first, GLsizei count)
+{
+    if (first < 0 || count <= 0 || !idle()) return true; // the driver refuses or draws nothing
+    if (uint64_t(count) > mLimits.drawVertices)
+        return refuse("glDrawArrays of " + std::to_string(count) + " vertices");
+    mWork = 1 + uint64_t(count);
+    return chargeWork(mWork) &&
+           checkVertices("glDrawArrays", uint64_t(first), uint64_t(first) + uint64_t(count));
+}
+
+bool ReplaySink::checkIndices(const char* call, GLsizei count, GLenum type, const Image& image,
+                              const void* indices, uint64_t& maxIndex)
+{
+    const uint64_t width = indexBytes(type);
+    const uint64_t bytes = uint64_t(count) * width;
+    const GLuint buffer = GLuint(getInt(GL_ELEMENT_ARRAY_BUFFER_BINDING));
+    const uint8_t* data = nullptr;
+    switch (image.mode) {
+    case Image::kNull:
+    case Image::kOffset: {
+        if (!buffer) return refuse(std::string(call) + " without indices");
+        const uint64_t offset = image.mode == Image::kOffset ? image.offset : 0;
+        if (offset > UINT64_MAX - bytes ||
+            offset + bytes > bufferSize(GL_ELEMENT_ARRAY_BUFFER, buffer)) {
+            return refuse(std::string(call) + " reads past its element buffer");
+        }
+        mIndices.resize(bytes);
+        gRealGl.glGetBufferSubData(GL_ELEMENT_ARRAY_BUFFER, GLintptr(offset), GLsizeiptr(bytes),
+                                   mIndices.data());
+        data = mIndices.data();
+        break;
+    }
+    case Image::kBytes:
+        if (buffer) return refuse(std::string(call) + " with indices and an element buffer");
+        if (bytes > image.size) {
+            return refuse(std::string(call) + " reads " + std::to_string(bytes) +
+                          " bytes of indices from " + std::to_string(image.size));
+        }
+        data = static_cast<const uint8_t*>(indices);
+        break;
+    }
+    maxIndex = 0;
+    for (uint64_t i = 0; i < uint64_t(count); ++i) {
+        uint64_t index = width == 1   ? data[i]
+                         : width == 2 ? reinterpret_cast<const uint16_t*>(data)[i]
+                                      : reinterpret_cast<const uint32_t*>(data)[i];
+        maxIndex = std::max(maxIndex, index);
+    }
+    return true;
+}
+
+bool ReplaySink::check_glDrawElements(GLenum, GLsizei count, GLenum type, const void* indices,
+                                      const Image& image)
+{
+    if (count <= 0 || !indexBytes(type) || !idle()) return true;
+    if (uint64_t(count) > mLimits.drawVertices)
+        return refuse("glDrawElements of " + std::to_string(count) + " indices");
+    mWork = 1 + uint64_t(count);
+    if (!chargeWork(mWork)) return false;
+    uint64_t maxIndex = 0;
+    if (!checkIndices("glDrawElements", count, type, image, indices, maxIndex)) return false;
+    return checkVertices("glDrawElements", 0, maxIndex + 1);
+}
+
+bool ReplaySink::check_glDrawRangeElements(GLenum, GLuint start, GLuint end, GLsizei count,
+                                           GLenum type, const void* indices, const Image& image)
+{
+    if (count <= 0 || end < start || !indexBytes(type) || !idle()) return true;
+    if (uint64_t(count) > mLimits.drawVertices)
+        return refuse("glDrawRangeElements of " + std::to_string(count) + " indices");
+    mWork = 1 + uint64_t(count);
+    if (!chargeWork(mWork)) return false;
+    uint64_t maxIndex = 0;
+    if (!checkIndices("glDrawRangeElements", count, type, image, indices, maxIndex)) return false;
+    // The driver may read the whole declared range: it must not fault; the indices must
+    // find data.
+    return checkVertices("glDrawRangeElements", start, uint64_t(end) + 1, true) &&
+           checkVertices("glDrawRangeElements", 0, maxIndex + 1);
+}
+
+bool ReplaySink::check_glMultiDrawArrays(GLenum, const GLint* first, const GLsizei* count,
+                                         GLsizei drawcount)
+{
+    if (drawcount <= 0 || !idle()) return true;
+    if (!first || !count) return refuse("glMultiDrawArrays without its firsts and counts");
+    uint64_t total = 0, hi = 0;
+    for (GLsizei i = 0; i < drawcount; ++i) {
+        if (first[i] < 0 || count[i] <= 0) continue;
+        total += uint64_t(count[i]);
+        hi = std::max(hi, uint64_t(first[i]) + uint64_t(count[i]));
+    }
+    if (total > mLimits.drawVertices)
+        return refuse("glMultiDrawArrays of " + std::to_string(total) + " vertices");
+    mWork = 1 + total;
+    return chargeWork(mWork) && (hi == 0 || checkVertices("glMultiDrawArrays", 0, hi));
+}
+
+bool ReplaySink::check_glArrayElement(GLint i)
+{
+    if (i < 0) return true;
+    // Between glBegin and glEnd the driver answers no query: the arrays asked at glBegin
+    // hold unless a call since may have changed them.
+    if (!mUsesValid && idle()) queryArrays();
+    if (!mUsesValid) return refuse("glArrayElement after its arrays changed inside glBegin");
+    return checkVertices("glArrayElement", uint64_t(i), uint64_t(i) + 1);
+}
+
+bool ReplaySink::check_glNewList(GLuint list, GLenum mode)
+{
+    mLists.newList(list, mode);
+    return true;
+}
+
+bool ReplaySink::check_glEndList()
+{
+    mLists.endList();
+    return chargeWork(mLists.takeOverhead());
+}
+
+bool ReplaySink::check_glCallList(GLuint list)
+{
+    mLists.addCall(list);
+    if (!mLists.executing()) return true;
+    const uint64_t cost = mLists.cost(list);
+    if (cost > mLimits.listWork)
+        return refuse("glCallList(" + std::to_string(list) + ") would run " + std::to_string(cost) +
+                      " calls and vertices");
+    return chargeWork(cost) && chargeWork(mLists.takeOverhead());
+}
+
+bool ReplaySink::check_glCallLists(GLsizei n, GLenum, const uint8_t*)
+{
+    if (n <= 0) return true;
+    mLists.addCalls(uint64_t(n));
+    if (!mLists.executing()) return true;
+    const uint64_t cost = mLists.costOfCalls(uint64_t(n));
+    if (cost > mLimits.listWork)
+        return refuse("glCallLists of " + std::to_string(n) + " lists could run " +
+                      std::to_string(cost) + " calls and vertices");
+    return chargeWork(cost) && chargeWork(mLists.takeOverhead());
+}
+
+bool ReplaySink::check_glListBase(GLuint)
+{
+    // The budget counts glCallLists in a list as calls of the costliest list whatever the
+    // base, so the base itself needs no following.
+    return true;
+}
+
+bool ReplaySink::check_glDeleteLists(GLuint list, GLsizei range)
+{
+    if (range > 0 && uint64_t(range) > mLimits.names)
+        return refuse("glDeleteLists of " + std::to_string(range) + " lists");
+    if (range > 0) mLists.deleteLists(list, uint64_t(range));
+    return chargeWork(mLists.takeOverhead());
+}
+
+bool ReplaySink::check_glGenLists(GLsizei range)
+{
+    if (range > 0 && uint64_t(range) > mLimits.names)
+        return refuse("glGenLists of " + std::to_string(range) + " lists");
+    return true;
+}
+
+bool ReplaySink::checkNames(GLsizei n, const void*)
+{
+    if (n > 0 && uint64_t(n) > mLimits.names)
+        return refuse(std::string(opcodeName(mOpcode)) + " of " + std::to_string(n) + " names");
+    return true;
+}
+
+bool ReplaySink::check_glEvalMesh1(GLenum, GLint i1, GLint i2)
+{
+    if (i2 < i1) return true;
+    const uint64_t points = uint64_t(int64_t(i2) - i1 + 1);
+    if (points > mLimits.drawVertices)
+        return refuse("glEvalMesh1 of " + std::to_string(points) + " points");
+    mWork = 1 + points;
+    return chargeWork(mWork);
+}
+
+bool ReplaySink::check_glEvalMesh2(GLenum, GLint i1, GLint i2, GLint j1, GLint j2)
+{
+    if (i2 < i1 || j2 < j1) return true;
+    const uint64_t rows = uint64_t(int64_t(i2) - i1 + 1), cols = uint64_t(int64_t(j2) - j1 + 1);
+    if (rows > mLimits.drawVertices || cols > mLimits.drawVertices ||
+        rows * cols > mLimits.drawVertices) {
+        return refuse("glEvalMesh2 of " + std::to_string(rows) + "x" + std::to_string(cols) +
+                      " points");
+    }
+    mWork = 1 + rows * cols;
+    return chargeWork(mWork);
+}
+
+bool ReplaySink::check_glBufferData(GLenum, GLsizeiptr size, const uint8_t*, GLenum)
+{
+    if (size <= 0) return true;
+    if (uint64_t(size) > mLimits.bufferBytes)
+        return refuse("glBufferData of " + std::to_string(size) + " bytes");
+    return chargeBytes(uint64_t(size));
+}
+
+bool ReplaySink::check_glCopyTexImage1D(GLenum, GLint, GLenum, GLint, GLint, GLsizei width, GLint)
+{
+    return check_glCopyTexImage2D(0, 0, 0, 0, 0, width, 1, 0);
+}
+
+bool ReplaySink::check_glCopyTexImage2D(GLenum, GLint, GLenum, GLint, GLint, GLsizei width,
+                                        GLsizei height, GLint)
+{
+    if (width <= 0 || height <= 0) return true;
+    const uint64_t texels = uint64_t(width) * uint64_t(height);
+    if (texels > mLimits.texels)
+        return refuse(std::string(opcodeName(mOpcode)) + " of " + std::to_string(texels) +
+                      " texels");
+    return chargeBytes(texels * 16);
+}
+
+} // namespace nprgl
