@@ -24,7 +24,6 @@ namespace {
 constexpr int kFrames = 3; // the probe's
 constexpr uint8_t kClear[3] = {26, 51, 77};
 
-std::string nprglCommand() { return binDir() + "/nprgl"; }
 
 std::vector<std::string> probe(const std::string& mode, std::vector<std::string> extra = {})
 {
@@ -62,13 +61,6 @@ int differingPixels(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b
         n += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
     }
     return n;
-}
-
-std::string framePng(const std::string& dir, int frame)
-{
-    char name[32];
-    std::snprintf(name, sizeof name, "/frame_%010d.png", frame);
-    return dir + name;
 }
 
 class ArbBuffers : public ::testing::TestWithParam<std::string> {};

@@ -21,7 +21,6 @@ namespace {
 
 constexpr int kFrames = 4;
 
-std::string nprglCommand() { return binDir() + "/nprgl"; }
 std::string demoCharacter() { return binDir() + "/demo_character"; }
 
 std::string livePng(const std::string& dir, int frame)

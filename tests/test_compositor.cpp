@@ -21,16 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string nprglCommand() { return binDir() + "/nprgl"; }
-std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
 std::string source(const std::string& path) { return std::string(NPRGL_TEST_SOURCE_DIR) + path; }
-std::string framePng(const std::string& dir, int frame)
-{
-    char name[32];
-    std::snprintf(name, sizeof name, "/frame_%010d.png", frame);
-    return dir + name;
-}
-
 struct GoldenCase {
     std::string fixture, style;
     int frame = 0;

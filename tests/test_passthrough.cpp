@@ -18,8 +18,6 @@ namespace {
 
 constexpr int kFrames = 4;
 
-std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
-std::string nprglCommand() { return binDir() + "/nprgl"; }
 
 bool haveDisplay()
 {

@@ -24,19 +24,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string nprglCommand() { return binDir() + "/nprgl"; }
-std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
 std::string fixture(const std::string& name)
 {
     return std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
 }
-std::string framePng(const std::string& dir, int frame)
-{
-    char name[32];
-    std::snprintf(name, sizeof name, "/frame_%010d.png", frame);
-    return dir + name;
-}
-
 bool haveDisplay()
 {
     const char* d = std::getenv("DISPLAY");
@@ -509,7 +500,7 @@ TEST(Record, AnExecutedOrSpawnedChildWritesItsOwnFile)
                 command ? runProcess({nprglCommand(), "record", "--style", "none", "-o", file,
                                       "--", binDir() + "/probe_fork", mode})
                         : runProcess({binDir() + "/probe_fork", mode},
-                                     {{"LD_PRELOAD", libPath()}, {"NPRGL_RECORD", file}});
+                                     {{"LD_PRELOAD", preloadValue()}, {"NPRGL_RECORD", file}});
             ASSERT_EQ(r.exitCode, 0) << r.err;
             EXPECT_NE(r.out.find("child status=0"), std::string::npos) << r.out;
             std::string pid = childPid(r.out);

@@ -33,7 +33,6 @@ const std::vector<std::string> kStyles = {"none",           "toon",           "t
                                           "textured+edges", "toon+paper+edges",
                                           "paper"};
 
-std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
 
 bool haveDisplay()
 {

@@ -21,15 +21,7 @@ namespace {
 
 constexpr int kFrames = 4;
 
-std::string nprglCommand() { return binDir() + "/nprgl"; }
 std::string probe() { return binDir() + "/probe_glx_threads"; }
-
-std::string framePng(const std::string& dir, int frame)
-{
-    char name[32];
-    std::snprintf(name, sizeof name, "/frame_%010d.png", frame);
-    return dir + name;
-}
 
 void requireDisplay()
 {

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -105,6 +106,17 @@ ProcessResult runUntil(const std::vector<std::string>& argv,
 std::string binDir() { return NPRGL_TEST_BIN_DIR; }
 
 std::string libPath() { return NPRGL_TEST_LIB_PATH; }
+
+std::string nprglCommand() { return binDir() + "/nprgl"; }
+
+std::string demo(const std::string& name) { return binDir() + "/demo_" + name; }
+
+std::string framePng(const std::string& dir, int frame)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%010d.png", frame);
+    return dir + name;
+}
 
 std::string preloadValue()
 {

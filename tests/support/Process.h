@@ -43,6 +43,10 @@ std::string libPath();
 // The LD_PRELOAD value that loads libnprgl.so into an uninstrumented program: the library,
 // behind the sanitizer runtime in a sanitizer build (the runtime must be loaded first).
 std::string preloadValue();
+// The nprgl command, a demo app, and the PNG `nprgl replay -o DIR` writes for a frame.
+std::string nprglCommand();
+std::string demo(const std::string& name);
+std::string framePng(const std::string& dir, int frame);
 // A fresh empty directory under the test's temporary area.
 std::string freshDir(const std::string& name);
 
