@@ -2,6 +2,7 @@
 // become paper, that the scene and the ink keep theirs, and that the page stays inside the
 // viewport. Pictures go to /tmp/paper/ for looking at them.
 
+#include "tests/support/Process.h"
 #include "tests/support/StyleHarness.h"
 
 #include "styles/StyleChain.h"
@@ -360,11 +361,12 @@ TEST(Paper, TexturePngTilesTheBackground)
                                                uint8_t(a ? 150 : 30), 255});
         }
     }
-    std::filesystem::create_directories("/tmp/paper");
+    // A directory of this run's own: a PNG the style reads back must be ours.
+    const std::string tilePath = freshDir("paper_tile") + "/stripes_tile.png";
     std::string error;
-    ASSERT_TRUE(tile.write("/tmp/paper/stripes_tile.png", error)) << error;
+    ASSERT_TRUE(tile.write(tilePath, error)) << error;
     const PngImage image = render(harness, scene, "toon+paper",
-                                  "paper.grain=0,paper.texture_png=/tmp/paper/stripes_tile.png");
+                                  "paper.grain=0,paper.texture_png=" + tilePath);
     save(image, "texture_png");
     std::set<Rgb> colours;
     for (int x = 0; x < 20; ++x) colours.insert(pixel(image, x, 2));

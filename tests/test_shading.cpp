@@ -4,6 +4,7 @@
 #include "styles/textures/HalftoneScreens.h"
 #include "styles/textures/HatchTexture.h"
 #include "styles/textures/StippleTexture.h"
+#include "tests/support/Process.h"
 #include "tests/support/StyleHarness.h"
 
 #include <gtest/gtest.h>
@@ -407,8 +408,8 @@ TEST_F(Shading, HalftoneReadsAPngScreen)
             p[3] = 255;
         }
     }
-    std::filesystem::create_directories("/tmp/shading");
-    const std::string path = "/tmp/shading/stripes_screen.png";
+    // A directory of this run's own: a PNG the style reads back must be ours.
+    const std::string path = freshDir("shading_screen") + "/stripes_screen.png";
     std::string error;
     ASSERT_TRUE(screen.write(path, error)) << error;
     const PngImage image =

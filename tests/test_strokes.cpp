@@ -11,6 +11,7 @@
 #include "styles/strokes/StrokeBuilder.h"
 #include "styles/strokes/StrokeSimplifier.h"
 #include "styles/strokes/StrokeTexture.h"
+#include "tests/support/Process.h"
 #include "tests/support/StyleHarness.h"
 
 #include <gtest/gtest.h>
@@ -558,8 +559,8 @@ TEST(StrokeRendering, MissingTextureFileFallsBackWithOneError)
     bar.height = 8;
     bar.rgba.assign(size_t(64) * 8 * 4, 0);
     for (size_t i = 0; i < bar.rgba.size(); i += 4) bar.rgba[i + 3] = 255;
-    const std::string path = "/tmp/strokes/solid_bar.png";
-    ::mkdir("/tmp/strokes", 0755);
+    // A directory of this run's own: a PNG the style reads back must be ours.
+    const std::string path = freshDir("strokes_bar") + "/solid_bar.png";
     ASSERT_TRUE(bar.write(path, error)) << error;
     PngImage custom;
     ASSERT_TRUE(harness.render(scene, "strokes", "strokes.texture_file=" + path, custom, error))
