@@ -77,6 +77,8 @@ echo "fuzz: $runs runs of fuzz_capture_reader"
 # detection would only report the driver: it is off for this target, per input and at exit
 # (the reader's keeps it).
 export ASAN_OPTIONS=detect_leaks=0
+# One context per input: the per-context "style ..." line would flood the log.
+export NPRGL_LOG_LEVEL=warn
 replay=("$out/cmake/bin/fuzz_replay" -seed=1 -max_len=65536 -timeout=60 -rss_limit_mb=2048
     -malloc_limit_mb=1100 -detect_leaks=0 -dict="$out/replay.dict" -artifact_prefix="$out/"
     -print_final_stats=1 "$@" "$out/replay-corpus" "$out/replay-seeds")
