@@ -64,6 +64,8 @@ std::string checkMetadata(const Metadata& meta)
         if (why.empty()) why = checkString(key, "an extra key");
         if (why.empty()) why = checkString(value, "an extra value");
     }
+    for (const std::string& name : meta.opcodeNames)
+        if (why.empty()) why = checkString(name, "an opcode name");
     return why;
 }
 

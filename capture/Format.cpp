@@ -125,6 +125,8 @@ void encodeMetadata(const Metadata& meta, std::vector<uint8_t>& out)
         w.string(key);
         w.string(value);
     }
+    w.u32(uint32_t(meta.opcodeNames.size()));
+    for (const std::string& name : meta.opcodeNames) w.string(name);
 }
 
 bool decodeMetadata(ByteReader& in, Metadata& meta)
@@ -149,6 +151,14 @@ bool decodeMetadata(ByteReader& in, Metadata& meta)
             std::string key = in.string(kMaxStringSize, "extra key");
             std::string value = in.string(kMaxStringSize, "extra value");
             m.extra.emplace_back(std::move(key), std::move(value));
+        }
+    }
+    // Version 1 ends here (a reader ignores what it does not know after the known fields).
+    if (in.ok() && in.remaining() > 0) {
+        uint32_t names = in.u32();
+        if (in.ok() && countFits(in, names, 4, "opcode name")) {
+            for (uint32_t i = 0; i < names && in.ok(); ++i)
+                m.opcodeNames.push_back(in.string(kMaxStringSize, "opcode name"));
         }
     }
     if (!in.ok()) return false;

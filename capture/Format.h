@@ -14,7 +14,7 @@
 namespace nprgl::capture {
 
 constexpr char kMagic[8] = {'N', 'P', 'R', 'G', 'L', 'C', 'A', 'P'};
-constexpr uint32_t kFormatVersion = 1;
+constexpr uint32_t kFormatVersion = 2; // 2: META ends with the opcode name table
 constexpr uint64_t kFileHeaderSize = 16; // magic, u32 version, u32 flags (0)
 
 constexpr uint32_t fourcc(const char (&s)[5])

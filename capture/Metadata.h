@@ -17,6 +17,10 @@ struct Metadata {
     uint32_t pid = 0;
     uint64_t startTimeUnix = 0;
     std::vector<std::pair<std::string, std::string>> extra; // free-form key/values
+    // The GL command behind each opcode of the file's Stream, in opcode order (version 2 on),
+    // so a reader built from another gl.xml can map the file's numbers onto its own. Empty in
+    // version-1 files, whose numbering every later reader keeps as its own first opcodes.
+    std::vector<std::string> opcodeNames;
 
     bool operator==(const Metadata&) const = default;
 };

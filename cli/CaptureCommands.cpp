@@ -6,6 +6,7 @@
 #include "shim/Replayer.h"
 #include "shim/StateTracker.h"
 #include "stream/CallPrinter.h"
+#include "stream/OpcodeMap.h"
 #include "styles/Presets.h"
 #include "styles/StyleSettings.h"
 
@@ -74,6 +75,7 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
     capture::CaptureReader reader;
     if (!reader.open(file, error)) return fail(error);
     CaptureBlobs blobs(reader);
+    const OpcodeMap opcodes(reader.metadata().opcodeNames);
     std::vector<uint8_t> calls;
     const auto& list = reader.frames();
     for (size_t i = 0; i < list.size(); ++i) {
@@ -81,7 +83,8 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
         if (!reader.readFrame(i, calls, error)) return fail(error);
         std::string out = "== context " + std::to_string(list[i].contextId) + " frame " +
                           std::to_string(list[i].frameNumber) + " ==\n";
-        bool ok = CallPrinter::printFrame(calls.data(), calls.size(), &blobs, grep, out, error);
+        bool ok = CallPrinter::printFrame(calls.data(), calls.size(), &blobs, &opcodes, grep, out,
+                                          error);
         std::fwrite(out.data(), 1, out.size(), stdout);
         if (!ok) {
             return fail(file + ": frame " + std::to_string(list[i].frameNumber) + " at " +
@@ -110,6 +113,14 @@ int infoCommand(const std::string& file)
 
     std::map<uint32_t, uint64_t> perContext;
     std::map<std::string, uint64_t> calls;
+    if (!m.opcodeNames.empty()) {
+        const OpcodeMap opcodes(m.opcodeNames);
+        std::printf("commands:    %zu named in the file%s\n", m.opcodeNames.size(),
+                    opcodes.unknownCount() == 0 ? ""
+                        : (", " + std::to_string(opcodes.unknownCount()) +
+                           " unknown to this nprgl").c_str());
+    }
+    const OpcodeMap opcodes(m.opcodeNames);
     CaptureBlobs blobs(reader);
     std::vector<uint8_t> data;
     uint64_t rawBytes = 0;
@@ -119,7 +130,8 @@ int infoCommand(const std::string& file)
         rawBytes += list[i].rawSize;
         if (!reader.readFrame(i, data, error)) return fail(error);
         std::string text;
-        if (!CallPrinter::printFrame(data.data(), data.size(), &blobs, "", text, error)) {
+        if (!CallPrinter::printFrame(data.data(), data.size(), &blobs, &opcodes, "", text,
+                                     error)) {
             return fail(file + ": frame " + std::to_string(list[i].frameNumber) + ": " + error);
         }
         for (size_t pos = 0; pos < text.size();) {
@@ -169,13 +181,14 @@ int exportCommand(const std::string& file, uint64_t frame, const std::string& ou
     const auto& frames = reader.frames();
     uint32_t ctx = context ? context : (frames.empty() ? 1 : frames.front().contextId);
     CaptureBlobs blobs(reader);
+    const OpcodeMap opcodes(reader.metadata().opcodeNames);
     StateTracker tracker;
     std::vector<uint8_t> calls;
     // Every earlier frame runs too: it builds the lists, buffers and arrays frame N uses.
     for (size_t i = 0; i < frames.size(); ++i) {
         if (frames[i].contextId != ctx) continue;
         if (!reader.readFrame(i, calls, error)) return fail(error);
-        if (!tracker.runFrame(calls.data(), calls.size(), &blobs, error)) {
+        if (!tracker.runFrame(calls.data(), calls.size(), &blobs, error, &opcodes)) {
             return fail(file + ": frame " + std::to_string(frames[i].frameNumber) + " at " +
                         std::to_string(frames[i].offset) + ": " + error);
         }

@@ -2,7 +2,9 @@
 
 #include "common/Log.h"
 #include "shim/Context.h"
+#include "shim/RealGl.h"
 #include "shim/Recorder.h"
+#include "stream/Opcodes.h"
 
 #include <cstdlib>
 #include <ctime>
@@ -117,7 +119,21 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
     meta.glVersion = ctx.version();
     meta.width = ctx.drawableWidth();
     meta.height = ctx.drawableHeight();
+    if (meta.width <= 0 || meta.height <= 0) {
+        // No drawable to ask (an EGL surfaceless context renders into its own framebuffers):
+        // the viewport the program set is the size it draws at. Called from a GL call of
+        // the recording thread, so its context is current.
+        GLint viewport[4] = {0, 0, 0, 0};
+        gRealGl.glGetIntegerv(GL_VIEWPORT, viewport);
+        meta.width = viewport[2];
+        meta.height = viewport[3];
+    }
     meta.pid = uint32_t(getpid());
+    // The names behind the opcodes a Stream can hold: up to the last recorded command.
+    uint16_t recorded = 0;
+    for (uint16_t i = 0; i < op::kCount; ++i)
+        if (kOpcodeRecorded[i]) recorded = uint16_t(i + 1);
+    meta.opcodeNames.assign(kOpcodeNames, kOpcodeNames + recorded);
     meta.startTimeUnix = uint64_t(std::time(nullptr));
     if (!mFrames.empty())
         meta.extra.emplace_back("recorded_frames", std::getenv("NPRGL_RECORD_FRAMES"));

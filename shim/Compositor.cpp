@@ -106,6 +106,26 @@ NPRGL_BARRIER(void, glFlush, (), ())
 NPRGL_BARRIER(void, glDrawBuffer, (GLenum mode), (mode))
 NPRGL_BARRIER(void, glDrawBuffers, (GLsizei n, const GLenum* bufs), (n, bufs))
 NPRGL_BARRIER(void, glViewport, (GLint x, GLint y, GLsizei w, GLsizei h), (x, y, w, h))
+// Render to texture: what is held for a framebuffer is drawn before the program changes
+// which framebuffer is bound or what it is attached to, builds mipmaps from it or blits it.
+NPRGL_BARRIER(void, glBindFramebuffer, (GLenum target, GLuint fb), (target, fb))
+NPRGL_BARRIER(void, glBindFramebufferEXT, (GLenum target, GLuint fb), (target, fb))
+NPRGL_BARRIER(void, glFramebufferTexture1D,
+              (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l), (t, a, tt, tex, l))
+NPRGL_BARRIER(void, glFramebufferTexture2D,
+              (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l), (t, a, tt, tex, l))
+NPRGL_BARRIER(void, glFramebufferTexture3D,
+              (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l, GLint z),
+              (t, a, tt, tex, l, z))
+NPRGL_BARRIER(void, glFramebufferTextureLayer,
+              (GLenum t, GLenum a, GLuint tex, GLint l, GLint layer), (t, a, tex, l, layer))
+NPRGL_BARRIER(void, glFramebufferRenderbuffer, (GLenum t, GLenum a, GLenum rt, GLuint rb),
+              (t, a, rt, rb))
+NPRGL_BARRIER(void, glGenerateMipmap, (GLenum target), (target))
+NPRGL_BARRIER(void, glBlitFramebuffer,
+              (GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLint dy0, GLint dx1,
+               GLint dy1, GLbitfield mask, GLenum filter),
+              (sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, filter))
 #undef NPRGL_BARRIER
 
 GLenum APIENTRY c_glGetError() { return C().getError(); }
@@ -163,6 +183,15 @@ void Compositor::install(GlDispatch& d)
     d.glDrawBuffer = c_glDrawBuffer;
     d.glDrawBuffers = c_glDrawBuffers;
     d.glViewport = c_glViewport;
+    d.glBindFramebuffer = c_glBindFramebuffer;
+    d.glBindFramebufferEXT = c_glBindFramebufferEXT;
+    d.glFramebufferTexture1D = c_glFramebufferTexture1D;
+    d.glFramebufferTexture2D = c_glFramebufferTexture2D;
+    d.glFramebufferTexture3D = c_glFramebufferTexture3D;
+    d.glFramebufferTextureLayer = c_glFramebufferTextureLayer;
+    d.glFramebufferRenderbuffer = c_glFramebufferRenderbuffer;
+    d.glGenerateMipmap = c_glGenerateMipmap;
+    d.glBlitFramebuffer = c_glBlitFramebuffer;
     d.glGetError = c_glGetError;
     d.glRenderMode = c_glRenderMode;
 }

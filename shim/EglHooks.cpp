@@ -8,6 +8,21 @@
 
 namespace nprgl::hooks {
 
+namespace {
+
+// eglQuerySurface is not hooked; it is fetched from the driver once.
+void surfaceSize(EGLDisplay dpy, EGLSurface surface, EGLint& width, EGLint& height)
+{
+    using QuerySurface = EGLBoolean (*)(EGLDisplay, EGLSurface, EGLint, EGLint*);
+    static auto query = reinterpret_cast<QuerySurface>(realProcAddress("eglQuerySurface"));
+    width = height = 0;
+    if (!query || surface == EGL_NO_SURFACE) return;
+    if (!query(dpy, surface, EGL_WIDTH, &width) || !query(dpy, surface, EGL_HEIGHT, &height))
+        width = height = 0;
+}
+
+} // namespace
+
 EGLBoolean eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLContext ctx)
 {
     if (Context* current = tThread.context) current->release();
@@ -15,6 +30,13 @@ EGLBoolean eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLC
     if (ok) {
         ContextRegistry::instance().makeCurrent(WindowSystem::Egl,
                                                 ctx == EGL_NO_CONTEXT ? nullptr : ctx);
+        // The size goes into capture files (a surfaceless context has none: the capture
+        // takes the viewport instead, see CaptureSession).
+        if (Context* c = tThread.context; c && c->recorder()) {
+            EGLint width = 0, height = 0;
+            surfaceSize(dpy, draw, width, height);
+            c->setDrawableSize(width, height);
+        }
     }
     return ok;
 }
@@ -30,13 +52,8 @@ EGLBoolean eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
 {
     Context* ctx = tThread.context;
     if (ctx && ctx->windowSystem() == WindowSystem::Egl && ctx->endFrame()) {
-        using QuerySurface = EGLBoolean (*)(EGLDisplay, EGLSurface, EGLint, EGLint*);
-        static auto query = reinterpret_cast<QuerySurface>(realProcAddress("eglQuerySurface"));
         EGLint width = 0, height = 0;
-        if (query) {
-            query(dpy, surface, EGL_WIDTH, &width);
-            query(dpy, surface, EGL_HEIGHT, &height);
-        }
+        surfaceSize(dpy, surface, width, height);
         ctx->writeScreenshot(width, height);
     }
     return gRealWs.eglSwapBuffers(dpy, surface);

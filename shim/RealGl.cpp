@@ -62,7 +62,7 @@ std::atomic<bool> gResolved{false};
 std::vector<void*> gExtraLibraries; // dlopen'ed privately by the program (RTLD_LOCAL)
 void* gOverrideLibrary = nullptr;
 void* gDefaultLibrary = nullptr;
-bool gGlFound[1024];
+bool gGlFound[4096];
 bool gWsFound[128];
 std::atomic<bool> gMissingReported{false};
 

@@ -54,6 +54,17 @@ Recorder::~Recorder()
 
 const char* opcodeNameOf(size_t opcode) { return opcodeName(uint16_t(opcode)); }
 
+void Recorder::countUncaptured(uint16_t opcode)
+{
+    ++mUncaptured[opcode];
+    readback();
+}
+
+void Recorder::readback()
+{
+    if (Compositor* c = mContext.compositor()) c->barrier();
+}
+
 void Recorder::endFrame(uint64_t frame)
 {
     mWriter.op(op::kFrameEnd);
@@ -97,6 +108,9 @@ void Recorder::learnCaps()
     mCanAskUnpack = caps.es ? caps.atLeast(3, 0) : caps.atLeast(2, 1);
     // Core profiles have no client arrays to read, and always a vertex array object bound.
     mCanAskVertexArray = !caps.es && !caps.core && caps.atLeast(3, 0);
+    // Asking for a capability the context does not have would leave the program a GL error.
+    mCanAskRestart = !caps.es && caps.atLeast(3, 1);
+    mCanAskFixedRestart = caps.es ? caps.atLeast(3, 0) : caps.atLeast(4, 3);
 }
 
 bool Recorder::unpackFollowed(CallWriter& w, const void* pixels)
@@ -262,6 +276,12 @@ bool Recorder::followed(uint16_t opcode, bool elements)
         gRealGl.glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &bound);
         ok = GLuint(bound) == mState.elementBuffer;
     }
+    // With primitive restart on, one index value cuts strips instead of naming a vertex:
+    // neither the array range nor the mesh reconstruction may read it as one.
+    if (ok && elements && mCanAskRestart) ok = !gRealGl.glIsEnabled(GL_PRIMITIVE_RESTART);
+    if (ok && elements && mCanAskFixedRestart) {
+        ok = !gRealGl.glIsEnabled(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    }
     if (!ok) {
         noteUnfollowed(opcode, true);
         // The draw goes to the driver now: what is held is drawn before it.
@@ -273,11 +293,12 @@ bool Recorder::followed(uint16_t opcode, bool elements)
 void Recorder::noteUnfollowed(uint16_t opcode, bool uncaptured)
 {
     ++mUnfollowed[opcode];
-    if (uncaptured) countUncaptured(opcode);
+    if (uncaptured) ++mUncaptured[opcode];
     if (mUnfollowedSaid) return;
     mUnfollowedSaid = true;
     NPRGL_WARN("context %u: %s draws from arrays or indices bound through a call nprgl does not "
-               "follow; such draws go to the driver unrecorded and unstyled",
+               "follow, or with primitive restart; such draws go to the driver unrecorded and "
+               "unstyled",
                mContext.serial(), opcodeNameOf(opcode));
 }
 
@@ -612,9 +633,49 @@ void* Recorder::glMapBuffer(GLenum target, GLenum access)
         GLint size = 0;
         gRealGl.glGetBufferParameteriv(target, GL_BUFFER_SIZE, &size);
         mMappings[target] = Mapping{boundBuffer(target), static_cast<uint8_t*>(p), size_t(size),
-                                    access != GL_READ_ONLY};
+                                    0, access != GL_READ_ONLY, false};
     }
     return p;
+}
+
+void* Recorder::glMapBufferRange(GLenum target, GLintptr offset, GLsizeiptr length,
+                                 GLbitfield access)
+{
+    void* p = gRealGl.glMapBufferRange(target, offset, length, access);
+    if (p && offset >= 0 && length >= 0) {
+        // A persistent mapping is written while the driver draws from it, with no unmap or
+        // flush to say when: nprgl cannot see those writes, and the capture says so.
+        if (access & GL_MAP_PERSISTENT_BIT) countUncaptured(op::glMapBufferRange);
+        mMappings[target] = Mapping{boundBuffer(target), static_cast<uint8_t*>(p),
+                                    size_t(length), size_t(offset),
+                                    (access & GL_MAP_WRITE_BIT) != 0,
+                                    (access & GL_MAP_FLUSH_EXPLICIT_BIT) != 0};
+    }
+    return p;
+}
+
+void Recorder::glFlushMappedBufferRange(GLenum target, GLintptr offset, GLsizeiptr length)
+{
+    auto it = mMappings.find(target);
+    if (it != mMappings.end() && it->second.writable && offset >= 0 && length >= 0 &&
+        size_t(offset) <= it->second.size && size_t(length) <= it->second.size - offset) {
+        const Mapping& m = it->second;
+        recordMappedWrite(target, m.offset + size_t(offset), m.pointer + offset, size_t(length));
+    }
+    gRealGl.glFlushMappedBufferRange(target, offset, length);
+}
+
+void Recorder::recordMappedWrite(GLenum target, size_t offset, const uint8_t* bytes,
+                                 size_t size)
+{
+    before_glBufferSubData(target, GLintptr(offset), GLsizeiptr(size), bytes);
+    mWriter.op(op::glBufferSubData);
+    const size_t mark = mWriter.beginPayload();
+    mWriter.put<GLenum>(target);
+    mWriter.put<GLintptr>(GLintptr(offset));
+    mWriter.put<GLsizeiptr>(GLsizeiptr(size));
+    mWriter.putBytes(bytes, size);
+    mWriter.endPayload(mark);
 }
 
 GLboolean Recorder::glUnmapBuffer(GLenum target)
@@ -624,15 +685,8 @@ GLboolean Recorder::glUnmapBuffer(GLenum target)
     if (it != mMappings.end()) {
         const Mapping m = it->second;
         mMappings.erase(it);
-        if (m.writable && m.pointer) {
-            before_glBufferSubData(target, 0, GLsizeiptr(m.size), m.pointer);
-            mWriter.op(op::glBufferSubData);
-            const size_t mark = mWriter.beginPayload();
-            mWriter.put<GLenum>(target);
-            mWriter.put<GLintptr>(0);
-            mWriter.put<GLsizeiptr>(GLsizeiptr(m.size));
-            mWriter.putBytes(m.pointer, m.size);
-            mWriter.endPayload(mark);
+        if (m.writable && !m.explicitFlush && m.pointer) {
+            recordMappedWrite(target, m.offset, m.pointer, m.size);
         }
     }
     return gRealGl.glUnmapBuffer(target);

@@ -33,7 +33,11 @@ public:
 
     CallWriter& writer() { return mWriter; }
     bool hasSink() const { return mSession != nullptr; }
-    void countUncaptured(uint16_t opcode) { ++mUncaptured[opcode]; }
+    // A call nprgl neither follows nor records: counted by name (the capture says it lacks
+    // it) and a barrier for the compositor (what is held is drawn first, so order is kept).
+    void countUncaptured(uint16_t opcode);
+    // A query that reads rendered pixels (texture images, query results): a barrier only.
+    void readback();
     // Hands over the counts not reported yet (name, count).
     template <typename Fn>
     void takeUncaptured(Fn&& report);
@@ -88,6 +92,9 @@ public:
 
     // Calls recorded by hand: they are replaced by equivalent recorded calls.
     void* glMapBuffer(GLenum target, GLenum access);
+    void* glMapBufferRange(GLenum target, GLintptr offset, GLsizeiptr length,
+                           GLbitfield access);
+    void glFlushMappedBufferRange(GLenum target, GLintptr offset, GLsizeiptr length);
     GLboolean glUnmapBuffer(GLenum target);
     void glInterleavedArrays(GLenum format, GLsizei stride, const void* pointer);
 
@@ -117,10 +124,14 @@ private:
 
     struct Mapping {
         GLuint buffer = 0;
-        uint8_t* pointer = nullptr;
+        uint8_t* pointer = nullptr; // the mapped range, which starts at offset
         size_t size = 0;
+        size_t offset = 0;
         bool writable = false;
+        bool explicitFlush = false; // written bytes are the flushed ranges, not the whole
     };
+    // Records bytes a program wrote through a mapping as the glBufferSubData replay can do.
+    void recordMappedWrite(GLenum target, size_t offset, const uint8_t* bytes, size_t size);
 
     Context& mContext;
     StreamSink* mSession;
@@ -144,6 +155,8 @@ private:
     bool mCanAskAttribs = false; // generic attributes exist (GL 2.0, ES 2.0)
     bool mCanAskUnpack = false;  // pixel-unpack buffers exist (GL 2.1, ES 3.0)
     bool mCanAskVertexArray = false; // vertex array objects exist (compatibility 3.0)
+    bool mCanAskRestart = false;      // GL_PRIMITIVE_RESTART exists (GL 3.1)
+    bool mCanAskFixedRestart = false; // GL_PRIMITIVE_RESTART_FIXED_INDEX (GL 4.3, ES 3.0)
     bool mBeginFollowed = true;  // the arrays at the open glBegin were checked and followed
     bool mUnfollowedSaid = false;      // about draws
     bool mUnfollowedImageSaid = false; // about images

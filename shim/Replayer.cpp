@@ -96,6 +96,7 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
     };
     ReplaySink sink(arrays, options.limits, frameEnd);
     CaptureBlobs blobs(reader);
+    const OpcodeMap opcodes(reader.metadata().opcodeNames);
     std::vector<uint8_t> calls;
     bool ok = true;
     for (size_t i = 0; ok && i < frames.size(); ++i) {
@@ -105,9 +106,9 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
             ok = false;
             break;
         }
-        CallReader r(calls.data(), calls.size(), &blobs);
+        CallReader r(calls.data(), calls.size(), &blobs, &opcodes);
         for (uint64_t call = 0; ok && !r.atEnd(); ++call) {
-            uint16_t opcode = r.get<uint16_t>();
+            uint16_t opcode = r.opcode();
             const bool haveOpcode = r.ok();
             if (!haveOpcode || !decodeCall(r, opcode, sink)) {
                 std::string why = !frameError.empty()  ? frameError

@@ -348,8 +348,9 @@ StateTracker::StateTracker()
 StateTracker::~StateTracker() = default;
 
 bool StateTracker::runFrame(const uint8_t* data, size_t size, BlobSource* blobs,
-                            std::string& error)
+                            std::string& error, const OpcodeMap* opcodes)
 {
+    mOpcodes = opcodes;
     if (mFrameDone) {
         recycle(mFrameBatches);
         mFrameBatches.clear();
@@ -559,10 +560,10 @@ bool StateTracker::isVertexCall(uint16_t opcode) const
 
 bool StateTracker::runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error)
 {
-    CallReader r(data, size, mBlobs);
+    CallReader r(data, size, mBlobs, mOpcodes);
     while (!r.atEnd()) {
         const size_t start = r.offset();
-        const uint16_t opcode = r.get<uint16_t>();
+        const uint16_t opcode = r.opcode();
         if (!r.ok()) break;
         // While a list compiles (GL_COMPILE), state calls are kept for glCallList and not
         // run; geometry is run so that its batches are captured into the list.

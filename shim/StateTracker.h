@@ -55,8 +55,10 @@ public:
     ~StateTracker();
 
     // Interprets one frame's encoded calls. The batches of the frame are those collected
-    // since the previous FrameEnd. Returns false with a message on malformed input.
-    bool runFrame(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error);
+    // since the previous FrameEnd. Returns false with a message on malformed input. opcodes:
+    // the capture's numbering (null: this build's).
+    bool runFrame(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error,
+                  const OpcodeMap* opcodes = nullptr);
     const std::vector<TrackedBatch>& frameBatches() const { return mFrameBatches; }
 
     // Live use by the compositor: interprets calls as they are recorded, frames and all.
@@ -202,11 +204,12 @@ private:
     static bool fetch(const ArraySource& from, size_t index, float out[4]);
     uint32_t currentMaterialId();
 
-    GlDispatch mDispatch;
-    GlDispatch mCompileOnly; // state calls of a GL_COMPILE list: kept, not followed
+    GlDispatch mDispatch{}; // slots of calls never recorded stay null: nothing decodes them
+    GlDispatch mCompileOnly{}; // state calls of a GL_COMPILE list: kept, not followed
     bool mSkipping = false;
     ShadowArrays mArrays;
     BlobSource* mBlobs = nullptr;
+    const OpcodeMap* mOpcodes = nullptr; // of the capture fed to runFrame
     std::vector<uint8_t> mScratch;
     uint16_t mOpcode = 0;
 

@@ -2,12 +2,18 @@
 """Generates nprgl's API list from the Khronos registry.
 
 Emits ONE list, re-included by the shim to make the exported thunks, the real-pointer table,
-the name table and (later) recorder opcodes and the replay switch:
+the name table, the recorder opcodes and the replay switch:
 
-    NPRGL_GL(ret, name, (params), (args))              every GL 1.0-2.1 compatibility command
+    NPRGL_GL(ret, name, (params), (args))              every GL command a compatibility
+                                                       program can reach (core 1.0-4.6 and the
+                                                       gl/glcore extensions of gl.xml)
     NPRGL_WS(api, hooked, ret, name, (params), (args)) GLX / EGL / OSMesa entry points we export
-    NPRGL_GL_ALIAS(ret, name, (params), (args), core)  ARB/EXT names the registry declares
-                                                       equivalent to a command of the list
+    NPRGL_GL_ALIAS(ret, name, (params), (args), core)  names the registry declares equivalent
+                                                       to a command of the list
+
+The GL list keeps a fixed order, because its position is a command's opcode in captures:
+first the GL 1.0-2.1 commands (format version 1 had exactly these), then the later commands
+nprgl records (RECORDED_EXTRA), then every other command, in registry order.
 
 `hooked` is 1 where nprgl has its own implementation (context and frame tracking) and 0 where
 the thunk only forwards (exported so that a dlopen handle to nprgl still finds them).
@@ -65,10 +71,21 @@ OSMESA_CMDS = [
      [("OSMesaContext", "osmesa"), ("const char *", "filter"), ("unsigned", "enable_value")]),
 ]
 
-# Suffixes of the aliases nprgl answers for: promoted ARB and EXT commands, which programs
-# written before GL 1.5 (and SDL games) fetch by their extension names. Vendor aliases (NV,
-# SGIS...) are left to the driver: some differ in detail from the core command.
-ALIAS_SUFFIXES = ("ARB", "EXT")
+# Commands after GL 2.1 that legacy programs use and nprgl records and replays, appended to
+# the opcode space in this order (append only: opcodes are stored in captures).
+RECORDED_EXTRA = [
+    # Framebuffer objects: ARB/GL 3.0 names (most EXT names alias them), and the two EXT
+    # binds the registry keeps apart (EXT allows names that were never generated).
+    "glBindFramebuffer", "glBindFramebufferEXT", "glBindRenderbuffer", "glBindRenderbufferEXT",
+    "glGenFramebuffers", "glDeleteFramebuffers", "glGenRenderbuffers", "glDeleteRenderbuffers",
+    "glFramebufferTexture1D", "glFramebufferTexture2D", "glFramebufferTexture3D",
+    "glFramebufferTextureLayer", "glFramebufferRenderbuffer", "glRenderbufferStorage",
+    "glRenderbufferStorageMultisample", "glGenerateMipmap", "glBlitFramebuffer",
+    # Compiled vertex arrays (Quake-engine games lock their arrays around multi-pass draws).
+    "glLockArraysEXT", "glUnlockArraysEXT",
+    # ARB shader objects with no core alias (the rest alias GL 2.0 commands).
+    "glDeleteObjectARB",
+]
 
 
 def paramText(elem):
@@ -97,18 +114,52 @@ def requiredCommands(root, keep):
     return names
 
 
-def aliasesOf(root, names):
-    """(alias, core) for every ARB/EXT command the registry declares an alias of a listed
-    command, in registry order."""
-    listed = set(names)
-    out = []
+def extensionCommands(root):
+    """Commands of the extensions a desktop GL context can offer, in registry order."""
+    names = []
+    for ext in root.find("extensions"):
+        if not set(ext.get("supported", "").split("|")) & {"gl", "glcore"}:
+            continue
+        for req in ext.findall("require"):
+            if req.get("api") not in (None, "gl", "glcore"):
+                continue
+            for cmd in req.findall("command"):
+                names.append(cmd.get("name"))
+    return names
+
+
+def glCommands(root):
+    """(names, aliases): the GL list in opcode order and the (alias, core) pairs. A command
+    with an <alias> of a listed command is not listed itself: it shares that command's slot
+    (glBindBufferARB is glBindBuffer to every part of nprgl)."""
+    legacy = requiredCommands(
+        root, lambda f: f.get("api") == "gl" and glVersion(f) <= GL_MAX_VERSION)
+    later = requiredCommands(root, lambda f: f.get("api") == "gl") + extensionCommands(root)
+    aliasOf = {}
     for c in root.find("commands"):
         alias = c.find("alias")
+        if alias is not None:
+            aliasOf[c.find("proto").find("name").text] = alias.get("name")
+    reachable = set(legacy) | set(later)
+    names, seen = [], set()
+    for name in legacy + RECORDED_EXTRA + later:
+        if name in seen:
+            continue
+        seen.add(name)
+        core = aliasOf.get(name)
+        # Kept as its own command when it is one of the first two groups (opcodes already
+        # given) or when its core command cannot be reached from desktop GL.
+        if core in reachable and core != name and name not in legacy + RECORDED_EXTRA:
+            continue
+        names.append(name)
+    listed = set(names)
+    aliases = []
+    for c in root.find("commands"):
         name = c.find("proto").find("name").text
-        if (alias is not None and alias.get("name") in listed and name not in listed
-                and name.endswith(ALIAS_SUFFIXES)):
-            out.append((name, alias.get("name")))
-    return out
+        core = aliasOf.get(name)
+        if name not in listed and core in listed and name in reachable:
+            aliases.append((name, core))
+    return names, aliases
 
 
 def glVersion(feature):
@@ -131,8 +182,7 @@ def main():
 
     gl = ET.parse(opts.gl_xml).getroot()
     glCmds = {command(c)[1]: command(c) for c in gl.find("commands")}
-    glNames = requiredCommands(
-        gl, lambda f: f.get("api") == "gl" and glVersion(f) <= GL_MAX_VERSION)
+    glNames, glAliases = glCommands(gl)
 
     glx = ET.parse(opts.glx_xml).getroot()
     glxCmds = {command(c)[1]: command(c) for c in glx.find("commands")}
@@ -140,7 +190,7 @@ def main():
 
     lines = [
         "// Generated by shim/gen_api.py from the Khronos registry. Do not edit.",
-        f"// {len(glNames)} GL commands (1.0-2.1 compatibility), "
+        f"// {len(glNames)} GL commands and {len(glAliases)} aliases, "
         f"{len(glxNames) + len(EGL_CMDS) + len(OSMESA_CMDS)} window-system commands.",
         "#ifndef NPRGL_GL",
         "#define NPRGL_GL(ret, name, params, args)",
@@ -155,7 +205,7 @@ def main():
     for name in glNames:
         ret, name, params, args = fmtEntry(*glCmds[name])
         lines.append(f"NPRGL_GL({ret}, {name}, {params}, {args})")
-    for alias, core in aliasesOf(gl, glNames):
+    for alias, core in glAliases:
         ret, name, params, args = fmtEntry(*glCmds[alias])
         lines.append(f"NPRGL_GL_ALIAS({ret}, {name}, {params}, {args}, {core})")
     for name in glxNames:

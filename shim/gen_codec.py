@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generates the call codec of the Stream from the Khronos registry.
 
-From the same GL 1.0-2.1 command list as gen_api.py, it classifies every parameter (scalar,
+From the same GL command list as gen_api.py, it classifies every parameter (scalar,
 fixed or counted array, image, string, client-array pointer, index buffer, output) using the
 registry's `len` attributes, and emits C++ for the build tree:
 
@@ -9,8 +9,12 @@ registry's `len` attributes, and emits C++ for the build tree:
   nprgl_decode.inc  decodeAndReplay() and decodeAndDump(): one switch over every opcode
   nprgl_enums.inc   enum names (by group where the registry gives one) for the dump
 
-Commands that query state or write through pointers are not recorded; their recording
-function only counts them (reported by name at the end of a recording).
+Every command gets a mode:
+  record    encoded into the Stream, then the driver is called (replayed from the capture);
+  query     a pure read (glGet*, glIs*): the slot stays the driver's, nothing to follow;
+  readback  a read of pixels the held scene may still have to draw: a compositor barrier;
+  count     a command nprgl neither follows nor records: counted by name (the capture says
+            it lacks it, in which frames), a compositor barrier, then forwarded.
 """
 import argparse
 import re
@@ -19,16 +23,24 @@ import xml.etree.ElementTree as ET
 
 import gen_api
 
-# Queries and calls whose effects cannot be replayed from their arguments: counted only.
+# Queries: they change nothing a replay or a style needs.
 QUERY_PREFIXES = ("glGet", "glIs", "glAreTexturesResident")
+QUERIES = {"glCheckFramebufferStatus", "glCheckFramebufferStatusEXT", "glGetError"}
+# Queries that read rendered pixels back: what is held must be drawn first.
+READBACK_RE = re.compile(r"glGet(n?(Compressed)?Tex(ture)?(Sub)?Image\w*|"
+                         r"QueryObject\w*|QueryBufferObject\w*|BufferSubData\w*|"
+                         r"NamedBufferSubData\w*)")
+# Calls whose effects cannot be replayed from their arguments: counted only.
 UNCAPTURED = {
     "glRenderMode", "glReadPixels", "glFeedbackBuffer", "glSelectBuffer", "glMap1d",
     "glMap1f", "glMap2d", "glMap2f", "glMultiDrawElements",
 }
 # Output-only commands that are replayed with scratch memory (names come back the same).
-GEN_COMMANDS = {"glGenTextures", "glGenQueries", "glGenBuffers"}
+GEN_COMMANDS = {"glGenTextures", "glGenQueries", "glGenBuffers", "glGenFramebuffers",
+                "glGenRenderbuffers"}
 # Handled entirely by hand in Recorder (they touch client memory or mapped buffers).
-SPECIAL = {"glMapBuffer", "glUnmapBuffer", "glInterleavedArrays"}
+SPECIAL = {"glMapBuffer", "glMapBufferRange", "glFlushMappedBufferRange", "glUnmapBuffer",
+           "glInterleavedArrays"}
 # Recorder hooks called before recording (state the recorder must follow).
 HOOK_BEFORE = {
     "glBegin", "glDrawArrays", "glDrawElements", "glDrawRangeElements", "glArrayElement",
@@ -53,7 +65,7 @@ CLIENT_POINTERS = {
 SCALAR_TYPES = {
     "GLenum", "GLint", "GLfloat", "GLdouble", "GLsizei", "GLuint", "GLshort", "GLboolean",
     "GLubyte", "GLbyte", "GLushort", "GLbitfield", "GLsizeiptr", "GLintptr", "GLclampf",
-    "GLclampd",
+    "GLclampd", "GLhandleARB",
 }
 
 FRAME_END_OPCODE = 0xFF00
@@ -66,6 +78,7 @@ CHECKED = {
     "glArrayElement", "glNewList", "glEndList", "glCallList", "glCallLists", "glListBase",
     "glDeleteLists", "glGenLists", "glEvalMesh1", "glEvalMesh2", "glBufferData",
     "glCopyTexImage1D", "glCopyTexImage2D", "glGenTextures", "glGenQueries", "glGenBuffers",
+    "glGenFramebuffers", "glGenRenderbuffers",
 }
 
 
@@ -103,11 +116,17 @@ def countExpr(p, params):
     return None
 
 
-def classify(cmd, params):
-    """Returns 'record', 'count' or 'special', and sets each param's kind."""
+def classify(cmd, params, recordable):
+    """Returns 'record', 'query', 'readback', 'count' or 'special', and sets each param's
+    kind. recordable: the command is one nprgl means to record (GL 1.0-2.1 and
+    RECORDED_EXTRA); any other is counted."""
     if cmd in SPECIAL:
         return "special"
-    if cmd in UNCAPTURED or cmd.startswith(QUERY_PREFIXES):
+    if READBACK_RE.fullmatch(cmd):
+        return "readback"
+    if cmd in QUERIES or (cmd.startswith(QUERY_PREFIXES) and cmd not in UNCAPTURED):
+        return "query"
+    if cmd in UNCAPTURED or not recordable:
         return "count"
     for p in params:
         if not p.pointer:
@@ -211,6 +230,8 @@ def emitRecord(cmds):
             out.append("} // namespace rec")
             out.append("namespace recHeld {")
         for op, (ret, name, params, mode) in enumerate(cmds):
+            if mode == "query":
+                continue
             if heldOnly and (mode != "record" or not HELD_RE.fullmatch(name)):
                 continue
             if heldOnly:
@@ -219,7 +240,8 @@ def emitRecord(cmds):
     out.append("} // namespace recHeld")
     out.append("inline void fillRecordingDispatch(GlDispatch& d)\n{")
     for ret, name, params, mode in cmds:
-        out.append(f"    d.{name} = &rec::{name};")
+        if mode != "query":
+            out.append(f"    d.{name} = &rec::{name};")
     out.append("}")
     out.append("// Held-back draws: record only.")
     out.append("inline void fillHeldDispatch(GlDispatch& d)\n{")
@@ -240,6 +262,9 @@ def recordFunction(op, ret, name, params, mode, heldOnly):
         body.append(f"    return Recorder::current().{name}({args});")
     elif mode == "count":
         body.append(f"    Recorder::current().countUncaptured({op});")
+        body.append(f"    return {call};")
+    elif mode == "readback":
+        body.append("    Recorder::current().readback();")
         body.append(f"    return {call};")
     else:
         body.append("    Recorder& rec_ = Recorder::current();")
@@ -276,6 +301,7 @@ def emitTrack(cmds):
     """Tracking functions for the per-vertex attribute commands (every variant folded into
     one attrib(kind, x, y, z, w) call, as Mesa's vbo_attrib_tmp.h does), and no-ops for the
     rest; the StateTracker overrides the commands it follows by hand."""
+    cmds = [c for c in cmds if c[3] == "record"]  # the tracker sees recorded calls only
     tracked = {name for _, name, _, _ in cmds if ATTRIB_RE.fullmatch(name)}
     out = ["// Generated by shim/gen_codec.py. Do not edit.", "namespace noop {"]
     for ret, name, params, _ in cmds:
@@ -337,17 +363,18 @@ def emitOpcodes(cmds):
 def emitDecode(cmds, groups):
     """decodeCall<Visitor>: decodes one call's arguments and hands them to the visitor as
     replay(...) (typed) and dump (named, printed)."""
+    # One function per command, called from a switch of returns: one big switch would hold
+    # every case's locals in one frame (at -O0 and under ASan, tens of kilobytes), and a
+    # display list calls back into decodeCall up to 64 deep (GL_MAX_LIST_NESTING).
     out = ["// Generated by shim/gen_codec.py. Do not edit.",
-           "// Returns false (with r.error()) on malformed input.",
-           "template <typename Sink>",
-           "bool decodeCall(CallReader& r, uint16_t op, Sink& sink)",
-           "{",
-           "    switch (op) {"]
+           "namespace decode {"]
     for op, (ret, name, params, mode) in enumerate(cmds):
         if mode != "record":
             continue
         variable = any(p.kind != "scalar" for p in params)
-        out.append(f"    case {op}: {{")
+        out.append("template <typename Sink>")
+        out.append(f"[[gnu::noinline]] bool {name}(CallReader& r, Sink& sink)")
+        out.append("{")
         if variable:
             out.append("        CallReader::Payload payload(r);")
         for p in encodingOrder(params):
@@ -403,7 +430,16 @@ def emitDecode(cmds, groups):
         if variable:
             out.append("        if (!payload.finish()) return false;")
         out.append("        return true;")
-        out.append("    }")
+        out.append("}")
+    out += ["} // namespace decode",
+            "// Returns false (with r.error()) on malformed input.",
+            "template <typename Sink>",
+            "bool decodeCall(CallReader& r, uint16_t op, Sink& sink)",
+            "{",
+            "    switch (op) {"]
+    for op, (ret, name, params, mode) in enumerate(cmds):
+        if mode == "record":
+            out.append(f"    case {op}: return decode::{name}(r, sink);")
     out.append("    default:")
     out.append("        return sink.pseudo(r, op);")
     out.append("    }")
@@ -475,8 +511,10 @@ def main():
     elems = {}
     for c in gl.find("commands"):
         elems[gen_api.command(c)[1]] = c
-    names = gen_api.requiredCommands(
-        gl, lambda f: f.get("api") == "gl" and gen_api.glVersion(f) <= gen_api.GL_MAX_VERSION)
+    names, _ = gen_api.glCommands(gl)
+    recordable = set(gen_api.requiredCommands(
+        gl, lambda f: f.get("api") == "gl" and gen_api.glVersion(f) <= gen_api.GL_MAX_VERSION))
+    recordable |= set(gen_api.RECORDED_EXTRA)
     cmds = []
     groups = {}
     for name in names:
@@ -488,7 +526,7 @@ def main():
             params.append(Param(ctype, pname, pe.get("len"), pe.get("group")))
             if pe.get("group") and pe.get("group") not in groups:
                 groups[pe.get("group")] = len(groups) + 1
-        mode = classify(name, params)
+        mode = classify(name, params, name in recordable)
         cmds.append((ret, name, params, mode))
     files = {
         "nprgl_record.inc": emitRecord(cmds),
@@ -500,8 +538,11 @@ def main():
     for fname, text in files.items():
         with open(f"{opts.out_dir}/{fname}", "w", encoding="utf-8") as f:
             f.write(text)
-    recorded = sum(1 for c in cmds if c[3] == "record")
-    print(f"gen_codec: {recorded} of {len(cmds)} commands recorded", file=sys.stderr)
+    modes = {}
+    for c in cmds:
+        modes[c[3]] = modes.get(c[3], 0) + 1
+    print(f"gen_codec: {len(cmds)} commands: " +
+          ", ".join(f"{n} {m}" for m, n in sorted(modes.items())), file=sys.stderr)
     return 0
 
 

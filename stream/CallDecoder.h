@@ -21,7 +21,7 @@ template <typename Sink>
 bool decodeCalls(CallReader& r, Sink& sink)
 {
     while (!r.atEnd()) {
-        const uint16_t opcode = r.get<uint16_t>();
+        const uint16_t opcode = r.opcode();
         if (!r.ok()) return false;
         if (!decodeCall(r, opcode, sink)) {
             if (r.ok()) r.fail("unknown opcode " + std::to_string(opcode));
@@ -44,7 +44,7 @@ bool expandBatchRef(CallReader& r, Sink& sink, int& depth)
         return false;
     }
     ++depth;
-    CallReader inner(blob->data(), blob->size(), r.blobs());
+    CallReader inner(blob->data(), blob->size(), r.blobs(), r.opcodes());
     const bool ok = decodeCalls(inner, sink);
     --depth;
     if (!ok) r.fail("in a referenced batch: " + inner.error());

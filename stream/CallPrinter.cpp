@@ -34,10 +34,10 @@ const char* kSlotNames[] = {"vertex", "normal", "color", "secondary_color", "fog
 } // namespace
 
 bool CallPrinter::printFrame(const uint8_t* data, size_t size, BlobSource* blobs,
-                             const std::string& grep, std::string& out, std::string& error,
-                             uint64_t* callCount)
+                             const OpcodeMap* opcodes, const std::string& grep,
+                             std::string& out, std::string& error, uint64_t* callCount)
 {
-    CallReader reader(data, size, blobs);
+    CallReader reader(data, size, blobs, opcodes);
     CallPrinter printer;
     printer.mOut = &out;
     printer.mGrep = grep;

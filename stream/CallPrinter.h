@@ -15,9 +15,10 @@ public:
     // Decodes and prints every call of one frame into out; returns false (with the offset in
     // error) on malformed input, keeping what was printed. grep, when not empty, keeps only
     // calls whose name contains it.
+    // opcodes: the capture's numbering (null: this build's).
     static bool printFrame(const uint8_t* data, size_t size, BlobSource* blobs,
-                           const std::string& grep, std::string& out, std::string& error,
-                           uint64_t* callCount = nullptr);
+                           const OpcodeMap* opcodes, const std::string& grep, std::string& out,
+                           std::string& error, uint64_t* callCount = nullptr);
 
     // The sink interface of decodeCall.
     void begin(const char* name);

@@ -4,9 +4,19 @@
 
 namespace nprgl {
 
-CallReader::CallReader(const uint8_t* data, size_t size, BlobSource* blobs)
-    : mData(data), mSize(size), mLimit(size), mBlobs(blobs)
+CallReader::CallReader(const uint8_t* data, size_t size, BlobSource* blobs,
+                       const OpcodeMap* map)
+    : mData(data), mSize(size), mLimit(size), mBlobs(blobs), mOpcodes(map)
 {
+}
+
+uint16_t CallReader::opcode()
+{
+    const uint16_t raw = get<uint16_t>();
+    if (!ok() || !mOpcodes) return raw;
+    const uint16_t mine = mOpcodes->translate(raw);
+    if (mine == OpcodeMap::kUnknown) fail(mOpcodes->unknown(raw));
+    return mine;
 }
 
 void CallReader::fail(const std::string& message)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "stream/OpcodeMap.h"
+
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -20,13 +22,18 @@ public:
 // decoders need one ok() check per call.
 class CallReader {
 public:
-    CallReader(const uint8_t* data, size_t size, BlobSource* blobs);
+    // map: the capture's opcode numbering (null: this build's own).
+    CallReader(const uint8_t* data, size_t size, BlobSource* blobs,
+               const OpcodeMap* map = nullptr);
 
     bool atEnd() const { return mPos >= mSize; }
     bool ok() const { return mError.empty(); }
     const std::string& error() const { return mError; }
     size_t offset() const { return mPos; }
     void fail(const std::string& message);
+
+    // The next call's opcode in this build's numbering; fails on a command it does not know.
+    uint16_t opcode();
 
     template <typename T>
     T get()
@@ -71,6 +78,7 @@ public:
     // A batch reference (u64 hash, u64 size): the blob's bytes, or null with the error set.
     const std::vector<uint8_t>* getBlobRef();
     BlobSource* blobs() const { return mBlobs; }
+    const OpcodeMap* opcodes() const { return mOpcodes; }
 
     struct Sources {
         const char* const* strings = nullptr;
@@ -100,6 +108,7 @@ private:
     size_t mPos = 0;
     size_t mLimit;
     BlobSource* mBlobs;
+    const OpcodeMap* mOpcodes;
     std::string mError;
     // Copies that outlive the pointer into mData (alignment) or hold strings.
     std::vector<std::vector<uint8_t>> mScratch;

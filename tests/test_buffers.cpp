@@ -67,7 +67,9 @@ class ArbBuffers : public ::testing::TestWithParam<std::string> {};
 
 std::string caseName(const ::testing::TestParamInfo<std::string>& info)
 {
-    return info.param.empty() ? "ArbNames" : "VertexArrayObject";
+    if (info.param.empty()) return "ArbNames";
+    if (info.param == "--map") return "MappedRanges";
+    return info.param == "--vao" ? "VertexArrayObject" : "PrimitiveRestart";
 }
 
 } // namespace
@@ -99,8 +101,8 @@ TEST_P(ArbBuffers, TheDefaultStyleRunsAndKeepsTheObjects)
     const int changed =
         differingPixels(readBytes(dir + "/full.rgba"), readBytes(dir + "/empty.rgba"));
     EXPECT_GT(changed, covered(native.out) * 3 / 4) << full.err;
-    if (GetParam() == "--vao") {
-        // The vertex array object's draw is passed through, and said once.
+    if (!GetParam().empty() && GetParam() != "--map") {
+        // The vertex array object's (or restart-cut) draw is passed through, and said once.
         EXPECT_NE(full.err.find("nprgl: warning"), std::string::npos) << full.err;
         EXPECT_NE(full.err.find("does not follow"), std::string::npos) << full.err;
     }
@@ -122,7 +124,8 @@ TEST_P(ArbBuffers, RecordedAndReplayedToTheEnd)
         ASSERT_TRUE(fs::exists(framePng(out, kFrames))) << style << ": " << p.err;
     }
     // Unstyled, the replayed last frame has what the program drew from its ARB buffers. (A
-    // draw through a vertex array object is not recorded: that picture lacks the ring.)
+    // draw through a vertex array object, or with primitive restart, is not recorded: that
+    // picture lacks the ring, and the capture says so.)
     PngImage image;
     std::string error;
     ASSERT_TRUE(PngImage::read(framePng(dir + "/none", kFrames), image, error)) << error;
@@ -132,12 +135,17 @@ TEST_P(ArbBuffers, RecordedAndReplayedToTheEnd)
                  image.rgba[i + 2] != kClear[2];
     }
     const int expected = covered(native.out);
-    if (GetParam().empty()) {
+    if (GetParam().empty() || GetParam() == "--map") {
         EXPECT_GT(drawn, expected * 9 / 10);
         EXPECT_LT(drawn, expected * 11 / 10);
     } else {
         EXPECT_GT(drawn, expected / 5); // the cube
+        ProcessResult info = runProcess({nprglCommand(), "info", file});
+        ASSERT_EQ(info.exitCode, 0) << info.err;
+        EXPECT_NE(info.out.find("glDrawElements"), std::string::npos) << info.out;
+        EXPECT_EQ(info.out.find("(none)"), std::string::npos) << info.out;
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Probe, ArbBuffers, ::testing::Values("", "--vao"), caseName);
+INSTANTIATE_TEST_SUITE_P(Probe, ArbBuffers, ::testing::Values("", "--vao", "--restart", "--map"),
+                         caseName);

@@ -75,6 +75,7 @@ Metadata sampleMetadata()
     meta.pid = 4242;
     meta.startTimeUnix = 1700000000;
     meta.extra = {{"style", "toon"}, {"empty", ""}};
+    meta.opcodeNames = {"glNewList", "glEndList", "glSomethingLater"};
     return meta;
 }
 
@@ -253,7 +254,7 @@ TEST(Capture, RoundTripsMetadataFramesBlobsAndCounts)
     ASSERT_TRUE(reader.open(path, error)) << error;
     EXPECT_FALSE(reader.recovered());
     EXPECT_EQ(reader.warning(), "");
-    EXPECT_EQ(reader.version(), 1u);
+    EXPECT_EQ(reader.version(), kFormatVersion);
     EXPECT_EQ(reader.metadata(), s.meta);
     expectSameFrames(reader, s);
     EXPECT_EQ(reader.blobCount(), s.blobs.size());
@@ -581,6 +582,32 @@ TEST(Capture, BitFlipsInAFileWithoutIndexLeaveNoHoles)
     }
 }
 
+// Version 1 wrote no opcode names: its META ends after the extra key/values, and its frames
+// use version 1's numbering (which later builds keep as their first opcodes).
+TEST(Capture, ReadsVersion1Files)
+{
+    std::string path = test::freshDir("capture") + "/v1.nprgl";
+    Metadata meta = sampleMetadata();
+    meta.opcodeNames.clear();
+    std::vector<uint8_t> file(kMagic, kMagic + sizeof kMagic);
+    ByteWriter w(file);
+    w.u32(1);
+    w.u32(0);
+    size_t start = beginChunk(file, kChunkMeta);
+    encodeMetadata(meta, file);
+    // What version 1 wrote: everything up to the name table's count.
+    file.resize(file.size() - 4);
+    finishChunk(file, start);
+    writeFile(path, file);
+
+    CaptureReader reader;
+    std::string error;
+    ASSERT_TRUE(reader.open(path, error)) << error;
+    EXPECT_EQ(reader.version(), 1u);
+    EXPECT_EQ(reader.metadata(), meta);
+    EXPECT_TRUE(reader.metadata().opcodeNames.empty());
+}
+
 TEST(Capture, RefusesWrongMagicFutureVersionAndEmptyFiles)
 {
     std::string dir = test::freshDir("capture");
@@ -608,10 +635,13 @@ TEST(Capture, RefusesWrongMagicFutureVersionAndEmptyFiles)
     EXPECT_EQ(error, path + ": offset 0: not an nprgl capture (bad magic)");
 
     bad = good;
-    bad[8] = 2;
+    bad[8] = kFormatVersion + 1;
     writeFile(path, bad);
     EXPECT_FALSE(reader.open(path, error));
-    EXPECT_NE(error.find(": offset 8: format version 2 is newer"), std::string::npos) << error;
+    EXPECT_NE(error.find(": offset 8: format version " + std::to_string(kFormatVersion + 1) +
+                         " is newer"),
+              std::string::npos)
+        << error;
 
     bad = good;
     bad[8] = 0;

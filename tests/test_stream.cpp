@@ -56,7 +56,7 @@ TEST(CallCodec, PrintsWhatWasEncoded)
     std::vector<uint8_t> frame = sampleFrame();
     std::string out, error;
     uint64_t calls = 0;
-    ASSERT_TRUE(CallPrinter::printFrame(frame.data(), frame.size(), nullptr, "", out, error,
+    ASSERT_TRUE(CallPrinter::printFrame(frame.data(), frame.size(), nullptr, nullptr, "", out, error,
                                         &calls))
         << error;
     EXPECT_EQ(out, "glBegin(mode=GL_TRIANGLES)\n"
@@ -67,6 +67,53 @@ TEST(CallCodec, PrintsWhatWasEncoded)
                    "glLightfv(light=GL_LIGHT0, pname=GL_POSITION, params=[1, 2, 3, 0])\n"
                    "-- end of frame 7 --\n");
     EXPECT_EQ(calls, 7u);
+}
+
+// A capture names the command behind each of its opcodes; a build whose numbering differs
+// (another gl.xml) decodes it by name, and a command it does not know fails the call that
+// uses it, by name, not some other command with the same number.
+TEST(CallCodec, DecodesAnotherNumberingByName)
+{
+    // The file's numbering: glVertex3f and glBegin swapped, and a command unknown here.
+    std::vector<std::string> names(op::glVertex3f + 1, "glUnused");
+    names[0] = "glNoSuchCommandHere";
+    names[op::glBegin] = "glVertex3f";
+    names[op::glVertex3f] = "glBegin";
+    names[op::glEnd] = "glEnd";
+    const OpcodeMap map(names);
+    EXPECT_FALSE(map.identity());
+    EXPECT_EQ(map.unknownCount(), size_t(op::glVertex3f + 1 - 3));
+
+    CallWriter w;
+    w.op(op::glVertex3f); // the file's glBegin
+    w.put<GLenum>(GL_POINTS);
+    w.op(op::glBegin); // the file's glVertex3f
+    for (float v : {1.0f, 2.0f, 3.0f}) w.put<GLfloat>(v);
+    w.op(op::glEnd);
+    w.op(op::kFrameEnd);
+    w.put<uint64_t>(3);
+    std::string out, error;
+    ASSERT_TRUE(CallPrinter::printFrame(w.data(), w.size(), nullptr, &map, "", out, error))
+        << error;
+    EXPECT_EQ(out, "glBegin(mode=GL_POINTS)\nglVertex3f(x=1, y=2, z=3)\nglEnd()\n"
+                   "-- end of frame 3 --\n");
+    // Without the table the same bytes mean something else (what the table is for).
+    out.clear();
+    CallPrinter::printFrame(w.data(), w.size(), nullptr, nullptr, "", out, error);
+    EXPECT_NE(out.rfind("glVertex3f(", 0), std::string::npos) << out;
+
+    CallWriter unknown;
+    unknown.op(0);
+    out.clear();
+    EXPECT_FALSE(CallPrinter::printFrame(unknown.data(), unknown.size(), nullptr, &map, "", out,
+                                         error));
+    EXPECT_NE(error.find("glNoSuchCommandHere (opcode 0) is not a command this nprgl knows"),
+              std::string::npos)
+        << error;
+
+    // A file written by this build maps onto itself.
+    std::vector<std::string> own(kOpcodeNames, kOpcodeNames + op::kCount);
+    EXPECT_TRUE(OpcodeMap(own).identity());
 }
 
 TEST(CallCodec, AnArrayOfTheWrongLengthIsRefused)
@@ -80,7 +127,7 @@ TEST(CallCodec, AnArrayOfTheWrongLengthIsRefused)
     w.putBytes(two, sizeof two);
     w.endPayload(mark);
     std::string out, error;
-    EXPECT_FALSE(CallPrinter::printFrame(w.data(), w.size(), nullptr, "", out, error));
+    EXPECT_FALSE(CallPrinter::printFrame(w.data(), w.size(), nullptr, nullptr, "", out, error));
     EXPECT_NE(error.find("expected"), std::string::npos) << error;
 }
 
@@ -93,7 +140,7 @@ TEST(CallCodec, TruncatedAndMutatedFramesNeverCrash)
     for (size_t cut = 0; cut < frame.size(); ++cut) {
         out.clear();
         error.clear();
-        bool ok = CallPrinter::printFrame(frame.data(), cut, nullptr, "", out, error);
+        bool ok = CallPrinter::printFrame(frame.data(), cut, nullptr, nullptr, "", out, error);
         // A cut on a call boundary is a shorter valid frame; anywhere else an error that
         // says where.
         const bool onBoundary =
@@ -111,7 +158,7 @@ TEST(CallCodec, TruncatedAndMutatedFramesNeverCrash)
         std::vector<uint8_t> mutated = frame;
         for (int k = 0; k < 3; ++k) mutated[rng() % mutated.size()] = uint8_t(rng());
         out.clear();
-        refused += !CallPrinter::printFrame(mutated.data(), mutated.size(), nullptr, "", out,
+        refused += !CallPrinter::printFrame(mutated.data(), mutated.size(), nullptr, nullptr, "", out,
                                             error);
     }
     EXPECT_GT(refused, 1000);
@@ -131,7 +178,7 @@ TEST(CallCodec, BlobReferencesNeedASource)
     w.endPayload(mark);
     EXPECT_LT(w.size(), 64u); // the bytes went to the blob sink
     std::string out, error;
-    EXPECT_FALSE(CallPrinter::printFrame(w.data(), w.size(), nullptr, "", out, error));
+    EXPECT_FALSE(CallPrinter::printFrame(w.data(), w.size(), nullptr, nullptr, "", out, error));
     EXPECT_NE(error.find("blob"), std::string::npos) << error;
 }
 

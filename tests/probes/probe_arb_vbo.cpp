@@ -5,6 +5,10 @@
 // at offsets into it). Prints a checksum of its last frame and how many pixels the objects cover.
 //   --vao        the ring comes from a vertex array object (GL 3.0, which nprgl does not
 //                follow) while the default one points at client memory since unmapped
+//   --restart    the ring comes from client arrays, its triangles separated by a primitive
+//                restart index (GL 3.1), which is no vertex: nothing may read it as one
+//   --map        the ring's vertices are written through glMapBufferRange with explicit
+//                flushes, its indices through a mapped range flushed by the unmap (GL 3.0)
 //   --empty      draws nothing (the background alone)
 //   --save FILE  writes the last frame's RGBA bytes
 #include <GL/osmesa.h>
@@ -28,6 +32,10 @@ InterleavedArrays interleavedArrays;
 PFNGLCOMPRESSEDTEXIMAGE2DARBPROC compressedTexImage2D;
 PFNGLGENVERTEXARRAYSPROC genVertexArrays;
 PFNGLBINDVERTEXARRAYPROC bindVertexArray;
+PFNGLPRIMITIVERESTARTINDEXPROC primitiveRestartIndex;
+PFNGLMAPBUFFERRANGEPROC mapBufferRange;
+PFNGLFLUSHMAPPEDBUFFERRANGEPROC flushMappedBufferRange;
+PFNGLUNMAPBUFFERARBPROC unmapBuffer;
 
 template <typename T> bool fetch(T& fn, const char* name)
 {
@@ -88,11 +96,13 @@ void torus(std::vector<float>& vertices, std::vector<GLushort>& indices)
 
 int main(int argc, char** argv)
 {
-    bool vao = false, empty = false;
+    bool vao = false, empty = false, restart = false, map = false;
     const char* save = nullptr;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--vao") == 0) vao = true;
         if (std::strcmp(argv[i], "--empty") == 0) empty = true;
+        if (std::strcmp(argv[i], "--restart") == 0) restart = true;
+        if (std::strcmp(argv[i], "--map") == 0) map = true;
         if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save = argv[++i];
     }
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
@@ -111,21 +121,52 @@ int main(int argc, char** argv)
                 !fetch(bindVertexArray, "glBindVertexArray"))) {
         return 2;
     }
+    if (restart && !fetch(primitiveRestartIndex, "glPrimitiveRestartIndex")) return 2;
+    if (map && (!fetch(mapBufferRange, "glMapBufferRange") ||
+                !fetch(flushMappedBufferRange, "glFlushMappedBufferRange") ||
+                !fetch(unmapBuffer, "glUnmapBufferARB"))) {
+        return 2;
+    }
     const std::vector<float> box = cube();
     std::vector<float> ring;
     std::vector<GLushort> ringIndices;
     torus(ring, ringIndices);
+    const GLushort kRestart = 0xFFFF;
+    std::vector<GLushort> restartIndices;
+    for (size_t i = 0; i < ringIndices.size(); ++i) {
+        if (i > 0 && i % 3 == 0) restartIndices.push_back(kRestart);
+        restartIndices.push_back(ringIndices[i]);
+    }
     GLuint buffers[4] = {};
     genBuffers(4, buffers);
     bindBuffer(GL_ARRAY_BUFFER_ARB, buffers[0]);
     bufferData(GL_ARRAY_BUFFER_ARB, GLsizeiptr(box.size() * sizeof(float)), box.data(),
                GL_STATIC_DRAW_ARB);
+    const GLsizeiptr ringBytes = GLsizeiptr(ring.size() * sizeof(float));
+    const GLsizeiptr indexBytes = GLsizeiptr(ringIndices.size() * sizeof(GLushort));
     bindBuffer(GL_ARRAY_BUFFER_ARB, buffers[1]);
-    bufferData(GL_ARRAY_BUFFER_ARB, GLsizeiptr(ring.size() * sizeof(float)), ring.data(),
-               GL_STATIC_DRAW_ARB);
+    bufferData(GL_ARRAY_BUFFER_ARB, ringBytes, map ? nullptr : ring.data(), GL_STATIC_DRAW_ARB);
     bindBuffer(GL_ELEMENT_ARRAY_BUFFER_ARB, buffers[2]);
-    bufferData(GL_ELEMENT_ARRAY_BUFFER_ARB, GLsizeiptr(ringIndices.size() * sizeof(GLushort)),
-               ringIndices.data(), GL_STATIC_DRAW_ARB);
+    bufferData(GL_ELEMENT_ARRAY_BUFFER_ARB, indexBytes, map ? nullptr : ringIndices.data(),
+               GL_STATIC_DRAW_ARB);
+    if (map) {
+        // Vertices: a range from byte 16 on, written whole, flushed in two pieces; the first
+        // 16 bytes through a second mapping that the unmap flushes.
+        const GLsizeiptr rest = ringBytes - 16, half = rest / 2;
+        auto* v = static_cast<uint8_t*>(mapBufferRange(
+            GL_ARRAY_BUFFER, 16, rest, GL_MAP_WRITE_BIT | GL_MAP_FLUSH_EXPLICIT_BIT));
+        std::memcpy(v, reinterpret_cast<const uint8_t*>(ring.data()) + 16, size_t(rest));
+        flushMappedBufferRange(GL_ARRAY_BUFFER, 0, half);
+        flushMappedBufferRange(GL_ARRAY_BUFFER, half, rest - half);
+        unmapBuffer(GL_ARRAY_BUFFER);
+        void* head = mapBufferRange(GL_ARRAY_BUFFER, 0, 16, GL_MAP_WRITE_BIT);
+        std::memcpy(head, ring.data(), 16);
+        unmapBuffer(GL_ARRAY_BUFFER);
+        void* ix = mapBufferRange(GL_ELEMENT_ARRAY_BUFFER, 0, indexBytes,
+                                  GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+        std::memcpy(ix, ringIndices.data(), size_t(indexBytes));
+        unmapBuffer(GL_ELEMENT_ARRAY_BUFFER);
+    }
     bindBuffer(GL_ELEMENT_ARRAY_BUFFER_ARB, 0);
     bindBuffer(GL_ARRAY_BUFFER_ARB, 0);
     // Textures from a pixel-unpack buffer: an 8x8 checker at offset 64, one DXT1 block at 512.
@@ -206,7 +247,19 @@ int main(int argc, char** argv)
         // The torus: normals and positions from an ARB buffer, indices from another.
         glPushMatrix();
         glTranslatef(0.55f, 0.0f, 0.0f);
-        if (vao) {
+        if (restart) {
+            glNormalPointer(GL_FLOAT, 6 * sizeof(float), ring.data());
+            glVertexPointer(3, GL_FLOAT, 6 * sizeof(float), ring.data() + 3);
+            glEnableClientState(GL_NORMAL_ARRAY);
+            glEnableClientState(GL_VERTEX_ARRAY);
+            glEnable(GL_PRIMITIVE_RESTART);
+            primitiveRestartIndex(kRestart);
+            glDrawElements(GL_TRIANGLES, GLsizei(restartIndices.size()), GL_UNSIGNED_SHORT,
+                           restartIndices.data());
+            glDisable(GL_PRIMITIVE_RESTART);
+            glDisableClientState(GL_NORMAL_ARRAY);
+            glDisableClientState(GL_VERTEX_ARRAY);
+        } else if (vao) {
             bindVertexArray(ringArrays);
             glDrawElements(GL_TRIANGLES, GLsizei(ringIndices.size()), GL_UNSIGNED_SHORT, nullptr);
             bindVertexArray(0);
