@@ -1,10 +1,10 @@
 #include "cli/CaptureCommands.h"
 
 #include "capture/CaptureReader.h"
-#include "shim/CaptureBlobs.h"
-#include "shim/FrameExport.h"
-#include "shim/Replayer.h"
-#include "shim/StateTracker.h"
+#include "frame/CaptureBlobs.h"
+#include "frame/FrameExport.h"
+#include "frame/StateTracker.h"
+#include "replay/Replayer.h"
 #include "stream/CallPrinter.h"
 #include "stream/OpcodeMap.h"
 #include "styles/Presets.h"
@@ -94,6 +94,28 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
     return 0;
 }
 
+namespace {
+
+// How CallPrinter prints a frame's kUncaptured pseudo-call: "-- not captured: glA 2, glB 1 --".
+const std::string kUncapturedLine = "-- not captured: ";
+
+void noteUncaptured(const std::string& list, uint64_t frame,
+                    std::map<std::string, std::vector<uint64_t>>& frames)
+{
+    for (size_t pos = 0; pos < list.size();) {
+        size_t end = std::min(list.find(", ", pos), list.size());
+        std::string entry = list.substr(pos, end - pos);
+        size_t space = entry.find(' ');
+        if (space != std::string::npos) {
+            std::vector<uint64_t>& seen = frames[entry.substr(0, space)];
+            if (seen.empty() || seen.back() != frame) seen.push_back(frame);
+        }
+        pos = end + 2;
+    }
+}
+
+} // namespace
+
 int infoCommand(const std::string& file)
 {
     std::string error;
@@ -113,6 +135,7 @@ int infoCommand(const std::string& file)
 
     std::map<uint32_t, uint64_t> perContext;
     std::map<std::string, uint64_t> calls;
+    std::map<std::string, std::vector<uint64_t>> uncapturedFrames;
     if (!m.opcodeNames.empty()) {
         const OpcodeMap opcodes(m.opcodeNames);
         std::printf("commands:    %zu named in the file%s\n", m.opcodeNames.size(),
@@ -135,12 +158,16 @@ int infoCommand(const std::string& file)
             return fail(file + ": frame " + std::to_string(list[i].frameNumber) + ": " + error);
         }
         for (size_t pos = 0; pos < text.size();) {
-            size_t eol = text.find('\n', pos);
+            size_t eol = std::min(text.find('\n', pos), text.size());
             size_t paren = text.find('(', pos);
             if (paren < eol && text.compare(pos, 2, "--") != 0) {
                 ++calls[text.substr(pos, paren - pos)];
+            } else if (text.compare(pos, kUncapturedLine.size(), kUncapturedLine) == 0) {
+                noteUncaptured(text.substr(pos + kUncapturedLine.size(),
+                                           eol - pos - kUncapturedLine.size()),
+                               list[i].frameNumber, uncapturedFrames);
             }
-            pos = eol == std::string::npos ? text.size() : eol + 1;
+            pos = eol + 1;
         }
     }
     std::printf("frames:      %zu", list.size());
@@ -157,10 +184,16 @@ int infoCommand(const std::string& file)
     for (const auto& [name, n] : sorted) {
         std::printf("  %10llu  %s\n", static_cast<unsigned long long>(n), name.c_str());
     }
+    // The run's totals (CNTS), and per command the frames that lack it (format 2 on).
     std::printf("not captured:\n");
     if (reader.callCounts().empty()) std::printf("  (none)\n");
     for (const auto& [name, n] : reader.callCounts()) {
-        std::printf("  %10llu  %s\n", static_cast<unsigned long long>(n), name.c_str());
+        auto it = uncapturedFrames.find(name);
+        std::string frames = it == uncapturedFrames.end()
+                                 ? std::string()
+                                 : "  (frames " + FrameSet::describe(it->second) + ")";
+        std::printf("  %10llu  %s%s\n", static_cast<unsigned long long>(n), name.c_str(),
+                    frames.c_str());
     }
     return 0;
 }

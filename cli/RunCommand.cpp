@@ -1,8 +1,8 @@
 #include "cli/RunCommand.h"
 
 #include "common/FrameSet.h"
-#include "common/ScreenshotSpec.h"
 #include "common/Log.h"
+#include "common/ScreenshotSpec.h"
 #include "styles/Presets.h"
 #include "styles/StyleSettings.h"
 

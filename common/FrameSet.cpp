@@ -59,4 +59,17 @@ uint64_t FrameSet::last() const
     return last;
 }
 
+std::string FrameSet::describe(const std::vector<uint64_t>& frames)
+{
+    std::string out;
+    for (size_t i = 0; i < frames.size();) {
+        size_t j = i;
+        while (j + 1 < frames.size() && frames[j + 1] == frames[j] + 1) ++j;
+        out += (out.empty() ? "" : ",") + std::to_string(frames[i]);
+        if (j > i) out += "-" + std::to_string(frames[j]);
+        i = j + 1;
+    }
+    return out;
+}
+
 } // namespace nprgl

@@ -12,6 +12,8 @@ class FrameSet {
 public:
     // Parses text; on failure returns false and says why in error.
     static bool parse(std::string_view text, FrameSet& out, std::string& error);
+    // Frames (ascending) in the syntax parse reads: "1-3,7".
+    static std::string describe(const std::vector<uint64_t>& frames);
 
     bool contains(uint64_t frame) const;
     bool empty() const { return mRanges.empty(); }

@@ -1,13 +1,13 @@
 #include "shim/Context.h"
 
 #include "common/Log.h"
-#include "shim/Compositor.h"
-#include "shim/CaptureSession.h"
-#include "shim/FrameGrabber.h"
-#include "shim/LiveExport.h"
+#include "frame/CaptureSession.h"
+#include "frame/Compositor.h"
+#include "frame/FrameGrabber.h"
+#include "frame/LiveExport.h"
+#include "frame/Recorder.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
-#include "shim/Recorder.h"
 #include "shim/Settings.h"
 #include "shim/ThreadState.h"
 

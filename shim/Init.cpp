@@ -2,7 +2,7 @@
 // printed and nothing is resolved here, so programs that never use GL see no difference.
 
 #include "common/Log.h"
-#include "shim/CaptureSession.h"
+#include "frame/CaptureSession.h"
 
 namespace {
 

@@ -3,8 +3,8 @@
 
 #include "shim/RecordingDispatch.h"
 
+#include "frame/Recorder.h"
 #include "shim/RealGl.h"
-#include "shim/Recorder.h"
 #include "stream/GlSizes.h"
 
 namespace nprgl {

@@ -1,7 +1,7 @@
 #include "shim/Settings.h"
 
-#include "common/ScreenshotSpec.h"
 #include "common/Log.h"
+#include "common/ScreenshotSpec.h"
 
 #include <cerrno>
 #include <cstdlib>

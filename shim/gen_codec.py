@@ -349,6 +349,7 @@ def emitOpcodes(cmds):
     out += [f"constexpr uint16_t kFrameEnd = 0x{FRAME_END_OPCODE:X};",
             f"constexpr uint16_t kArrayData = 0x{FRAME_END_OPCODE + 1:X};",
             f"constexpr uint16_t kBatchRef = 0x{FRAME_END_OPCODE + 2:X};",
+            f"constexpr uint16_t kUncaptured = 0x{FRAME_END_OPCODE + 3:X};",
             f"constexpr uint16_t kCount = {len(cmds)};",
             "} // namespace op"]
     out.append("constexpr const char* kOpcodeNames[] = {")

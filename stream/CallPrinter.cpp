@@ -143,6 +143,16 @@ bool CallPrinter::pseudo(CallReader& r, uint16_t opcode)
         if (mGrep.empty()) *mOut += "-- end of frame " + std::to_string(frame) + " --\n";
         return true;
     }
+    if (opcode == op::kUncaptured) {
+        CallReader::Uncaptured calls;
+        if (!r.getUncaptured(calls)) return false;
+        std::string line = "-- not captured:";
+        for (size_t i = 0; i < calls.size(); ++i) {
+            line += (i ? ", " : " ") + calls[i].first + " " + std::to_string(calls[i].second);
+        }
+        if (mGrep.empty()) *mOut += line + " --\n";
+        return true;
+    }
     if (opcode == op::kArrayData) {
         CallReader::Payload payload(r);
         uint8_t slot = r.get<uint8_t>();

@@ -111,6 +111,21 @@ const char* CallReader::getString()
     return s;
 }
 
+bool CallReader::getUncaptured(Uncaptured& out)
+{
+    out.clear();
+    Payload payload(*this);
+    const uint32_t n = get<uint32_t>();
+    // Each entry takes at least a length, a terminator and a count.
+    if (ok() && n > (mLimit - mPos) / 13) fail("uncaptured-call count " + std::to_string(n));
+    for (uint32_t i = 0; i < n && ok(); ++i) {
+        const char* name = getString();
+        const uint64_t count = get<uint64_t>();
+        if (ok()) out.emplace_back(name, count);
+    }
+    return payload.finish();
+}
+
 CallReader::Sources CallReader::getSources(int count)
 {
     Sources sources;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace nprgl {
@@ -86,6 +87,11 @@ public:
         int count = 0;
     };
     Sources getSources(int count);
+
+    // The kUncaptured pseudo-call's payload: the frame's calls that the recorder forwarded
+    // without capturing them, by name and count.
+    using Uncaptured = std::vector<std::pair<std::string, uint64_t>>;
+    bool getUncaptured(Uncaptured& out);
 
     // Frames a call with a payload length: everything read must stay inside it, and
     // finish() checks that all of it was read.

@@ -1,7 +1,8 @@
 #pragma once
 
-// Opcodes of the Stream: one per GL 1.0-2.1 command (generated, in registry order) plus the
-// pseudo-calls the recorder adds (frame end, client-array data).
+// Opcodes of the Stream: one per GL command (generated: GL 1.0-2.1 in registry order, then the
+// rest) plus the pseudo-calls the recorder adds (frame end, client-array data, batch
+// references, the frame's calls that were not captured).
 
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +16,7 @@ inline const char* opcodeName(uint16_t opcode)
     if (opcode == op::kFrameEnd) return "FrameEnd";
     if (opcode == op::kArrayData) return "ArrayData";
     if (opcode == op::kBatchRef) return "BatchRef";
+    if (opcode == op::kUncaptured) return "Uncaptured";
     return nullptr;
 }
 } // namespace nprgl

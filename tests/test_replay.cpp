@@ -3,7 +3,7 @@
 // are refused with one line naming the frame and the call, in-process and by `nprgl replay`.
 
 #include "capture/CaptureWriter.h"
-#include "shim/Replayer.h"
+#include "replay/Replayer.h"
 #include "stream/CallWriter.h"
 #include "stream/GlSizes.h"
 #include "stream/Opcodes.h"

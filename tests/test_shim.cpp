@@ -1,9 +1,9 @@
 // The interposer's own code, linked into this test: real-function resolution, contexts,
 // GetProcAddress answers and the screenshot's state hygiene, on an OSMesa context.
 
+#include "frame/FrameGrabber.h"
 #include "shim/Api.h"
 #include "shim/Context.h"
-#include "shim/FrameGrabber.h"
 #include "shim/ProcAddress.h"
 #include "shim/RealGl.h"
 #include "shim/ThreadState.h"

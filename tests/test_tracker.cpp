@@ -2,8 +2,8 @@
 // material — display lists, client arrays and buffers included.
 
 #include "capture/CaptureReader.h"
-#include "shim/CaptureBlobs.h"
-#include "shim/StateTracker.h"
+#include "frame/CaptureBlobs.h"
+#include "frame/StateTracker.h"
 #include "stream/CallWriter.h"
 #include "stream/Opcodes.h"
 #include "tests/support/Process.h"
@@ -238,7 +238,7 @@ TEST(StateTracker, FramesReuseTheirVertexStorage)
 }
 
 // From a capture to meshes: the tracker's batches through the reconstruction.
-#include "shim/FrameExport.h"
+#include "frame/FrameExport.h"
 
 TEST(Reconstruction, EachGlxgearsGearIsOneClosedObject)
 {

@@ -10,7 +10,7 @@
 // valid while the fuzzer mutates the blobs (make_replay_seeds writes such inputs).
 
 #include "capture/CaptureWriter.h"
-#include "shim/Replayer.h"
+#include "replay/Replayer.h"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,9 +1,9 @@
-#include "shim/CaptureSession.h"
+#include "frame/CaptureSession.h"
 
 #include "common/Log.h"
+#include "frame/Recorder.h"
 #include "shim/Context.h"
 #include "shim/RealGl.h"
-#include "shim/Recorder.h"
 #include "stream/Opcodes.h"
 
 #include <cstdlib>

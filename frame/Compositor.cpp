@@ -1,9 +1,9 @@
-#include "shim/Compositor.h"
+#include "frame/Compositor.h"
 
 #include "common/Log.h"
+#include "frame/Recorder.h"
 #include "shim/Context.h"
 #include "shim/RealGl.h"
-#include "shim/Recorder.h"
 #include "shim/RecordingDispatch.h"
 #include "shim/Settings.h"
 #include "shim/ThreadState.h"

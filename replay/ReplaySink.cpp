@@ -1,6 +1,6 @@
-#include "shim/ReplaySink.h"
+#include "replay/ReplaySink.h"
 
-#include "shim/ClientArrays.h"
+#include "frame/ClientArrays.h"
 #include "shim/RealGl.h"
 #include "stream/CallDecoder.h"
 #include "stream/GlSizes.h"
@@ -125,10 +125,23 @@ bool ReplaySink::pseudo(CallReader& r, uint16_t opcode)
 {
     if (opcode == op::kFrameEnd) {
         uint64_t frame = r.get<uint64_t>();
-        return r.ok() && mFrameEnd(frame);
+        if (!r.ok()) return false;
+        for (const auto& [name, count] : mFrameUncaptured) {
+            Uncaptured& u = mUncaptured[name];
+            u.calls += count;
+            u.frames.push_back(frame);
+        }
+        mFrameUncaptured.clear();
+        return mFrameEnd(frame);
     }
     if (opcode == op::kArrayData) return mArrays.apply(r);
     if (opcode == op::kBatchRef) return expandBatchRef(r, *this, mDepth);
+    if (opcode == op::kUncaptured) {
+        CallReader::Uncaptured calls;
+        if (!r.getUncaptured(calls)) return false;
+        for (auto& [name, count] : calls) mFrameUncaptured.emplace_back(std::move(name), count);
+        return true;
+    }
     r.fail("unknown opcode " + std::to_string(opcode));
     return false;
 }

@@ -3,16 +3,17 @@
 // ReplaySink: the decodeCall sink that replays a stream through the current context's
 // dispatch, refusing calls the driver would trust and crash or hang on.
 
+#include "frame/DisplayListBudget.h"
+#include "frame/ShadowArrays.h"
+#include "replay/ReplayLimits.h"
 #include "shim/Api.h"
-#include "shim/DisplayListBudget.h"
-#include "shim/ReplayLimits.h"
-#include "shim/ShadowArrays.h"
 #include "shim/ThreadState.h"
 #include "stream/CallReader.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,13 @@ public:
     const void* clientPointer(uint64_t value, int attribIndex);
     bool pseudo(CallReader& r, uint16_t opcode);
     const std::string& error() const { return mError; }
+    // Calls the program made that the capture lacks (forwarded, not recorded), by name, with
+    // the frames they were made in.
+    struct Uncaptured {
+        uint64_t calls = 0;
+        std::vector<uint64_t> frames;
+    };
+    const std::map<std::string, Uncaptured>& uncaptured() const { return mUncaptured; }
 
     // Checks the generated decoder calls before the driver's (false: refused).
     bool checkImage(uint16_t opcode, const Image& image, GLenum format, GLenum type, GLsizei width,
@@ -116,6 +124,8 @@ private:
     std::vector<uint8_t> mScratch;
     std::vector<uint8_t> mIndices;
     int mDepth = 0;
+    CallReader::Uncaptured mFrameUncaptured; // of the frame being replayed
+    std::map<std::string, Uncaptured> mUncaptured;
     std::string mError;
     std::vector<ArrayUse> mUses;
     bool mUsesValid = false;

@@ -2,7 +2,7 @@
 
 #include "capture/CaptureWriter.h"
 #include "common/FrameSet.h"
-#include "shim/StreamSink.h"
+#include "frame/StreamSink.h"
 
 #include <cstdint>
 #include <mutex>

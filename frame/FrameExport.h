@@ -1,7 +1,7 @@
 #pragma once
 
+#include "frame/StateTracker.h"
 #include "reconstruct/Reconstructor.h"
-#include "shim/StateTracker.h"
 
 #include <string>
 #include <vector>

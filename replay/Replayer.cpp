@@ -1,12 +1,12 @@
-#include "shim/Replayer.h"
+#include "replay/Replayer.h"
 
 #include "common/Log.h"
 #include "common/PngImage.h"
+#include "frame/CaptureBlobs.h"
+#include "frame/ShadowArrays.h"
+#include "replay/ReplaySink.h"
 #include "shim/Api.h"
-#include "shim/CaptureBlobs.h"
 #include "shim/RealGl.h"
-#include "shim/ReplaySink.h"
-#include "shim/ShadowArrays.h"
 #include "shim/ThreadState.h"
 #include "stream/CallDecoder.h"
 #include "stream/Opcodes.h"
@@ -129,6 +129,13 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
     }
     OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
     OSMesaDestroyContext(ctx);
+    // What the program did that the capture lacks: the replayed frames may differ there.
+    for (const auto& [name, seen] : sink.uncaptured()) {
+        NPRGL_WARN("context %u: the capture lacks %llu call%s to %s (not captured), in "
+                   "frame%s %s", contextId, static_cast<unsigned long long>(seen.calls),
+                   seen.calls == 1 ? "" : "s", name.c_str(), seen.frames.size() == 1 ? "" : "s",
+                   FrameSet::describe(seen.frames).c_str());
+    }
     if (framesWritten) *framesWritten = written;
     return ok;
 }

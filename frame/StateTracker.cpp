@@ -1,4 +1,4 @@
-#include "shim/StateTracker.h"
+#include "frame/StateTracker.h"
 
 #include "stream/CallDecoder.h"
 #include "stream/Opcodes.h"
@@ -617,6 +617,10 @@ bool StateTracker::pseudo(CallReader& r, uint16_t opcode)
         return r.ok();
     }
     if (opcode == op::kArrayData) return mArrays.apply(r);
+    if (opcode == op::kUncaptured) {
+        CallReader::Uncaptured ignored; // what the recorder could not follow either
+        return r.getUncaptured(ignored);
+    }
     if (opcode == op::kBatchRef) {
         const std::vector<uint8_t>* blob = r.getBlobRef();
         if (!blob) return false;

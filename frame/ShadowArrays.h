@@ -1,6 +1,6 @@
 #pragma once
 
-#include "shim/ClientArrays.h"
+#include "frame/ClientArrays.h"
 #include "stream/CallReader.h"
 
 #include <cstddef>

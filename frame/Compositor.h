@@ -1,8 +1,8 @@
 #pragma once
 
+#include "frame/StateTracker.h"
 #include "reconstruct/Reconstructor.h"
 #include "shim/Api.h"
-#include "shim/StateTracker.h"
 #include "styles/Scene.h"
 #include "styles/StyleChain.h"
 

@@ -1,4 +1,4 @@
-#include "shim/FrameGrabber.h"
+#include "frame/FrameGrabber.h"
 
 #include "common/Log.h"
 #include "common/PngImage.h"

@@ -1,4 +1,4 @@
-#include "shim/FrameExport.h"
+#include "frame/FrameExport.h"
 
 #include "common/Log.h"
 #include "reconstruct/MeshExport.h"

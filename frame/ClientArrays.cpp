@@ -1,4 +1,4 @@
-#include "shim/ClientArrays.h"
+#include "frame/ClientArrays.h"
 
 #include "stream/GlSizes.h"
 

@@ -1,4 +1,4 @@
-#include "shim/DisplayListBudget.h"
+#include "frame/DisplayListBudget.h"
 
 #include <GL/gl.h>
 

@@ -2,7 +2,7 @@
 
 #include "capture/CaptureReader.h"
 #include "common/FrameSet.h"
-#include "shim/ReplayLimits.h"
+#include "replay/ReplayLimits.h"
 
 #include <functional>
 #include <string>

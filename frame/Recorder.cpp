@@ -1,8 +1,8 @@
-#include "shim/Recorder.h"
+#include "frame/Recorder.h"
 
 #include "common/Log.h"
-#include "shim/StreamSink.h"
-#include "shim/Compositor.h"
+#include "frame/Compositor.h"
+#include "frame/StreamSink.h"
 #include "shim/Context.h"
 #include "shim/RealGl.h"
 #include "shim/ThreadState.h"
@@ -67,14 +67,29 @@ void Recorder::readback()
 
 void Recorder::endFrame(uint64_t frame)
 {
+    if (mSession) {
+        // The frame names what it lacks (nprgl info and replay say which frames).
+        mFrameUncaptured.clear();
+        takeUncaptured([this](const char* name, uint64_t count) {
+            mSession->addUncaptured(name, count);
+            mFrameUncaptured.emplace_back(name, count);
+        });
+        if (!mFrameUncaptured.empty()) {
+            mWriter.op(op::kUncaptured);
+            const size_t mark = mWriter.beginPayload();
+            mWriter.put<uint32_t>(uint32_t(mFrameUncaptured.size()));
+            for (const auto& [name, count] : mFrameUncaptured) {
+                mWriter.putString(name);
+                mWriter.put<uint64_t>(count);
+            }
+            mWriter.endPayload(mark);
+        }
+    }
     mWriter.op(op::kFrameEnd);
     mWriter.put<uint64_t>(frame);
     Compositor* compositor = mContext.compositor();
     if (compositor) compositor->syncStream();
     if (mSession) {
-        takeUncaptured([this](const char* name, uint64_t count) {
-            mSession->addUncaptured(name, count);
-        });
         if (!mStopped && !mSession->writeFrame(mContext, frame, mWriter.data(), mWriter.size())) {
             mStopped = true;
         }

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "reconstruct/Reconstructor.h"
-#include "shim/StateTracker.h"
-#include "shim/StreamSink.h"
 #include "common/FrameSet.h"
+#include "frame/StateTracker.h"
+#include "frame/StreamSink.h"
+#include "reconstruct/Reconstructor.h"
 
 #include <map>
 #include <mutex>

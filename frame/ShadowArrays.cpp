@@ -1,4 +1,4 @@
-#include "shim/ShadowArrays.h"
+#include "frame/ShadowArrays.h"
 
 #include <algorithm>
 #include <cstring>

@@ -1,9 +1,9 @@
 #pragma once
 
+#include "frame/ClientArrays.h"
+#include "frame/ShadowArrays.h"
 #include "reconstruct/Batch.h"
 #include "shim/Api.h"
-#include "shim/ClientArrays.h"
-#include "shim/ShadowArrays.h"
 #include "stream/CallReader.h"
 
 #include <glm/glm.hpp>

@@ -1,10 +1,10 @@
-#include "shim/LiveExport.h"
+#include "frame/LiveExport.h"
 
 #include "capture/Metadata.h"
 #include "common/KeyValue.h"
 #include "common/Log.h"
+#include "frame/FrameExport.h"
 #include "shim/Context.h"
-#include "shim/FrameExport.h"
 
 #include <cstdlib>
 #include <filesystem>

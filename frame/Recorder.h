@@ -1,6 +1,6 @@
 #pragma once
 
-#include "shim/ClientArrays.h"
+#include "frame/ClientArrays.h"
 #include "shim/Context.h"
 #include "shim/ThreadState.h"
 #include "stream/CallWriter.h"
@@ -8,6 +8,7 @@
 
 #include <array>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace nprgl {
@@ -164,6 +165,7 @@ private:
     uint64_t mUnfollowedImages = 0;    // images from an unpack buffer nprgl did not follow
     std::vector<uint64_t> mUncaptured;
     std::vector<uint64_t> mUncapturedReported;
+    std::vector<std::pair<const char*, uint64_t>> mFrameUncaptured; // endFrame's scratch
     bool mStopped = false;
     size_t mBatchStart = SIZE_MAX; // writer offset of the open glBegin
 };
