@@ -6,9 +6,11 @@ by its own `--report` line (the frame loop only), and a glxgears capture replaye
 (`nprgl replay`, whole process). For every case the styles run in rounds, each round all
 styles one after the other (so drift and noise hit all of them alike); the figure per style
 is the median over the rounds and the ratio is style frame time / `none` frame time (lower
-is better). Targets (issue 6): toon and halftone at most 1.5.
+is better). Targets (issue 6): toon and halftone at most 1.5. The style `native` runs the demo
+without nprgl (no preload) in the same rounds, so every style also has a ratio to the
+program alone (issue 13: toon at most 1.3x native); a capture's replay has no native run.
 
-  bench/style_bench.py [--build DIR] [--rounds N] [--styles a,b,...] [--json]
+  bench/style_bench.py [--build DIR] [--rounds N] [--styles native,none,a,b,...] [--json]
 
 A benchmark reports; it does not judge noise. Exit status 0 whatever the ratios, 1 if a run
 failed. Python 3 standard library only.
@@ -48,8 +50,10 @@ def demo_cases(build: str) -> list[tuple[str, list[str], int]]:
 
 
 def run_demo(build: str, style: str, argv: list[str], frames: int) -> float:
-    cmd = [os.path.join(build, "bin", "nprgl"), "--style", style, "--", *argv, "--offscreen",
-           "--size", "512x512", "--frames", str(frames), "--report"]
+    nprgl = [] if style == "native" else [os.path.join(build, "bin", "nprgl"), "--style", style,
+                                          "--"]
+    cmd = [*nprgl, *argv, "--offscreen", "--size", "512x512", "--frames", str(frames),
+           "--report"]
     p = subprocess.run(cmd, capture_output=True, text=True, env=clean_env(), timeout=600)
     if p.returncode != 0:
         raise RunFailed(f"exit {p.returncode}: {' '.join(cmd)}\n{p.stderr[-2000:]}")
@@ -91,7 +95,7 @@ def main() -> int:
     ap.add_argument("--json", action="store_true")
     args = ap.parse_args()
     styles = args.styles.split(",")
-    if styles[0] != "none":
+    if "none" not in styles:
         styles.insert(0, "none")
     results = []
     try:
@@ -105,23 +109,31 @@ def main() -> int:
             times: dict[str, list[float]] = {s: [] for s in styles}
             for _ in range(args.rounds):
                 for style in styles:
+                    if cap and style == "native":
+                        continue
                     if cap:
                         times[style].append(run_replay(args.build, style, cap, tmp + "/out"))
                     else:
                         times[style].append(run_demo(args.build, style, argv, frames))
             base = statistics.median(times["none"])
+            native = statistics.median(times["native"]) if times.get("native") else None
             row = {"case": name, "unit": "ms per frame" if not cap else "ms per replay",
-                   "none": base, "styles": {}}
-            for style in styles[1:]:
+                   "none": base, "native": native, "styles": {}}
+            for style in styles:
+                if style == "none" or not times[style]:
+                    continue
                 med = statistics.median(times[style])
                 row["styles"][style] = {"median": med, "min": min(times[style]),
-                                        "max": max(times[style]), "ratio": med / base}
+                                        "max": max(times[style]), "ratio": med / base,
+                                        "native_ratio": med / native if native else None}
             results.append(row)
             if not args.json:
                 print(f"{name}: none {base:.3f} {row['unit']}")
                 for style, r in row["styles"].items():
+                    vs_native = (f"  x native {r['native_ratio']:.2f}"
+                                 if r["native_ratio"] else "")
                     print(f"    {style:16s} {r['median']:9.3f}  ratio {r['ratio']:.2f}"
-                          f"  ({r['min']:.3f}-{r['max']:.3f})")
+                          f"{vs_native}  ({r['min']:.3f}-{r['max']:.3f})")
                 sys.stdout.flush()
     except RunFailed as e:
         print(f"style_bench: {e}", file=sys.stderr)

@@ -45,10 +45,11 @@ int replayCommand(const ReplayCommandOptions& options)
     std::string chain = options.style;
     if (!Presets::combine(options.preset, chain, config, error)) return fail("--preset: " + error);
     if (!StyleSettings::parse(chain, config, style, error)) return fail(error);
-    setenv("NPRGL_STYLE", style.chainName().c_str(), 1);
-    setenv("NPRGL_CONFIG", config.c_str(), 1);
 
     ReplayOptions replay;
+    replay.config.emplace();
+    replay.config->style = std::move(style);
+    replay.config->programName = "nprgl";
     if (!parseFrames(options.frames, replay.frames, error)) return fail("--frames: " + error);
     if (!options.size.empty() &&
         std::sscanf(options.size.c_str(), "%dx%d", &replay.width, &replay.height) != 2) {

@@ -5,7 +5,6 @@
 #include "shim/Context.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
-#include "shim/Settings.h"
 #include "shim/ThreadState.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -283,7 +282,7 @@ bool Compositor::startStyles()
     const GLenum appError = gRealGl.glGetError();
     if (!saveState()) return false;
     std::string error;
-    const bool ok = mChain.init(Settings::get().style, &realProc, error);
+    const bool ok = mChain.init(mContext.config().style, &realProc, error);
     restoreState();
     while (gRealGl.glGetError() != GL_NO_ERROR) {
     }
@@ -294,7 +293,7 @@ bool Compositor::startStyles()
     }
     mShading = mChain.hasShading();
     NPRGL_INFO("context %u: style %s on %s", mContext.serial(),
-               Settings::get().style.chainName().c_str(), mContext.renderer().c_str());
+               mContext.config().style.chainName().c_str(), mContext.renderer().c_str());
     return true;
 }
 

@@ -55,6 +55,11 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         return false;
     }
 
+    // The context made current below is a Context of the pipeline: it takes this Config.
+    if (options.config && !Config::use(*options.config)) {
+        NPRGL_WARN("the replay's style comes too late (a context exists already): style %s",
+                   Config::process().style.chainName().c_str());
+    }
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
     if (!ctx) {
         error = "cannot create an OSMesa context";

@@ -3,8 +3,10 @@
 #include "capture/CaptureReader.h"
 #include "common/FrameSet.h"
 #include "replay/ReplayLimits.h"
+#include "shim/Config.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace nprgl {
@@ -17,6 +19,8 @@ struct ReplayOptions {
     uint32_t contextId = 0; // 0: the stream with the most frames
     bool progress = false;  // a progress bar on stderr
     ReplayLimits limits;    // what a call may ask of the driver before it is refused
+    // The style and values to replay with; unset: the process's (the environment's).
+    std::optional<Config> config;
 };
 
 // Replays a capture headless on OSMesa through the same pipeline the library runs inside an

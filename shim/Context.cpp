@@ -8,7 +8,6 @@
 #include "frame/Recorder.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
-#include "shim/Settings.h"
 #include "shim/ThreadState.h"
 
 #include <cstdio>
@@ -35,14 +34,14 @@ void APIENTRY osmesaFinish()
 
 } // namespace
 
-Context::Context(WindowSystem ws, const void* handle, uint32_t serial)
-    : mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial)
+Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Config& config)
+    : mConfig(config), mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial)
 {
     // Recording to a file wins over a live export (both need the Stream).
     StreamSink* sink = CaptureSession::instance();
     if (!sink) sink = LiveExport::instance();
     // The compositor reads the Stream too (from memory, frame by frame).
-    const bool styled = Settings::get().style.chain().front()->create != nullptr;
+    const bool styled = mConfig.style.chain().front()->create != nullptr;
     if (sink || styled) {
         mRecorder = std::make_unique<Recorder>(*this, sink);
         installRecording(mDispatch);
@@ -122,13 +121,11 @@ bool Context::endFrame()
     if (mCompositor) mCompositor->flush();
     ++mFrame;
     if (mRecorder) mRecorder->endFrame(mFrame);
-    const Settings& settings = Settings::get();
-    return settings.screenshots && settings.screenshotFrames.contains(mFrame);
+    return mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame);
 }
 
 void Context::writeScreenshot(int width, int height)
 {
-    const Settings& settings = Settings::get();
     char name[64];
     if (mSerial == 1) {
         std::snprintf(name, sizeof name, "_%llu.png", static_cast<unsigned long long>(mFrame));
@@ -136,7 +133,7 @@ void Context::writeScreenshot(int width, int height)
         std::snprintf(name, sizeof name, "_ctx%u_%llu.png", mSerial,
                       static_cast<unsigned long long>(mFrame));
     }
-    std::string path = settings.screenshotDir + "/" + settings.programName + name;
+    std::string path = mConfig.screenshotDir + "/" + mConfig.programName + name;
     FrameGrabber::writeFrame(mCaps, width, height, path);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "shim/Api.h"
+#include "shim/Config.h"
 
 #include <cstdint>
 #include <memory>
@@ -28,7 +29,7 @@ struct ContextCaps {
 // the dispatch table the thunks use while it is current, and counts frames.
 class Context {
 public:
-    Context(WindowSystem ws, const void* handle, uint32_t serial);
+    Context(WindowSystem ws, const void* handle, uint32_t serial, const Config& config);
     ~Context();
 
     // Called on every MakeCurrent to this context, after the driver's.
@@ -59,6 +60,7 @@ public:
     WindowSystem windowSystem() const { return mWs; }
     const void* handle() const { return mHandle; }
     uint32_t serial() const { return mSerial; }
+    const Config& config() const { return mConfig; }
     uint64_t frame() const { return mFrame; }
     const std::string& vendor() const { return mVendor; }
     const std::string& renderer() const { return mRenderer; }
@@ -69,6 +71,7 @@ public:
 private:
     void queryCaps();
 
+    const Config& mConfig; // the process's (Config::process), which outlives every context
     GlDispatch mDispatch;
     void(APIENTRY* mFinish)() = nullptr;
     std::unique_ptr<Recorder> mRecorder;

@@ -1,7 +1,7 @@
 #include "shim/ContextRegistry.h"
 
 #include "shim/RealGl.h"
-#include "shim/Settings.h"
+#include "shim/Config.h"
 #include "shim/ThreadState.h"
 
 namespace nprgl {
@@ -27,12 +27,13 @@ void ContextRegistry::makeCurrent(WindowSystem ws, const void* handle)
         tThread.dispatch = &gRealGl;
         return;
     }
-    Settings::get(); // read (and report) the configuration once, at the first context
+    // Read (and reported) once, at the first context; every context gets the same.
+    const Config& config = Config::process();
     std::shared_ptr<Context> ctx;
     {
         std::lock_guard lock(mMutex);
         auto& slot = mContexts[Key{ws, handle}];
-        if (!slot) slot = std::make_shared<Context>(ws, handle, mNextSerial++);
+        if (!slot) slot = std::make_shared<Context>(ws, handle, mNextSerial++, config);
         ctx = slot;
     }
     tCurrent = ctx;

@@ -1,4 +1,4 @@
-#include "shim/Settings.h"
+#include "shim/Config.h"
 
 #include "common/Log.h"
 #include "common/ScreenshotSpec.h"
@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 
 namespace nprgl {
 
@@ -18,7 +20,7 @@ std::string envOr(const char* name, const char* fallback)
     return v ? v : fallback;
 }
 
-void parseScreenshot(const std::string& text, Settings& s)
+void parseScreenshot(const std::string& text, Config& s)
 {
     ScreenshotSpec spec;
     std::string error;
@@ -38,9 +40,22 @@ void parseScreenshot(const std::string& text, Settings& s)
     s.screenshots = true;
 }
 
-Settings load()
+struct ProcessConfig {
+    std::mutex mutex;
+    std::unique_ptr<Config> config; // set once, never replaced: references stay valid
+};
+
+ProcessConfig& processConfig()
 {
-    Settings s;
+    static ProcessConfig* p = new ProcessConfig; // lives past exit: contexts may outlive statics
+    return *p;
+}
+
+} // namespace
+
+Config Config::fromEnvironment()
+{
+    Config s;
     s.programName = program_invocation_short_name;
     std::string style = envOr("NPRGL_STYLE", "");
     std::string config = envOr("NPRGL_CONFIG", "");
@@ -58,12 +73,21 @@ Settings load()
     return s;
 }
 
-} // namespace
-
-const Settings& Settings::get()
+const Config& Config::process()
 {
-    static const Settings settings = load();
-    return settings;
+    ProcessConfig& p = processConfig();
+    std::lock_guard lock(p.mutex);
+    if (!p.config) p.config = std::make_unique<Config>(fromEnvironment());
+    return *p.config;
+}
+
+bool Config::use(Config config)
+{
+    ProcessConfig& p = processConfig();
+    std::lock_guard lock(p.mutex);
+    if (p.config) return false;
+    p.config = std::make_unique<Config>(std::move(config));
+    return true;
 }
 
 } // namespace nprgl
