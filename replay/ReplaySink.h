@@ -85,6 +85,7 @@ public:
     bool check_glGenBuffers(GLsizei n, GLuint* names) { return checkNames(n, names); }
     bool check_glGenFramebuffers(GLsizei n, GLuint* names) { return checkNames(n, names); }
     bool check_glGenRenderbuffers(GLsizei n, GLuint* names) { return checkNames(n, names); }
+    bool check_glGenProgramsARB(GLsizei n, GLuint* names) { return checkNames(n, names); }
 
 private:
     // One enabled array a draw reads: bytes from `start` of a shadow slot or a buffer.

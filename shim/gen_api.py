@@ -85,6 +85,12 @@ RECORDED_EXTRA = [
     "glLockArraysEXT", "glUnlockArraysEXT",
     # ARB shader objects with no core alias (the rest alias GL 2.0 commands).
     "glDeleteObjectARB",
+    # ARB vertex and fragment programs (assembly shaders of the GL 1.x era).
+    "glGenProgramsARB", "glDeleteProgramsARB", "glBindProgramARB", "glProgramStringARB",
+    "glProgramEnvParameter4fARB", "glProgramEnvParameter4fvARB", "glProgramEnvParameter4dARB",
+    "glProgramEnvParameter4dvARB", "glProgramLocalParameter4fARB",
+    "glProgramLocalParameter4fvARB", "glProgramLocalParameter4dARB",
+    "glProgramLocalParameter4dvARB",
 ]
 
 

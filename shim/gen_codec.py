@@ -37,7 +37,7 @@ UNCAPTURED = {
 }
 # Output-only commands that are replayed with scratch memory (names come back the same).
 GEN_COMMANDS = {"glGenTextures", "glGenQueries", "glGenBuffers", "glGenFramebuffers",
-                "glGenRenderbuffers"}
+                "glGenRenderbuffers", "glGenProgramsARB"}
 # Handled entirely by hand in Recorder (they touch client memory or mapped buffers).
 SPECIAL = {"glMapBuffer", "glMapBufferRange", "glFlushMappedBufferRange", "glUnmapBuffer",
            "glInterleavedArrays"}
@@ -78,7 +78,7 @@ CHECKED = {
     "glArrayElement", "glNewList", "glEndList", "glCallList", "glCallLists", "glListBase",
     "glDeleteLists", "glGenLists", "glEvalMesh1", "glEvalMesh2", "glBufferData",
     "glCopyTexImage1D", "glCopyTexImage2D", "glGenTextures", "glGenQueries", "glGenBuffers",
-    "glGenFramebuffers", "glGenRenderbuffers",
+    "glGenFramebuffers", "glGenRenderbuffers", "glGenProgramsARB",
 }
 
 

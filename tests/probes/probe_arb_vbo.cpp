@@ -9,6 +9,8 @@
 //                restart index (GL 3.1), which is no vertex: nothing may read it as one
 //   --map        the ring's vertices are written through glMapBufferRange with explicit
 //                flushes, its indices through a mapped range flushed by the unmap (GL 3.0)
+//   --program    the ring is coloured by an ARB fragment program (ARB_fragment_program: its
+//                text, a local and an env parameter)
 //   --empty      draws nothing (the background alone)
 //   --save FILE  writes the last frame's RGBA bytes
 #include <GL/osmesa.h>
@@ -36,6 +38,11 @@ PFNGLPRIMITIVERESTARTINDEXPROC primitiveRestartIndex;
 PFNGLMAPBUFFERRANGEPROC mapBufferRange;
 PFNGLFLUSHMAPPEDBUFFERRANGEPROC flushMappedBufferRange;
 PFNGLUNMAPBUFFERARBPROC unmapBuffer;
+PFNGLGENPROGRAMSARBPROC genPrograms;
+PFNGLBINDPROGRAMARBPROC bindProgram;
+PFNGLPROGRAMSTRINGARBPROC programString;
+PFNGLPROGRAMLOCALPARAMETER4FARBPROC programLocal4f;
+PFNGLPROGRAMENVPARAMETER4FVARBPROC programEnv4fv;
 
 template <typename T> bool fetch(T& fn, const char* name)
 {
@@ -96,13 +103,14 @@ void torus(std::vector<float>& vertices, std::vector<GLushort>& indices)
 
 int main(int argc, char** argv)
 {
-    bool vao = false, empty = false, restart = false, map = false;
+    bool vao = false, empty = false, restart = false, map = false, program = false;
     const char* save = nullptr;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--vao") == 0) vao = true;
         if (std::strcmp(argv[i], "--empty") == 0) empty = true;
         if (std::strcmp(argv[i], "--restart") == 0) restart = true;
         if (std::strcmp(argv[i], "--map") == 0) map = true;
+        if (std::strcmp(argv[i], "--program") == 0) program = true;
         if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save = argv[++i];
     }
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
@@ -126,6 +134,30 @@ int main(int argc, char** argv)
                 !fetch(flushMappedBufferRange, "glFlushMappedBufferRange") ||
                 !fetch(unmapBuffer, "glUnmapBufferARB"))) {
         return 2;
+    }
+    if (program && (!fetch(genPrograms, "glGenProgramsARB") ||
+                    !fetch(bindProgram, "glBindProgramARB") ||
+                    !fetch(programString, "glProgramStringARB") ||
+                    !fetch(programLocal4f, "glProgramLocalParameter4fARB") ||
+                    !fetch(programEnv4fv, "glProgramEnvParameter4fvARB"))) {
+        return 2;
+    }
+    GLuint fragmentProgram = 0;
+    if (program) {
+        // The lit colour times a local parameter, plus an env parameter.
+        static const char kText[] = "!!ARBfp1.0\n"
+                                    "TEMP c;\n"
+                                    "MUL c, fragment.color, program.local[0];\n"
+                                    "ADD result.color, c, program.env[1];\n"
+                                    "END\n";
+        genPrograms(1, &fragmentProgram);
+        bindProgram(GL_FRAGMENT_PROGRAM_ARB, fragmentProgram);
+        programString(GL_FRAGMENT_PROGRAM_ARB, GL_PROGRAM_FORMAT_ASCII_ARB,
+                      GLsizei(sizeof kText - 1), kText);
+        programLocal4f(GL_FRAGMENT_PROGRAM_ARB, 0, 1.0f, 0.3f, 0.2f, 1.0f);
+        const GLfloat env[4] = {0.1f, 0.1f, 0.4f, 0.0f};
+        programEnv4fv(GL_FRAGMENT_PROGRAM_ARB, 1, env);
+        bindProgram(GL_FRAGMENT_PROGRAM_ARB, 0);
     }
     const std::vector<float> box = cube();
     std::vector<float> ring;
@@ -264,6 +296,10 @@ int main(int argc, char** argv)
             glDrawElements(GL_TRIANGLES, GLsizei(ringIndices.size()), GL_UNSIGNED_SHORT, nullptr);
             bindVertexArray(0);
         } else {
+            if (program) {
+                bindProgram(GL_FRAGMENT_PROGRAM_ARB, fragmentProgram);
+                glEnable(GL_FRAGMENT_PROGRAM_ARB);
+            }
             bindBuffer(GL_ARRAY_BUFFER_ARB, buffers[1]);
             glNormalPointer(GL_FLOAT, 6 * sizeof(float), reinterpret_cast<const void*>(0));
             glVertexPointer(3, GL_FLOAT, 6 * sizeof(float),
@@ -276,6 +312,7 @@ int main(int argc, char** argv)
             glDisableClientState(GL_VERTEX_ARRAY);
             bindBuffer(GL_ELEMENT_ARRAY_BUFFER_ARB, 0);
             bindBuffer(GL_ARRAY_BUFFER_ARB, 0);
+            if (program) glDisable(GL_FRAGMENT_PROGRAM_ARB);
         }
         glPopMatrix();
         // The cube: vertex and texcoord arrays at offsets 8 and 0 of an ARB buffer.
