@@ -65,6 +65,20 @@ void Recorder::readback()
     if (Compositor* c = mContext.compositor()) c->barrier();
 }
 
+void Recorder::readPixels(uint16_t opcode)
+{
+    // Into client memory it only reads the frame; into a pixel-pack buffer (GL 2.1) it writes
+    // a buffer whose new content the capture lacks.
+    learnCaps();
+    GLint pack = 0;
+    if (mCanAskUnpack) gRealGl.glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &pack);
+    if (pack) {
+        countUncaptured(opcode);
+    } else {
+        readback();
+    }
+}
+
 void Recorder::endFrame(uint64_t frame)
 {
     if (mSession) {

@@ -111,6 +111,7 @@ void APIENTRY tPushMatrix() { T().pushMatrix(); }
 void APIENTRY tPopMatrix() { T().popMatrix(); }
 void APIENTRY tEnable(GLenum cap) { T().setEnabled(cap, true); }
 void APIENTRY tDisable(GLenum cap) { T().setEnabled(cap, false); }
+void APIENTRY tUseProgram(GLuint program) { T().useProgram(program); }
 void APIENTRY tMaterialfv(GLenum face, GLenum pname, const GLfloat* v)
 {
     T().material(face, pname, v);
@@ -295,6 +296,7 @@ StateTracker::StateTracker()
     d.glPopMatrix = tPopMatrix;
     d.glEnable = tEnable;
     d.glDisable = tDisable;
+    d.glUseProgram = tUseProgram;
     d.glMaterialfv = tMaterialfv;
     d.glMaterialf = tMaterialf;
     d.glMaterialiv = tMaterialiv;
@@ -417,6 +419,8 @@ bool StateTracker::is3D() const
 const char* StateTracker::unstylableState() const
 {
     const AttribState& a = mAttrib;
+    // The program's shaders decide colour and position; a style would draw something else.
+    if (mProgram != 0 || a.vertexProgram || a.fragmentProgram) return "the program's own shaders";
     if (a.blend) return "blending";
     if (a.alphaTest) return "the alpha test";
     if (a.stencilTest) return "the stencil test";
@@ -808,6 +812,8 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     case GL_ALPHA_TEST: a.alphaTest = on; break;
     case GL_STENCIL_TEST: a.stencilTest = on; break;
     case GL_LIGHT0: a.light0On = on; break;
+    case GL_VERTEX_PROGRAM_ARB: a.vertexProgram = on; break;
+    case GL_FRAGMENT_PROGRAM_ARB: a.fragmentProgram = on; break;
     default: break;
     }
 }

@@ -117,6 +117,7 @@ public:
     void pushMatrix();
     void popMatrix();
     void setEnabled(GLenum cap, bool on);
+    void useProgram(GLuint program) { mProgram = program; }
     void material(GLenum face, GLenum pname, const float* v);
     void newList(GLuint list, GLenum mode);
     void endList();
@@ -168,6 +169,7 @@ private:
         bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
         uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
         bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
+        bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
         bool fillFront = true, fillBack = true, colorMaskAll = true;
         glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
         glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
@@ -205,6 +207,7 @@ private:
     uint32_t currentMaterialId();
 
     GlDispatch mDispatch{}; // slots of calls never recorded stay null: nothing decodes them
+    GLuint mProgram = 0;    // glUseProgram's (GLSL), not part of the attribute stacks
     GlDispatch mCompileOnly{}; // state calls of a GL_COMPILE list: kept, not followed
     bool mSkipping = false;
     ShadowArrays mArrays;

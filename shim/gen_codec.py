@@ -30,9 +30,12 @@ QUERIES = {"glCheckFramebufferStatus", "glCheckFramebufferStatusEXT", "glGetErro
 READBACK_RE = re.compile(r"glGet(n?(Compressed)?Tex(ture)?(Sub)?Image\w*|"
                          r"QueryObject\w*|QueryBufferObject\w*|BufferSubData\w*|"
                          r"NamedBufferSubData\w*)")
+# Readbacks the recorder judges by state (Recorder::<hook>(opcode)): glReadPixels into client
+# memory changes nothing a replay needs; into a pixel-pack buffer it is not captured.
+READBACK_HOOKS = {"glReadPixels": "readPixels"}
 # Calls whose effects cannot be replayed from their arguments: counted only.
 UNCAPTURED = {
-    "glRenderMode", "glReadPixels", "glFeedbackBuffer", "glSelectBuffer", "glMap1d",
+    "glRenderMode", "glFeedbackBuffer", "glSelectBuffer", "glMap1d",
     "glMap1f", "glMap2d", "glMap2f", "glMultiDrawElements",
 }
 # Output-only commands that are replayed with scratch memory (names come back the same).
@@ -122,7 +125,7 @@ def classify(cmd, params, recordable):
     RECORDED_EXTRA); any other is counted."""
     if cmd in SPECIAL:
         return "special"
-    if READBACK_RE.fullmatch(cmd):
+    if READBACK_RE.fullmatch(cmd) or cmd in READBACK_HOOKS:
         return "readback"
     if cmd in QUERIES or (cmd.startswith(QUERY_PREFIXES) and cmd not in UNCAPTURED):
         return "query"
@@ -262,6 +265,9 @@ def recordFunction(op, ret, name, params, mode, heldOnly):
         body.append(f"    return Recorder::current().{name}({args});")
     elif mode == "count":
         body.append(f"    Recorder::current().countUncaptured({op});")
+        body.append(f"    return {call};")
+    elif mode == "readback" and name in READBACK_HOOKS:
+        body.append(f"    Recorder::current().{READBACK_HOOKS[name]}({op});")
         body.append(f"    return {call};")
     elif mode == "readback":
         body.append("    Recorder::current().readback();")

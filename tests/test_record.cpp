@@ -185,7 +185,10 @@ TEST(Info, ReportsProgramFramesCallsAndWhatWasNotCaptured)
                                   demo("displaylist"), "--offscreen", "--frames", "4", "--size",
                                   "64x64", "--save-dir", dir + "/live"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.err.find("not captured: glReadPixels"), std::string::npos) << r.err;
+    // The demo reads its frames back with glReadPixels into its own memory: a readback, which
+    // changes nothing a replay needs, so the capture lacks nothing (test_buffers covers calls
+    // that are left out, and the frames they are left out of).
+    EXPECT_NE(r.err.find("not captured: nothing"), std::string::npos) << r.err;
     ProcessResult i = runProcess({nprglCommand(), "info", file});
     ASSERT_EQ(i.exitCode, 0) << i.err;
     EXPECT_NE(i.out.find("program:     demo_displaylist"), std::string::npos) << i.out;
@@ -193,9 +196,7 @@ TEST(Info, ReportsProgramFramesCallsAndWhatWasNotCaptured)
     EXPECT_NE(i.out.find("glCallList"), std::string::npos) << i.out;
     EXPECT_NE(i.out.find("glNewList"), std::string::npos) << i.out;
     EXPECT_NE(i.out.find("size:        64x64"), std::string::npos) << i.out;
-    size_t notCaptured = i.out.find("not captured:");
-    ASSERT_NE(notCaptured, std::string::npos);
-    EXPECT_NE(i.out.find("glReadPixels", notCaptured), std::string::npos) << i.out;
+    EXPECT_NE(i.out.find("not captured:\n  (none)"), std::string::npos) << i.out;
 }
 
 TEST(Record, DefaultFileIsNamedAfterTheProgramAndFramesLimitTheRecording)

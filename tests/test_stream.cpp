@@ -56,8 +56,8 @@ TEST(CallCodec, PrintsWhatWasEncoded)
     std::vector<uint8_t> frame = sampleFrame();
     std::string out, error;
     uint64_t calls = 0;
-    ASSERT_TRUE(CallPrinter::printFrame(frame.data(), frame.size(), nullptr, nullptr, "", out, error,
-                                        &calls))
+    ASSERT_TRUE(CallPrinter::printFrame(frame.data(), frame.size(), nullptr, nullptr, "", out,
+                                        error, &calls))
         << error;
     EXPECT_EQ(out, "glBegin(mode=GL_TRIANGLES)\n"
                    "glVertex3f(x=0, y=0.5, z=-1)\n"
@@ -158,8 +158,8 @@ TEST(CallCodec, TruncatedAndMutatedFramesNeverCrash)
         std::vector<uint8_t> mutated = frame;
         for (int k = 0; k < 3; ++k) mutated[rng() % mutated.size()] = uint8_t(rng());
         out.clear();
-        refused += !CallPrinter::printFrame(mutated.data(), mutated.size(), nullptr, nullptr, "", out,
-                                            error);
+        refused += !CallPrinter::printFrame(mutated.data(), mutated.size(), nullptr, nullptr,
+                                            "", out, error);
     }
     EXPECT_GT(refused, 1000);
 }
