@@ -7,6 +7,7 @@ pkgs=(
     libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
     libcli11-dev libassimp-dev assimp-testmodels
     mesa-utils x11-utils xvfb xauth
+    freeglut3-dev libsdl2-dev libglfw3-dev
     apitrace
     clang libclang-rt-14-dev
 )
