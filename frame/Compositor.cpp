@@ -149,7 +149,21 @@ glm::vec3 lightDirection(const TrackedBatch& b)
 
 Compositor::Compositor(Context& ctx, Recorder& recorder) : mContext(ctx), mRecorder(recorder) {}
 
-Compositor::~Compositor() = default;
+Compositor::~Compositor()
+{
+    uint64_t left = 0;
+    std::string reasons;
+    for (const auto& [why, n] : mLeftDraws) {
+        left += n;
+        reasons += (reasons.empty() ? "" : ", ") + std::string(why) + " " + std::to_string(n);
+    }
+    if (mStyledDraws == 0 && left == 0) return;
+    NPRGL_INFO("context %u: 3D polygon draws: %llu styled, %llu left as the program drew "
+               "them%s%s%s",
+               mContext.serial(), static_cast<unsigned long long>(mStyledDraws),
+               static_cast<unsigned long long>(left), left ? " (" : "", reasons.c_str(),
+               left ? ")" : "");
+}
 
 void Compositor::install(GlDispatch& d)
 {
@@ -303,8 +317,14 @@ void Compositor::noteUnstyled(bool polygonal)
     // is then partly the program's own, and the user should know why.
     if (!polygonal || !mTracker.is3D()) return;
     const char* why = mTracker.unstylableState();
-    if (!why || std::find(mReported.begin(), mReported.end(), why) != mReported.end()) return;
-    mReported.push_back(why);
+    if (!why) return;
+    auto seen = std::find_if(mLeftDraws.begin(), mLeftDraws.end(),
+                             [why](const auto& entry) { return entry.first == why; });
+    if (seen != mLeftDraws.end()) {
+        ++seen->second;
+        return;
+    }
+    mLeftDraws.emplace_back(why, 1);
     NPRGL_INFO("context %u: 3D polygons drawn with %s are left as the program draws them",
                mContext.serial(), why);
 }
@@ -337,6 +357,7 @@ bool Compositor::holdList(GLuint list)
 
 void Compositor::noteHeld()
 {
+    ++mStyledDraws;
     GLint framebuffer = 0;
     gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     if (mHeld && framebuffer != mHeldFramebuffer) flush(); // one scene per framebuffer

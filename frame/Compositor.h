@@ -9,6 +9,7 @@
 #include <deque>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace nprgl {
@@ -102,7 +103,10 @@ private:
     GLint mHeldFramebuffer = 0;
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
-    std::vector<const char*> mReported; // reasons for unstyled 3D polygons, said once each
+    // 3D polygon draws (a glBegin/glEnd, an array draw, a held glCallList) over the run:
+    // styled, and left as the program draws them by reason (each reason said at its first).
+    uint64_t mStyledDraws = 0;
+    std::vector<std::pair<const char*, uint64_t>> mLeftDraws;
 
     std::vector<TrackedBatch> mTracked;
     std::vector<reconstruct::Batch> mBatches;

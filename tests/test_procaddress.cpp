@@ -174,6 +174,12 @@ TEST_P(ProcAddress, DrawsWithTheProgramsOwnShadersAreLeftAsTheyAre)
     ASSERT_EQ(toon.exitCode, 0) << toon.err;
     EXPECT_NE(toon.err.find("drawn with the program's own shaders are left"), std::string::npos)
         << toon.err;
+    // And counted at exit: one such draw per frame, and one multitextured quad per frame.
+    EXPECT_NE(toon.err.find("multitexturing or generated texture coordinates " +
+                            std::to_string(kFrames) + ", the program's own shaders " +
+                            std::to_string(kFrames) + ")"),
+              std::string::npos)
+        << toon.err;
     const std::array<int, 6> differing =
         differingPerCell(readBytes(dir + "/toon.rgba"), readBytes(dir + "/native.rgba"));
     EXPECT_EQ(differing[4], 0);
