@@ -368,8 +368,10 @@ def measure_case(case: Case, frames: int, args, bins: Path, work: Path,
     def native(n: int) -> list[str]:
         return [*demo, "--frames", str(n)]
 
+    # Style none on both sides: apitrace records and glretrace replays the program's own
+    # picture, so that is what is compared (the default style would add its rendering).
     def record(n: int) -> list[str]:
-        return [nprgl, "record", "-o", str(nprgl_file), "--", *native(n)]
+        return [nprgl, "record", "--style", "none", "-o", str(nprgl_file), "--", *native(n)]
 
     def trace(n: int) -> list[str]:
         return ["apitrace", "trace", "--api", "gl", "-o", str(trace_file), *native(n)]
@@ -412,8 +414,8 @@ def measure_case(case: Case, frames: int, args, bins: Path, work: Path,
     result.nprgl_calls = {name: int(n) for n, name in INFO_CALL_RE.findall(out)}
 
     replay_cmds = {
-        "nprgl replay": [nprgl, "replay", str(nprgl_file), "-o", str(png_dir),
-                         "--frames", str(frames)],
+        "nprgl replay": [nprgl, "replay", "--style", "none", str(nprgl_file), "-o",
+                         str(png_dir), "--frames", str(frames)],
         "glretrace -b": ["glretrace", "-b", str(trace_file)],
         "glretrace -b --headless": ["glretrace", "-b", "--headless", str(trace_file)],
     }
