@@ -31,6 +31,16 @@ void APIENTRY c_glCallList(GLuint list)
     if (masked) c.unmask();
 }
 
+// glCallLists as a whole, held when every list it calls would be.
+void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
+{
+    Compositor& c = C();
+    const bool masked = c.holdLists(n, type, lists) && c.shading();
+    if (masked) c.mask();
+    c.next().glCallLists(n, type, lists);
+    if (masked) c.unmask();
+}
+
 // A draw that may be held back. With a shading style in the chain a held draw is only
 // recorded (the style draws it); without one it goes to the driver as it is (the outline
 // styles draw over the program's own picture).
@@ -70,7 +80,6 @@ NPRGL_HELD_DRAW(glRects, holdDraw(GL_POLYGON), (GLshort a, GLshort b, GLshort x,
         C().barrier();                                                                          \
         return C().next().name args;                                                            \
     }
-NPRGL_BARRIER(void, glCallLists, (GLsizei n, GLenum type, const void* lists), (n, type, lists))
 NPRGL_BARRIER(void, glClear, (GLbitfield mask), (mask))
 NPRGL_BARRIER(void, glAccum, (GLenum op, GLfloat value), (op, value))
 NPRGL_BARRIER(void, glReadPixels,
@@ -349,6 +358,18 @@ bool Compositor::holdList(GLuint list)
     if (!mTracker.wouldHoldList(list)) {
         noteUnstyled(true);
         if (mHeld) flush();
+        return false;
+    }
+    noteHeld();
+    return true;
+}
+
+bool Compositor::holdLists(GLsizei n, GLenum type, const void* lists)
+{
+    if (!ready()) return false;
+    syncStream();
+    if (!mTracker.wouldHoldLists(n, type, lists)) {
+        if (mHeld) flush(); // a barrier: what it draws goes over the finished scene
         return false;
     }
     noteHeld();

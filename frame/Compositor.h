@@ -56,6 +56,7 @@ public:
     void end();
     bool holdDraw(GLenum mode);
     bool holdList(GLuint list);
+    bool holdLists(GLsizei n, GLenum type, const void* lists);
     // Rasteriser discard around a held display list (its state changes must still run).
     void mask();
     void unmask();

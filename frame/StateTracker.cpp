@@ -247,9 +247,7 @@ void APIENTRY tCallListsCompiled(GLsizei, GLenum, const void*) { T().otherDraw()
 
 void APIENTRY tCallLists(GLsizei n, GLenum type, const void* lists)
 {
-    T().otherDraw(); // text, typically: never held as a whole
-    const uint8_t* p = static_cast<const uint8_t*>(lists);
-    for (GLsizei i = 0; p && i < n; ++i) T().callList(T().listBaseValue() + listId(type, p, i));
+    T().callLists(n, type, lists);
 }
 
 bool isPolygonMode(GLenum mode) { return mode >= GL_TRIANGLES && mode <= GL_POLYGON; }
@@ -447,10 +445,14 @@ bool StateTracker::multitexturedArrays() const
 
 bool StateTracker::wouldHoldList(GLuint list) const
 {
-    if (!wouldHold(GL_TRIANGLES)) return false;
+    bool anyBatch = false;
+    return wouldHold(GL_TRIANGLES) && listHoldable(list, anyBatch) && anyBatch;
+}
+
+bool StateTracker::listHoldable(GLuint list, bool& anyBatch) const
+{
     // Breadth-first over the lists it calls; cycles and depth bounded like the driver's.
     std::vector<GLuint> pending{list};
-    bool anyBatch = false;
     for (size_t i = 0; i < pending.size() && i < 64; ++i) {
         auto it = mLists.find(pending[i]);
         if (it == mLists.end()) continue;
@@ -458,7 +460,7 @@ bool StateTracker::wouldHoldList(GLuint list) const
         anyBatch = anyBatch || !it->second.batches.empty();
         pending.insert(pending.end(), it->second.calls.begin(), it->second.calls.end());
     }
-    return anyBatch;
+    return true;
 }
 
 void StateTracker::light(GLenum light, GLenum pname, const float* v)
@@ -745,7 +747,9 @@ bool StateTracker::keep(TrackedBatch& batch)
     }
     batch.is3D = a.depthTest || batch.projection[3][3] == 0.0f;
     if (mHolding) {
-        batch.held = mHoldingList > 0 || wouldHold(batch.mode);
+        // Inside a list the driver draws itself (not masked by the compositor) nothing is
+        // held: the style would draw it a second time over the program's own.
+        batch.held = mHoldingList > 0 || (mPassingList == 0 && wouldHold(batch.mode));
         if (!batch.held) return false; // the compositor keeps only what it re-draws
     }
     batch.lit = a.lighting;
@@ -848,10 +852,44 @@ void StateTracker::callList(GLuint list)
 {
     if (mCompiling) mCompiled.calls.push_back(list); // executed now: GL_COMPILE_AND_EXECUTE
     // A list held back is held as a whole (the compositor masked the whole glCallList).
-    const bool hold = mHolding && mHoldingList == 0 && mCallDepth == 0 && wouldHoldList(list);
+    const bool top = mHoldingList == 0 && mPassingList == 0 && mCallDepth == 0;
+    const bool hold = mHolding && top && wouldHoldList(list);
+    const bool pass = top && !hold;
     mHoldingList += hold;
+    mPassingList += pass;
     callListBody(list);
+    mPassingList -= pass;
     mHoldingList -= hold;
+}
+
+void StateTracker::callLists(GLsizei n, GLenum type, const void* lists)
+{
+    const bool top = mHoldingList == 0 && mPassingList == 0 && mCallDepth == 0;
+    const bool hold = mHolding && top && wouldHoldLists(n, type, lists);
+    if (!hold) otherDraw(); // text, typically
+    const bool pass = top && !hold;
+    mHoldingList += hold;
+    mPassingList += pass;
+    const uint8_t* p = static_cast<const uint8_t*>(lists);
+    for (GLsizei i = 0; p && i < n; ++i) {
+        const GLuint list = mListBase + listId(type, p, i);
+        if (mCompiling) mCompiled.calls.push_back(list); // GL_COMPILE_AND_EXECUTE
+        callListBody(list);
+    }
+    mPassingList -= pass;
+    mHoldingList -= hold;
+}
+
+bool StateTracker::wouldHoldLists(GLsizei n, GLenum type, const void* lists) const
+{
+    const uint8_t* p = static_cast<const uint8_t*>(lists);
+    if (!p || n <= 0 || n > 4096 || !wouldHold(GL_TRIANGLES)) return false;
+    // Lists of state only (a material, a transform) go along with the ones that draw.
+    bool anyBatch = false;
+    for (GLsizei i = 0; i < n; ++i) {
+        if (!listHoldable(mListBase + listId(type, p, i), anyBatch)) return false;
+    }
+    return anyBatch;
 }
 
 void StateTracker::callListBody(GLuint list)

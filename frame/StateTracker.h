@@ -72,6 +72,11 @@ public:
     // Would glCallList(list) issued now be held back as a whole? Its draws are all polygonal
     // (no bitmaps, pixels, lines or points, also in the lists it calls).
     bool wouldHoldList(GLuint list) const;
+    // glCallLists is held as a whole when every list it calls would be (text drawn from
+    // bitmap-font lists never is).
+    bool wouldHoldLists(GLsizei n, GLenum type, const void* lists) const;
+    // No list it calls (at any depth) draws what is never held; anyBatch: one holds a batch.
+    bool listHoldable(GLuint list, bool& anyBatch) const;
     // A 3D polygon draw issued now would not be held because of this state (for the log), or
     // null. 2D drawing (no depth test, no perspective) is not held and needs no reason.
     const char* unstylableState() const;
@@ -122,6 +127,9 @@ public:
     void newList(GLuint list, GLenum mode);
     void endList();
     void callList(GLuint list);
+    // glCallLists: held as a whole (wouldHoldLists), or let through, and then none of the
+    // batches of the lists it calls is held (the driver draws them).
+    void callLists(GLsizei n, GLenum type, const void* lists);
     void noteCompiledCall(GLuint list) { mCompiled.calls.push_back(list); }
     void listBase(GLuint base) { mListBase = base; }
     GLuint listBaseValue() const { return mListBase; }
@@ -231,6 +239,7 @@ private:
     bool mListSetsColor = false, mListSetsNormal = false, mListSetsTexCoord = false;
     bool mHolding = false;
     int mHoldingList = 0; // > 0 while a held glCallList expands
+    int mPassingList = 0; // > 0 while a list the driver draws itself expands
     GLenum mRenderMode = GL_RENDER;
     int mClientDepth = 0;
     int mMaxAttribDepth = 16, mMaxClientDepth = 16; // GL's minimum until told

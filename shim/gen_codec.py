@@ -30,6 +30,9 @@ QUERIES = {"glCheckFramebufferStatus", "glCheckFramebufferStatusEXT", "glGetErro
 READBACK_RE = re.compile(r"glGet(n?(Compressed)?Tex(ture)?(Sub)?Image\w*|"
                          r"QueryObject\w*|QueryBufferObject\w*|BufferSubData\w*|"
                          r"NamedBufferSubData\w*)")
+# Byte arrays that drivers read as C strings as well (Mesa's glProgramStringARB runs strlen on
+# it): replayed from a copy with a terminating zero after its `len` bytes.
+TEXT_PARAMS = {("glProgramStringARB", "string")}
 # Readbacks the recorder judges by state (Recorder::<hook>(opcode)): glReadPixels into client
 # memory changes nothing a replay needs; into a pixel-pack buffer it is not captured.
 READBACK_HOOKS = {"glReadPixels": "readPixels"}
@@ -171,7 +174,7 @@ def classify(cmd, params, recordable):
             p.count = countExpr(p, params)
             if p.count is None:
                 return "count"
-            p.kind = "array"
+            p.kind = "text" if (cmd, p.name) in TEXT_PARAMS else "array"
     return "record"
 
 
@@ -192,6 +195,8 @@ CODEC = {
                  "const void* {n} = r.getImage();\n"
                  "        [[maybe_unused]] const CallReader::Image {n}_img = r.lastImage();"),
     "string": ("w_.putString({name});", "const GLchar* {n} = r.getString();"),
+    "text": ("w_.putBytes({name}, {name} ? size_t({count}) : 0);",
+             "const char* {n} = r.getText({dcount});"),
     "sources": ("w_.putSources(count, {name}, length);",
                 "const CallReader::Sources {n} = r.getSources(a_count);"),
     "clientptr": ("w_.put<uint64_t>(reinterpret_cast<uintptr_t>({name}));",
@@ -426,7 +431,7 @@ def emitDecode(cmds, groups):
                 out.append(f'            sink.argArray("{p.name}", {n}, {sub(p.count, "a_")});')
             elif p.kind in ("image", "indices", "unpacked"):
                 out.append(f'            sink.argBlob("{p.name}", {n});')
-            elif p.kind == "string":
+            elif p.kind in ("string", "text"):
                 out.append(f'            sink.argString("{p.name}", {n});')
             elif p.kind == "sources":
                 out.append(f'            sink.argSources("{p.name}", {n});')

@@ -100,6 +100,23 @@ const void* CallReader::getImage()
     return alignedCopy(bytes, size);
 }
 
+const char* CallReader::getText(size_t count)
+{
+    size_t size = 0;
+    const void* p = getBytes(size);
+    if (!p) return nullptr;
+    if (size != count) {
+        fail("text of " + std::to_string(size) + " bytes where " + std::to_string(count) +
+             " were expected");
+        return nullptr;
+    }
+    if (mScratchUsed == mScratch.size()) mScratch.emplace_back();
+    std::vector<uint8_t>& copy = mScratch[mScratchUsed++];
+    copy.assign(static_cast<const uint8_t*>(p), static_cast<const uint8_t*>(p) + size);
+    copy.push_back(0);
+    return reinterpret_cast<const char*>(copy.data());
+}
+
 const char* CallReader::getString()
 {
     size_t size = 0;

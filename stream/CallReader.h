@@ -76,6 +76,8 @@ public:
     };
     const Image& lastImage() const { return mLastImage; }
     const char* getString();
+    // Exactly `count` bytes (or null), returned with a zero after them.
+    const char* getText(size_t count);
     // A batch reference (u64 hash, u64 size): the blob's bytes, or null with the error set.
     const std::vector<uint8_t>* getBlobRef();
     BlobSource* blobs() const { return mBlobs; }

@@ -253,6 +253,52 @@ TEST(Compositor, ComicPresetDrawsInkBetweenTheBands)
     EXPECT_GE(darker * 10, differing * 9) << "the band lines are not ink";
 }
 
+// demo_displaylist draws its state and its plate with one glCallLists. The compositor and
+// the tracker must agree on holding it: when the tracker held the plate while the compositor
+// let the call through, the plate was drawn twice, the program's own grey fighting in depth
+// with the style's (stripes). Under gooch (whose tones never equal the program's lit grey),
+// no pixel of the program's plate colour may remain.
+TEST(Compositor, ListsCalledTogetherAreDrawnOnce)
+{
+    const std::string native = freshDir("lists_native"), gooch = freshDir("lists_gooch");
+    const std::vector<std::string> app = {demo("displaylist"), "--offscreen", "--frames", "3",
+                                          "--size", "256x192", "--save-frames", "3",
+                                          "--save-dir"};
+    std::vector<std::string> a = {nprglCommand(), "--style", "none", "--"};
+    a.insert(a.end(), app.begin(), app.end());
+    a.push_back(native);
+    std::vector<std::string> b = {nprglCommand(), "--style", "gooch", "--"};
+    b.insert(b.end(), app.begin(), app.end());
+    b.push_back(gooch);
+    ProcessResult ra = runProcess(a), rb = runProcess(b);
+    ASSERT_EQ(ra.exitCode, 0) << ra.err;
+    ASSERT_EQ(rb.exitCode, 0) << rb.err;
+    PngImage plain, styled;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(native + "/displaylist_3.png", plain, error)) << error;
+    ASSERT_TRUE(PngImage::read(gooch + "/displaylist_3.png", styled, error)) << error;
+    ASSERT_EQ(plain.rgba.size(), styled.rgba.size());
+    // The plate's colour natively: the most common colour that is not the black background.
+    std::map<uint32_t, size_t> counts;
+    for (size_t i = 0; i < plain.rgba.size(); i += 4) {
+        const uint32_t c = uint32_t(plain.rgba[i]) << 16 | uint32_t(plain.rgba[i + 1]) << 8 |
+                           plain.rgba[i + 2];
+        if (c != 0) ++counts[c];
+    }
+    ASSERT_FALSE(counts.empty());
+    const auto plate = std::max_element(counts.begin(), counts.end(), [](auto& x, auto& y) {
+        return x.second < y.second;
+    });
+    ASSERT_GT(plate->second, 256u * 192u / 10) << "the plate is not where it was";
+    size_t left = 0;
+    for (size_t i = 0; i < styled.rgba.size(); i += 4) {
+        const uint32_t c = uint32_t(styled.rgba[i]) << 16 | uint32_t(styled.rgba[i + 1]) << 8 |
+                           styled.rgba[i + 2];
+        left += c == plate->first;
+    }
+    EXPECT_EQ(left, 0u) << "pixels of the program's own plate under gooch";
+}
+
 // glxgears turns its gears by the time between frames, and its first frame has had none:
 // frame 1 shows the gears at angle 0 in every run, so style none and toon can be compared.
 TEST(Compositor, GlxgearsInToonKeepsItsRedGreenAndBlueGears)
