@@ -11,6 +11,7 @@ StyleInfo edgesStyleInfo();
 StyleInfo texturedStyleInfo();
 StyleInfo halftoneStyleInfo();
 StyleInfo paperStyleInfo();
+StyleInfo goochStyleInfo();
 
 const char* const kDefaultChain = "toon+paper+edges";
 
@@ -24,6 +25,7 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(texturedStyleInfo());
     out.push_back(halftoneStyleInfo());
     out.push_back(paperStyleInfo());
+    out.push_back(goochStyleInfo());
 }
 
 } // namespace nprgl::styles

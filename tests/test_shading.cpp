@@ -564,3 +564,45 @@ TEST_F(Shading, TexturedHighlightVariantKeepsDetailOutOfTheHighlight)
     EXPECT_GT(below.size(), 10u);
     harness.gl().DeleteTextures(1, &checker);
 }
+
+// Gooch et al.: per pixel, mix((0, 0, b) + alpha k, (y, y, 0) + beta k, (1 + L.n) / 2) for the
+// object's colour k: on a grey object, cool (blue wins) turned away from the light, warm (red
+// wins) towards it, and nowhere black.
+TEST_F(Shading, GoochTonesFollowTheLightFromCoolToWarm)
+{
+    ASSERT_TRUE(harness.ok());
+    const glm::vec3 k(0.5f, 0.5f, 0.5f);
+    const PngImage image = render("gooch", "", "gooch", glm::vec4(k, 1.0f));
+    const glm::vec3 cool = glm::vec3(0, 0, 0.4f) + 0.2f * k;
+    const glm::vec3 warm = glm::vec3(0.4f, 0.4f, 0) + 0.6f * k;
+    int wrong = 0, total = 0, coolSide = 0, warmSide = 0;
+    float darkest = 1.0f;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        ++total;
+        const glm::vec3 e = 255.0f * glm::mix(cool, warm, 0.5f * (1.0f + ln));
+        // The tessellated normal is a little off the analytic one; a few levels allowed.
+        if (!near(c, {int(std::lround(e.r)), int(std::lround(e.g)), int(std::lround(e.b))}, 8))
+            ++wrong;
+        if (ln < -0.2f) coolSide += c.b > c.r;
+        if (ln > 0.2f) warmSide += c.r > c.b;
+        darkest = std::min(darkest, luminance(c));
+    });
+    EXPECT_GT(total, 3000);
+    EXPECT_LT(wrong, total / 100) << wrong << " of " << total;
+    EXPECT_GT(coolSide, 300);
+    EXPECT_GT(warmSide, 300);
+    EXPECT_GT(darkest, 0.05f);
+}
+
+// The parameters reach the shader: with no blue and no yellow, alpha = beta = 1 leaves the
+// object's own colour everywhere.
+TEST_F(Shading, GoochWithoutTonesIsTheObjectsColour)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage image = render(
+        "gooch", "gooch.blue=0,gooch.yellow=0,gooch.alpha=1,gooch.beta=1", "gooch_flat");
+    std::set<Rgb> colours;
+    forSphere(image, [&](const Rgb& c, float) { colours.insert(c); });
+    EXPECT_EQ(distinct(colours), 1u);
+    EXPECT_TRUE(near(*colours.begin(), kDiffuse, 2));
+}
