@@ -15,7 +15,7 @@ mkdir -p "$out"
 rm -f "$out"/*.png
 models=/usr/share/assimp/models
 styles=(none toon+paper+edges toon textured halftone toon+edges toon+wireframe
-        toon+perpixel toon+strokes halftone+paper+edges textured+paper+strokes)
+        toon+perpixel toon+strokes halftone+paper+edges textured+paper+strokes gooch+edges)
 
 record() { # name frames command...
     local name=$1 frames=$2

@@ -12,6 +12,7 @@ StyleInfo texturedStyleInfo();
 StyleInfo halftoneStyleInfo();
 StyleInfo paperStyleInfo();
 StyleInfo goochStyleInfo();
+StyleInfo depthcueStyleInfo();
 
 const char* const kDefaultChain = "toon+paper+edges";
 
@@ -26,6 +27,7 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(halftoneStyleInfo());
     out.push_back(paperStyleInfo());
     out.push_back(goochStyleInfo());
+    out.push_back(depthcueStyleInfo());
 }
 
 } // namespace nprgl::styles

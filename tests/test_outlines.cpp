@@ -421,3 +421,38 @@ TEST(Gallery, EveryOptionChangesThePicture)
 }
 
 } // namespace
+
+// HijackGL's depth cue: a near and a far box, the same size. Near lines are nearly opaque
+// ink; far lines fade towards far_intensity (0.15): only where several meet at a corner can
+// they darken a pixel by half.
+TEST(DepthCue, LinesFadeFromTheNearestToTheFarthestPoint)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    glm::mat4 nearBox = glm::translate(glm::mat4(1.0f), glm::vec3(-1.1f, 0.0f, -6.0f));
+    nearBox = glm::rotate(nearBox, glm::radians(30.0f), glm::vec3(1, 1, 0));
+    glm::mat4 farBox = glm::translate(glm::mat4(1.0f), glm::vec3(3.5f, 0.0f, -14.0f));
+    farBox = glm::rotate(farBox, glm::radians(30.0f), glm::vec3(1, 1, 0));
+    auto scene = harness.makeScene({boxBatch(nearBox, glm::vec3(0.7f), kPale, 1),
+                                    boxBatch(farBox, glm::vec3(0.7f), kPale, 2)},
+                                   perspective());
+    const PngImage plain = render(harness, scene, "toon", "", "depthcue_plain");
+    const PngImage cued = render(harness, scene, "toon+depthcue", "", "depthcue");
+    // Per half of the frame (the near box left, the far one right): pixels darkened by more
+    // than half, and pixels darkened at all.
+    int halfDark[2] = {0, 0}, touched[2] = {0, 0};
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const size_t i = (size_t(y) * kSize + x) * 4;
+            const float a = float(plain.rgba[i]) + plain.rgba[i + 1] + plain.rgba[i + 2];
+            const float b = float(cued.rgba[i]) + cued.rgba[i + 1] + cued.rgba[i + 2];
+            if (a < 30.0f) continue; // the background's own dark pixels, if any
+            const int side = x < kSize / 2 ? 0 : 1;
+            halfDark[side] += b < 0.5f * a;
+            touched[side] += b < 0.97f * a;
+        }
+    }
+    EXPECT_GT(halfDark[0], 200) << "near lines are not dark";
+    EXPECT_GT(touched[1], 20) << "far lines are missing";
+    EXPECT_LT(halfDark[1] * 10, touched[1]) << "far lines are as dark as near ones";
+}
