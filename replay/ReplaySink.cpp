@@ -489,7 +489,8 @@ bool ReplaySink::check_glMultiDrawArrays(GLenum, const GLint* first, const GLsiz
 
 bool ReplaySink::check_glArrayElement(GLint i)
 {
-    if (i < 0) return true;
+    // Mesa does not check the sign: it reads the enabled arrays before their start.
+    if (i < 0) return refuse("glArrayElement(" + std::to_string(i) + "): a negative index");
     // Between glBegin and glEnd the driver answers no query: the arrays asked at glBegin
     // hold unless a call since may have changed them.
     if (!mUsesValid && idle()) queryArrays();

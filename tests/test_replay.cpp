@@ -168,6 +168,21 @@ TEST(Replay, IndexPastItsArraysIsRefused)
               std::string::npos);
 }
 
+// Mesa reads the enabled arrays at a negative glArrayElement index, before their start (a
+// fuzzed capture crashed the replay this way).
+TEST(Replay, NegativeArrayElementIsRefused)
+{
+    std::string path = writeCapture("element", {[](CallWriter& w) {
+                                        triangleArray(w);
+                                        call(w, op::glBegin, GLenum(GL_TRIANGLES));
+                                        call(w, op::glArrayElement, GLint(-50397184));
+                                        call(w, op::glEnd);
+                                    }});
+    std::string error = replayError(path);
+    EXPECT_NE(error.find("(glArrayElement)"), std::string::npos) << error;
+    EXPECT_NE(error.find("a negative index"), std::string::npos) << error;
+}
+
 TEST(Replay, PointerIntoDeletedBufferIsRefused)
 {
     std::string path =
