@@ -411,7 +411,7 @@ bool StateTracker::wouldHold(GLenum mode) const
 
 bool StateTracker::is3D() const
 {
-    return mAttrib.depthTest || mProjection.back()[3][3] == 0.0f;
+    return mAttrib.depthTest || mMatrices.projection()[3][3] == 0.0f;
 }
 
 const char* StateTracker::unstylableState() const
@@ -426,7 +426,7 @@ const char* StateTracker::unstylableState() const
     if (!a.colorMaskAll) return "a colour mask";
     // The styles run inside one more glPushAttrib/glPushClientAttrib: a full stack would
     // leave the held scene undrawn.
-    if (int(mAttribStack.size()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
+    if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
         return "a full attribute stack";
     }
     if (a.textureUnits != 0 || multitexturedArrays()) {
@@ -468,7 +468,7 @@ void StateTracker::light(GLenum light, GLenum pname, const float* v)
     if (light != GL_LIGHT0 || !v) return;
     if (pname == GL_POSITION) {
         // GL stores the position in eye space, transformed by the modelview of the call.
-        mAttrib.light0 = mModelview.back() * glm::vec4(v[0], v[1], v[2], v[3]);
+        mAttrib.light0 = mMatrices.modelview() * glm::vec4(v[0], v[1], v[2], v[3]);
     }
 }
 
@@ -477,55 +477,6 @@ void StateTracker::polygonMode(GLenum face, GLenum mode)
     const bool fill = mode == GL_FILL;
     if (face == GL_FRONT || face == GL_FRONT_AND_BACK) mAttrib.fillFront = fill;
     if (face == GL_BACK || face == GL_FRONT_AND_BACK) mAttrib.fillBack = fill;
-}
-
-void StateTracker::pushAttrib(GLbitfield mask)
-{
-    if (mAttribStack.size() < 64) mAttribStack.emplace_back(mask, mAttrib);
-}
-
-void StateTracker::popAttrib()
-{
-    if (mAttribStack.empty()) return;
-    const auto [mask, saved] = mAttribStack.back();
-    mAttribStack.pop_back();
-    AttribState& a = mAttrib;
-    // Each piece comes back only if its group was saved.
-    if (mask & GL_ENABLE_BIT) {
-        a.lighting = saved.lighting;
-        a.colorMaterial = saved.colorMaterial;
-        a.depthTest = saved.depthTest;
-        a.texture2D = saved.texture2D;
-        a.blend = saved.blend;
-        a.alphaTest = saved.alphaTest;
-        a.stencilTest = saved.stencilTest;
-        a.light0On = saved.light0On;
-    }
-    if (mask & GL_LIGHTING_BIT) {
-        a.lighting = saved.lighting;
-        a.colorMaterial = saved.colorMaterial;
-        a.light0On = saved.light0On;
-        a.materialDiffuse = saved.materialDiffuse;
-        a.light0 = saved.light0;
-    }
-    if (mask & GL_DEPTH_BUFFER_BIT) a.depthTest = saved.depthTest;
-    if (mask & GL_COLOR_BUFFER_BIT) {
-        a.blend = saved.blend;
-        a.alphaTest = saved.alphaTest;
-        a.colorMaskAll = saved.colorMaskAll;
-    }
-    if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
-    if (mask & GL_POLYGON_BIT) {
-        a.fillFront = saved.fillFront;
-        a.fillBack = saved.fillBack;
-    }
-    if (mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
-        a.texture2D = saved.texture2D;
-        a.textureUnits = saved.textureUnits;
-    }
-    if (mask & GL_TEXTURE_BIT) {
-    }
-    if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
 }
 
 void StateTracker::otherDraw()
@@ -737,8 +688,8 @@ bool StateTracker::keep(TrackedBatch& batch)
         mCompiled.items.push_back(std::move(item));
         if (!mCompileAndExecute) return false;
     }
-    batch.modelview = mModelview.back();
-    batch.projection = mProjection.back();
+    batch.modelview = mMatrices.modelview();
+    batch.projection = mMatrices.projection();
     batch.materialId = currentMaterialId();
     const AttribState& a = mAttrib;
     // What the program's picture shows: lit surfaces take the material's colour.
@@ -761,31 +712,6 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.contentHash =
         reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);
     return true;
-}
-
-glm::mat4& StateTracker::topMatrix()
-{
-    switch (mMatrixMode) {
-    case GL_PROJECTION: return mProjection.back();
-    case GL_TEXTURE: return mTexture.back();
-    default: return mModelview.back();
-    }
-}
-
-void StateTracker::pushMatrix()
-{
-    auto& stack = mMatrixMode == GL_PROJECTION ? mProjection
-                  : mMatrixMode == GL_TEXTURE  ? mTexture
-                                               : mModelview;
-    if (stack.size() < 64) stack.push_back(stack.back()); // the driver's stack overflow
-}
-
-void StateTracker::popMatrix()
-{
-    auto& stack = mMatrixMode == GL_PROJECTION ? mProjection
-                  : mMatrixMode == GL_TEXTURE  ? mTexture
-                                               : mModelview;
-    if (stack.size() > 1) stack.pop_back();
 }
 
 void StateTracker::setEnabled(GLenum cap, bool on)

@@ -1,6 +1,8 @@
 #pragma once
 
+#include "frame/AttribStack.h"
 #include "frame/ClientArrays.h"
+#include "frame/MatrixStacks.h"
 #include "frame/ShadowArrays.h"
 #include "reconstruct/Batch.h"
 #include "shim/Api.h"
@@ -117,10 +119,10 @@ public:
     // Handlers the tracking dispatch points at (through the current tracker).
     void begin(GLenum mode);
     void end();
-    void matrixMode(GLenum mode) { mMatrixMode = mode; }
-    glm::mat4& topMatrix();
-    void pushMatrix();
-    void popMatrix();
+    void matrixMode(GLenum mode) { mMatrices.setMode(mode); }
+    glm::mat4& topMatrix() { return mMatrices.top(); }
+    void pushMatrix() { mMatrices.push(); }
+    void popMatrix() { mMatrices.pop(); }
     void setEnabled(GLenum cap, bool on);
     void useProgram(GLuint program) { mProgram = program; }
     void material(GLenum face, GLenum pname, const float* v);
@@ -151,8 +153,8 @@ public:
     void light(GLenum light, GLenum pname, const float* v);
     void polygonMode(GLenum face, GLenum mode);
     void colorMask(bool r, bool g, bool b, bool a) { mAttrib.colorMaskAll = r && g && b && a; }
-    void pushAttrib(GLbitfield mask);
-    void popAttrib();
+    void pushAttrib(GLbitfield mask) { mAttribs.push(mask); }
+    void popAttrib() { mAttribs.pop(); }
     void pushClientAttrib();
     void popClientAttrib();
     void otherDraw(); // a bitmap, pixel rectangle, line or point: never held
@@ -171,17 +173,6 @@ private:
             bool color = false, normal = false, texcoord = false;
         };
         std::vector<Inherits> inherits; // per batch: attributes taken at glCallList time
-    };
-    // The state glPushAttrib saves that decides holding and shading.
-    struct AttribState {
-        bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
-        uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
-        bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
-        bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
-        bool fillFront = true, fillBack = true, colorMaskAll = true;
-        glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
-        glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
-        glm::ivec4 viewport{0, 0, 0, 0};
     };
     struct ArrayBinding {
         ClientArray array;
@@ -224,14 +215,11 @@ private:
     std::vector<uint8_t> mScratch;
     uint16_t mOpcode = 0;
 
-    GLenum mMatrixMode = GL_MODELVIEW;
-    std::vector<glm::mat4> mModelview{glm::mat4(1.0f)};
-    std::vector<glm::mat4> mProjection{glm::mat4(1.0f)};
-    std::vector<glm::mat4> mTexture{glm::mat4(1.0f)};
+    MatrixStacks mMatrices;
     TrackedVertex mCurrent{{0, 0, 0}, {0, 0, 1}, {1, 1, 1, 1}, {0, 0}};
     bool mNormalSet = false;
-    AttribState mAttrib;
-    std::vector<std::pair<GLbitfield, AttribState>> mAttribStack;
+    AttribStack mAttribs;
+    AttribState& mAttrib = mAttribs.current(); // the state the calls change
     GLuint mBoundTexture = 0; // unit 0's GL_TEXTURE_2D
     int mActiveUnit = 0;
     // While a list compiles: which current attributes the list sets itself (the others come

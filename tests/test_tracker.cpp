@@ -2,7 +2,9 @@
 // material — display lists, client arrays and buffers included.
 
 #include "capture/CaptureReader.h"
+#include "frame/AttribStack.h"
 #include "frame/CaptureBlobs.h"
+#include "frame/MatrixStacks.h"
 #include "frame/StateTracker.h"
 #include "stream/CallWriter.h"
 #include "stream/Opcodes.h"
@@ -308,4 +310,43 @@ TEST(Reconstruction, AnimatedCharactersKeepTheirTopology)
             EXPECT_GT(stats.updates, 0u) << name << ": the mesh did not move";
         }
     }
+}
+
+// glPopAttrib restores exactly the groups its glPushAttrib saved, the program enables with
+// the enable group (a fragment program enabled inside a push/pop must not outlive it).
+TEST(AttribStack, PopRestoresOnlyTheSavedGroups)
+{
+    AttribStack stack;
+    stack.push(GL_ENABLE_BIT);
+    AttribState& a = stack.current();
+    a.fragmentProgram = true;
+    a.blend = true;
+    a.colorMaskAll = false; // GL_COLOR_BUFFER_BIT: not saved
+    a.viewport = {1, 2, 3, 4};
+    stack.pop();
+    EXPECT_FALSE(stack.current().fragmentProgram);
+    EXPECT_FALSE(stack.current().blend);
+    EXPECT_FALSE(stack.current().colorMaskAll);
+    EXPECT_EQ(stack.current().viewport, glm::ivec4(1, 2, 3, 4));
+    stack.pop(); // underflow: nothing happens, as in the driver
+    EXPECT_EQ(stack.depth(), 0u);
+}
+
+TEST(MatrixStacks, EachModeHasItsStack)
+{
+    MatrixStacks m;
+    m.top() = glm::mat4(2.0f);
+    m.setMode(GL_PROJECTION);
+    m.push();
+    m.top() = glm::mat4(3.0f);
+    EXPECT_EQ(m.projection(), glm::mat4(3.0f));
+    EXPECT_EQ(m.modelview(), glm::mat4(2.0f));
+    m.pop();
+    EXPECT_EQ(m.projection(), glm::mat4(1.0f));
+    m.pop(); // the last matrix stays
+    EXPECT_EQ(m.projection(), glm::mat4(1.0f));
+    m.setMode(GL_MODELVIEW);
+    for (int i = 0; i < 100; ++i) m.push(); // past the depth: refused, as in the driver
+    for (int i = 0; i < 100; ++i) m.pop();
+    EXPECT_EQ(m.modelview(), glm::mat4(2.0f));
 }

@@ -1,0 +1,54 @@
+#include "frame/AttribStack.h"
+
+namespace nprgl {
+
+void AttribStack::push(GLbitfield mask)
+{
+    if (mStack.size() < kMaxDepth) mStack.emplace_back(mask, mCurrent);
+}
+
+void AttribStack::pop()
+{
+    if (mStack.empty()) return;
+    const auto [mask, saved] = mStack.back();
+    mStack.pop_back();
+    AttribState& a = mCurrent;
+    // Each piece comes back only if its group was saved.
+    if (mask & GL_ENABLE_BIT) {
+        a.lighting = saved.lighting;
+        a.colorMaterial = saved.colorMaterial;
+        a.depthTest = saved.depthTest;
+        a.texture2D = saved.texture2D;
+        a.blend = saved.blend;
+        a.alphaTest = saved.alphaTest;
+        a.stencilTest = saved.stencilTest;
+        a.light0On = saved.light0On;
+        a.vertexProgram = saved.vertexProgram;
+        a.fragmentProgram = saved.fragmentProgram;
+    }
+    if (mask & GL_LIGHTING_BIT) {
+        a.lighting = saved.lighting;
+        a.colorMaterial = saved.colorMaterial;
+        a.light0On = saved.light0On;
+        a.materialDiffuse = saved.materialDiffuse;
+        a.light0 = saved.light0;
+    }
+    if (mask & GL_DEPTH_BUFFER_BIT) a.depthTest = saved.depthTest;
+    if (mask & GL_COLOR_BUFFER_BIT) {
+        a.blend = saved.blend;
+        a.alphaTest = saved.alphaTest;
+        a.colorMaskAll = saved.colorMaskAll;
+    }
+    if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
+    if (mask & GL_POLYGON_BIT) {
+        a.fillFront = saved.fillFront;
+        a.fillBack = saved.fillBack;
+    }
+    if (mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
+        a.texture2D = saved.texture2D;
+        a.textureUnits = saved.textureUnits;
+    }
+    if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
+}
+
+} // namespace nprgl

@@ -1,0 +1,41 @@
+#pragma once
+
+// AttribStack: the server state that decides holding and shading (enables, lighting, colour
+// mask, polygon mode, viewport) and glPushAttrib/glPopAttrib over it, group by group.
+
+#include <GL/gl.h>
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace nprgl {
+
+struct AttribState {
+    bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
+    uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
+    bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
+    bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
+    bool fillFront = true, fillBack = true, colorMaskAll = true;
+    glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
+    glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
+    glm::ivec4 viewport{0, 0, 0, 0};
+};
+
+class AttribStack {
+public:
+    AttribState& current() { return mCurrent; }
+    const AttribState& current() const { return mCurrent; }
+    void push(GLbitfield mask);
+    // Restores the groups the matching push saved; an empty stack is the driver's underflow.
+    void pop();
+    size_t depth() const { return mStack.size(); }
+
+private:
+    static constexpr size_t kMaxDepth = 64;
+    AttribState mCurrent;
+    std::vector<std::pair<GLbitfield, AttribState>> mStack;
+};
+
+} // namespace nprgl
