@@ -43,6 +43,14 @@ const std::vector<Preset>& Presets::shipped()
         {"technical", "technical illustration: cool-to-warm tones, a highlight, ink outlines",
          "style=gooch+edges\n"
          "gooch.highlight=40\n"},
+        {"blueprint", "white construction lines, a grid and dimensions on blue paper",
+         "style=toon+paper+blueprint\n"
+         "toon.tones=2\n"
+         "toon.shadow_color=1d4f91\n"
+         "toon.diffuse_color=1d4f91\n"
+         "toon.detail=off\n"
+         "paper.color=1d4f91\n"
+         "paper.grain=0.05\n"},
     };
     return presets;
 }

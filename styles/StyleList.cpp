@@ -13,6 +13,7 @@ StyleInfo halftoneStyleInfo();
 StyleInfo paperStyleInfo();
 StyleInfo goochStyleInfo();
 StyleInfo depthcueStyleInfo();
+StyleInfo blueprintStyleInfo();
 
 const char* const kDefaultChain = "toon+paper+edges";
 
@@ -28,6 +29,7 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(paperStyleInfo());
     out.push_back(goochStyleInfo());
     out.push_back(depthcueStyleInfo());
+    out.push_back(blueprintStyleInfo());
 }
 
 } // namespace nprgl::styles

@@ -456,3 +456,71 @@ TEST(DepthCue, LinesFadeFromTheNearestToTheFarthestPoint)
     EXPECT_GT(touched[1], 20) << "far lines are missing";
     EXPECT_LT(halfDark[1] * 10, touched[1]) << "far lines are as dark as near ones";
 }
+
+namespace {
+
+// The blueprint preset's chain and values (styles/Presets.cpp), for the harness.
+const std::string kBlueprintChain = "toon+paper+blueprint";
+const std::string kBlueprintConfig = "toon.tones=2,toon.shadow_color=1d4f91,"
+                                     "toon.diffuse_color=1d4f91,toon.detail=off,"
+                                     "paper.color=1d4f91,paper.grain=0";
+
+bool isWhite(const PngImage& image, int x, int y)
+{
+    const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+    return p[0] > 200 && p[1] > 200 && p[2] > 200;
+}
+
+} // namespace
+
+// White lines on blue: the box's edges white, its faces and the page the preset's blue.
+TEST(Blueprint, WhiteLinesOnBluePaper)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+    mv = glm::rotate(mv, glm::radians(30.0f), glm::vec3(1, 1, 0));
+    auto scene = harness.makeScene({boxBatch(mv, glm::vec3(1.0f), kPale)}, perspective());
+    PngImage image = render(harness, scene, kBlueprintChain, kBlueprintConfig, "blueprint");
+    int white = 0, blue = 0, other = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const uint8_t* p = &image.rgba[(size_t(y) * kSize + x) * 4];
+            if (isWhite(image, x, y)) ++white;
+            else if (p[2] > p[0] + 60 && p[2] > p[1] + 30) ++blue; // 1d4f91, grid or not
+            else ++other;
+        }
+    }
+    EXPECT_GT(white, 400);                     // the box's edges
+    EXPECT_GT(blue, kSize * kSize * 8 / 10);   // page and faces
+    EXPECT_LT(other, kSize * kSize / 50);      // blends of white into blue only
+}
+
+// Dimensions: with them, white appears away from the box (dimension lines, arrows, digits).
+// One harness per picture: after a chain with line styles the harness's next chain draws its
+// first object white (state the chain leaves in the shared context; nprgl keeps one chain
+// per context).
+TEST(Blueprint, DimensionsAnnotateTheLongestEdges)
+{
+    auto whiteCount = [&](const std::string& dimensions) {
+        StyleHarness harness(kSize, kSize);
+        EXPECT_TRUE(harness.ok());
+        glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+        mv = glm::rotate(mv, glm::radians(20.0f), glm::vec3(0, 1, 0));
+        auto scene = harness.makeScene({boxBatch(mv, glm::vec3(1.2f, 0.8f, 0.8f), kPale)},
+                                       perspective());
+        PngImage image = render(harness, scene, kBlueprintChain,
+                                kBlueprintConfig + ",blueprint.grid=0,blueprint.dimensions=" +
+                                    dimensions,
+                                "blueprint_dim" + dimensions);
+        int n = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) n += isWhite(image, x, y);
+        }
+        return n;
+    };
+    const int without = whiteCount("0");
+    const int with = whiteCount("3");
+    EXPECT_GT(with, without + 150) << "no dimension lines";
+    EXPECT_LT(with, without + 3000) << "more than lines";
+}
