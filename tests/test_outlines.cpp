@@ -497,18 +497,15 @@ TEST(Blueprint, WhiteLinesOnBluePaper)
 }
 
 // Dimensions: with them, white appears away from the box (dimension lines, arrows, digits).
-// One harness per picture: after a chain with line styles the harness's next chain draws its
-// first object white (state the chain leaves in the shared context; nprgl keeps one chain
-// per context).
 TEST(Blueprint, DimensionsAnnotateTheLongestEdges)
 {
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+    mv = glm::rotate(mv, glm::radians(20.0f), glm::vec3(0, 1, 0));
+    auto scene = harness.makeScene({boxBatch(mv, glm::vec3(1.2f, 0.8f, 0.8f), kPale)},
+                                   perspective());
     auto whiteCount = [&](const std::string& dimensions) {
-        StyleHarness harness(kSize, kSize);
-        EXPECT_TRUE(harness.ok());
-        glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
-        mv = glm::rotate(mv, glm::radians(20.0f), glm::vec3(0, 1, 0));
-        auto scene = harness.makeScene({boxBatch(mv, glm::vec3(1.2f, 0.8f, 0.8f), kPale)},
-                                       perspective());
         PngImage image = render(harness, scene, kBlueprintChain,
                                 kBlueprintConfig + ",blueprint.grid=0,blueprint.dimensions=" +
                                     dimensions,
@@ -523,4 +520,20 @@ TEST(Blueprint, DimensionsAnnotateTheLongestEdges)
     const int with = whiteCount("3");
     EXPECT_GT(with, without + 150) << "no dimension lines";
     EXPECT_LT(with, without + 3000) << "more than lines";
+}
+
+// The harness renders one chain after another in one context, as a compositor would never
+// do without restoring the program's state in between: an outline style that left depth
+// writes off made the next chain's glClear keep the old depth, and its surfaces failed the
+// depth test (the frame stayed empty). The same chain before and after gives the same frame.
+TEST(StyleHarness, EachRenderStartsFromAClearedFrame)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    const PngImage before = render(harness, scene, "toon", "", "harness_before");
+    render(harness, scene, "toon+perpixel", "", "harness_between");
+    const PngImage after = render(harness, scene, "toon", "", "harness_after");
+    EXPECT_EQ(before.rgba, after.rgba);
 }

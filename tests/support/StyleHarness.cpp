@@ -103,6 +103,11 @@ bool StyleHarness::render(const styles::Scene& scene, const std::string& chain,
     gl.Viewport(0, 0, mWidth, mHeight);
     gl.ClearColor(background.r, background.g, background.b, background.a);
     gl.ClearDepth(1.0);
+    // glClear obeys the write masks, and the last chain's styles may have left depth writes
+    // off (the compositor restores the program's state after a chain; here nothing would).
+    gl.DepthMask(GL_TRUE);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.StencilMask(~0u);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
     // What the compositor's held-back draws leave: nothing when the chain has a shading style
