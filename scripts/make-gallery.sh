@@ -15,7 +15,12 @@ mkdir -p "$out"
 rm -f "$out"/*.png
 models=/usr/share/assimp/models
 styles=(none toon+paper+edges toon textured halftone toon+edges toon+wireframe
-        toon+perpixel toon+strokes halftone+paper+edges textured+paper+strokes gooch+edges)
+        toon+perpixel toon+strokes halftone+paper+edges textured+paper+strokes gooch+edges
+        preset:technical preset:blueprint)
+# An entry "preset:NAME" renders with --preset NAME.
+fileName() { case "$1" in preset:*) echo "preset-${1#preset:}" ;; *) echo "$1" | tr '+' '-' ;; esac; }
+label() { case "$1" in preset:*) echo "--preset ${1#preset:}" ;; *) echo "$1" ;; esac; }
+replayArgs() { case "$1" in preset:*) echo "--preset ${1#preset:}" ;; *) echo "--style $1" ;; esac; }
 
 record() { # name frames command...
     local name=$1 frames=$2
@@ -39,9 +44,10 @@ for capture in "$tmp"/*.nprgl; do
     [ -n "$last" ] || continue
     scenes+=("$scene")
     for style in "${styles[@]}"; do
-        name="${scene}_$(echo "$style" | tr '+' '-')"
+        name="${scene}_$(fileName "$style")"
         rm -rf "$tmp/r"
-        "$nprgl" replay "$capture" -o "$tmp/r" --style "$style" --frames "$last" \
+        # shellcheck disable=SC2046 # two words: the option and its value
+        "$nprgl" replay "$capture" -o "$tmp/r" $(replayArgs "$style") --frames "$last" \
             >/dev/null 2>&1
         cp "$tmp/r/$(printf 'frame_%010d.png' "$last")" "$out/$name.png"
     done
@@ -55,10 +61,10 @@ table="$tmp/table.md"
     for _ in "${scenes[@]}"; do printf -- '---|'; done
     printf '\n'
     for style in "${styles[@]}"; do
-        printf '| `%s` |' "$style"
+        printf '| `%s` |' "$(label "$style")"
         for scene in "${scenes[@]}"; do
-            printf ' ![%s in %s](docs/gallery/%s_%s.png) |' "$scene" "$style" "$scene" \
-                "$(echo "$style" | tr '+' '-')"
+            printf ' ![%s in %s](docs/gallery/%s_%s.png) |' "$scene" "$(label "$style")" \
+                "$scene" "$(fileName "$style")"
         done
         printf '\n'
     done
