@@ -23,6 +23,12 @@ struct SceneObject {
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     uint32_t id = 0;               // 1, 2, ... in drawing order: for ID buffers
+
+    // A projection without a perspective row looks along -z everywhere.
+    bool orthographic() const
+    {
+        return projection[0][3] == 0.0f && projection[1][3] == 0.0f && projection[2][3] == 0.0f;
+    }
 };
 
 // What one flush of the compositor hands to the styles.

@@ -5,6 +5,7 @@
 // default style and recorded then replayed, it runs to the end, and its objects stay.
 
 #include "common/PngImage.h"
+#include "tests/support/ImageCompare.h"
 #include "tests/support/Process.h"
 
 #include <gtest/gtest.h>
@@ -33,36 +34,6 @@ std::vector<std::string> probe(const std::string& mode, std::vector<std::string>
     return argv;
 }
 
-std::vector<std::string> under(std::vector<std::string> nprgl, const std::vector<std::string>& p)
-{
-    nprgl.push_back("--");
-    nprgl.insert(nprgl.end(), p.begin(), p.end());
-    return nprgl;
-}
-
-// The "covered N" the probe prints: pixels of its last frame not of the clear colour.
-int covered(const std::string& out)
-{
-    const size_t at = out.find("covered ");
-    return at == std::string::npos ? -1 : std::atoi(out.c_str() + at + 8);
-}
-
-std::vector<uint8_t> readBytes(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-int differingPixels(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b)
-{
-    if (a.size() != b.size()) return -1;
-    int n = 0;
-    for (size_t i = 0; i + 3 < a.size(); i += 4) {
-        n += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
-    }
-    return n;
-}
-
 class ArbBuffers : public ::testing::TestWithParam<std::string> {};
 
 std::string caseName(const ::testing::TestParamInfo<std::string>& info)
@@ -79,7 +50,7 @@ TEST_P(ArbBuffers, StyleNonePrintsTheNativeChecksum)
 {
     ProcessResult native = runProcess(probe(GetParam()));
     ASSERT_EQ(native.exitCode, 0) << native.err;
-    ASSERT_GT(covered(native.out), 1000) << native.out;
+    ASSERT_GT(coveredCount(native.out), 1000) << native.out;
     ProcessResult none = runProcess(under({nprglCommand(), "--style", "none"}, probe(GetParam())));
     ASSERT_EQ(none.exitCode, 0) << none.err;
     EXPECT_EQ(none.out, native.out);
@@ -100,8 +71,8 @@ TEST_P(ArbBuffers, TheDefaultStyleRunsAndKeepsTheObjects)
     // The styled picture with the objects differs from the styled background alone over
     // most of where the objects are natively: they are drawn, styled or as they are.
     const int changed =
-        differingPixels(readBytes(dir + "/full.rgba"), readBytes(dir + "/empty.rgba"));
-    EXPECT_GT(changed, covered(native.out) * 3 / 4) << full.err;
+        differingRgbPixels(readRgba(dir + "/full.rgba"), readRgba(dir + "/empty.rgba"));
+    EXPECT_GT(changed, coveredCount(native.out) * 3 / 4) << full.err;
     if (GetParam() == "--vao" || GetParam() == "--restart") {
         // The vertex array object's (or restart-cut) draw is passed through, and said once.
         EXPECT_NE(full.err.find("nprgl: warning"), std::string::npos) << full.err;
@@ -137,13 +108,13 @@ TEST_P(ArbBuffers, RecordedAndReplayedToTheEnd)
         drawn += image.rgba[i] != kClear[0] || image.rgba[i + 1] != kClear[1] ||
                  image.rgba[i + 2] != kClear[2];
     }
-    const int expected = covered(native.out);
+    const int expected = coveredCount(native.out);
     const bool complete = GetParam() != "--vao" && GetParam() != "--restart";
     if (complete) {
         // Everything was captured: the replay is the program's own picture (rows flipped:
         // the probe saves OSMesa's buffer bottom row first).
         image.flipRows();
-        EXPECT_EQ(differingPixels(image.rgba, readBytes(dir + "/native.rgba")), 0);
+        EXPECT_EQ(differingRgbPixels(image.rgba, readRgba(dir + "/native.rgba")), 0);
         EXPECT_GT(drawn, expected * 9 / 10);
         EXPECT_EQ(replayLog.find("not captured"), std::string::npos) << replayLog;
     } else {

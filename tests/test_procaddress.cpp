@@ -6,6 +6,7 @@
 // pixel; under every shading style each of its five objects is still in the frame.
 
 #include "common/PngImage.h"
+#include "tests/support/ImageCompare.h"
 #include "tests/support/Process.h"
 
 #include <gtest/gtest.h>
@@ -34,13 +35,6 @@ std::vector<std::string> probe(const std::string& mode, std::vector<std::string>
     return argv;
 }
 
-std::vector<std::string> under(std::vector<std::string> nprgl, const std::vector<std::string>& p)
-{
-    nprgl.push_back("--");
-    nprgl.insert(nprgl.end(), p.begin(), p.end());
-    return nprgl;
-}
-
 // The probe's "cells a b c d e f": pixels not of the clear colour per cell of its grid.
 std::array<int, 6> cells(const std::string& out)
 {
@@ -50,12 +44,6 @@ std::array<int, 6> cells(const std::string& out)
     std::istringstream in(out.substr(at + 6));
     for (int& v : c) in >> v;
     return c;
-}
-
-std::vector<uint8_t> readBytes(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // Pixels whose RGB differ by more than `tolerance` between two frames of the probe's size
@@ -132,7 +120,7 @@ TEST_P(ProcAddress, RecordedAndReplayedIsTheNativePicture)
     // most 1 in a channel, in about 2,800 channel values); GLX and OSMesa round alike.
     const int tolerance = GetParam() == "egl" ? 1 : 0;
     const std::array<int, 6> differing =
-        differingPerCell(image.rgba, readBytes(dir + "/native.rgba"), tolerance);
+        differingPerCell(image.rgba, readRgba(dir + "/native.rgba"), tolerance);
     EXPECT_EQ(differing, (std::array<int, 6>{})) << "pixels differing per cell";
 }
 
@@ -154,7 +142,7 @@ TEST_P(ProcAddress, EveryShadingStyleKeepsEveryObject)
         EXPECT_EQ(a.err.find("nprgl: error"), std::string::npos) << style << ": " << a.err;
         // Against the same style's empty frame (its background), each object's cell changed
         // over most of where the object is natively: drawn, styled or as it was.
-        const std::array<int, 6> changed = differingPerCell(readBytes(full), readBytes(empty));
+        const std::array<int, 6> changed = differingPerCell(readRgba(full), readRgba(empty));
         for (int i = 0; i < kObjects; ++i) {
             EXPECT_GT(changed[size_t(i)], nativeCells[size_t(i)] * 3 / 4)
                 << style << ", cell " << i;
@@ -181,7 +169,7 @@ TEST_P(ProcAddress, DrawsWithTheProgramsOwnShadersAreLeftAsTheyAre)
               std::string::npos)
         << toon.err;
     const std::array<int, 6> differing =
-        differingPerCell(readBytes(dir + "/toon.rgba"), readBytes(dir + "/native.rgba"));
+        differingPerCell(readRgba(dir + "/toon.rgba"), readRgba(dir + "/native.rgba"));
     EXPECT_EQ(differing[4], 0);
     EXPECT_GT(differing[0], 100); // while the cube of cell 0 is styled
 }

@@ -202,8 +202,7 @@ void BlueprintStyle::render(const Scene& scene, StyleContext& ctx)
     for (const SceneObject& o : scene.objects) {
         const reconstruct::ObjectMesh& mesh = *o.mesh;
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
-        const bool ortho = o.projection[0][3] == 0.0f && o.projection[1][3] == 0.0f &&
-                           o.projection[2][3] == 0.0f;
+        const bool ortho = o.orthographic();
         ndc.resize(mesh.vertexCount());
         eye.resize(mesh.vertexCount());
         inFront.resize(mesh.vertexCount());

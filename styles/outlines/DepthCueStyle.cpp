@@ -41,11 +41,6 @@ void main() { fragColor = vec4(inkColor, intensity); }
 
 std::unique_ptr<Style> create() { return std::make_unique<DepthCueStyle>(); }
 
-bool orthographic(const glm::mat4& projection)
-{
-    return projection[0][3] == 0.0f && projection[1][3] == 0.0f && projection[2][3] == 0.0f;
-}
-
 } // namespace
 
 StyleInfo depthcueStyleInfo()
@@ -131,7 +126,7 @@ void DepthCueStyle::render(const Scene& scene, StyleContext& ctx)
         const reconstruct::ObjectMesh& mesh = *o.mesh;
         const std::vector<glm::vec3>& eye = mEye[i];
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
-        const bool ortho = orthographic(o.projection);
+        const bool ortho = o.orthographic();
         // Which side of face f the eye sees (for silhouettes: the two faces disagree).
         auto facesEye = [&](uint32_t f, const glm::vec3& at) {
             const glm::vec3 n = normalMatrix * mesh.faceNormal(f);

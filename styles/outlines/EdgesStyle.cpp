@@ -442,8 +442,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.UniformMatrix3fv(mGeo.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
         gl.Uniform1f(mGeo.objectId, float(o.id));
         // A projection without a perspective row is orthographic; its P[2][2] is -2/range.
-        const bool ortho = o.projection[0][3] == 0.0f && o.projection[1][3] == 0.0f &&
-                           o.projection[2][3] == 0.0f;
+        const bool ortho = o.orthographic();
         gl.Uniform1i(mGeo.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(mGeo.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
         ctx.meshes.draw(gl, *o.mesh);

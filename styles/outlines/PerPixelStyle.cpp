@@ -113,9 +113,7 @@ void PerPixelStyle::render(const Scene& scene, StyleContext& ctx)
     }
     for (const SceneObject& o : scene.objects) {
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
-        // A projection without a perspective row is orthographic.
-        const bool ortho = o.projection[0][3] == 0.0f && o.projection[1][3] == 0.0f &&
-                           o.projection[2][3] == 0.0f;
+        const bool ortho = o.orthographic();
         gl.UniformMatrix4fv(mLoc.modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));
         gl.UniformMatrix4fv(mLoc.projection, 1, GL_FALSE, glm::value_ptr(o.projection));
         gl.UniformMatrix3fv(mLoc.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));

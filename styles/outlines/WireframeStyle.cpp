@@ -276,9 +276,7 @@ void WireframeStyle::render(const Scene& scene, StyleContext& ctx)
         gl.UniformMatrix4fv(mLoc.projection, 1, GL_FALSE, glm::value_ptr(o.projection));
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
         gl.UniformMatrix3fv(mLoc.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-        // A projection without a perspective row is orthographic.
-        const bool ortho = o.projection[0][3] == 0.0f && o.projection[1][3] == 0.0f &&
-                           o.projection[2][3] == 0.0f;
+        const bool ortho = o.orthographic();
         gl.Uniform1i(mLoc.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(mLoc.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
         // The projection maps 2 / P[1][1] eye units (at distance 1) onto the viewport height.

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 
 namespace nprgl::test {
 
@@ -52,6 +54,22 @@ void expectGlxgearsPicture(const std::string& path)
     EXPECT_GT(red, 1000u) << path;
     EXPECT_GT(green, 300u) << path;
     EXPECT_GT(blue, 300u) << path;
+}
+
+std::vector<uint8_t> readRgba(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int differingRgbPixels(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b)
+{
+    if (a.size() != b.size() || a.empty()) return -1;
+    int n = 0;
+    for (size_t i = 0; i + 3 < a.size(); i += 4) {
+        n += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
+    }
+    return n;
 }
 
 } // namespace nprgl::test

@@ -2,7 +2,9 @@
 
 #include "common/PngImage.h"
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace nprgl::test {
 
@@ -16,6 +18,12 @@ struct ImageDiff {
 // Compares two PNG files pixel by pixel (RGB only: GLX visuals may lack alpha); a pixel
 // differs when a channel differs by more than `tolerance`.
 ImageDiff compareImages(const std::string& a, const std::string& b, int tolerance = 0);
+
+// A probe's saved frame: the raw RGBA bytes of a file (empty when it cannot be read).
+std::vector<uint8_t> readRgba(const std::string& path);
+// Pixels whose RGB differ between two raw RGBA frames; -1 when the sizes differ or both
+// are empty (nothing to compare).
+int differingRgbPixels(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b);
 
 // Share of pixels that are not (near) black: a picture that is all background is suspect.
 double coveredFraction(const PngImage& image);

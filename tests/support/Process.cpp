@@ -153,4 +153,18 @@ std::string freshDir(const std::string& name)
     return dir.string();
 }
 
+std::vector<std::string> under(std::vector<std::string> nprgl,
+                               const std::vector<std::string>& program)
+{
+    nprgl.push_back("--");
+    nprgl.insert(nprgl.end(), program.begin(), program.end());
+    return nprgl;
+}
+
+int coveredCount(const std::string& out)
+{
+    const size_t at = out.find("covered ");
+    return at == std::string::npos ? -1 : std::atoi(out.c_str() + at + 8);
+}
+
 } // namespace nprgl::test

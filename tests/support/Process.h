@@ -49,5 +49,10 @@ std::string demo(const std::string& name);
 std::string framePng(const std::string& dir, int frame);
 // A fresh empty directory under the test's temporary area.
 std::string freshDir(const std::string& name);
+// The nprgl command line followed by "--" and the program's own.
+std::vector<std::string> under(std::vector<std::string> nprgl,
+                               const std::vector<std::string>& program);
+// The "covered N" a probe prints (pixels of its last frame not of its clear colour), or -1.
+int coveredCount(const std::string& out);
 
 } // namespace nprgl::test
