@@ -40,6 +40,9 @@ const std::vector<Preset>& Presets::shipped()
         {"sketch", "pencil strokes over hatching",
          "style=textured+paper+strokes\n"
          "textured.shadow_texture=hatching\n"},
+        {"pencil", "a graphite drawing: hatching by the light, overdrawn pencil outlines",
+         "style=pencil+paper\n"
+         "paper.grain=0.18\n"},
         {"technical", "technical illustration: cool-to-warm tones, a highlight, ink outlines",
          "style=gooch+edges\n"
          "gooch.highlight=40\n"},

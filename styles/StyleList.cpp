@@ -14,6 +14,7 @@ StyleInfo paperStyleInfo();
 StyleInfo goochStyleInfo();
 StyleInfo depthcueStyleInfo();
 StyleInfo blueprintStyleInfo();
+StyleInfo pencilStyleInfo();
 
 const char* const kDefaultChain = "toon+paper+edges";
 
@@ -30,6 +31,7 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(goochStyleInfo());
     out.push_back(depthcueStyleInfo());
     out.push_back(blueprintStyleInfo());
+    out.push_back(pencilStyleInfo());
 }
 
 } // namespace nprgl::styles

@@ -174,6 +174,15 @@ bool StyleRegistry::parseChain(std::string_view chain, std::vector<const StyleIn
         error = "style 'none' cannot be part of a chain";
         return false;
     }
+    const auto isBackground = [](auto* s) { return s->role == styles::StyleRole::Background; };
+    if (std::none_of(result.begin(), result.end(), isBackground)) {
+        for (size_t i = 0, n = result.size(); i < n; ++i) {
+            if (result[i]->background.empty()) continue;
+            const StyleInfo* page = find(result[i]->background);
+            if (page && std::find(result.begin(), result.end(), page) == result.end())
+                result.push_back(page);
+        }
+    }
     out = std::move(result);
     return true;
 }

@@ -52,6 +52,8 @@ struct StyleInfo {
     std::string summary;
     std::vector<ParamInfo> params;
     styles::StyleRole role{};
+    // A background style the style draws on: added to a chain that names no background.
+    std::string background;
     std::unique_ptr<styles::Style> (*create)() = nullptr; // null for "none"
 
     const ParamInfo* findParam(std::string_view param) const;

@@ -49,21 +49,22 @@ glm::mat4 boxModelview()
 const glm::vec4 kRed(0.85f, 0.25f, 0.2f, 1.0f);
 const glm::vec4 kPale(0.9f, 0.85f, 0.6f, 1.0f);
 
-bool isInk(const PngImage& image, int x, int y)
+// Ink: every channel below `below` (solid outlines are near black; a pencil mark is lighter).
+bool isInk(const PngImage& image, int x, int y, int below = 90)
 {
     if (x < 0 || y < 0 || x >= image.width || y >= image.height) return false;
     const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
-    return p[0] < 90 && p[1] < 90 && p[2] < 90;
+    return p[0] < below && p[1] < below && p[2] < below;
 }
 
 // Ink anywhere within `radius` pixels of the GL window point (x, y up).
-bool inkNear(const PngImage& image, glm::vec2 window, float radius)
+bool inkNear(const PngImage& image, glm::vec2 window, float radius, int below = 90)
 {
     const int r = int(std::ceil(radius));
     const int cx = int(std::floor(window.x)), cy = image.height - 1 - int(std::floor(window.y));
     for (int dy = -r; dy <= r; ++dy) {
         for (int dx = -r; dx <= r; ++dx) {
-            if (dx * dx + dy * dy <= radius * radius && isInk(image, cx + dx, cy + dy)) {
+            if (dx * dx + dy * dy <= radius * radius && isInk(image, cx + dx, cy + dy, below)) {
                 return true;
             }
         }
@@ -85,7 +86,7 @@ struct RingStats {
 };
 
 RingStats ring(const PngImage& image, glm::vec2 centre, float radius, float band = 3.0f,
-               float inner = 0.75f, float outer = 6.0f)
+               float inner = 0.75f, float outer = 6.0f, int below = 90)
 {
     RingStats s;
     int hits = 0;
@@ -95,7 +96,7 @@ RingStats ring(const PngImage& image, glm::vec2 centre, float radius, float band
         const glm::vec2 dir(std::cos(t), std::sin(t));
         bool hit = false;
         for (float r = radius - band; r <= radius + band && !hit; r += 0.5f) {
-            hit = inkNear(image, centre + dir * r, 0.5f);
+            hit = inkNear(image, centre + dir * r, 0.5f, below);
         }
         hits += hit;
     }
@@ -105,20 +106,20 @@ RingStats ring(const PngImage& image, glm::vec2 centre, float radius, float band
             const float d = distanceFrom(image, x, y, centre);
             if (d < inner * radius) {
                 ++s.inside;
-                s.insideInk += isInk(image, x, y);
+                s.insideInk += isInk(image, x, y, below);
             } else if (d > radius + outer) {
-                s.outsideInk += isInk(image, x, y);
+                s.outsideInk += isInk(image, x, y, below);
             }
         }
     }
     return s;
 }
 
-int countInk(const PngImage& image)
+int countInk(const PngImage& image, int below = 90)
 {
     int n = 0;
     for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) n += isInk(image, x, y);
+        for (int x = 0; x < image.width; ++x) n += isInk(image, x, y, below);
     }
     return n;
 }
@@ -536,4 +537,90 @@ TEST(StyleHarness, EachRenderStartsFromAClearedFrame)
     render(harness, scene, "toon+perpixel", "", "harness_between");
     const PngImage after = render(harness, scene, "toon", "", "harness_after");
     EXPECT_EQ(before.rgba, after.rgba);
+}
+
+namespace {
+
+// Mean luminance (0-255) of the pixels within `radius` of the GL window point `at`.
+float meanLuminance(const PngImage& image, glm::vec2 at, float radius)
+{
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            if (distanceFrom(image, x, y, at) > radius) continue;
+            const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+            sum += 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+            ++n;
+        }
+    }
+    return n ? float(sum / n) : 0.0f;
+}
+
+} // namespace
+
+// Pencil: the tone is hatching, denser away from the light, and nothing of the program's
+// colour survives as a flat fill: a red sphere becomes graphite on paper.
+TEST(Pencil, HatchingDarkensAwayFromTheLightWithoutFlatFills)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective(), glm::normalize(glm::vec3(0.5f, 0.5f, 0.7f)));
+    // The program's colour out of the tone: light alone decides it here.
+    PngImage image = render(harness, scene, "pencil", "pencil.color_tone=0", "pencil_sphere");
+    const float r = silhouetteRadius(kSize);
+    const glm::vec2 towards = glm::normalize(glm::vec2(1.0f, 1.0f));
+    const float lit = meanLuminance(image, kCentre + towards * (0.45f * r), 0.2f * r);
+    const float shadow = meanLuminance(image, kCentre - towards * (0.6f * r), 0.2f * r);
+    EXPECT_GT(lit, 200.0f) << "the lit side is (nearly) bare paper";
+    EXPECT_LT(shadow, lit - 40.0f) << "no denser hatching on the shadow side";
+    int coloured = 0, inside = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (distanceFrom(image, x, y, kCentre) > 0.9f * r) continue;
+            const uint8_t* p = &image.rgba[(size_t(y) * kSize + x) * 4];
+            const int hi = std::max({p[0], p[1], p[2]}), lo = std::min({p[0], p[1], p[2]});
+            coloured += hi - lo > 40;
+            ++inside;
+        }
+    }
+    EXPECT_LT(coloured, inside / 100) << "the program's red shows through";
+}
+
+// Pencil outlines: overdrawn strokes around the sphere's silhouette, none far outside it.
+TEST(Pencil, StrokesFollowTheSilhouette)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                   perspective());
+    PngImage image = render(harness, scene, "pencil", "pencil.fill=off", "pencil_strokes");
+    // A pencil mark: clearly darker than paper (about 240) and the white fill, lighter than ink.
+    constexpr int kMark = 170;
+    const RingStats s =
+        ring(image, kCentre, silhouetteRadius(kSize), 4.0f, 0.75f, 8.0f, kMark);
+    EXPECT_GT(s.rimCoverage, 0.9f);
+    EXPECT_EQ(s.insideInk, 0);
+    EXPECT_LT(s.outsideInk, 20);
+    // Without outlines there is no mark at all on a fill-less frame.
+    PngImage bare = render(harness, scene, "pencil", "pencil.fill=off,pencil.outlines=off",
+                           "pencil_bare");
+    EXPECT_EQ(countInk(bare, kMark), 0);
+}
+
+// Nothing in the drawing is random per frame: the same scene in a later frame is the same
+// picture (the strokes' wobble is fixed per mesh vertex, the hatching per line).
+TEST(Pencil, TheSameSceneIsTheSameDrawingInEveryFrame)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({boxBatch(boxModelview(), glm::vec3(1.0f), kPale)},
+                                   perspective());
+    scene.frame = 1;
+    const PngImage first = render(harness, scene, "pencil", "", "pencil_frame1");
+    scene.frame = 2;
+    const PngImage second = render(harness, scene, "pencil", "", "pencil_frame2");
+    EXPECT_EQ(first.rgba, second.rgba);
+    EXPECT_GT(countInk(first), 300) << "nothing drawn";
 }

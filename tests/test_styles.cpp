@@ -34,6 +34,28 @@ TEST(StyleRegistry, ParsesChainsAndNamesTheUnknownStyle)
     EXPECT_FALSE(registry.parseChain("none+", chain, error));
 }
 
+// A style that draws on a background (pencil on paper) brings it when the chain names no
+// background, and only then.
+TEST(StyleRegistry, AStyleBringsItsBackgroundWhenTheChainHasNone)
+{
+    const StyleRegistry& registry = StyleRegistry::instance();
+    std::vector<const StyleInfo*> chain;
+    std::string error;
+    auto names = [&]() {
+        std::string s;
+        for (const StyleInfo* info : chain) s += (s.empty() ? "" : "+") + info->name;
+        return s;
+    };
+    ASSERT_TRUE(registry.parseChain("pencil", chain, error)) << error;
+    EXPECT_EQ(names(), "pencil+paper");
+    ASSERT_TRUE(registry.parseChain("toon+pencil", chain, error)) << error;
+    EXPECT_EQ(names(), "toon+pencil+paper");
+    ASSERT_TRUE(registry.parseChain("paper+pencil", chain, error)) << error;
+    EXPECT_EQ(names(), "paper+pencil");
+    ASSERT_TRUE(registry.parseChain("toon+edges", chain, error)) << error;
+    EXPECT_EQ(names(), "toon+edges");
+}
+
 TEST(StyleSettings, EmptyStyleMeansTheDefault)
 {
     StyleSettings settings;

@@ -1,7 +1,6 @@
 #include "styles/strokes/StrokesStyle.h"
 
 #include "common/Log.h"
-#include "reconstruct/Silhouette.h"
 #include "styles/StyleRegistry.h"
 #include "styles/strokes/StrokeTexture.h"
 
@@ -103,15 +102,12 @@ StyleInfo strokesStyleInfo()
 
 bool StrokesStyle::init(StyleContext& ctx, std::string& error)
 {
-    if (!mDrawer.init(ctx.gl, error)) return false;
-    if (!mQueryVisibility.init(ctx.gl, error)) return false;
-    return true;
+    return mRenderer.init(ctx.gl, error);
 }
 
 void StrokesStyle::shutdown(StyleContext& ctx)
 {
-    mDrawer.destroy(ctx.gl);
-    mQueryVisibility.destroy(ctx.gl);
+    mRenderer.destroy(ctx.gl);
     mTextureKey.clear();
 }
 
@@ -132,58 +128,40 @@ void StrokesStyle::updateTexture(StyleContext& ctx)
     }
     if (!loaded)
         strokes::StrokeTexture::generate(strokes::StrokeTexture::Kind(kind), mTextureImage);
-    mDrawer.setTexture(ctx.gl, mTextureImage);
+    mRenderer.setTexture(ctx.gl, mTextureImage);
 }
 
 void StrokesStyle::render(const Scene& scene, StyleContext& ctx)
 {
-    const GlFunctions& gl = ctx.gl;
     auto param = [&](const char* name) { return ctx.param(kName, name); };
     const int renderer = int(param("renderer"));
-    const bool zbuffer = param("zbuffer") != 0.0;
-    const int visibility = int(param("visibility"));
-    const glm::ivec4 viewport = scene.viewport;
-    if (scene.objects.empty() || viewport.z <= 0 || viewport.w <= 0) return;
+    strokes::StrokeRenderer::Options o;
+    o.visibility = param("zbuffer") != 0.0 ? strokes::StrokeRenderer::Visibility::ZBuffer
+                   : int(param("visibility")) == kDepth
+                       ? strokes::StrokeRenderer::Visibility::Depth
+                       : strokes::StrokeRenderer::Visibility::Query;
+    o.extract.creases = param("creases") != 0.0;
+    o.extract.borders = param("borders") != 0.0;
+    o.depthTolerance = float(param("depth_tolerance"));
+    o.depth.radius = int(param("depth_radius"));
+    o.query.visibleThreshold = float(param("visible_threshold"));
+    o.query.invisibleThreshold =
+        std::min(float(param("invisible_threshold")), o.query.visibleThreshold);
+    o.query.iterations = int(param("query_iterations"));
+    o.query.lineWidth = float(param("query_width"));
+    o.build.maxAngle = float(param("max_angle"));
+    o.build.maxSegments = uint32_t(param("max_segments"));
+    o.build.maxLength = float(param("max_length"));
+    o.build.minLength = float(param("min_length"));
+    o.foldLength = float(param("fold_length"));
 
-    strokes::DepthImage depthImage;
-    if (!zbuffer && visibility == kDepth) {
-        // One read-back for the whole frame, into a buffer kept between frames.
-        mDepth.resize(size_t(viewport.z) * size_t(viewport.w));
-        gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-        gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-        gl.PixelStorei(GL_PACK_ROW_LENGTH, 0);
-        gl.PixelStorei(GL_PACK_SKIP_ROWS, 0);
-        gl.PixelStorei(GL_PACK_SKIP_PIXELS, 0);
-        gl.ReadPixels(viewport.x, viewport.y, viewport.z, viewport.w, GL_DEPTH_COMPONENT,
-                      GL_FLOAT, mDepth.data());
-        depthImage = {mDepth.data(), viewport.x, viewport.y, viewport.z, viewport.w};
-    }
-
-    strokes::ChainExtractor::Options extract;
-    extract.creases = param("creases") != 0.0;
-    extract.borders = param("borders") != 0.0;
-    const float tolerance = float(param("depth_tolerance"));
-    strokes::DepthVisibility::Options depthOptions;
-    depthOptions.radius = int(param("depth_radius"));
-    strokes::QueryVisibility::Options queryOptions;
-    queryOptions.visibleThreshold = float(param("visible_threshold"));
-    queryOptions.invisibleThreshold =
-        std::min(float(param("invisible_threshold")), queryOptions.visibleThreshold);
-    queryOptions.iterations = int(param("query_iterations"));
-    queryOptions.lineWidth = float(param("query_width"));
-    strokes::StrokeBuilder::Options build;
-    build.maxAngle = float(param("max_angle"));
-    build.maxSegments = uint32_t(param("max_segments"));
-    build.maxLength = float(param("max_length"));
-    build.minLength = float(param("min_length"));
-    const float foldLength = float(param("fold_length"));
-
-    strokes::StrokePainter::Options paint;
+    strokes::StrokePainter::Options& paint = o.paint;
     paint.widthMode = strokes::StrokePainter::WidthMode(int(param("width_mode")));
     paint.width = float(param("width"));
     paint.minWidth = float(param("min_width"));
     paint.maxWidth = std::max(float(param("max_width")), paint.minWidth);
     paint.widthScale = float(param("width_scale"));
+    paint.depthReference = float(param("depth_reference"));
     const int passes = int(param("passes"));
     paint.passes = uint32_t(passes > 0 ? passes : renderer == kSketchy ? 3 : 1);
     paint.jitter = renderer == kSketchy || paint.passes > 1 ? float(param("jitter")) : 0.0f;
@@ -192,62 +170,17 @@ void StrokesStyle::render(const Scene& scene, StyleContext& ctx)
     // Passes share the opacity: overlapping passes add up to about `opacity`.
     const float opacity = float(param("opacity"));
     paint.opacity = 1.0f - std::pow(1.0f - std::min(opacity, 0.999f), 1.0f / float(paint.passes));
-    paint.biasedDepth = zbuffer;
 
-    mVertices.clear();
-    for (const SceneObject& object : scene.objects) {
-        if (!object.mesh) continue;
-        const reconstruct::ObjectMesh& mesh = *object.mesh;
-        mExtractor.extract(mesh, reconstruct::eyeInObjectSpace(object.modelview), extract,
-                           mChains);
-        if (mChains.chainCount() == 0) continue;
-        mProjector.project(mesh, mChains, object.modelview, object.projection, viewport,
-                           tolerance, mLines);
-        if (zbuffer) {
-            for (uint8_t& s : mLines.state)
-                if (s == strokes::kUnknown) s = strokes::kVisible;
-        } else if (visibility == kDepth) {
-            mDepthVisibility.classify(mesh, depthImage, depthOptions, mLines);
-        } else {
-            mQueryVisibility.classify(gl, mesh, viewport, queryOptions, mLines);
-        }
-        mSimplifier.simplify(mLines);
-        mSimplifier.removeFolds(mLines, foldLength);
-        mBuilder.build(mLines, build, mStrokes);
-        if (mStrokes.points.empty()) continue;
-
-        paint.depthReference = float(param("depth_reference"));
-        if (paint.widthMode == strokes::StrokePainter::WidthMode::Depth &&
-            paint.depthReference <= 0.0f) {
-            if (mAutoReference <= 0.0f) {
-                double sum = 0.0;
-                for (const strokes::ChainPoint& p : mStrokes.points) sum += p.w;
-                mAutoReference = float(sum / double(mStrokes.points.size()));
-            }
-            paint.depthReference = mAutoReference;
-        }
-        strokes::StrokePainter::View view;
-        view.modelview = object.modelview;
-        view.projection = object.projection;
-        view.viewport = viewport;
-        view.lightDir = object.lightDir;
-        mPainter.paint(mesh, mStrokes, view, paint, mJitter, mVertices);
-    }
-    mJitter.endFrame();
-    if (mVertices.empty()) return;
-
-    strokes::StrokeDrawer::Options draw;
+    strokes::StrokeDrawer::Options& draw = o.draw;
     draw.textured = renderer == kTextured;
     if (draw.textured) updateTexture(ctx);
-    draw.depthTest = zbuffer;
     const float lightness = float(param("lightness"));
     draw.color = glm::vec4(lightness, lightness, lightness, 1.0f);
     draw.capLength = float(param("cap_length"));
     draw.tileLength = float(param("tile_length"));
     draw.u1 = float(param("texture_u1"));
     draw.u2 = std::max(float(param("texture_u2")), draw.u1);
-    gl.Viewport(viewport.x, viewport.y, viewport.z, viewport.w);
-    mDrawer.draw(gl, mVertices, draw);
+    mRenderer.render(scene, ctx.gl, o);
 }
 
 } // namespace nprgl::styles

@@ -2,18 +2,9 @@
 
 #include "common/PngImage.h"
 #include "styles/Style.h"
-#include "styles/strokes/ChainExtractor.h"
-#include "styles/strokes/ChainProjector.h"
-#include "styles/strokes/DepthVisibility.h"
-#include "styles/strokes/JitterTable.h"
-#include "styles/strokes/QueryVisibility.h"
-#include "styles/strokes/StrokeBuilder.h"
-#include "styles/strokes/StrokeDrawer.h"
-#include "styles/strokes/StrokePainter.h"
-#include "styles/strokes/StrokeSimplifier.h"
+#include "styles/strokes/StrokeRenderer.h"
 
 #include <string>
-#include <vector>
 
 namespace nprgl::styles {
 
@@ -30,22 +21,8 @@ public:
 private:
     void updateTexture(StyleContext& ctx);
 
-    strokes::ChainExtractor mExtractor;
-    strokes::ChainProjector mProjector;
-    strokes::DepthVisibility mDepthVisibility;
-    strokes::QueryVisibility mQueryVisibility;
-    strokes::StrokeSimplifier mSimplifier;
-    strokes::StrokeBuilder mBuilder;
-    strokes::StrokePainter mPainter;
-    strokes::StrokeDrawer mDrawer;
-    strokes::JitterTable mJitter;
-
-    strokes::EdgeChains mChains;
-    strokes::Polylines mLines, mStrokes;
-    std::vector<strokes::StrokeVertex> mVertices;
-    std::vector<float> mDepth;
-    float mAutoReference = 0.0f; // depth width mode: clip w of the first frame's strokes
-    std::string mTextureKey;     // what the uploaded texture was made from
+    strokes::StrokeRenderer mRenderer;
+    std::string mTextureKey; // what the uploaded texture was made from
     PngImage mTextureImage;
 };
 

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "common/PngImage.h"
+#include "styles/ShaderProgram.h"
+#include "styles/Style.h"
+#include "styles/shading/ShadingCommon.h"
+#include "styles/strokes/StrokeRenderer.h"
+#include "styles/textures/GlTexture.h"
+#include "styles/textures/TextureImage.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace nprgl::styles {
+
+// A graphite drawing of the whole frame (HijackGL's pencil renderer): the surfaces become
+// paper with hatching whose layers and line weight follow L·n (and, softer, the darkness of
+// the program's colour), the outlines several overdrawn, jittered pencil strokes with tapered
+// ends (the strokes pipeline); no flat fills. The page is paper.color's; a chain without a
+// background style gets paper added (StyleInfo::background). Everything random is fixed per
+// line index or mesh vertex, so a still scene is the same drawing in every frame.
+class PencilStyle : public Style {
+public:
+    bool init(StyleContext& ctx, std::string& error) override;
+    void render(const Scene& scene, StyleContext& ctx) override;
+    void shutdown(StyleContext& ctx) override;
+
+private:
+    std::string fragmentSource() const;
+    void drawSurfaces(const Scene& scene, StyleContext& ctx);
+
+    ShaderProgram mProgram;
+    ShadingCommon::ObjectUniforms mU;
+    GLint mAnchor = -1, mGrainTex = -1;
+    GlTexture mGrainTexture;
+    TextureImage mGrainImage;
+    strokes::StrokeRenderer mStrokes;
+    strokes::StrokeRenderer::Options mStrokeOptions;
+    PngImage mStrokeTexture;
+    bool mTextureSent = false;
+
+    glm::vec3 mPaper{1.0f}, mGraphite{0.2f};
+    float mSpacing = 5.0f, mLineWidth = 1.0f, mAngle = 50.0f, mLight = 0.65f, mDark = -0.2f;
+    float mColourTone = 0.5f, mPressure = 0.85f, mGrain = 0.12f;
+    int mLayers = 3;
+    bool mFill = true, mOutlines = true;
+};
+
+} // namespace nprgl::styles
