@@ -16,13 +16,16 @@ The figures come from bench/outline_metrics.py (imported as a module):
 A first row, "motion baseline", is the flicker that the motion alone gives: of the truth
 silhouettes (shapes) and of the object's boundary against the clear colour in the native
 frames (character, whose limbs move more than 2 px a frame).
-Styles: wireframe, perpixel, edges, and strokes with visibility=depth and visibility=query
-when `nprgl styles` lists them.
+Styles: wireframe, perpixel, edges, strokes with visibility=depth and visibility=query,
+pencil (its outlines: fill off, measured against pencil with outlines off, whose page is the
+same paper) and blueprint (its lines alone, then with its grid and dimension lines, which
+count as outline pixels that match no silhouette) when `nprgl styles` lists them.
 
   bench/outline_quality.py [--build DIR] [--frames N] [--step DEG] [--styles a,b,...]
                            [--keep DIR] [--json]
 
---styles takes case names (wireframe, perpixel, edges, strokes-depth, strokes-query);
+--styles takes case names (wireframe, perpixel, edges, strokes-depth, strokes-query, pencil,
+blueprint-lines, blueprint);
 --keep DIR keeps the rendered frames there. Python 3 standard library only; with 30 frames
 the decoding dominates (a few minutes without Pillow). Exit status 0, or 1 if a run failed.
 """
@@ -42,13 +45,18 @@ import outline_metrics as metrics  # noqa: E402
 from benchlib import RunFailed, clean_env  # noqa: E402
 
 MODEL = "/usr/share/assimp/models/X/Testwuson.X"
-# Case name, style, --set values.
+# Case name, style, --set values, and the reference: None for the native frames, else the
+# --set values that render the same style without its outlines (for styles that also change
+# the page or the surfaces, whose outline pixels are those the outlines alone change).
 CASES = [
-    ("wireframe", "wireframe", []),
-    ("perpixel", "perpixel", []),
-    ("edges", "edges", []),
-    ("strokes-depth", "strokes", ["strokes.visibility=depth"]),
-    ("strokes-query", "strokes", ["strokes.visibility=query"]),
+    ("wireframe", "wireframe", [], None),
+    ("perpixel", "perpixel", [], None),
+    ("edges", "edges", [], None),
+    ("strokes-depth", "strokes", ["strokes.visibility=depth"], None),
+    ("strokes-query", "strokes", ["strokes.visibility=query"], None),
+    ("pencil", "pencil", ["pencil.fill=off"], ["pencil.fill=off", "pencil.outlines=off"]),
+    ("blueprint-lines", "blueprint", ["blueprint.grid=0", "blueprint.dimensions=0"], None),
+    ("blueprint", "blueprint", [], None),
 ]
 
 
@@ -143,16 +151,20 @@ def measure(args, work: str, cases: list) -> list[dict]:
         baseline[f"{app}_outline_pixels"] = sum(len(m) for m in masks) / len(masks)
         baseline[f"{app}_flicker_mean"], baseline[f"{app}_flicker_max"] = flicker(masks)
     rows = [baseline]
-    for name, style, settings in cases:
+    def styled(out: str, app: str, style: str, settings: list[str]) -> list[str]:
+        cmd = [nprgl, "--style", style]
+        for setting in settings:
+            cmd += ["--set", setting]
+        run(cmd + ["--", *app_args(args.build, app, args.frames, args.step, out)])
+        return frame_paths(out, app, args.frames)
+
+    for name, style, settings, reference in cases:
         row = {"case": name, "style": style, "settings": settings}
         for app in ("shapes", "character"):
-            out = os.path.join(work, f"{name}_{app}")
-            cmd = [nprgl, "--style", style]
-            for setting in settings:
-                cmd += ["--set", setting]
-            run(cmd + ["--", *app_args(args.build, app, args.frames, args.step, out)])
-            masks = [metrics.outline_mask(p, options, ref)
-                     for p, ref in zip(frame_paths(out, app, args.frames), native[app])]
+            frames = styled(os.path.join(work, f"{name}_{app}"), app, style, settings)
+            refs = native[app] if reference is None else \
+                styled(os.path.join(work, f"{name}_{app}_reference"), app, style, reference)
+            masks = [metrics.outline_mask(p, options, ref) for p, ref in zip(frames, refs)]
             row[f"{app}_outline_pixels"] = sum(len(m) for m in masks) / len(masks)
             row[f"{app}_flicker_mean"], row[f"{app}_flicker_max"] = flicker(masks)
             if app == "shapes":
@@ -188,7 +200,7 @@ def main() -> int:
         if case[0] not in wanted:
             continue
         (cases if available(listing, case[1], case[2]) else missing).append(case)
-    for name, _, _ in missing:
+    for name, *_ in missing:
         print(f"outline_quality: {name} is not available in this build, skipped",
               file=sys.stderr)
 

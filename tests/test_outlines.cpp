@@ -523,6 +523,51 @@ TEST(Blueprint, DimensionsAnnotateTheLongestEdges)
     EXPECT_LT(with, without + 3000) << "more than lines";
 }
 
+// Hidden lines: with blueprint.hidden the box's far edges appear inside its outline, dashed
+// (runs of white broken by gaps along each edge); without it, none of them.
+TEST(Blueprint, HiddenEdgesAreDashedAndOnlyOnRequest)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+    mv = glm::rotate(mv, glm::radians(30.0f), glm::vec3(1, 1, 0));
+    auto scene = harness.makeScene({boxBatch(mv, glm::vec3(1.0f), kPale)}, perspective());
+    const std::string config = kBlueprintConfig + ",blueprint.grid=0,blueprint.dimensions=0";
+    const PngImage solid = render(harness, scene, kBlueprintChain, config, "blueprint_solid");
+    const PngImage dashed = render(harness, scene, kBlueprintChain,
+                                   config + ",blueprint.hidden=1,blueprint.dash=4",
+                                   "blueprint_hidden");
+    int added = 0, removed = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            added += isWhite(dashed, x, y) && !isWhite(solid, x, y);
+            removed += !isWhite(dashed, x, y) && isWhite(solid, x, y);
+        }
+    }
+    EXPECT_GT(added, 60) << "no hidden lines";
+    EXPECT_EQ(removed, 0) << "the visible lines changed";
+    // Dashes: along the rows, the hidden-only pixels come in runs, not as solid lines. A
+    // solid far edge would give runs as long as the edge (about 80 px here).
+    int longest = 0;
+    for (int y = 0; y < kSize; ++y) {
+        int run = 0;
+        for (int x = 0; x < kSize; ++x) {
+            const bool hiddenOnly = isWhite(dashed, x, y) && !isWhite(solid, x, y);
+            run = hiddenOnly ? run + 1 : 0;
+            longest = std::max(longest, run);
+        }
+    }
+    for (int x = 0; x < kSize; ++x) {
+        int run = 0;
+        for (int y = 0; y < kSize; ++y) {
+            const bool hiddenOnly = isWhite(dashed, x, y) && !isWhite(solid, x, y);
+            run = hiddenOnly ? run + 1 : 0;
+            longest = std::max(longest, run);
+        }
+    }
+    EXPECT_LT(longest, 12) << "hidden lines are not dashed";
+}
+
 // The harness renders one chain after another in one context, as a compositor would never
 // do without restoring the program's state in between: an outline style that left depth
 // writes off made the next chain's glClear keep the old depth, and its surfaces failed the

@@ -17,23 +17,33 @@ namespace {
 constexpr const char* kStyle = "blueprint";
 
 // Points arrive in normalised device coordinates; the small pull keeps a line on a visible
-// face in front of that face's depth.
+// face in front of that face's depth. The texcoord is the pixels from the line's first end.
 const char* kVertex = R"(#version 130
 in vec3 position;
 in float color;
+in float texcoord;
 out float alpha;
+out float dashAt;
 void main()
 {
     alpha = color;
+    dashAt = texcoord;
     gl_Position = vec4(position.xy, position.z - 0.0005, 1.0);
 }
 )";
 
+// dash > 0: `dash` pixels drawn, `dash` pixels left out, from each line's first end.
 const char* kFragment = R"(#version 130
 uniform vec3 inkColor;
+uniform float dash;
 in float alpha;
+in float dashAt;
 out vec4 fragColor;
-void main() { fragColor = vec4(inkColor, alpha); }
+void main()
+{
+    if (dash > 0.0 && mod(dashAt, 2.0 * dash) > dash) discard;
+    fragColor = vec4(inkColor, alpha);
+}
 )";
 
 std::unique_ptr<Style> create() { return std::make_unique<BlueprintStyle>(); }
@@ -65,6 +75,12 @@ StyleInfo blueprintStyleInfo()
     p.push_back(ParamInfo::number("dimensions", "dimension lines on the longest visible "
                                                 "straight edges (0: none)",
                                   3, 0, 10));
+    p.push_back(ParamInfo::number("hidden", "opacity of the hidden lines, dashed: the parts "
+                                            "of the lines behind the scene's surfaces (0: not "
+                                            "drawn)",
+                                  0.0, 0.0, 1.0));
+    p.push_back(ParamInfo::number("dash", "length of a hidden line's dashes and gaps, pixels",
+                                  5.0, 1.0, 50.0));
     return info;
 }
 
@@ -73,6 +89,7 @@ bool BlueprintStyle::init(StyleContext& ctx, std::string& error)
     const GlFunctions& gl = ctx.gl;
     if (!mProgram.build(gl, kVertex, kFragment, error)) return false;
     mInk = mProgram.uniform(gl, "inkColor");
+    mDash = mProgram.uniform(gl, "dash");
     const std::string colour = ctx.text(kStyle, "color");
     if (!ParamInfo::parseColour(colour, mInkColour)) mInkColour = glm::vec3(1.0f);
     mWidth = float(ctx.param(kStyle, "width"));
@@ -80,6 +97,8 @@ bool BlueprintStyle::init(StyleContext& ctx, std::string& error)
     mGrid = float(ctx.param(kStyle, "grid"));
     mGridAlpha = float(ctx.param(kStyle, "grid_alpha"));
     mDimensions = int(std::lround(ctx.param(kStyle, "dimensions")));
+    mHidden = float(ctx.param(kStyle, "hidden"));
+    mDashLength = float(ctx.param(kStyle, "dash"));
     gl.GetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, glm::value_ptr(mLineRange));
     gl.GenBuffers(1, &mBuffer);
     return true;
@@ -99,19 +118,18 @@ glm::vec3 BlueprintStyle::fromPixels(glm::vec2 p, float z) const
 
 void BlueprintStyle::addLine(glm::vec3 a, glm::vec3 b, float alpha, float extendPixels)
 {
-    if (extendPixels > 0.0f) {
-        const glm::vec2 pa = toPixels(a), pb = toPixels(b);
-        const glm::vec2 d = pb - pa;
-        const float length = glm::length(d);
-        if (length > 1e-3f) {
-            // Short edges (a gear's teeth) run past their ends by a quarter of their length.
-            const glm::vec2 step = d / length * std::min(extendPixels, 0.25f * length);
-            a = fromPixels(pa - step, a.z);
-            b = fromPixels(pb + step, b.z);
-        }
+    const glm::vec2 pa = toPixels(a), pb = toPixels(b);
+    float length = glm::length(pb - pa);
+    if (extendPixels > 0.0f && length > 1e-3f) {
+        // Short edges (a gear's teeth) run past their ends by a quarter of their length.
+        const float extra = std::min(extendPixels, 0.25f * length);
+        const glm::vec2 step = (pb - pa) / length * extra;
+        a = fromPixels(pa - step, a.z);
+        b = fromPixels(pb + step, b.z);
+        length += 2.0f * extra;
     }
-    mLines.push_back({a, alpha});
-    mLines.push_back({b, alpha});
+    mLines.push_back({a, alpha, 0.0f});
+    mLines.push_back({b, alpha, length});
 }
 
 void BlueprintStyle::addText(const std::string& text, glm::vec2 centre, glm::vec2, float alpha)
@@ -188,12 +206,12 @@ void BlueprintStyle::render(const Scene& scene, StyleContext& ctx)
         const float x0 = float(mViewport[0]), y0 = float(mViewport[1]);
         const float x1 = x0 + float(mViewport[2]), y1 = y0 + float(mViewport[3]);
         for (float x = x0 + mGrid; x < x1; x += mGrid) {
-            mGridLines.push_back({fromPixels({x, y0}, 0.9999f), mGridAlpha});
-            mGridLines.push_back({fromPixels({x, y1}, 0.9999f), mGridAlpha});
+            mGridLines.push_back({fromPixels({x, y0}, 0.9999f), mGridAlpha, 0.0f});
+            mGridLines.push_back({fromPixels({x, y1}, 0.9999f), mGridAlpha, 0.0f});
         }
         for (float y = y0 + mGrid; y < y1; y += mGrid) {
-            mGridLines.push_back({fromPixels({x0, y}, 0.9999f), mGridAlpha});
-            mGridLines.push_back({fromPixels({x1, y}, 0.9999f), mGridAlpha});
+            mGridLines.push_back({fromPixels({x0, y}, 0.9999f), mGridAlpha, 0.0f});
+            mGridLines.push_back({fromPixels({x1, y}, 0.9999f), mGridAlpha, 0.0f});
         }
     }
     std::vector<glm::vec3> ndc;
@@ -263,8 +281,10 @@ void BlueprintStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Enable(GL_BLEND);
     gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     gl.BindBuffer(GL_ARRAY_BUFFER, mBuffer);
+    gl.Uniform1f(mDash, 0.0f);
     gl.EnableVertexAttribArray(0);
     gl.EnableVertexAttribArray(2);
+    gl.EnableVertexAttribArray(3);
     auto draw = [&](const std::vector<Vertex>& v, size_t first, size_t count, float width) {
         if (count == 0) return;
         gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(Vertex)), v.data() + first,
@@ -272,15 +292,29 @@ void BlueprintStyle::render(const Scene& scene, StyleContext& ctx)
         gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
         gl.VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                                reinterpret_cast<const void*>(offsetof(Vertex, alpha)));
+        gl.VertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                               reinterpret_cast<const void*>(offsetof(Vertex, along)));
         gl.LineWidth(std::clamp(width, mLineRange.x, mLineRange.y));
         gl.DrawArrays(GL_LINES, 0, GLsizei(count));
     };
     draw(mGridLines, 0, mGridLines.size(), 1.0f);
     draw(mLines, 0, firstDimension, mWidth);
+    if (mHidden > 0.0f) {
+        // Hidden lines: what lies behind the scene's depth, dashed and thinner, like a
+        // quantitative-invisibility test of one level against the depth buffer.
+        gl.DepthFunc(GL_GREATER);
+        gl.Uniform1f(mDash, mDashLength);
+        gl.Uniform3fv(mInk, 1, glm::value_ptr(mInkColour));
+        for (size_t i = 0; i < firstDimension; ++i) mLines[i].alpha *= mHidden;
+        draw(mLines, 0, firstDimension, std::max(1.0f, 0.6f * mWidth));
+        gl.Uniform1f(mDash, 0.0f);
+        gl.DepthFunc(GL_LEQUAL);
+    }
     gl.Disable(GL_DEPTH_TEST); // annotations on top
     draw(mLines, firstDimension, mLines.size() - firstDimension, 1.0f);
     gl.Enable(GL_DEPTH_TEST);
     gl.DisableVertexAttribArray(2);
+    gl.DisableVertexAttribArray(3);
 }
 
 void BlueprintStyle::shutdown(StyleContext& ctx)
