@@ -23,6 +23,9 @@ struct StyleContext {
     double param(const char* style, const char* name) const;
     // A text parameter (file names): configured, else the default text.
     std::string text(const char* style, const char* name) const;
+    // A colour parameter: configured, else `fallback` ("rrggbb"), with a message when the
+    // configured text is empty or not a colour.
+    glm::vec3 colour(const char* style, const char* name, const char* fallback) const;
 };
 
 // Shading styles draw the held-back surfaces; background styles then restyle the page around

@@ -109,14 +109,7 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
           at("usePaperTex"), at("paperColour"), at("clearColour"), at("tolerance"),
           at("grain"),       at("pass"),        at("grainSize"),   at("paperSize")};
 
-    const std::string colour = ctx.text(kStyle, "color");
-    if (!ParamInfo::parseColour(colour, mPaperColour)) {
-        if (!colour.empty()) {
-            NPRGL_ERROR("paper: color='%s' is not a hex colour rrggbb; using %s",
-                        colour.c_str(), kDefaultColour);
-        }
-        ParamInfo::parseColour(kDefaultColour, mPaperColour);
-    }
+    mPaperColour = ctx.colour(kStyle, "color", kDefaultColour);
     mFill = ctx.param(kStyle, "background") >= 0.5;
     mGrain = float(std::clamp(ctx.param(kStyle, "grain"), 0.0, 1.0));
     mGrainScene = ctx.param(kStyle, "grain_scene") >= 0.5;

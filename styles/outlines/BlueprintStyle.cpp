@@ -90,8 +90,7 @@ bool BlueprintStyle::init(StyleContext& ctx, std::string& error)
     if (!mProgram.build(gl, kVertex, kFragment, error)) return false;
     mInk = mProgram.uniform(gl, "inkColor");
     mDash = mProgram.uniform(gl, "dash");
-    const std::string colour = ctx.text(kStyle, "color");
-    if (!ParamInfo::parseColour(colour, mInkColour)) mInkColour = glm::vec3(1.0f);
+    mInkColour = ctx.colour(kStyle, "color", "ffffff");
     mWidth = float(ctx.param(kStyle, "width"));
     mExtend = float(ctx.param(kStyle, "extend"));
     mGrid = float(ctx.param(kStyle, "grid"));

@@ -74,18 +74,6 @@ void main()
 
 std::unique_ptr<Style> create() { return std::make_unique<PencilStyle>(); }
 
-glm::vec3 colourParam(StyleContext& ctx, const char* style, const char* name, const char* def)
-{
-    glm::vec3 colour(0.0f);
-    const std::string text = ctx.text(style, name);
-    if (ParamInfo::parseColour(text, colour)) return colour;
-    if (!text.empty())
-        NPRGL_ERROR("%s.%s='%s' is not a hex colour rrggbb; using %s", style, name,
-                    text.c_str(), def);
-    ParamInfo::parseColour(def, colour);
-    return colour;
-}
-
 } // namespace
 
 StyleInfo pencilStyleInfo()
@@ -162,9 +150,9 @@ bool PencilStyle::init(StyleContext& ctx, std::string& error)
 {
     const GlFunctions& gl = ctx.gl;
     auto param = [&](const char* name) { return float(ctx.param(kStyle, name)); };
-    mGraphite = colourParam(ctx, kStyle, "graphite", "34373d");
+    mGraphite = ctx.colour(kStyle, "graphite", "34373d");
     // The sheet under the hatching is the page's: paper's colour and grain.
-    mPaper = colourParam(ctx, "paper", "color", "f4efe1");
+    mPaper = ctx.colour("paper", "color", "f4efe1");
     mGrain = float(ctx.param("paper", "grain"));
     mFill = param("fill") >= 0.5f;
     mOutlines = param("outlines") >= 0.5f;
