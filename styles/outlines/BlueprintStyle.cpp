@@ -1,8 +1,8 @@
 #include "styles/outlines/BlueprintStyle.h"
 
 #include "styles/StyleRegistry.h"
+#include "styles/outlines/EdgeView.h"
 
-#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -218,8 +218,7 @@ void BlueprintStyle::render(const Scene& scene, StyleContext& ctx)
     std::vector<bool> inFront;
     for (const SceneObject& o : scene.objects) {
         const reconstruct::ObjectMesh& mesh = *o.mesh;
-        const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
-        const bool ortho = o.orthographic();
+        const EdgeView view(o);
         ndc.resize(mesh.vertexCount());
         eye.resize(mesh.vertexCount());
         inFront.resize(mesh.vertexCount());
@@ -230,25 +229,19 @@ void BlueprintStyle::render(const Scene& scene, StyleContext& ctx)
             inFront[v] = c.w > 1e-6f;
             ndc[v] = inFront[v] ? glm::vec3(c) / c.w : glm::vec3(0.0f);
         }
-        auto facesEye = [&](uint32_t f, const glm::vec3& at) {
-            const glm::vec3 n = normalMatrix * mesh.faceNormal(f);
-            return glm::dot(n, ortho ? glm::vec3(0, 0, 1) : -at) > 0.0f;
-        };
         for (size_t e = 0; e < mesh.edges.size(); ++e) {
             const reconstruct::EdgeInfo& edge = mesh.edges[e];
             if (edge.v0 >= ndc.size() || edge.v1 >= ndc.size()) continue;
             if (!inFront[edge.v0] || !inFront[edge.v1]) continue;
-            const uint8_t c = e < mesh.edgeClasses.size() ? mesh.edgeClasses[e] : 0;
-            const bool feature = (c & (reconstruct::kEdgeBorder | reconstruct::kEdgeCrease)) != 0;
+            const bool feature = view.feature(e);
             const glm::vec3 mid = 0.5f * (eye[edge.v0] + eye[edge.v1]);
-            const bool f0 = edge.f0 != reconstruct::kNoIndex && facesEye(edge.f0, mid);
-            const bool f1 = edge.f1 != reconstruct::kNoIndex && facesEye(edge.f1, mid);
-            const bool silhouette = edge.f0 != reconstruct::kNoIndex &&
-                                    edge.f1 != reconstruct::kNoIndex && f0 != f1;
-            if (!feature && !silhouette) continue;
+            if (!feature && !view.silhouette(edge, mid)) continue;
             addLine(ndc[edge.v0], ndc[edge.v1], 1.0f, mExtend);
             // A straight edge of the model, on a face that is turned to the eye.
-            if (feature && (f0 || f1)) {
+            const bool turnedToEye =
+                (edge.f0 != reconstruct::kNoIndex && view.facesEye(edge.f0, mid)) ||
+                (edge.f1 != reconstruct::kNoIndex && view.facesEye(edge.f1, mid));
+            if (feature && turnedToEye) {
                 Dimension d;
                 d.a = ndc[edge.v0];
                 d.b = ndc[edge.v1];

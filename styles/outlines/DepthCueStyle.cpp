@@ -1,9 +1,9 @@
 #include "styles/outlines/DepthCueStyle.h"
 
 #include "styles/StyleRegistry.h"
+#include "styles/outlines/EdgeView.h"
 #include "styles/outlines/OutlineParams.h"
 
-#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -125,28 +125,15 @@ void DepthCueStyle::render(const Scene& scene, StyleContext& ctx)
         const SceneObject& o = scene.objects[i];
         const reconstruct::ObjectMesh& mesh = *o.mesh;
         const std::vector<glm::vec3>& eye = mEye[i];
-        const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
-        const bool ortho = o.orthographic();
-        // Which side of face f the eye sees (for silhouettes: the two faces disagree).
-        auto facesEye = [&](uint32_t f, const glm::vec3& at) {
-            const glm::vec3 n = normalMatrix * mesh.faceNormal(f);
-            return glm::dot(n, ortho ? glm::vec3(0, 0, 1) : -at) > 0.0f;
-        };
+        const EdgeView view(o);
         for (int l = 0; l < mLevels; ++l) mLines[l].clear();
         const size_t edges = mesh.edges.size();
         for (size_t e = 0; e < edges; ++e) {
             const reconstruct::EdgeInfo& edge = mesh.edges[e];
             if (edge.v0 >= eye.size() || edge.v1 >= eye.size()) continue;
             const glm::vec3 a = eye[edge.v0], b = eye[edge.v1];
-            if (!mAllEdges) {
-                const uint8_t c = e < mesh.edgeClasses.size() ? mesh.edgeClasses[e] : 0;
-                bool keep = (c & (reconstruct::kEdgeBorder | reconstruct::kEdgeCrease)) != 0;
-                if (!keep && edge.f0 != reconstruct::kNoIndex &&
-                    edge.f1 != reconstruct::kNoIndex) {
-                    const glm::vec3 mid = 0.5f * (a + b);
-                    keep = facesEye(edge.f0, mid) != facesEye(edge.f1, mid);
-                }
-                if (!keep) continue;
+            if (!mAllEdges && !view.feature(e) && !view.silhouette(edge, 0.5f * (a + b))) {
+                continue;
             }
             const float ta = along(a), tb = along(b);
             const int level = std::min(mLevels - 1, int(0.5f * (ta + tb) * float(mLevels)));
