@@ -102,7 +102,13 @@ int runProgram(const RunOptions& options)
         }
     }
 
-    setenv("NPRGL_STYLE", settings.chainName().c_str(), 1);
+    // A chain given here (or by a preset) wins over the configuration files; none given,
+    // the library takes the files' chain, else the default.
+    if (!style.empty()) {
+        setenv("NPRGL_STYLE", settings.chainName().c_str(), 1);
+    } else {
+        unsetenv("NPRGL_STYLE");
+    }
     setenv("NPRGL_CONFIG", config.c_str(), 1);
     if (!options.screenshot.empty()) setenv("NPRGL_SCREENSHOT", options.screenshot.c_str(), 1);
     if (!options.logLevel.empty()) setenv("NPRGL_LOG_LEVEL", options.logLevel.c_str(), 1);

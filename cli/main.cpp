@@ -33,6 +33,10 @@ Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM read
   NPRGL_STYLE       style chain, e.g. none
   NPRGL_CONFIG      style parameters, key=value,key=value
   NPRGL_PRESET      a preset name or file (applied under NPRGL_STYLE and NPRGL_CONFIG)
+  NPRGL_CONFIG_FILE the one configuration file to read, instead of
+                    $XDG_CONFIG_HOME/nprgl/nprgl.conf and <program>.conf beside it (the
+                    options and variables above win over the files; a changed file applies
+                    at the next frame)
   NPRGL_SCREENSHOT  frames=1,10,100;dir=out writes <program>_<frame>.png before each swap
   NPRGL_RECORD      record the GL stream to this file (NPRGL_RECORD_FRAMES=A-B)
   NPRGL_EXPORT      frame=N;dir=D writes frame N's reconstructed meshes as D/<program>_N.obj

@@ -13,5 +13,7 @@ using KeyValueList = std::vector<std::pair<std::string, std::string>>;
 // blanks around keys and values. Returns false with a message for an item without '='.
 bool parseKeyValues(std::string_view text, char separator, KeyValueList& out,
                     std::string& error);
+// `s` without the blanks (spaces, tabs, carriage returns) at either end.
+std::string_view trimBlanks(std::string_view s);
 
 } // namespace nprgl

@@ -156,7 +156,11 @@ glm::vec3 lightDirection(const TrackedBatch& b)
 
 } // namespace
 
-Compositor::Compositor(Context& ctx, Recorder& recorder) : mContext(ctx), mRecorder(recorder) {}
+Compositor::Compositor(Context& ctx, Recorder& recorder)
+    : mContext(ctx), mRecorder(recorder), mSettings(ctx.config().style)
+{
+    mHasStyles = mSettings.chain().front()->create != nullptr;
+}
 
 Compositor::~Compositor()
 {
@@ -253,7 +257,7 @@ const std::vector<uint8_t>* Compositor::Blobs::blob(uint64_t hash, std::string& 
 
 bool Compositor::ready()
 {
-    if (mPhase == Phase::Ready) return !mBroken;
+    if (mPhase == Phase::Ready) return !mBroken && mEnabled && mHasStyles;
     if (mPhase == Phase::Off || mBroken || mInFlush) return false;
     const ContextCaps& caps = mContext.caps();
     if (caps.es || caps.core || !caps.atLeast(3, 0)) {
@@ -288,7 +292,7 @@ bool Compositor::ready()
     installHeldRecording(mHeldTable);
     mHeldTable.glEnd = cEnd;
     mPhase = Phase::Ready;
-    return !mBroken;
+    return !mBroken && mEnabled && mHasStyles;
 }
 
 bool Compositor::startStyles()
@@ -302,22 +306,57 @@ bool Compositor::startStyles()
                    mContext.serial());
         return false;
     }
-    const GLenum appError = gRealGl.glGetError();
-    if (!saveState()) return false;
     std::string error;
-    const bool ok = mChain.init(mContext.config().style, &realProc, error);
+    if (!startChain(false, error)) {
+        NPRGL_WARN("context %u: %s; passthrough", mContext.serial(), error.c_str());
+        return false;
+    }
+    NPRGL_INFO("context %u: style %s on %s", mContext.serial(), mSettings.chainName().c_str(),
+               mContext.renderer().c_str());
+    return true;
+}
+
+bool Compositor::startChain(bool restart, std::string& error)
+{
+    const GLenum appError = gRealGl.glGetError();
+    if (!saveState()) {
+        error = "the program's state could not be saved";
+        return false;
+    }
+    if (restart) mChain.shutdown();
+    const bool ok = !mHasStyles || mChain.init(mSettings, &realProc, error);
     restoreState();
     while (gRealGl.glGetError() != GL_NO_ERROR) {
     }
     if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
-    if (!ok) {
-        NPRGL_WARN("context %u: %s; passthrough", mContext.serial(), error.c_str());
-        return false;
+    mShading = ok && mHasStyles && mChain.hasShading();
+    return ok;
+}
+
+void Compositor::restyle(const StyleSettings& settings)
+{
+    flush();
+    mSettings = settings;
+    mHasStyles = mSettings.chain().front()->create != nullptr;
+    // Not started yet: it starts with the new settings; off (core profile, no FBOs): stays.
+    if (mPhase != Phase::Ready || mBroken) return;
+    std::string error;
+    if (!startChain(true, error)) {
+        NPRGL_WARN("context %u: style %s cannot start: %s; passthrough until the next change",
+                   mContext.serial(), mSettings.chainName().c_str(), error.c_str());
+        mHasStyles = false;
+        return;
     }
-    mShading = mChain.hasShading();
-    NPRGL_INFO("context %u: style %s on %s", mContext.serial(),
-               mContext.config().style.chainName().c_str(), mContext.renderer().c_str());
-    return true;
+    NPRGL_INFO("context %u: configuration changed: style now %s", mContext.serial(),
+               mSettings.chainName().c_str());
+}
+
+void Compositor::setEnabled(bool enabled)
+{
+    if (enabled == mEnabled) return;
+    flush();
+    mEnabled = enabled;
+    NPRGL_INFO("context %u: styling %s", mContext.serial(), enabled ? "on" : "off");
 }
 
 void Compositor::noteUnstyled(bool polygonal)

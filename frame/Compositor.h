@@ -51,6 +51,13 @@ public:
     // Renders what is held back, if anything.
     void flush();
 
+    // At a frame end: from the next frame on, run `settings` (a chain without styles passes
+    // every draw through); the chain is rebuilt in this context with one log line.
+    void restyle(const StyleSettings& settings);
+    // Styling off shows the program's own picture (for comparison); on again restyles it.
+    void setEnabled(bool enabled);
+    bool enabled() const { return mEnabled; }
+
     // Dispatch entry points (through the current context's compositor).
     void begin(GLenum mode);
     void end();
@@ -71,6 +78,9 @@ public:
 private:
     bool ready();
     bool startStyles();
+    // Shuts the chain down (when it ran) and starts mSettings' chain, with the program's
+    // state and pending GL error kept; false with a message when it cannot start.
+    bool startChain(bool restart, std::string& error);
     void noteHeld();
     void noteUnstyled(bool polygonal);
     void buildScene();
@@ -93,6 +103,9 @@ private:
     enum class Phase { Unknown, Ready, Off };
     Phase mPhase = Phase::Unknown;
     styles::StyleChain mChain;
+    StyleSettings mSettings;  // what the chain runs: the context's, then each restyle's
+    bool mHasStyles = true;   // mSettings names at least one style
+    bool mEnabled = true;     // styling on (the toggle key)
     bool mShading = true;
     GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only
     GlDispatch mHeldTable{}; // the context's table while a held glBegin..glEnd is open

@@ -7,6 +7,11 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 # Warnings are errors here: the build stays warning-free.
 "$root/scripts/build.sh" "$root/build" -DNPRGL_WERROR=ON
+# The tests run the programs as a new user would: the developer's own configuration files
+# (~/.config/nprgl) must not change what they see.
+export XDG_CONFIG_HOME="$root/build/test-config-home"
+unset NPRGL_CONFIG_FILE NPRGL_STYLE NPRGL_CONFIG NPRGL_PRESET
+mkdir -p "$XDG_CONFIG_HOME"
 cd "$root/build"
 "$root/scripts/with-display.sh" ctest --output-on-failure -j 2
 

@@ -2,6 +2,9 @@
 
 #include "common/Log.h"
 #include "common/ScreenshotSpec.h"
+#include "shim/ConfigFile.h"
+#include "shim/ConfigWatcher.h"
+#include "styles/Presets.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -43,7 +46,25 @@ void parseScreenshot(const std::string& text, Config& s)
 struct ProcessConfig {
     std::mutex mutex;
     std::unique_ptr<Config> config; // set once, never replaced: references stay valid
+    std::shared_ptr<const Config> current;
+    bool fromEnvironment = false;
 };
+
+// The default keys: right Shift with a function key, as MangoHud's Shift_R+F12, on keys no
+// common program or desktop binds.
+const std::map<std::string, std::string>& defaultKeys()
+{
+    static const std::map<std::string, std::string> keys = {
+        {"toggle", "Shift_R+F9"}, {"cycle", "Shift_R+F10"}, {"screenshot", "Shift_R+F11"},
+        {"overlay", "Shift_R+F8"}, {"reload", "Shift_R+F7"}};
+    return keys;
+}
+
+std::string joinConfig(const std::string& a, const std::string& b)
+{
+    if (a.empty()) return b;
+    return b.empty() ? a : a + "," + b;
+}
 
 ProcessConfig& processConfig()
 {
@@ -53,20 +74,75 @@ ProcessConfig& processConfig()
 
 } // namespace
 
-Config Config::fromEnvironment()
+std::vector<std::string> Config::filePaths(const std::string& program)
 {
+    if (const char* file = std::getenv("NPRGL_CONFIG_FILE"); file && *file) return {file};
+    std::string dir = envOr("XDG_CONFIG_HOME", "");
+    if (dir.empty()) {
+        const char* home = std::getenv("HOME");
+        if (!home || !*home) return {};
+        dir = std::string(home) + "/.config";
+    }
+    dir += "/nprgl/";
+    return {dir + "nprgl.conf", dir + program + ".conf"};
+}
+
+Config Config::fromEnvironment(bool reloading)
+{
+    const LogLevel said = reloading ? LogLevel::Debug : LogLevel::Info;
     Config s;
     s.programName = program_invocation_short_name;
-    std::string style = envOr("NPRGL_STYLE", "");
-    std::string config = envOr("NPRGL_CONFIG", "");
+    s.keys = defaultKeys();
+    // Lowest precedence first: the global file, the program's file.
+    std::string chain, config, logLevel, missing;
+    for (const std::string& path : filePaths(s.programName)) {
+        s.tried.push_back(path);
+        ConfigFile file = ConfigFile::read(path);
+        if (!file.found) {
+            missing += (missing.empty() ? "" : ", ") + path;
+            continue;
+        }
+        s.files.push_back(path);
+        for (const std::string& e : file.errors) NPRGL_ERROR("%s; line skipped", e.c_str());
+        if (!file.chain.empty()) chain = file.chain;
+        config = joinConfig(config, file.config);
+        if (!file.screenshotDir.empty()) s.hotkeyScreenshotDir = file.screenshotDir;
+        if (!file.logLevel.empty()) logLevel = file.logLevel;
+        for (const auto& [action, key] : file.keys) s.keys[action] = key;
+        if (!file.cycle.empty()) s.cycle = file.cycle;
+    }
+    if (!s.tried.empty()) {
+        std::string read;
+        for (const std::string& f : s.files) read += (read.empty() ? "" : ", ") + f;
+        NPRGL_LOG(said, "configuration files: %s%s%s%s",
+                  read.empty() ? "none found" : read.c_str(),
+                  missing.empty() ? "" : " (not found: ", missing.c_str(),
+                  missing.empty() ? "" : ")");
+    }
+    // The environment (and so the command line) over the files.
     std::string error;
-    if (!StyleSettings::parse(style, config, s.style, error)) {
+    if (const std::string preset = envOr("NPRGL_PRESET", ""); !preset.empty()) {
+        std::string presetChain, presetConfig;
+        if (!Presets::load(preset, presetChain, presetConfig, error)) {
+            NPRGL_ERROR("NPRGL_PRESET: %s; preset ignored", error.c_str());
+        } else {
+            if (!presetChain.empty()) chain = presetChain;
+            config = joinConfig(config, presetConfig);
+        }
+    }
+    if (const std::string style = envOr("NPRGL_STYLE", ""); !style.empty()) chain = style;
+    config = joinConfig(config, envOr("NPRGL_CONFIG", ""));
+    if (!logLevel.empty() && !std::getenv("NPRGL_LOG_LEVEL")) {
+        LogLevel level;
+        if (parseLogLevel(logLevel.c_str(), level)) setLogLevel(level);
+    }
+    if (!StyleSettings::parse(chain, config, s.style, error)) {
         NPRGL_ERROR("%s; using style none", error.c_str());
         StyleSettings::parse("none", "", s.style, error);
     }
     std::string shot = envOr("NPRGL_SCREENSHOT", "");
     if (!shot.empty()) parseScreenshot(shot, s);
-    NPRGL_INFO("%s: style %s%s%s%s%s", s.programName.c_str(), s.style.chainName().c_str(),
+    NPRGL_LOG(said, "%s: style %s%s%s%s%s", s.programName.c_str(), s.style.chainName().c_str(),
                config.empty() ? "" : ", config ", config.c_str(),
                s.screenshots ? ", screenshots to " : "",
                s.screenshots ? s.screenshotDir.c_str() : "");
@@ -77,8 +153,36 @@ const Config& Config::process()
 {
     ProcessConfig& p = processConfig();
     std::lock_guard lock(p.mutex);
-    if (!p.config) p.config = std::make_unique<Config>(fromEnvironment());
+    if (!p.config) {
+        p.config = std::make_unique<Config>(fromEnvironment());
+        p.fromEnvironment = true;
+        ConfigWatcher::instance().watch(p.config->tried);
+    }
+    if (!p.current) p.current = std::make_shared<const Config>(*p.config);
     return *p.config;
+}
+
+std::shared_ptr<const Config> Config::current()
+{
+    process();
+    ProcessConfig& p = processConfig();
+    std::lock_guard lock(p.mutex);
+    return p.current;
+}
+
+void Config::reload()
+{
+    process();
+    ProcessConfig& p = processConfig();
+    {
+        std::lock_guard lock(p.mutex);
+        if (!p.fromEnvironment) return;
+    }
+    // Read outside the lock: the files may be slow, other contexts keep the current one.
+    auto next = std::make_shared<Config>(fromEnvironment(true));
+    std::lock_guard lock(p.mutex);
+    next->generation = p.current->generation + 1;
+    p.current = std::move(next);
 }
 
 bool Config::use(Config config)

@@ -6,6 +6,7 @@
 #include "frame/FrameGrabber.h"
 #include "frame/LiveExport.h"
 #include "frame/Recorder.h"
+#include "shim/ConfigWatcher.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
 #include "shim/ThreadState.h"
@@ -40,8 +41,11 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Con
     // Recording to a file wins over a live export (both need the Stream).
     StreamSink* sink = CaptureSession::instance();
     if (!sink) sink = LiveExport::instance();
-    // The compositor reads the Stream too (from memory, frame by frame).
-    const bool styled = mConfig.style.chain().front()->create != nullptr;
+    // The compositor reads the Stream too (from memory, frame by frame). With a configuration
+    // file it is there even for style none, so that a change of the file can style the
+    // program without a restart.
+    const bool styled =
+        mConfig.style.chain().front()->create != nullptr || !mConfig.files.empty();
     if (sink || styled) {
         mRecorder = std::make_unique<Recorder>(*this, sink);
         installRecording(mDispatch);
@@ -119,9 +123,28 @@ void Context::queryCaps()
 bool Context::endFrame()
 {
     if (mCompositor) mCompositor->flush();
+    followConfig();
     ++mFrame;
     if (mRecorder) mRecorder->endFrame(mFrame);
     return mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame);
+}
+
+void Context::followConfig()
+{
+    if (ConfigWatcher::instance().changed()) {
+        NPRGL_DEBUG("a configuration file changed; reading it again");
+        Config::reload();
+    }
+    const std::shared_ptr<const Config> current = Config::current();
+    if (current->generation == mConfigGeneration) return;
+    mConfigGeneration = current->generation;
+    if (!mCompositor) {
+        NPRGL_WARN("context %u runs without styles (it started with style none and no "
+                   "configuration file); restart the program to style it",
+                   mSerial);
+        return;
+    }
+    mCompositor->restyle(current->style);
 }
 
 void Context::writeScreenshot(int width, int height)

@@ -70,6 +70,8 @@ public:
 
 private:
     void queryCaps();
+    // At a frame end: picks up a changed configuration file (the next frame runs it).
+    void followConfig();
 
     const Config& mConfig; // the process's (Config::process), which outlives every context
     GlDispatch mDispatch;
@@ -83,6 +85,7 @@ private:
     const void* mHandle;
     uint32_t mSerial; // 1 for the program's first context, 2 for the next...
     uint64_t mFrame = 0;
+    uint64_t mConfigGeneration = 0; // the Config::current() generation this context runs
     bool mInitialized = false;
 };
 

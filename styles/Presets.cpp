@@ -1,5 +1,6 @@
 #include "styles/Presets.h"
 
+#include "common/KeyValue.h"
 #include "styles/StyleRegistry.h"
 #include "styles/StyleSettings.h"
 
@@ -10,12 +11,7 @@ namespace nprgl {
 
 namespace {
 
-std::string trim(const std::string& s)
-{
-    const size_t first = s.find_first_not_of(" \t\r");
-    if (first == std::string::npos) return {};
-    return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
+std::string trim(const std::string& s) { return std::string(trimBlanks(s)); }
 
 } // namespace
 

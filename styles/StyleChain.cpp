@@ -12,6 +12,7 @@ bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getPro
 {
     mSettings = settings;
     mContext.settings = &mSettings;
+    mHasShading = false; // a chain may be started again with other settings
     std::string missing;
     if (!mContext.gl.load(getProc, missing)) {
         error = "the driver lacks " + missing;

@@ -1,0 +1,142 @@
+#include "shim/ConfigFile.h"
+
+#include "common/KeyValue.h"
+#include "common/Log.h"
+#include "styles/Presets.h"
+#include "styles/StyleRegistry.h"
+#include "styles/StyleSettings.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace nprgl {
+
+namespace {
+
+// A cycle entry is a chain or "preset:NAME" (a shipped preset or a preset file).
+bool checkCycleEntry(const std::string& entry, std::string& error)
+{
+    if (entry.rfind("preset:", 0) == 0) {
+        std::string chain, config;
+        return Presets::load(entry.substr(7), chain, config, error);
+    }
+    std::vector<const StyleInfo*> styles;
+    return StyleRegistry::instance().parseChain(entry, styles, error);
+}
+
+} // namespace
+
+const std::vector<std::string>& ConfigFile::actions()
+{
+    static const std::vector<std::string> names = {"toggle", "cycle", "screenshot", "overlay",
+                                                   "reload"};
+    return names;
+}
+
+ConfigFile ConfigFile::read(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in) {
+        ConfigFile none;
+        none.path = path;
+        return none;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    ConfigFile file = parse(text.str(), path);
+    file.path = path;
+    file.found = true;
+    return file;
+}
+
+ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
+{
+    ConfigFile out;
+    std::string presetConfig, ownConfig, presetChain;
+    std::istringstream in(text);
+    std::string raw;
+    for (int number = 1; std::getline(in, raw); ++number) {
+        if (size_t hash = raw.find('#'); hash != std::string::npos) raw.resize(hash);
+        const std::string line(trimBlanks(raw));
+        if (line.empty()) continue;
+        const std::string where = origin + ":" + std::to_string(number) + ": ";
+        auto skip = [&](const std::string& why) { out.errors.push_back(where + why); };
+        const size_t eq = line.find('=');
+        if (eq == std::string::npos) {
+            skip("expected key=value, got '" + line + "'");
+            continue;
+        }
+        const std::string key(trimBlanks(std::string_view(line).substr(0, eq)));
+        const std::string value(trimBlanks(std::string_view(line).substr(eq + 1)));
+        std::string error;
+        if (key == "style") {
+            std::vector<const StyleInfo*> styles;
+            if (!StyleRegistry::instance().parseChain(value, styles, error)) {
+                skip(error);
+            } else {
+                out.chain = value;
+            }
+        } else if (key == "preset") {
+            std::string chain, config;
+            if (!Presets::load(value, chain, config, error)) {
+                skip("preset: " + error);
+            } else {
+                presetChain = chain;
+                presetConfig = config;
+            }
+        } else if (key == "screenshot_dir") {
+            out.screenshotDir = value;
+        } else if (key == "log_level") {
+            LogLevel level;
+            if (!parseLogLevel(value.c_str(), level)) {
+                skip("unknown log level '" + value + "' (use error, warn, info or debug)");
+            } else {
+                out.logLevel = value;
+            }
+        } else if (key == "cycle") {
+            std::vector<std::string> entries;
+            std::string_view rest = value;
+            bool ok = true;
+            while (!rest.empty() && ok) {
+                const size_t comma = rest.find(',');
+                const std::string entry(trimBlanks(rest.substr(0, comma)));
+                rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+                if (entry.empty()) continue;
+                ok = checkCycleEntry(entry, error);
+                if (ok) entries.push_back(entry);
+            }
+            if (!ok) {
+                skip("cycle: " + error);
+            } else {
+                out.cycle = std::move(entries);
+            }
+        } else if (key.size() > 4 && key.compare(key.size() - 4, 4, "_key") == 0) {
+            const std::string action = key.substr(0, key.size() - 4);
+            bool known = false;
+            for (const std::string& a : actions()) known = known || a == action;
+            if (!known) {
+                skip("unknown key binding '" + key + "'");
+            } else if (value.empty()) {
+                skip(key + " is empty (to unbind a key, write " + key + "=none)");
+            } else {
+                out.keys[action] = value;
+            }
+        } else {
+            const ParamInfo* param = nullptr;
+            double ignored = 0.0;
+            if (!StyleSettings::check(key, value, param, ignored, error)) {
+                skip(error);
+            } else if (value.find(',') != std::string::npos) {
+                skip("a value may not contain ',': '" + value + "'");
+            } else {
+                ownConfig += (ownConfig.empty() ? "" : ",") + key + "=" + value;
+            }
+        }
+    }
+    if (out.chain.empty()) out.chain = presetChain;
+    out.config = presetConfig;
+    if (!ownConfig.empty()) out.config += (out.config.empty() ? "" : ",") + ownConfig;
+    return out;
+}
+
+} // namespace nprgl

@@ -1,0 +1,38 @@
+#pragma once
+
+// ConfigFile: what one configuration file (nprgl.conf, <program>.conf) says, line by line.
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace nprgl {
+
+// The `key=value` lines of a configuration file, `#` comments, the preset syntax plus the keys
+// of the running program's controls:
+//   style=CHAIN  preset=NAME|FILE  STYLE.PARAM=VALUE
+//   screenshot_dir=DIR  log_level=error|warn|info|debug
+//   toggle_key= cycle_key= screenshot_key= overlay_key= reload_key=  (e.g. Shift_R+F9)
+//   cycle=CHAIN|preset:NAME, ...   (what cycle_key steps through)
+// A bad line is reported as file:line and skipped; the other lines apply.
+struct ConfigFile {
+    std::string path;
+    bool found = false;        // the file exists and could be read
+    std::string chain;         // style=, else the preset's chain (empty: none given)
+    std::string config;        // "style.param=value,...": the preset's, then the file's own
+    std::string screenshotDir;
+    std::string logLevel;
+    std::map<std::string, std::string> keys; // "toggle", "cycle", ... -> key combination
+    std::vector<std::string> cycle;
+    std::vector<std::string> errors; // "file:line: message", one per skipped line
+
+    // Reads the file at `path`; a file that does not exist is not an error (found = false).
+    static ConfigFile read(const std::string& path);
+    // Parses text; `origin` names it in messages.
+    static ConfigFile parse(const std::string& text, const std::string& origin);
+
+    // The actions a key may be bound to, in the order the overlay lists them.
+    static const std::vector<std::string>& actions();
+};
+
+} // namespace nprgl

@@ -1,0 +1,157 @@
+// Configuration files (shim/Config, shim/ConfigFile, shim/ConfigWatcher): where they are read
+// from, their precedence, bad lines, and a changed file restyling a running program.
+
+#include "common/PngImage.h"
+#include "shim/ConfigFile.h"
+#include "tests/support/Process.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+using namespace nprgl;
+using namespace nprgl::test;
+
+namespace {
+
+std::string probe() { return binDir() + "/probe_reload"; }
+
+void writeFile(const std::string& path, const std::string& text)
+{
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    std::ofstream(path) << text;
+}
+
+PngImage frame(const std::string& dir, int n)
+{
+    PngImage image;
+    std::string error;
+    EXPECT_TRUE(PngImage::read(dir + "/reload_" + std::to_string(n) + ".png", image, error))
+        << error;
+    return image;
+}
+
+// Pixels whose colour differs by more than a rounding step.
+int differing(const PngImage& a, const PngImage& b)
+{
+    if (a.rgba.size() != b.rgba.size()) return -1;
+    int n = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d += std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]));
+        n += d > 6;
+    }
+    return n;
+}
+
+// The environment of a run that reads its files from `home` only.
+std::map<std::string, std::string> filesIn(const std::string& home)
+{
+    return {{"XDG_CONFIG_HOME", home}, {"NPRGL_CONFIG_FILE", ""}, {"NPRGL_STYLE", ""},
+            {"NPRGL_CONFIG", ""}, {"NPRGL_PRESET", ""}};
+}
+
+} // namespace
+
+TEST(ConfigFile, ABadLineIsNamedAndSkippedAndTheRestApplies)
+{
+    const ConfigFile f = ConfigFile::parse("# look\n"
+                                           "style=toon+edges\n"
+                                           "toon.nonsense=1\n"
+                                           "no equals sign\n"
+                                           "toon.diffuse_threshold=0.3   # trailing comment\n"
+                                           "toggle_key=Shift_R+F6\n"
+                                           "jump_key=F1\n"
+                                           "log_level=loud\n"
+                                           "cycle=toon, preset:pencil, nostyle\n"
+                                           "screenshot_dir=/tmp/shots\n",
+                                           "my.conf");
+    EXPECT_EQ(f.chain, "toon+edges");
+    EXPECT_EQ(f.config, "toon.diffuse_threshold=0.3");
+    EXPECT_EQ(f.keys.at("toggle"), "Shift_R+F6");
+    EXPECT_EQ(f.keys.count("jump"), 0u);
+    EXPECT_EQ(f.screenshotDir, "/tmp/shots");
+    EXPECT_TRUE(f.cycle.empty()) << "a cycle list with an unknown style is refused whole";
+    ASSERT_EQ(f.errors.size(), 5u);
+    EXPECT_EQ(f.errors[0].rfind("my.conf:3: ", 0), 0u) << f.errors[0];
+    EXPECT_EQ(f.errors[1].rfind("my.conf:4: ", 0), 0u) << f.errors[1];
+    EXPECT_EQ(f.errors[2].rfind("my.conf:7: ", 0), 0u) << f.errors[2];
+    EXPECT_EQ(f.errors[3].rfind("my.conf:8: ", 0), 0u) << f.errors[3];
+    EXPECT_EQ(f.errors[4].rfind("my.conf:9: ", 0), 0u) << f.errors[4];
+}
+
+TEST(ConfigFile, APresetLineGivesItsChainAndValuesUnderTheFilesOwn)
+{
+    const ConfigFile f = ConfigFile::parse("paper.grain=0.5\npreset=pencil\n", "p.conf");
+    EXPECT_TRUE(f.errors.empty());
+    EXPECT_EQ(f.chain, "pencil+paper");
+    // The file's own value comes last, so it wins over the preset's paper.grain.
+    const size_t own = f.config.rfind("paper.grain=0.5");
+    ASSERT_NE(own, std::string::npos) << f.config;
+    EXPECT_EQ(own + std::string("paper.grain=0.5").size(), f.config.size()) << f.config;
+}
+
+// Command line > environment > the program's file > the global file > the default.
+TEST(Config, TheProgramsFileWinsOverTheGlobalOneAndTheCommandLineOverBoth)
+{
+    const std::string home = freshDir("config_precedence"), out = freshDir("config_out");
+    writeFile(home + "/nprgl/nprgl.conf", "style=toon\nbogus\n");
+    const std::vector<std::string> program = {probe(), "--frames", "1", "--save-dir", out};
+    ProcessResult global = runProcess(under({nprglCommand()}, program), filesIn(home));
+    ASSERT_EQ(global.exitCode, 0) << global.err;
+    EXPECT_NE(global.err.find("probe_reload: style toon\n"), std::string::npos) << global.err;
+    EXPECT_NE(global.err.find("nprgl.conf:2: expected key=value"), std::string::npos)
+        << global.err;
+
+    writeFile(home + "/nprgl/probe_reload.conf", "style=halftone\n");
+    ProcessResult own = runProcess(under({nprglCommand()}, program), filesIn(home));
+    ASSERT_EQ(own.exitCode, 0) << own.err;
+    EXPECT_NE(own.err.find("probe_reload: style halftone\n"), std::string::npos) << own.err;
+
+    ProcessResult command =
+        runProcess(under({nprglCommand(), "--style", "toon+edges"}, program), filesIn(home));
+    ASSERT_EQ(command.exitCode, 0) << command.err;
+    EXPECT_NE(command.err.find("probe_reload: style toon+edges\n"), std::string::npos)
+        << command.err;
+
+    // NPRGL_CONFIG_FILE: that file alone.
+    writeFile(home + "/elsewhere.conf", "style=textured\n");
+    auto env = filesIn(home);
+    env["NPRGL_CONFIG_FILE"] = home + "/elsewhere.conf";
+    ProcessResult named = runProcess(under({nprglCommand()}, program), env);
+    ASSERT_EQ(named.exitCode, 0) << named.err;
+    EXPECT_NE(named.err.find("probe_reload: style textured\n"), std::string::npos) << named.err;
+}
+
+// The probe rewrites the file after frame 2 (style none -> toon+edges) and after frame 4
+// (back to none). A change is noticed at the next frame end and runs from the frame after:
+// frames 1-3 are the program's own picture, 4-5 styled, 6 the program's again. One line
+// says each change; nothing restarts.
+TEST(Config, AChangedFileRestylesTheRunningProgram)
+{
+    const std::string home = freshDir("config_reload"), native = freshDir("reload_native"),
+                      live = freshDir("reload_live");
+    const std::string file = home + "/nprgl/nprgl.conf";
+    writeFile(file, "style=none\n");
+    ProcessResult n = runProcess({probe(), "--frames", "6", "--save-dir", native});
+    ASSERT_EQ(n.exitCode, 0) << n.err;
+    ProcessResult r = runProcess(
+        under({nprglCommand()}, {probe(), "--frames", "6", "--save-dir", live, "--file", file,
+                                 "--at", "2", "--text", "style=toon+edges", "--at", "4",
+                                 "--text", "style=none"}),
+        filesIn(home));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, n.out);
+    for (int f : {1, 2, 3, 6}) {
+        EXPECT_EQ(differing(frame(native, f), frame(live, f)), 0) << "frame " << f;
+    }
+    for (int f : {4, 5}) {
+        EXPECT_GT(differing(frame(native, f), frame(live, f)), 200) << "frame " << f
+                                                                      << " not restyled";
+    }
+    EXPECT_NE(r.err.find("configuration changed: style now toon+edges"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("configuration changed: style now none"), std::string::npos) << r.err;
+}
