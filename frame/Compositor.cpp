@@ -284,7 +284,8 @@ bool Compositor::ready()
     syncStream();
     mTracker.setViewport({viewport[0], viewport[1], viewport[2], viewport[3]});
     mTracker.setStackLimits(maxAttrib, maxClient);
-    mTracker.setHolding(true);
+    // Off or without styles, the tracker must not take the program's draws for held ones.
+    mTracker.setHolding(mEnabled && mHasStyles);
     // While a held glBegin..glEnd is open: the context's table with vertices recorded only.
     mHeldNext = mNext;
     installHeldRecording(mHeldNext);
@@ -340,13 +341,16 @@ void Compositor::restyle(const StyleSettings& settings)
     mHasStyles = mSettings.chain().front()->create != nullptr;
     // Not started yet: it starts with the new settings; off (core profile, no FBOs): stays.
     if (mPhase != Phase::Ready || mBroken) return;
+    mTracker.setHolding(false); // nothing is held while the chain restarts
     std::string error;
     if (!startChain(true, error)) {
         NPRGL_WARN("context %u: style %s cannot start: %s; passthrough until the next change",
                    mContext.serial(), mSettings.chainName().c_str(), error.c_str());
         mHasStyles = false;
+        mTracker.setHolding(false);
         return;
     }
+    mTracker.setHolding(mEnabled && mHasStyles);
     NPRGL_INFO("context %u: configuration changed: style now %s", mContext.serial(),
                mSettings.chainName().c_str());
 }
@@ -356,6 +360,7 @@ void Compositor::setEnabled(bool enabled)
     if (enabled == mEnabled) return;
     flush();
     mEnabled = enabled;
+    if (mPhase == Phase::Ready) mTracker.setHolding(mEnabled && mHasStyles);
     NPRGL_INFO("context %u: styling %s", mContext.serial(), enabled ? "on" : "off");
 }
 
@@ -487,7 +492,15 @@ void Compositor::flush()
 {
     if (mInFlush || mHoldingBegin) return;
     syncStream();
-    if (!mHeld) return;
+    if (!mHeld) {
+        // Off or without styles nothing is held, and what the tracker kept is nobody's: it
+        // must not join the scene of the next styled frame.
+        if (mPhase == Phase::Ready && !(mEnabled && mHasStyles)) {
+            mTracker.takeBatches(mTracked);
+            mTracker.recycle(mTracked);
+        }
+        return;
+    }
     mHeld = false;
     mInFlush = true;
     mTracker.takeBatches(mTracked);

@@ -11,8 +11,15 @@
 #include "shim/RecordingDispatch.h"
 #include "shim/ThreadState.h"
 
+#include "styles/Presets.h"
+
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <utility>
 
 namespace nprgl {
 
@@ -124,9 +131,114 @@ bool Context::endFrame()
 {
     if (mCompositor) mCompositor->flush();
     followConfig();
+    applyKeys();
     ++mFrame;
     if (mRecorder) mRecorder->endFrame(mFrame);
-    return mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame);
+    return (mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame)) ||
+           !mShotNow.empty();
+}
+
+void Context::pollKeys(_XDisplay* display)
+{
+    const std::shared_ptr<const Config> config = Config::current();
+    if (!mHotkeys.boundTo(display) || mKeysGeneration != config->generation) {
+        mHotkeys.bind(config->keys, display);
+        mKeysGeneration = config->generation;
+    }
+    mActions |= mHotkeys.poll(display);
+}
+
+void Context::applyKeys()
+{
+    if (!mShotNext.empty()) {
+        // The pair's second picture is this frame, drawn the other way.
+        mShotNow = std::exchange(mShotNext, std::string());
+        if (mCompositor) mCompositor->setEnabled(mShotRestore);
+    }
+    const uint32_t actions = std::exchange(mActions, 0u);
+    if (!actions) return;
+    if (actions & Hotkeys::Reload) {
+        NPRGL_INFO("reload key: reading the configuration again");
+        Config::reload();
+        followConfig();
+    }
+    if (!mCompositor) {
+        NPRGL_WARN("context %u: the hotkeys need a style or a configuration file at start-up",
+                   mSerial);
+        return;
+    }
+    if (actions & Hotkeys::Toggle) mCompositor->setEnabled(!mCompositor->enabled());
+    if (actions & Hotkeys::Cycle) cycleStyle();
+    if (actions & Hotkeys::Screenshot) startScreenshotPair();
+    if (actions & Hotkeys::Overlay) {
+        NPRGL_WARN("context %u: overlay key: this build has no overlay yet", mSerial);
+    }
+}
+
+void Context::cycleStyle()
+{
+    const std::shared_ptr<const Config> config = Config::current();
+    std::vector<std::string> list = config->cycle;
+    if (list.empty()) {
+        list = {config->style.chainName(), "preset:cartoon", "preset:pencil",
+                "preset:blueprint", "preset:technical", "preset:newspaper"};
+    }
+    // The entry after the one running now (the first when the running one is not listed).
+    size_t next = 0;
+    for (size_t i = 0; i < list.size(); ++i) {
+        if (list[i] == mCycled) next = (i + 1) % list.size();
+    }
+    std::string chain = list[next], values, error;
+    if (chain.rfind("preset:", 0) == 0 && !Presets::load(list[next].substr(7), chain, values,
+                                                         error)) {
+        NPRGL_ERROR("cycle key: %s", error.c_str());
+        return;
+    }
+    StyleSettings settings;
+    if (!StyleSettings::parse(chain, values, settings, error)) {
+        NPRGL_ERROR("cycle key: %s", error.c_str());
+        return;
+    }
+    mCycled = list[next];
+    NPRGL_INFO("context %u: cycle key: %s", mSerial, mCycled.c_str());
+    mCompositor->restyle(settings);
+    mCompositor->setEnabled(true);
+}
+
+void Context::startScreenshotPair()
+{
+    const std::shared_ptr<const Config> config = Config::current();
+    std::string dir = config->hotkeyScreenshotDir;
+    if (dir.empty()) dir = mConfig.screenshotDir;
+    if (dir.empty()) {
+        const char* home = std::getenv("HOME");
+        dir = home && *home ? std::string(home) + "/Pictures/nprgl" : std::string("/tmp");
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) {
+        NPRGL_ERROR("screenshot key: cannot create %s: %s", dir.c_str(), ec.message().c_str());
+        return;
+    }
+    // <program>_<date>_<time>_<ms>: the pair shares the name up to _styled/_unstyled.
+    const auto now = std::chrono::system_clock::now();
+    const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                        now.time_since_epoch()).count() % 1000;
+    std::tm local{};
+    localtime_r(&seconds, &local);
+    char stamp[64];
+    std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", &local);
+    char tail[16];
+    std::snprintf(tail, sizeof tail, "_%03d", int(ms));
+    const std::string stem = dir + "/" + mConfig.programName + "_" + stamp + tail;
+    const bool styled = mCompositor->enabled();
+    mShotNow = stem + (styled ? "_styled.png" : "_unstyled.png");
+    mShotNext = stem + (styled ? "_unstyled.png" : "_styled.png");
+    mShotRestore = styled;
+    mCompositor->setEnabled(!styled);
+    NPRGL_INFO("context %u: screenshot key: %s and the next frame %s", mSerial,
+               mShotNow.c_str(), styled ? "unstyled" : "styled");
 }
 
 void Context::followConfig()
@@ -156,8 +268,14 @@ void Context::writeScreenshot(int width, int height)
         std::snprintf(name, sizeof name, "_ctx%u_%llu.png", mSerial,
                       static_cast<unsigned long long>(mFrame));
     }
-    std::string path = mConfig.screenshotDir + "/" + mConfig.programName + name;
-    FrameGrabber::writeFrame(mCaps, width, height, path);
+    if (mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame)) {
+        const std::string path = mConfig.screenshotDir + "/" + mConfig.programName + name;
+        FrameGrabber::writeFrame(mCaps, width, height, path);
+    }
+    if (!mShotNow.empty()) {
+        FrameGrabber::writeFrame(mCaps, width, height, mShotNow);
+        mShotNow.clear();
+    }
 }
 
 } // namespace nprgl

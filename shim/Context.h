@@ -2,6 +2,7 @@
 
 #include "shim/Api.h"
 #include "shim/Config.h"
+#include "shim/Hotkeys.h"
 
 #include <cstdint>
 #include <memory>
@@ -40,6 +41,8 @@ public:
     // calls writeScreenshot.
     bool endFrame();
     void writeScreenshot(int width, int height);
+    // Before endFrame on a window system with a keyboard: reads the hotkeys' state.
+    void pollKeys(_XDisplay* display);
     // The size of the drawable it was last made current with (0 when not known).
     void setDrawableSize(int width, int height);
 
@@ -72,6 +75,10 @@ private:
     void queryCaps();
     // At a frame end: picks up a changed configuration file (the next frame runs it).
     void followConfig();
+    // At a frame end: does what the hotkeys pressed since the last one ask.
+    void applyKeys();
+    void cycleStyle();
+    void startScreenshotPair();
 
     const Config& mConfig; // the process's (Config::process), which outlives every context
     GlDispatch mDispatch;
@@ -86,6 +93,13 @@ private:
     uint32_t mSerial; // 1 for the program's first context, 2 for the next...
     uint64_t mFrame = 0;
     uint64_t mConfigGeneration = 0; // the Config::current() generation this context runs
+    Hotkeys mHotkeys;
+    uint64_t mKeysGeneration = UINT64_MAX; // the configuration generation the keys are from
+    uint32_t mActions = 0;                 // pressed since the last frame end
+    std::string mShotNow;    // a hotkey screenshot of this frame, written at this swap
+    std::string mShotNext;   // its pair, of the next frame, drawn the other way
+    bool mShotRestore = true; // styling on or off after the pair
+    std::string mCycled;      // the cycle list's entry running now
     bool mInitialized = false;
 };
 

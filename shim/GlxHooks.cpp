@@ -67,8 +67,10 @@ Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLX
 void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
 {
     Context* ctx = tThread.context;
-    if (ctx && ctx->windowSystem() == WindowSystem::Glx &&
-        gRealWs.glXGetCurrentDrawable() == drawable && ctx->endFrame()) {
+    const bool ours = ctx && ctx->windowSystem() == WindowSystem::Glx &&
+                      gRealWs.glXGetCurrentDrawable() == drawable;
+    if (ours) ctx->pollKeys(dpy);
+    if (ours && ctx->endFrame()) {
         unsigned width = 0, height = 0;
         gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
         gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -132,11 +133,16 @@ TEST(Config, TheProgramsFileWinsOverTheGlobalOneAndTheCommandLineOverBoth)
 TEST(Config, AChangedFileRestylesTheRunningProgram)
 {
     const std::string home = freshDir("config_reload"), native = freshDir("reload_native"),
-                      live = freshDir("reload_live");
+                      live = freshDir("reload_live"), styled = freshDir("reload_styled");
     const std::string file = home + "/nprgl/nprgl.conf";
     writeFile(file, "style=none\n");
     ProcessResult n = runProcess({probe(), "--frames", "6", "--save-dir", native});
     ASSERT_EQ(n.exitCode, 0) << n.err;
+    ProcessResult s =
+        runProcess(under({nprglCommand(), "--style", "toon+edges"},
+                         {probe(), "--frames", "6", "--save-dir", styled}),
+                   filesIn(freshDir("config_none")));
+    ASSERT_EQ(s.exitCode, 0) << s.err;
     ProcessResult r = runProcess(
         under({nprglCommand()}, {probe(), "--frames", "6", "--save-dir", live, "--file", file,
                                  "--at", "2", "--text", "style=toon+edges", "--at", "4",
@@ -150,8 +156,116 @@ TEST(Config, AChangedFileRestylesTheRunningProgram)
     for (int f : {4, 5}) {
         EXPECT_GT(differing(frame(native, f), frame(live, f)), 200) << "frame " << f
                                                                       << " not restyled";
+        // As if it had run toon+edges from the start: nothing of the frames before.
+        EXPECT_EQ(differing(frame(styled, f), frame(live, f)), 0) << "frame " << f;
     }
     EXPECT_NE(r.err.find("configuration changed: style now toon+edges"), std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("configuration changed: style now none"), std::string::npos) << r.err;
+}
+
+namespace {
+
+std::string hotkeyProbe() { return binDir() + "/probe_hotkeys"; }
+
+// probe_hotkeys under nprgl with `args` (its own after the nprgl options), screenshots of
+// `frames` into a fresh directory; returns the directory.
+std::string runHotkeys(const std::string& name, const std::vector<std::string>& nprgl,
+                       const std::vector<std::string>& args, const std::string& frames,
+                       std::map<std::string, std::string> env = {})
+{
+    const std::string dir = freshDir(name);
+    env["NPRGL_SCREENSHOT"] = "frames=" + frames + ";dir=" + dir;
+    if (!env.count("NPRGL_CONFIG_FILE")) env["NPRGL_CONFIG_FILE"] = "";
+    env["XDG_CONFIG_HOME"] = freshDir(name + "_home");
+    std::vector<std::string> program = {hotkeyProbe()};
+    program.insert(program.end(), args.begin(), args.end());
+    ProcessResult r = runProcess(under(nprgl, program), env);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, "ok\n");
+    return dir;
+}
+
+PngImage shot(const std::string& dir, int frame)
+{
+    PngImage image;
+    std::string error;
+    EXPECT_TRUE(PngImage::read(dir + "/probe_hotkeys_" + std::to_string(frame) + ".png", image,
+                               error))
+        << error;
+    return image;
+}
+
+} // namespace
+
+// The toggle key (Shift_R+F9) held during frame 3 turns styling off from frame 4, held again
+// during frame 5 on from frame 6: frame 4 is the program's own picture, 2 and 6 are styled.
+TEST(Hotkeys, TheToggleKeyShowsTheProgramsOwnPictureAndBack)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon+edges"};
+    const std::string native =
+        runHotkeys("keys_native", {nprglCommand(), "--style", "none"}, {"--frames", "6"},
+                   "2,4,6");
+    const std::string styled = runHotkeys("keys_styled", nprgl, {"--frames", "6"}, "2,4,6");
+    const std::string keyed = runHotkeys("keys_toggle", nprgl,
+                                         {"--frames", "6", "--press", "3", "Shift_R+F9",
+                                          "--press", "5", "Shift_R+F9"},
+                                         "2,4,6");
+    EXPECT_GT(differing(shot(native, 4), shot(styled, 4)), 200) << "the style changes nothing";
+    EXPECT_EQ(differing(shot(keyed, 2), shot(styled, 2)), 0);
+    EXPECT_EQ(differing(shot(keyed, 4), shot(native, 4)), 0) << "styling not off";
+    EXPECT_EQ(differing(shot(keyed, 6), shot(styled, 6)), 0) << "styling not back on";
+}
+
+// The screenshot key writes the frame it was pressed in as it is shown and the next frame the
+// other way, named <program>_<date>_<time>_<ms>_styled/_unstyled.png, then styles on.
+TEST(Hotkeys, TheScreenshotKeyWritesAStyledAndAnUnstyledPicture)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon+edges"};
+    const std::string native =
+        runHotkeys("shot_native", {nprglCommand(), "--style", "none"}, {"--frames", "5"},
+                   "3,4,5");
+    const std::string styled = runHotkeys("shot_styled", nprgl, {"--frames", "5"}, "3,4,5");
+    const std::string home = freshDir("shot_config");
+    const std::string pictures = home + "/pictures";
+    writeFile(home + "/keys.conf", "screenshot_dir=" + pictures + "\n");
+    const std::string keyed =
+        runHotkeys("shot_keyed", nprgl, {"--frames", "5", "--press", "3", "Shift_R+F11"}, "5",
+                   {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(pictures)) {
+        names.push_back(entry.path().filename().string());
+    }
+    ASSERT_EQ(names.size(), 2u);
+    std::sort(names.begin(), names.end());
+    const std::string stem = names[0].substr(0, names[0].size() - std::string("_styled.png").size());
+    EXPECT_EQ(names[0], stem + "_styled.png");
+    EXPECT_EQ(names[1], stem + "_unstyled.png");
+    EXPECT_EQ(stem.rfind("probe_hotkeys_", 0), 0u) << stem;
+    PngImage a, b;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(pictures + "/" + names[0], a, error)) << error;
+    ASSERT_TRUE(PngImage::read(pictures + "/" + names[1], b, error)) << error;
+    EXPECT_EQ(differing(a, shot(styled, 3)), 0) << "the styled picture is not frame 3";
+    EXPECT_EQ(differing(b, shot(native, 4)), 0) << "the unstyled picture is not frame 4";
+    EXPECT_EQ(differing(shot(keyed, 5), shot(styled, 5)), 0) << "styling not back on";
+}
+
+// The cycle key steps through the configured list: from toon+edges (not in the list) to its
+// first entry, then the next.
+TEST(Hotkeys, TheCycleKeyStepsThroughTheConfiguredStyles)
+{
+    const std::string home = freshDir("cycle_config");
+    writeFile(home + "/keys.conf", "cycle=halftone, preset:pencil\n");
+    const std::string keyed = runHotkeys(
+        "cycle_keyed", {nprglCommand(), "--style", "toon+edges"},
+        {"--frames", "6", "--press", "3", "Shift_R+F10", "--press", "5", "Shift_R+F10"}, "4,6",
+        {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    const std::string halftone = runHotkeys("cycle_halftone",
+                                            {nprglCommand(), "--style", "halftone"},
+                                            {"--frames", "6"}, "4");
+    const std::string pencil = runHotkeys("cycle_pencil", {nprglCommand(), "--preset", "pencil"},
+                                          {"--frames", "6"}, "6");
+    EXPECT_EQ(differing(shot(keyed, 4), shot(halftone, 4)), 0);
+    EXPECT_EQ(differing(shot(keyed, 6), shot(pencil, 6)), 0);
 }

@@ -1,0 +1,95 @@
+#include "shim/Hotkeys.h"
+
+#include "common/Log.h"
+
+#include <X11/Xlib.h>
+#include <dlfcn.h>
+
+#include <string_view>
+
+namespace nprgl {
+
+namespace {
+
+struct Xlib {
+    int (*queryKeymap)(Display*, char[32]) = nullptr;
+    KeySym (*stringToKeysym)(const char*) = nullptr;
+    KeyCode (*keysymToKeycode)(Display*, KeySym) = nullptr;
+    bool ok() const { return queryKeymap && stringToKeysym && keysymToKeycode; }
+};
+
+const Xlib& xlib()
+{
+    static const Xlib x = [] {
+        Xlib f;
+        f.queryKeymap = reinterpret_cast<decltype(f.queryKeymap)>(dlsym(RTLD_DEFAULT, "XQueryKeymap"));
+        f.stringToKeysym =
+            reinterpret_cast<decltype(f.stringToKeysym)>(dlsym(RTLD_DEFAULT, "XStringToKeysym"));
+        f.keysymToKeycode = reinterpret_cast<decltype(f.keysymToKeycode)>(
+            dlsym(RTLD_DEFAULT, "XKeysymToKeycode"));
+        if (!f.ok()) NPRGL_WARN("Xlib's keyboard functions are not in this process: no hotkeys");
+        return f;
+    }();
+    return x;
+}
+
+uint32_t actionBit(const std::string& name)
+{
+    if (name == "toggle") return Hotkeys::Toggle;
+    if (name == "cycle") return Hotkeys::Cycle;
+    if (name == "screenshot") return Hotkeys::Screenshot;
+    if (name == "overlay") return Hotkeys::Overlay;
+    if (name == "reload") return Hotkeys::Reload;
+    return 0;
+}
+
+} // namespace
+
+void Hotkeys::bind(const std::map<std::string, std::string>& keys, _XDisplay* display)
+{
+    mBindings.clear();
+    mDisplay = display;
+    mDown = 0;
+    const Xlib& x = xlib();
+    if (!display || !x.ok()) return;
+    for (const auto& [action, combination] : keys) {
+        const uint32_t bit = actionBit(action);
+        if (!bit || combination == "none") continue;
+        Binding binding;
+        binding.action = bit;
+        bool ok = true;
+        std::string_view rest = combination;
+        while (ok && !rest.empty()) {
+            const size_t plus = rest.find('+');
+            const std::string name(rest.substr(0, plus));
+            rest = plus == std::string_view::npos ? std::string_view() : rest.substr(plus + 1);
+            const KeySym sym = x.stringToKeysym(name.c_str());
+            const KeyCode code = sym == NoSymbol ? 0 : x.keysymToKeycode(display, sym);
+            if (code == 0) {
+                NPRGL_ERROR("%s_key=%s: no key '%s' on this keyboard; %s is unbound",
+                            action.c_str(), combination.c_str(), name.c_str(), action.c_str());
+                ok = false;
+            }
+            binding.keycodes.push_back(code);
+        }
+        if (ok && !binding.keycodes.empty()) mBindings.push_back(std::move(binding));
+    }
+}
+
+uint32_t Hotkeys::poll(_XDisplay* display)
+{
+    if (mBindings.empty() || display != mDisplay) return 0;
+    char keymap[32] = {};
+    xlib().queryKeymap(display, keymap);
+    uint32_t down = 0;
+    for (const Binding& b : mBindings) {
+        bool all = true;
+        for (uint8_t code : b.keycodes) all = all && (keymap[code >> 3] & (1 << (code & 7)));
+        if (all) down |= b.action;
+    }
+    const uint32_t pressed = down & ~mDown;
+    mDown = down;
+    return pressed;
+}
+
+} // namespace nprgl

@@ -1,0 +1,101 @@
+// A GLX window drawing the lit, turning cube for a number of frames, pressing key
+// combinations with XTEST at given frames (--press K Shift_R+F9: down at the start of frame K,
+// up at the start of frame K+1), as a user would: the hotkey tests, counted in frames.
+#include "tests/probes/ProbeCube.h"
+
+#include <GL/glx.h>
+#include <X11/Xlib.h>
+#include <X11/extensions/XTest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr int kSize = 128;
+
+std::vector<KeyCode> keycodes(Display* dpy, const std::string& combination)
+{
+    std::vector<KeyCode> codes;
+    size_t at = 0;
+    while (at <= combination.size()) {
+        const size_t plus = combination.find('+', at);
+        const std::string name = combination.substr(at, plus - at);
+        const KeySym sym = XStringToKeysym(name.c_str());
+        if (sym != NoSymbol) codes.push_back(XKeysymToKeycode(dpy, sym));
+        if (plus == std::string::npos) break;
+        at = plus + 1;
+    }
+    return codes;
+}
+
+void setKeys(Display* dpy, const std::vector<KeyCode>& codes, bool down)
+{
+    for (KeyCode code : codes) XTestFakeKeyEvent(dpy, code, down ? True : False, CurrentTime);
+    XSync(dpy, False);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    int frames = 4;
+    std::map<int, std::string> presses;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string option = argv[i];
+        if (option == "--frames") {
+            frames = std::atoi(argv[i + 1]);
+        } else if (option == "--press" && i + 2 < argc) {
+            presses[std::atoi(argv[i + 1])] = argv[i + 2];
+            ++i;
+        } else {
+            std::fprintf(stderr, "probe_hotkeys: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    Display* dpy = XOpenDisplay(nullptr);
+    int event = 0, error = 0, major = 0, minor = 0;
+    if (!dpy || !XTestQueryExtension(dpy, &event, &error, &major, &minor)) {
+        std::fprintf(stderr, "probe_hotkeys: no display with XTEST\n");
+        return 1;
+    }
+    int attributes[] = {GLX_RGBA, GLX_DEPTH_SIZE, 24, GLX_DOUBLEBUFFER, None};
+    XVisualInfo* visual = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
+    if (!visual) {
+        std::fprintf(stderr, "probe_hotkeys: no GLX visual\n");
+        return 1;
+    }
+    XSetWindowAttributes wa{};
+    const Window root = RootWindow(dpy, visual->screen);
+    wa.colormap = XCreateColormap(dpy, root, visual->visual, AllocNone);
+    const Window window = XCreateWindow(dpy, root, 0, 0, kSize, kSize, 0, visual->depth,
+                                        InputOutput, visual->visual, CWColormap, &wa);
+    XMapWindow(dpy, window);
+    GLXContext context = glXCreateContext(dpy, visual, nullptr, True);
+    glXMakeCurrent(dpy, window, context);
+    glViewport(0, 0, kSize, kSize);
+    std::vector<KeyCode> held;
+    for (int frame = 1; frame <= frames; ++frame) {
+        if (!held.empty()) {
+            setKeys(dpy, held, false);
+            held.clear();
+        }
+        if (auto p = presses.find(frame); p != presses.end()) {
+            held = keycodes(dpy, p->second);
+            setKeys(dpy, held, true);
+        }
+        nprgl::probes::drawCube(frame);
+        glXSwapBuffers(dpy, window);
+    }
+    if (!held.empty()) setKeys(dpy, held, false);
+    glXMakeCurrent(dpy, None, nullptr);
+    glXDestroyContext(dpy, context);
+    XDestroyWindow(dpy, window);
+    XFree(visual);
+    XCloseDisplay(dpy);
+    std::printf("ok\n");
+    return 0;
+}
