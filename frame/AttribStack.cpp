@@ -47,6 +47,7 @@ void AttribStack::pop()
     if (mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
         a.texture2D = saved.texture2D;
         a.textureUnits = saved.textureUnits;
+        a.texGen = saved.texGen;
     }
     if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
 }

@@ -15,6 +15,7 @@ namespace nprgl {
 struct AttribState {
     bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
     uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
+    uint32_t texGen = 0;       // bit 4u + c: coordinate c (S, T, R, Q) generated on unit u < 8
     bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
     bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
     bool fillFront = true, fillBack = true, colorMaskAll = true;

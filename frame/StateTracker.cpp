@@ -429,10 +429,20 @@ const char* StateTracker::unstylableState() const
     if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
         return "a full attribute stack";
     }
-    if (a.textureUnits != 0 || multitexturedArrays()) {
-        return "multitexturing or generated texture coordinates";
+    // Generated coordinates on unit 0 (sphere maps, reflections) are styled, the generated
+    // texture dropped; on other units they belong to multitexturing.
+    if (a.textureUnits != 0 || (a.texGen >> 4) != 0 || multitexturedArrays()) {
+        return "multitexturing";
     }
     return nullptr;
+}
+
+GLuint StateTracker::detailTexture() const
+{
+    // A texture on generated coordinates (an environment or reflection map) is not the
+    // surface's own: the styles draw the surface without it.
+    const AttribState& a = mAttrib;
+    return a.texture2D && (a.texGen & 0xFu) == 0 ? mBoundTexture : 0;
 }
 
 bool StateTracker::multitexturedArrays() const
@@ -651,7 +661,7 @@ uint32_t StateTracker::currentMaterialId()
     // Unlit or colour-material keys leave the diffuse zero; their first two entries tell
     // them apart from lit ones.
     std::array<float, 7> key = {float(a.lighting), float(a.colorMaterial),
-                                float(a.texture2D ? mBoundTexture : 0), 0.0f, 0.0f, 0.0f, 0.0f};
+                                float(detailTexture()), 0.0f, 0.0f, 0.0f, 0.0f};
     if (a.lighting && !a.colorMaterial) {
         const glm::vec4& d = a.materialDiffuse;
         key[3] = d.r;
@@ -706,7 +716,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.lit = a.lighting;
     batch.light0 = a.light0;
     batch.light0On = a.light0On;
-    batch.texture = a.texture2D ? mBoundTexture : 0;
+    batch.texture = detailTexture();
     batch.viewport = a.viewport;
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
@@ -730,13 +740,21 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     case GL_TEXTURE_1D:
     case GL_TEXTURE_3D:
     case GL_TEXTURE_CUBE_MAP:
+        // Multitexturing: the styles take unit 0's 2D texture only, so such draws stay the
+        // program's.
+        if (on) a.textureUnits |= 1u << std::min(mActiveUnit, 31);
+        else a.textureUnits &= ~(1u << std::min(mActiveUnit, 31));
+        break;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
-        // Multitexturing and generated coordinates: the styles take unit 0's 2D texture
-        // with the program's coordinates only, so such draws stay the program's.
-        if (on) a.textureUnits |= 1u << std::min(mActiveUnit, 31);
-        else if (cap != GL_TEXTURE_GEN_S && cap != GL_TEXTURE_GEN_T)
-            a.textureUnits &= ~(1u << std::min(mActiveUnit, 31));
+    case GL_TEXTURE_GEN_R:
+    case GL_TEXTURE_GEN_Q:
+        // Each coordinate of each unit on its own: a program that turns sphere mapping off
+        // again draws plain textures again.
+        if (mActiveUnit < 8) {
+            const uint32_t bit = 1u << (4 * mActiveUnit + int(cap - GL_TEXTURE_GEN_S));
+            a.texGen = on ? a.texGen | bit : a.texGen & ~bit;
+        }
         break;
     case GL_BLEND: a.blend = on; break;
     case GL_ALPHA_TEST: a.alphaTest = on; break;

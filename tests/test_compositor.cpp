@@ -464,3 +464,51 @@ INSTANTIATE_TEST_SUITE_P(
                       DemoCase{"character",
                                {"--model", "/usr/share/assimp/models/MD2/sydney.md2"}}),
     [](const auto& p) { return p.param.app + std::to_string(p.index); });
+
+// A sphere-mapped surface (GL_SPHERE_MAP on unit 0) is styled like any other, its reflection
+// dropped: no draw is left, the stripes the reflection paints natively are gone from the
+// styled sphere, and the draws after it (texgen off again) keep their own textures.
+TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
+{
+    const std::string native = freshDir("spheremap_native"), toon = freshDir("spheremap_toon");
+    const std::vector<std::string> app = {demo("textured"), "--sphere-map", "--offscreen",
+                                          "--size", "320x240", "--frames", "3",
+                                          "--save-frames", "3", "--save-dir"};
+    auto with = [](std::vector<std::string> v, const std::string& dir) {
+        v.push_back(dir);
+        return v;
+    };
+    ProcessResult n = runProcess(under({nprglCommand(), "--style", "none"}, with(app, native)));
+    ASSERT_EQ(n.exitCode, 0) << n.err;
+    ProcessResult t = runProcess(under({nprglCommand(), "--style", "toon"}, with(app, toon)));
+    ASSERT_EQ(t.exitCode, 0) << t.err;
+    EXPECT_NE(t.err.find("styled, 0 left as the program drew them"), std::string::npos) << t.err;
+    PngImage a, b;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(native + "/textured_3.png", a, error)) << error;
+    ASSERT_TRUE(PngImage::read(toon + "/textured_3.png", b, error)) << error;
+    // The sphere's middle (right half of the frame, above the floor's far edge): orange
+    // stripes natively, the white material's tones styled.
+    int orangeNative = 0, orangeStyled = 0;
+    for (int y = 100; y < 150; ++y) {
+        for (int x = 190; x < 230; ++x) {
+            const size_t i = (size_t(y) * a.width + x) * 4;
+            auto orange = [&](const PngImage& im) {
+                return im.rgba[i] > 180 && im.rgba[i] - im.rgba[i + 2] > 90;
+            };
+            orangeNative += orange(a);
+            orangeStyled += orange(b);
+        }
+    }
+    EXPECT_GT(orangeNative, 300) << "the demo's sphere is not where the test looks";
+    EXPECT_EQ(orangeStyled, 0) << "the reflection was taken for the sphere's own texture";
+    // The cube's red checks, drawn after texgen went off, are still red.
+    int red = 0;
+    for (int y = 100; y < 170; ++y) {
+        for (int x = 80; x < 140; ++x) {
+            const size_t i = (size_t(y) * b.width + x) * 4;
+            red += b.rgba[i] > 150 && b.rgba[i + 1] < 90 && b.rgba[i + 2] < 90;
+        }
+    }
+    EXPECT_GT(red, 200) << "the cube lost its texture";
+}

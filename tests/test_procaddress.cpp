@@ -163,7 +163,7 @@ TEST_P(ProcAddress, DrawsWithTheProgramsOwnShadersAreLeftAsTheyAre)
     EXPECT_NE(toon.err.find("drawn with the program's own shaders are left"), std::string::npos)
         << toon.err;
     // And counted at exit: one such draw per frame, and one multitextured quad per frame.
-    EXPECT_NE(toon.err.find("multitexturing or generated texture coordinates " +
+    EXPECT_NE(toon.err.find("multitexturing " +
                             std::to_string(kFrames) + ", the program's own shaders " +
                             std::to_string(kFrames) + ")"),
               std::string::npos)

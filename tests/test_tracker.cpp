@@ -213,6 +213,72 @@ TEST(StateTracker, NothingIsHeldWhileTheAttributeStacksHaveNoRoomForTheStyles)
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
 }
 
+// Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
+// the generation off again gives the plain texture back (a program that sphere-maps one
+// object must not leave every later draw unstyled). Generation on unit 1 is multitexturing.
+TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    std::string error;
+    auto run = [&](auto&& write) {
+        CallWriter w;
+        write(w);
+        ASSERT_TRUE(tracker.feed(w.data(), w.size(), nullptr, error)) << error;
+    };
+    auto enable = [&](GLenum cap, bool on) {
+        run([&](CallWriter& w) {
+            w.op(on ? op::glEnable : op::glDisable);
+            w.put<GLenum>(cap);
+        });
+    };
+    auto triangle = [&] {
+        run([](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (float x : {0.0f, 1.0f, 0.0f}) {
+                w.op(op::glVertex3f);
+                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    enable(GL_DEPTH_TEST, true);
+    enable(GL_TEXTURE_2D, true);
+    run([](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLuint>(7);
+    });
+    enable(GL_TEXTURE_GEN_S, true);
+    enable(GL_TEXTURE_GEN_T, true);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    triangle();
+    enable(GL_TEXTURE_GEN_S, false);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+    triangle(); // T still generated: still not the surface's texture
+    enable(GL_TEXTURE_GEN_T, false);
+    triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    EXPECT_EQ(batches[0].texture, 0u) << "the sphere map taken for the surface's texture";
+    EXPECT_EQ(batches[1].texture, 0u);
+    EXPECT_EQ(batches[2].texture, 7u) << "the plain texture did not come back";
+    EXPECT_NE(batches[0].materialId, batches[2].materialId);
+
+    run([](CallWriter& w) {
+        w.op(op::glActiveTexture);
+        w.put<GLenum>(GL_TEXTURE1);
+    });
+    enable(GL_TEXTURE_GEN_S, true);
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
+    ASSERT_NE(tracker.unstylableState(), nullptr);
+    EXPECT_STREQ(tracker.unstylableState(), "multitexturing");
+    enable(GL_TEXTURE_GEN_S, false);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+}
+
 TEST(StateTracker, FramesReuseTheirVertexStorage)
 {
     // A frame's vertex vectors come back to the tracker and serve the next frame's batches

@@ -1,5 +1,6 @@
 // demo_textured: a lit cube, sphere and floor with procedurally generated textures
-// (GL_MODULATE, no mipmaps, glTexCoord2f per vertex).
+// (GL_MODULATE, no mipmaps, glTexCoord2f per vertex); --sphere-map gives the sphere a
+// sphere-mapped reflection (generated coordinates) instead of its own.
 
 #include "Demo.h"
 
@@ -90,8 +91,15 @@ void drawCube(float half)
 
 class TexturedScene : public demo::Scene {
 public:
+    std::vector<demo::ExtraOption> extraOptions() const override
+    {
+        return {{"sphere-map", demo::ExtraOption::Kind::Flag,
+                 "the sphere reflects its stripes by GL_SPHERE_MAP coordinates"}};
+    }
+
     bool init(const demo::Options& options, std::string&) override
     {
+        sphereMap_ = options.has("sphere-map");
         const uint8_t white[] = {235, 235, 235};
         const uint8_t red[] = {200, 40, 40};
         const uint8_t blue[] = {60, 90, 200};
@@ -153,7 +161,16 @@ public:
         glTranslatef(1.3f, 0.0f, 0.0f);
         glRotatef(frame * 2.0f, 0.0f, 1.0f, 0.0f);
         glRotatef(20.0f, 0.0f, 0.0f, 1.0f);
+        if (sphereMap_) {
+            glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+            glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+            glEnable(GL_TEXTURE_GEN_S);
+            glEnable(GL_TEXTURE_GEN_T);
+        }
         demo::drawSphere(0.95f, 24, 32, 2.0f);
+        // Off again: the next frame's floor and cube have their own coordinates.
+        glDisable(GL_TEXTURE_GEN_S);
+        glDisable(GL_TEXTURE_GEN_T);
         glPopMatrix();
     }
 
@@ -167,6 +184,7 @@ private:
     GLuint cubeTexture_ = 0;
     GLuint floorTexture_ = 0;
     GLuint sphereTexture_ = 0;
+    bool sphereMap_ = false;
 };
 
 } // namespace
