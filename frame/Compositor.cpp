@@ -547,11 +547,35 @@ void Compositor::buildScene()
         s.projection = t.projection;
         s.lightDir = lightDirection(t);
         s.texture = t.texture;
+        textureRuns(o, s);
         s.id = uint32_t(mScene.objects.size() + 1);
         mScene.objects.push_back(std::move(s));
     }
     if (!mTracked.empty()) mScene.viewport = mTracked.back().viewport;
     mScene.frame = mContext.frame();
+}
+
+void Compositor::textureRuns(const reconstruct::FrameObject& o, styles::SceneObject& s) const
+{
+    // Each batch keeps its own texture: its faces are a run in the mesh's face order.
+    const std::vector<uint32_t>& ends = o.mesh->updateState.batchFaceEnd;
+    bool mixed = false;
+    for (uint32_t b = 1; b < o.batchCount; ++b) {
+        mixed = mixed || mTracked[o.firstBatch + b].texture != s.texture;
+    }
+    if (!mixed || ends.size() != o.batchCount) return;
+    uint32_t first = 0;
+    for (uint32_t b = 0; b < o.batchCount; ++b) {
+        const GLuint texture = mTracked[o.firstBatch + b].texture;
+        const uint32_t end = ends[b];
+        if (end <= first) continue; // a batch whose faces all fell out (degenerate)
+        if (!s.textureRuns.empty() && s.textureRuns.back().texture == texture) {
+            s.textureRuns.back().faceCount = end - s.textureRuns.back().firstFace;
+        } else {
+            s.textureRuns.push_back({first, end - first, texture});
+        }
+        first = end;
+    }
 }
 
 void Compositor::render()

@@ -84,6 +84,8 @@ private:
     void noteHeld();
     void noteUnstyled(bool polygonal);
     void buildScene();
+    // The object's texture per batch as runs of faces (SceneObject::textureRuns).
+    void textureRuns(const reconstruct::FrameObject& o, styles::SceneObject& s) const;
     void render();
     bool saveState();
     void restoreState();

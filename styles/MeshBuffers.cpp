@@ -1,5 +1,6 @@
 #include "styles/MeshBuffers.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace nprgl::styles {
@@ -76,6 +77,17 @@ void MeshBuffers::draw(const GlFunctions& gl, const reconstruct::ObjectMesh& mes
 {
     const GLsizei count = bind(gl, mesh);
     if (count > 0) gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+}
+
+void MeshBuffers::drawFaces(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh,
+                            uint32_t firstFace, uint32_t faceCount)
+{
+    const size_t total = size_t(std::max<GLsizei>(bind(gl, mesh), 0));
+    const size_t first = std::min(3 * size_t(firstFace), total);
+    const size_t n = std::min(3 * size_t(faceCount), total - first);
+    if (n == 0) return;
+    gl.DrawElements(GL_TRIANGLES, GLsizei(n), GL_UNSIGNED_INT,
+                    reinterpret_cast<const void*>(first * sizeof(uint32_t)));
 }
 
 void MeshBuffers::endFlush(const GlFunctions& gl)

@@ -28,6 +28,9 @@ public:
     GLsizei bind(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
     // Draws the mesh's triangles with the current program.
     void draw(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
+    // Draws faces [firstFace, firstFace + faceCount) of the mesh.
+    void drawFaces(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh, uint32_t firstFace,
+                   uint32_t faceCount);
     // Called once per flush: forgets buffers unused for a while.
     void endFlush(const GlFunctions& gl);
     void destroy(const GlFunctions& gl);

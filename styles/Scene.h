@@ -22,7 +22,26 @@ struct SceneObject {
     // program lit the object, else a head-light from the upper left.
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
+    // Faces drawn with another texture than `texture` (a cube with a texture per face is one
+    // object): runs of consecutive faces, in the mesh's face order, covering all of them.
+    // Empty when every face has `texture`.
+    struct TextureRun {
+        uint32_t firstFace = 0;
+        uint32_t faceCount = 0;
+        GLuint texture = 0;
+    };
+    std::vector<TextureRun> textureRuns;
     uint32_t id = 0;               // 1, 2, ... in drawing order: for ID buffers
+
+    // Whether any face is drawn with a texture of the program's.
+    bool textured() const
+    {
+        if (texture != 0) return true;
+        for (const TextureRun& run : textureRuns) {
+            if (run.texture != 0) return true;
+        }
+        return false;
+    }
 
     // A projection without a perspective row looks along -z everywhere.
     bool orthographic() const

@@ -17,6 +17,7 @@ struct StyleContext {
     GlFunctions gl;
     MeshBuffers meshes;
     GLuint vao = 0; // bound when a style's render() starts
+    GLuint blankTexture = 0; // 1x1 white, made on first use (ShadingCommon::drawTextured)
     const StyleSettings* settings = nullptr;
 
     // The value of style.param (configured, else the registry's default).

@@ -93,6 +93,10 @@ void StyleChain::shutdown()
         mContext.gl.DeleteVertexArrays(1, &mContext.vao);
     }
     mContext.vao = 0;
+    if (mContext.blankTexture && mContext.gl.DeleteTextures) {
+        mContext.gl.DeleteTextures(1, &mContext.blankTexture);
+    }
+    mContext.blankTexture = 0;
 }
 
 } // namespace nprgl::styles

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -511,4 +512,44 @@ TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
         }
     }
     EXPECT_GT(red, 200) << "the cube lost its texture";
+}
+
+// A cube whose faces have their own textures (six glBegin/glEnd between glBindTexture calls,
+// one object): each face keeps its texture when styled, not the first face's on all six.
+TEST(Compositor, EachFaceOfAnObjectKeepsItsOwnTexture)
+{
+    const std::string native = freshDir("faces_native"), toon = freshDir("faces_toon");
+    auto app = [](const std::string& dir) {
+        return std::vector<std::string>{demo("textured"), "--face-textures", "--offscreen",
+                                        "--size", "320x240", "--frames", "20",
+                                        "--save-frames", "20", "--save-dir", dir};
+    };
+    ProcessResult n = runProcess(under({nprglCommand(), "--style", "none"}, app(native)));
+    ASSERT_EQ(n.exitCode, 0) << n.err;
+    ProcessResult t = runProcess(under({nprglCommand(), "--style", "toon"}, app(toon)));
+    ASSERT_EQ(t.exitCode, 0) << t.err;
+    PngImage a, b;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(native + "/textured_20.png", a, error)) << error;
+    ASSERT_TRUE(PngImage::read(toon + "/textured_20.png", b, error)) << error;
+    // Pixels of the cube (left of the frame's middle) by the hue of the face textures' checks
+    // that face the camera in frame 20: blue, green, magenta.
+    auto count = [](const PngImage& im) {
+        std::array<int, 3> hues{};
+        for (int y = 80; y < 190; ++y) {
+            for (int x = 55; x < 165; ++x) {
+                const uint8_t* p = &im.rgba[(size_t(y) * im.width + x) * 4];
+                const int r = p[0], g = p[1], bl = p[2];
+                hues[0] += bl > r + 60 && bl > g + 40;  // blue
+                hues[1] += g > r + 40 && g > bl + 40;   // green
+                hues[2] += r > 2 * g + 20 && bl > 2 * g + 20 && std::abs(r - bl) < 20; // magenta
+            }
+        }
+        return hues;
+    };
+    const std::array<int, 3> want = count(a), got = count(b);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_GT(want[i], 150) << "colour " << i << ": the cube is not where the test looks";
+        EXPECT_GT(got[i], want[i] / 2) << "colour " << i << " lost when styled";
+    }
 }

@@ -1,6 +1,7 @@
 // demo_textured: a lit cube, sphere and floor with procedurally generated textures
 // (GL_MODULATE, no mipmaps, glTexCoord2f per vertex); --sphere-map gives the sphere a
-// sphere-mapped reflection (generated coordinates) instead of its own.
+// sphere-mapped reflection (generated coordinates) instead of its own; --face-textures gives
+// each face of the cube its own texture (six glBegin/glEnd, one object).
 
 #include "Demo.h"
 
@@ -65,7 +66,8 @@ GLuint uploadTexture(const std::vector<uint8_t>& pixels)
     return texture;
 }
 
-void drawCube(float half)
+// With `faceTextures`, each face binds its own texture (outside glBegin/glEnd, as GL wants).
+void drawCube(float half, const GLuint* faceTextures = nullptr)
 {
     // Each face: normal, then the in-face s and t axes.
     const float faces[6][3][3] = {
@@ -74,8 +76,13 @@ void drawCube(float half)
         {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
     };
     const float corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    glBegin(GL_QUADS);
-    for (const auto& face : faces) {
+    if (!faceTextures) glBegin(GL_QUADS);
+    for (int f = 0; f < 6; ++f) {
+        const auto& face = faces[f];
+        if (faceTextures) {
+            glBindTexture(GL_TEXTURE_2D, faceTextures[f]);
+            glBegin(GL_QUADS);
+        }
         glNormal3f(face[0][0], face[0][1], face[0][2]);
         for (const auto& st : corners) {
             float s = (2.0f * st[0] - 1.0f) * half;
@@ -85,8 +92,9 @@ void drawCube(float half)
                        face[0][1] * half + face[1][1] * s + face[2][1] * t,
                        face[0][2] * half + face[1][2] * s + face[2][2] * t);
         }
+        if (faceTextures) glEnd();
     }
-    glEnd();
+    if (!faceTextures) glEnd();
 }
 
 class TexturedScene : public demo::Scene {
@@ -94,13 +102,23 @@ public:
     std::vector<demo::ExtraOption> extraOptions() const override
     {
         return {{"sphere-map", demo::ExtraOption::Kind::Flag,
-                 "the sphere reflects its stripes by GL_SPHERE_MAP coordinates"}};
+                 "the sphere reflects its stripes by GL_SPHERE_MAP coordinates"},
+                {"face-textures", demo::ExtraOption::Kind::Flag,
+                 "each face of the cube has its own texture"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
     {
         sphereMap_ = options.has("sphere-map");
-        const uint8_t white[] = {235, 235, 235};
+        if (options.has("face-textures")) {
+            // Red, green, blue, yellow, magenta, cyan checks on white.
+            const uint8_t colours[6][3] = {{200, 40, 40}, {40, 170, 40},  {40, 60, 210},
+                                           {220, 200, 30}, {190, 40, 190}, {30, 190, 200}};
+            for (int f = 0; f < 6; ++f) {
+                faceTextures_[f] = uploadTexture(makeChecker(white_, colours[f], 2));
+            }
+        }
+        const uint8_t* white = white_;
         const uint8_t red[] = {200, 40, 40};
         const uint8_t blue[] = {60, 90, 200};
         const uint8_t grey[] = {150, 150, 160};
@@ -153,7 +171,7 @@ public:
         glPushMatrix();
         glTranslatef(-1.3f, 0.0f, 0.0f);
         glRotatef(frame * 2.0f, 0.3f, 1.0f, 0.2f);
-        drawCube(0.8f);
+        drawCube(0.8f, faceTextures_[0] ? faceTextures_ : nullptr);
         glPopMatrix();
 
         glBindTexture(GL_TEXTURE_2D, sphereTexture_);
@@ -178,13 +196,16 @@ public:
     {
         const GLuint textures[] = {cubeTexture_, floorTexture_, sphereTexture_};
         glDeleteTextures(3, textures);
+        if (faceTextures_[0]) glDeleteTextures(6, faceTextures_);
     }
 
 private:
     GLuint cubeTexture_ = 0;
     GLuint floorTexture_ = 0;
     GLuint sphereTexture_ = 0;
+    GLuint faceTextures_[6] = {};
     bool sphereMap_ = false;
+    static constexpr uint8_t white_[3] = {235, 235, 235};
 };
 
 } // namespace

@@ -105,15 +105,20 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
-        const bool textured = object.texture != 0 && mDetail;
+        const bool textured = object.textured() && mDetail;
         const Variant& variant = mVariants[textured ? 1 : 0];
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);
         }
         variant.u.set(gl, object, frontIsCcw);
-        if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
-        ctx.meshes.draw(gl, *object.mesh);
+        // The program's textures keep their own filtering and wrapping; both sides are
+        // drawn in one pass (shadingNormal).
+        if (textured) {
+            ShadingCommon::drawTextured(ctx, object);
+        } else {
+            ctx.meshes.draw(gl, *object.mesh);
+        }
     }
 }
 

@@ -220,7 +220,7 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
-        const bool textured = object.texture != 0;
+        const bool textured = object.textured();
         Variant& variant = mVariants[textured ? 1 : 0];
         if (variant.program.id() != current) {
             current = variant.program.id();
@@ -232,8 +232,13 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
         variant.u.set(gl, object, frontIsCcw);
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
         gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
-        if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
-        ctx.meshes.draw(gl, *object.mesh); // both sides, one pass (shadingNormal)
+        // The program's textures keep their own filtering and wrapping; both sides are
+        // drawn in one pass (shadingNormal).
+        if (textured) {
+            ShadingCommon::drawTextured(ctx, object);
+        } else {
+            ctx.meshes.draw(gl, *object.mesh);
+        }
     }
 }
 

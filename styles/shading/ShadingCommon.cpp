@@ -1,5 +1,7 @@
 #include "styles/shading/ShadingCommon.h"
 
+#include "styles/textures/GlTexture.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cstdio>
@@ -97,6 +99,35 @@ glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)
 {
     // The inverse transpose keeps normals perpendicular under non-uniform scaling.
     return glm::transpose(glm::inverse(glm::mat3(modelview)));
+}
+
+void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object)
+{
+    const GlFunctions& gl = ctx.gl;
+    if (object.textureRuns.empty()) {
+        gl.BindTexture(GL_TEXTURE_2D, object.texture);
+        ctx.meshes.draw(gl, *object.mesh);
+        return;
+    }
+    for (const SceneObject::TextureRun& run : object.textureRuns) {
+        GLuint texture = run.texture;
+        if (texture == 0) {
+            if (!ctx.blankTexture) {
+                // White: the textured shader then shows the faces' own colours.
+                GlTexture::resetUnpack(gl);
+                gl.GenTextures(1, &ctx.blankTexture);
+                gl.BindTexture(GL_TEXTURE_2D, ctx.blankTexture);
+                const uint8_t white[4] = {255, 255, 255, 255};
+                gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+                gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+                gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                              white);
+            }
+            texture = ctx.blankTexture;
+        }
+        gl.BindTexture(GL_TEXTURE_2D, texture);
+        ctx.meshes.drawFaces(gl, *object.mesh, run.firstFace, run.faceCount);
+    }
 }
 
 glm::vec2 ShadingCommon::screenAnchor(const SceneObject& object, const glm::ivec4& viewport)

@@ -30,6 +30,10 @@ public:
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;
     };
+    // Draws the object's faces with the program's textures bound on the active unit, run by
+    // run (SceneObject::textureRuns); faces without one get a white texture, so that one
+    // textured shader serves the whole object.
+    static void drawTextured(StyleContext& ctx, const SceneObject& object);
     // Returns whether the program's front faces are counter-clockwise (once per render()).
     static bool beginTwoSided(const GlFunctions& gl);
     // Whether the program's normals point out of the counter-clockwise side of its faces.

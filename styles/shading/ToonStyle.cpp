@@ -186,16 +186,20 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
     // The detail sampler is unit 0, the default of sampler uniforms.
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
-        const bool textured = object.texture != 0 && mDetail != 0;
+        const bool textured = object.textured() && mDetail != 0;
         const Variant& variant = mVariants[textured ? 1 : 0];
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);
         }
         variant.u.set(gl, object, frontIsCcw);
-        // The program's texture keeps its own filtering and wrapping.
-        if (textured) gl.BindTexture(GL_TEXTURE_2D, object.texture);
-        ctx.meshes.draw(gl, *object.mesh); // both sides, one pass (shadingNormal)
+        // The program's textures keep their own filtering and wrapping; both sides are
+        // drawn in one pass (shadingNormal).
+        if (textured) {
+            ShadingCommon::drawTextured(ctx, object);
+        } else {
+            ctx.meshes.draw(gl, *object.mesh);
+        }
     }
 }
 
