@@ -417,6 +417,8 @@ bool StateTracker::is3D() const
 const char* StateTracker::unstylableState() const
 {
     const AttribState& a = mAttrib;
+    // Drawn now and kept in the list: the list's later calls are styled, this first one not.
+    if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
     // The program's shaders decide colour and position; a style would draw something else.
     if (mProgram != 0 || a.vertexProgram || a.fragmentProgram) return "the program's own shaders";
     if (a.blend) return "blending";
@@ -1046,6 +1048,16 @@ TrackedVertex StateTracker::arrayVertex(const DrawSources& from, size_t index,
     return v;
 }
 
+void StateTracker::noteListArrays()
+{
+    // A list compiled from arrays holds the arrays' normals, colours and texcoords as they
+    // were: a call of it must not take the caller's current ones instead.
+    if (!mCompiling) return;
+    mListSetsNormal = mListSetsNormal || mArrayState[kNormalArray].array.enabled;
+    mListSetsColor = mListSetsColor || mArrayState[kColorArray].array.enabled;
+    mListSetsTexCoord = mListSetsTexCoord || mArrayState[kTexCoordArray0].array.enabled;
+}
+
 void StateTracker::drawArrays(GLenum mode, GLint first, GLsizei count)
 {
     if (first < 0 || count <= 0 || !mArrayState[kVertexArray].array.enabled) return;
@@ -1058,6 +1070,7 @@ void StateTracker::drawArrays(GLenum mode, GLint first, GLsizei count)
     for (GLsizei i = 0; i < count; ++i) {
         batch.vertices.push_back(arrayVertex(from, size_t(first + i), batch.hasNormals));
     }
+    noteListArrays();
     emit(std::move(batch));
 }
 
@@ -1084,6 +1097,7 @@ void StateTracker::drawElements(GLenum mode, GLsizei count, GLenum type, const v
         std::memcpy(&index, data + size_t(i) * width, width); // little-endian
         batch.vertices.push_back(arrayVertex(from, index, batch.hasNormals));
     }
+    noteListArrays();
     emit(std::move(batch));
 }
 
@@ -1091,6 +1105,7 @@ void StateTracker::arrayElement(GLint i)
 {
     if (!mInBegin || i < 0) return;
     mBatch.vertices.push_back(arrayVertex(drawSources(), size_t(i), mCurrent.hasNormal));
+    noteListArrays();
 }
 
 void StateTracker::rect(float x1, float y1, float x2, float y2)

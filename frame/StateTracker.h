@@ -194,6 +194,7 @@ private:
     void callListBody(GLuint list);
     // Unit 0's 2D texture as the styles use it: 0 when off or on generated coordinates.
     GLuint detailTexture() const;
+    void noteListArrays();
     bool multitexturedArrays() const; // texcoord arrays on units other than 0
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
     bool isVertexCall(uint16_t opcode) const;

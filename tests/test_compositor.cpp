@@ -553,3 +553,37 @@ TEST(Compositor, EachFaceOfAnObjectKeepsItsOwnTexture)
         EXPECT_GT(got[i], want[i] / 2) << "colour " << i << " lost when styled";
     }
 }
+
+// Display lists compiled from vertex arrays (glDrawElements/glDrawArrays inside glNewList,
+// replayed with glCallList) are styled with the arrays' own colours and normals, as the list
+// holds them, not with the current colour at the call (which painted them flat grey).
+TEST(Compositor, ListsCompiledFromArraysKeepTheArraysColoursAndNormals)
+{
+    const std::string native = freshDir("arraylist_native"), toon = freshDir("arraylist_toon");
+    auto app = [](const std::string& dir) {
+        return std::vector<std::string>{demo("arrays"), "--list", "--offscreen", "--size",
+                                        "320x240", "--frames", "4", "--save-frames", "4",
+                                        "--save-dir", dir};
+    };
+    ProcessResult n = runProcess(under({nprglCommand(), "--style", "none"}, app(native)));
+    ASSERT_EQ(n.exitCode, 0) << n.err;
+    ProcessResult t = runProcess(under({nprglCommand(), "--style", "toon"}, app(toon)));
+    ASSERT_EQ(t.exitCode, 0) << t.err;
+    EXPECT_NE(t.err.find(" styled, 0 left as the program drew them"), std::string::npos) << t.err;
+    PngImage a, b;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(native + "/arrays_4.png", a, error)) << error;
+    ASSERT_TRUE(PngImage::read(toon + "/arrays_4.png", b, error)) << error;
+    auto blue = [](const PngImage& im) {
+        int count = 0;
+        for (size_t i = 0; i < im.rgba.size(); i += 4) {
+            count += im.rgba[i + 2] > im.rgba[i] + 60 && im.rgba[i + 2] > 120;
+        }
+        return count;
+    };
+    EXPECT_GT(blue(a), 5000) << "the demo's surface is not blue";
+    EXPECT_GT(blue(b), blue(a) / 2) << "the surface lost its colours in the list";
+    const ImageDiff diff = compareImages(native + "/arrays_4.png", toon + "/arrays_4.png", 24);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_GT(diff.differingPixels, 1000u) << "the list was not styled";
+}

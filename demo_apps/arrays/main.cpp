@@ -34,12 +34,15 @@ class ArraysScene : public demo::Scene {
 public:
     std::vector<demo::ExtraOption> extraOptions() const override
     {
-        return {{"vbo", demo::ExtraOption::Kind::Flag, "draw from buffer objects"}};
+        return {{"vbo", demo::ExtraOption::Kind::Flag, "draw from buffer objects"},
+                {"list", demo::ExtraOption::Kind::Flag,
+                 "compile the first frame's array draws into a display list and call it"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
     {
         useVbo_ = options.has("vbo");
+        useList_ = options.has("list");
         vertices_.resize(gridVertices + columnVertices);
         buildIndices();
 
@@ -109,6 +112,16 @@ public:
         glNormalPointer(GL_FLOAT, sizeof(Vertex), base + offsetof(Vertex, normal));
         glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), base + offsetof(Vertex, colour));
 
+        // With --list the draws are compiled once (the arrays' contents are copied into the
+        // list) and the list is called every frame.
+        if (useList_ && list_ != 0) {
+            glCallList(list_);
+            return;
+        }
+        if (useList_) {
+            list_ = glGenLists(1);
+            glNewList(list_, GL_COMPILE_AND_EXECUTE);
+        }
         // Back half of the surface as indexed triangles, front half as one strip per row.
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleIndices_.size()),
                        GL_UNSIGNED_INT, indexBase);
@@ -118,10 +131,12 @@ public:
                            stripBase + row * stripLength * sizeof(uint16_t));
         }
         glDrawArrays(GL_TRIANGLES, gridVertices, columnVertices);
+        if (useList_) glEndList();
     }
 
     void shutdown() override
     {
+        if (list_ != 0) glDeleteLists(list_, 1);
         if (useVbo_) {
             glBindBuffer(GL_ARRAY_BUFFER, 0);
             glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
@@ -235,6 +250,8 @@ private:
         normalize(n);
     }
 
+    bool useList_ = false;
+    GLuint list_ = 0;
     bool useVbo_ = false;
     GLuint buffers_[2] = {0, 0};
     std::vector<Vertex> vertices_;
