@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstring>
 
 namespace nprgl {
 
@@ -27,8 +28,10 @@ void APIENTRY c_glCallList(GLuint list)
     Compositor& c = C();
     const bool masked = c.holdList(list) && c.shading();
     if (masked) c.mask();
+    else c.tintBegin();
     c.next().glCallList(list);
     if (masked) c.unmask();
+    else c.tintEnd();
 }
 
 // glCallLists as a whole, held when every list it calls would be.
@@ -49,7 +52,9 @@ void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
     {                                                                                           \
         Compositor& c = C();                                                                    \
         if (c.hold && c.shading()) return c.heldNext().name args;                              \
+        c.tintBegin();                                                                          \
         c.next().name args;                                                                     \
+        c.tintEnd();                                                                            \
     }
 NPRGL_HELD_DRAW(glDrawArrays, holdDraw(mode), (GLenum mode, GLint first, GLsizei count),
                 (mode, first, count))
@@ -331,6 +336,10 @@ bool Compositor::startChain(bool restart, std::string& error)
     }
     if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
     mShading = ok && mHasStyles && mChain.hasShading();
+    mTintLeft = false;
+    for (const StyleInfo* info : mSettings.chain()) {
+        mTintLeft = mTintLeft || info->name == "coverage";
+    }
     return ok;
 }
 
@@ -364,6 +373,29 @@ void Compositor::setEnabled(bool enabled)
     NPRGL_INFO("context %u: styling %s", mContext.serial(), enabled ? "on" : "off");
 }
 
+void Compositor::tintBegin()
+{
+    if (!mTintLeft || !mLeftNow) return;
+    mLeftNow = false;
+    // Fog at an overwhelming density turns every fragment of the fixed-function pipeline into
+    // the fog colour, whatever its colours, lighting and textures; the attribute stack gives
+    // the program's fog back. A program's own shaders ignore it (their draws stay as drawn).
+    gRealGl.glPushAttrib(GL_FOG_BIT | GL_ENABLE_BIT);
+    const float red[4] = {1.0f, 0.0f, 0.0f, 1.0f};
+    gRealGl.glEnable(GL_FOG);
+    gRealGl.glFogi(GL_FOG_MODE, GL_EXP);
+    gRealGl.glFogf(GL_FOG_DENSITY, 1.0e6f);
+    gRealGl.glFogfv(GL_FOG_COLOR, red);
+    mTinting = true;
+}
+
+void Compositor::tintEnd()
+{
+    if (!mTinting) return;
+    gRealGl.glPopAttrib();
+    mTinting = false;
+}
+
 void Compositor::noteUnstyled(bool polygonal)
 {
     // Say once per reason why 3D polygons are left as the program draws them: the picture
@@ -371,6 +403,8 @@ void Compositor::noteUnstyled(bool polygonal)
     if (!polygonal || !mTracker.is3D()) return;
     const char* why = mTracker.unstylableState();
     if (!why) return;
+    // The coverage style paints it red, unless the attribute stack has no room to do so.
+    mLeftNow = std::strcmp(why, "a full attribute stack") != 0;
     auto seen = std::find_if(mLeftDraws.begin(), mLeftDraws.end(),
                              [why](const auto& entry) { return entry.first == why; });
     if (seen != mLeftDraws.end()) {
@@ -452,12 +486,17 @@ void Compositor::begin(GLenum mode)
         tThread.dispatch = &mHeldTable;
         return;
     }
+    tintBegin();
     mNext.glBegin(mode);
 }
 
 void Compositor::end()
 {
-    if (!mHoldingBegin) return mNext.glEnd();
+    if (!mHoldingBegin) {
+        mNext.glEnd();
+        tintEnd();
+        return;
+    }
     mHeldNext.glEnd();
     mHoldingBegin = false;
     tThread.dispatch = &mContext.dispatch();

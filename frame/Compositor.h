@@ -71,6 +71,9 @@ public:
     bool shading() const { return mShading; }
     const GlDispatch& heldNext() const { return mHeldNext; }
     void barrier();
+    // Around a draw left as the program draws it: with the coverage style, paints it red.
+    void tintBegin();
+    void tintEnd();
     GLenum getError();
     GLint renderMode(GLenum mode);
     const GlDispatch& next() const { return mNext; }
@@ -109,6 +112,9 @@ private:
     bool mHasStyles = true;   // mSettings names at least one style
     bool mEnabled = true;     // styling on (the toggle key)
     bool mShading = true;
+    bool mTintLeft = false; // the chain has the coverage style
+    bool mLeftNow = false;  // the draw being forwarded was counted as left
+    bool mTinting = false;
     GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only
     GlDispatch mHeldTable{}; // the context's table while a held glBegin..glEnd is open
 

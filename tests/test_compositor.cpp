@@ -587,3 +587,33 @@ TEST(Compositor, ListsCompiledFromArraysKeepTheArraysColoursAndNormals)
     ASSERT_TRUE(diff.comparable) << diff.error;
     EXPECT_GT(diff.differingPixels, 1000u) << "the list was not styled";
 }
+
+// The coverage style: styled objects in colours of their own, never red; a 3D draw left as
+// the program draws it (here a blended sphere) all red, and counted with its reason.
+TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
+{
+    const std::string dir = freshDir("coverage");
+    ProcessResult r = runProcess(under({nprglCommand(), "--style", "coverage"},
+                                       {demo("textured"), "--translucent", "--offscreen",
+                                        "--size", "320x240", "--frames", "3", "--save-frames",
+                                        "3", "--save-dir", dir}));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("left as the program drew them (blending "), std::string::npos) << r.err;
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+    auto redIn = [&](int x0, int y0, int x1, int y1) {
+        int red = 0, all = 0;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                red += p[0] > 150 && p[1] < 70 && p[2] < 90;
+                ++all;
+            }
+        }
+        return float(red) / float(all);
+    };
+    EXPECT_GT(redIn(190, 110, 225, 145), 0.95f) << "the blended sphere is not red";
+    EXPECT_LT(redIn(85, 110, 135, 160), 0.01f) << "the styled cube is red";
+    EXPECT_LT(redIn(20, 200, 300, 235), 0.01f) << "the styled floor is red";
+}

@@ -31,7 +31,8 @@ const std::vector<std::string> kStyles = {"none",           "toon",           "t
                                           "halftone+wireframe", "textured+strokes",
                                           "toon+perpixel",  "halftone+strokes",
                                           "textured+edges", "toon+paper+edges",
-                                          "paper"};
+                                          "paper",          "coverage",       "pencil",
+                                          "gooch+blueprint", "depthcue"};
 
 
 bool haveDisplay()

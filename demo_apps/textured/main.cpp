@@ -1,7 +1,8 @@
 // demo_textured: a lit cube, sphere and floor with procedurally generated textures
 // (GL_MODULATE, no mipmaps, glTexCoord2f per vertex); --sphere-map gives the sphere a
 // sphere-mapped reflection (generated coordinates) instead of its own; --face-textures gives
-// each face of the cube its own texture (six glBegin/glEnd, one object).
+// each face of the cube its own texture (six glBegin/glEnd, one object); --translucent
+// blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
 
 #include "Demo.h"
 
@@ -104,12 +105,15 @@ public:
         return {{"sphere-map", demo::ExtraOption::Kind::Flag,
                  "the sphere reflects its stripes by GL_SPHERE_MAP coordinates"},
                 {"face-textures", demo::ExtraOption::Kind::Flag,
-                 "each face of the cube has its own texture"}};
+                 "each face of the cube has its own texture"},
+                {"translucent", demo::ExtraOption::Kind::Flag,
+                 "the sphere is blended over the scene at 60% opacity"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
     {
         sphereMap_ = options.has("sphere-map");
+        translucent_ = options.has("translucent");
         if (options.has("face-textures")) {
             // Red, green, blue, yellow, magenta, cyan checks on white.
             const uint8_t colours[6][3] = {{200, 40, 40}, {40, 170, 40},  {40, 60, 210},
@@ -185,7 +189,20 @@ public:
             glEnable(GL_TEXTURE_GEN_S);
             glEnable(GL_TEXTURE_GEN_T);
         }
+        if (translucent_) {
+            const float glass[] = {1.0f, 1.0f, 1.0f, 0.6f};
+            glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, glass);
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(GL_FALSE);
+        }
         demo::drawSphere(0.95f, 24, 32, 2.0f);
+        if (translucent_) {
+            const float opaque[] = {1.0f, 1.0f, 1.0f, 1.0f};
+            glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, opaque);
+            glDisable(GL_BLEND);
+            glDepthMask(GL_TRUE);
+        }
         // Off again: the next frame's floor and cube have their own coordinates.
         glDisable(GL_TEXTURE_GEN_S);
         glDisable(GL_TEXTURE_GEN_T);
@@ -205,6 +222,7 @@ private:
     GLuint sphereTexture_ = 0;
     GLuint faceTextures_[6] = {};
     bool sphereMap_ = false;
+    bool translucent_ = false;
     static constexpr uint8_t white_[3] = {235, 235, 235};
 };
 
