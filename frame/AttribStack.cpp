@@ -20,6 +20,8 @@ void AttribStack::pop()
         a.depthTest = saved.depthTest;
         a.texture2D = saved.texture2D;
         a.blend = saved.blend;
+        a.blendSrc = saved.blendSrc;
+        a.blendDst = saved.blendDst;
         a.alphaTest = saved.alphaTest;
         a.stencilTest = saved.stencilTest;
         a.light0On = saved.light0On;
@@ -33,7 +35,10 @@ void AttribStack::pop()
         a.materialDiffuse = saved.materialDiffuse;
         a.light0 = saved.light0;
     }
-    if (mask & GL_DEPTH_BUFFER_BIT) a.depthTest = saved.depthTest;
+    if (mask & GL_DEPTH_BUFFER_BIT) {
+        a.depthTest = saved.depthTest;
+        a.depthMask = saved.depthMask;
+    }
     if (mask & GL_COLOR_BUFFER_BIT) {
         a.blend = saved.blend;
         a.alphaTest = saved.alphaTest;

@@ -18,7 +18,8 @@ struct AttribState {
     uint32_t texGen = 0;       // bit 4u + c: coordinate c (S, T, R, Q) generated on unit u < 8
     bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
     bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
-    bool fillFront = true, fillBack = true, colorMaskAll = true;
+    bool fillFront = true, fillBack = true, colorMaskAll = true, depthMask = true;
+    GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
     glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};

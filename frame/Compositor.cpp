@@ -559,6 +559,7 @@ void Compositor::buildScene()
         b.mode = t.mode;
         b.modelview = t.modelview;
         b.materialId = t.materialId;
+        b.pass = t.translucent ? 1 : 0;
         b.vertices.swap(t.vertices);
         b.contentHash = t.contentHash != 0 ? t.contentHash : reconstruct::hashBatch(b);
     }
@@ -586,6 +587,8 @@ void Compositor::buildScene()
         s.projection = t.projection;
         s.lightDir = lightDirection(t);
         s.texture = t.texture;
+        s.translucent = t.translucent;
+        s.depthWrite = t.depthWrite;
         textureRuns(o, s);
         s.id = uint32_t(mScene.objects.size() + 1);
         mScene.objects.push_back(std::move(s));

@@ -211,6 +211,12 @@ void APIENTRY tViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 {
     if (w >= 0 && h >= 0) T().setViewport({x, y, w, h});
 }
+void APIENTRY tBlendFunc(GLenum src, GLenum dst) { T().blendFunc(src, dst); }
+void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
+{
+    T().blendFunc(srcRgb, dstRgb);
+}
+void APIENTRY tDepthMask(GLboolean flag) { T().depthMask(flag == GL_TRUE); }
 void APIENTRY tPushAttrib(GLbitfield mask) { T().pushAttrib(mask); }
 void APIENTRY tPopAttrib() { T().popAttrib(); }
 void APIENTRY tPushClientAttrib(GLbitfield) { T().pushClientAttrib(); }
@@ -329,6 +335,9 @@ StateTracker::StateTracker()
     d.glLightiv = tLightiv;
     d.glPolygonMode = tPolygonMode;
     d.glColorMask = tColorMask;
+    d.glBlendFunc = tBlendFunc;
+    d.glBlendFuncSeparate = tBlendFuncSeparate;
+    d.glDepthMask = tDepthMask;
     d.glViewport = tViewport;
     d.glPushAttrib = tPushAttrib;
     d.glPopAttrib = tPopAttrib;
@@ -421,7 +430,9 @@ const char* StateTracker::unstylableState() const
     if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
     // The program's shaders decide colour and position; a style would draw something else.
     if (mProgram != 0 || a.vertexProgram || a.fragmentProgram) return "the program's own shaders";
-    if (a.blend) return "blending";
+    if (a.blend && !translucent()) {
+        return "blending other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA (additive, effects)";
+    }
     if (a.alphaTest) return "the alpha test";
     if (a.stencilTest) return "the stencil test";
     if (!a.fillFront || !a.fillBack) return "glPolygonMode lines or points";
@@ -483,6 +494,22 @@ void StateTracker::light(GLenum light, GLenum pname, const float* v)
         mAttrib.light0 = mMatrices.modelview() * glm::vec4(v[0], v[1], v[2], v[3]);
     }
 }
+
+bool StateTracker::translucent() const
+{
+    // Blending over what is behind by the fragment's alpha: a translucent surface, which the
+    // styles draw after the opaque scene with the program's blending.
+    const AttribState& a = mAttrib;
+    return a.blend && a.blendSrc == GL_SRC_ALPHA && a.blendDst == GL_ONE_MINUS_SRC_ALPHA;
+}
+
+void StateTracker::blendFunc(GLenum src, GLenum dst)
+{
+    mAttrib.blendSrc = src;
+    mAttrib.blendDst = dst;
+}
+
+void StateTracker::depthMask(bool on) { mAttrib.depthMask = on; }
 
 void StateTracker::polygonMode(GLenum face, GLenum mode)
 {
@@ -719,6 +746,8 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.light0 = a.light0;
     batch.light0On = a.light0On;
     batch.texture = detailTexture();
+    batch.translucent = translucent();
+    batch.depthWrite = a.depthMask;
     batch.viewport = a.viewport;
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =

@@ -40,6 +40,8 @@ struct TrackedBatch {
     glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f}; // GL_LIGHT0's position in eye space
     bool light0On = false;
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
+    bool translucent = false; // blended by its alpha over what is behind (StateTracker::translucent)
+    bool depthWrite = true;
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
 };
@@ -151,6 +153,10 @@ public:
     void rect(float x1, float y1, float x2, float y2);
     bool executing() const { return !mCompiling || mCompileAndExecute; }
     void light(GLenum light, GLenum pname, const float* v);
+    void blendFunc(GLenum src, GLenum dst);
+    void depthMask(bool on);
+    // Blending on with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.
+    bool translucent() const;
     void polygonMode(GLenum face, GLenum mode);
     void colorMask(bool r, bool g, bool b, bool a) { mAttrib.colorMaskAll = r && g && b && a; }
     void pushAttrib(GLbitfield mask) { mAttribs.push(mask); }

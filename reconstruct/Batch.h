@@ -26,6 +26,8 @@ struct Batch {
     std::vector<Vertex> vertices;
     glm::mat4 modelview{1.0f};  // at the draw
     uint32_t materialId = 0;    // distinct material/colour state -> distinct id
+    uint32_t pass = 0;          // batches of different passes (opaque, translucent) never
+                                // form one object
     uint64_t contentHash = 0;   // hashBatch(*this); 0 means "not given", the Reconstructor
                                 // then computes it (a cost per frame for large batches)
 };

@@ -45,8 +45,9 @@ void Reconstructor::groupBatches(const std::vector<Batch>& batches)
     const uint32_t n = uint32_t(batches.size());
     for (uint32_t first = 0; first < n;) {
         uint32_t end = first + 1;
-        while (end < n && std::memcmp(&batches[end].modelview, &batches[first].modelview,
-                                      sizeof(glm::mat4)) == 0)
+        while (end < n && batches[end].pass == batches[first].pass &&
+               std::memcmp(&batches[end].modelview, &batches[first].modelview,
+                           sizeof(glm::mat4)) == 0)
             ++end;
         mKeyItems.clear();
         for (uint32_t b = first; b < end; ++b) {

@@ -24,7 +24,8 @@ struct FrameObject {
 };
 
 // Turns a frame's stylised batches into welded meshes, one per object, and caches them:
-// - consecutive batches whose modelviews are bitwise equal (all 16 floats) form one object
+// - consecutive batches of one pass whose modelviews are bitwise equal (all 16 floats) form
+//   one object
 //   and are welded together (a glxgears gear is several glBegin batches);
 // - an object whose batches are unchanged (content hashes, modes, materials) costs a hash
 //   lookup; one whose modes and vertex counts are unchanged and whose vertices only moved

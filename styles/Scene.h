@@ -32,6 +32,11 @@ struct SceneObject {
     };
     std::vector<TextureRun> textureRuns;
     uint32_t id = 0;               // 1, 2, ... in drawing order: for ID buffers
+    // Blended over what is behind it by its alpha (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA):
+    // drawn by the shading style after the opaque scene, with its depth writes as the program
+    // had them (StyleChain::render).
+    bool translucent = false;
+    bool depthWrite = true;
 
     // Whether any face is drawn with a texture of the program's.
     bool textured() const

@@ -77,9 +77,43 @@ void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
 
 void StyleChain::render(const Scene& scene)
 {
-    for (size_t i = 0; i < mStyles.size(); ++i) {
-        setBaseline(scene, mHasShading && i == 0); // the shading style is ordered first
-        mStyles[i]->render(scene, mContext);
+    // The opaque scene goes through the whole chain; the translucent objects then through the
+    // shading style alone, in the program's order, blended over everything (outlines and the
+    // page included), as the program blends them over its own picture.
+    mOpaque.objects.clear();
+    mTranslucent.objects.clear();
+    for (const SceneObject& o : scene.objects) {
+        (o.translucent && mHasShading ? mTranslucent : mOpaque).objects.push_back(o);
+    }
+    for (Scene* part : {&mOpaque, &mTranslucent}) {
+        part->viewport = scene.viewport;
+        part->clearColor = scene.clearColor;
+        part->frame = scene.frame;
+    }
+    if (!mOpaque.objects.empty()) {
+        for (size_t i = 0; i < mStyles.size(); ++i) {
+            setBaseline(mOpaque, mHasShading && i == 0); // the shading style is ordered first
+            mStyles[i]->render(mOpaque, mContext);
+        }
+    }
+    const GlFunctions& gl = mContext.gl;
+    for (size_t i = 0; i < mTranslucent.objects.size();) {
+        // Runs of objects with the same depth writes.
+        size_t end = i + 1;
+        const bool writes = mTranslucent.objects[i].depthWrite;
+        while (end < mTranslucent.objects.size() && mTranslucent.objects[end].depthWrite == writes)
+            ++end;
+        mRun.objects.assign(mTranslucent.objects.begin() + long(i),
+                            mTranslucent.objects.begin() + long(end));
+        mRun.viewport = scene.viewport;
+        mRun.clearColor = scene.clearColor;
+        mRun.frame = scene.frame;
+        setBaseline(mRun, true);
+        gl.Enable(GL_BLEND);
+        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        gl.DepthMask(writes ? GL_TRUE : GL_FALSE);
+        mStyles.front()->render(mRun, mContext);
+        i = end;
     }
     mContext.meshes.endFlush(mContext.gl);
 }

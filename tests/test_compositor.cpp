@@ -589,16 +589,18 @@ TEST(Compositor, ListsCompiledFromArraysKeepTheArraysColoursAndNormals)
 }
 
 // The coverage style: styled objects in colours of their own, never red; a 3D draw left as
-// the program draws it (here a blended sphere) all red, and counted with its reason.
+// the program draws it (here a sphere added to the scene, GL_ONE, GL_ONE) all red, and
+// counted with its reason.
 TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
 {
     const std::string dir = freshDir("coverage");
     ProcessResult r = runProcess(under({nprglCommand(), "--style", "coverage"},
-                                       {demo("textured"), "--translucent", "--offscreen",
+                                       {demo("textured"), "--additive", "--offscreen",
                                         "--size", "320x240", "--frames", "3", "--save-frames",
                                         "3", "--save-dir", dir}));
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.err.find("left as the program drew them (blending "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("left as the program drew them (blending other than"), std::string::npos)
+        << r.err;
     PngImage image;
     std::string error;
     ASSERT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
@@ -607,13 +609,58 @@ TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
-                red += p[0] > 150 && p[1] < 70 && p[2] < 90;
+                // Added to the scene, the tint saturates red over whatever is behind; no
+                // colour of the styled objects reaches 250 in red.
+                red += p[0] >= 250;
                 ++all;
             }
         }
         return float(red) / float(all);
     };
-    EXPECT_GT(redIn(190, 110, 225, 145), 0.95f) << "the blended sphere is not red";
+    EXPECT_GT(redIn(190, 110, 225, 145), 0.95f) << "the glowing sphere is not red";
     EXPECT_LT(redIn(85, 110, 135, 160), 0.01f) << "the styled cube is red";
     EXPECT_LT(redIn(20, 200, 300, 235), 0.01f) << "the styled floor is red";
+}
+
+// A translucent surface (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, depth writes off) is styled and
+// drawn over the styled scene with the program's blending: what is behind it shows through.
+TEST(Compositor, TranslucentSurfacesAreStyledAndBlendedOverTheScene)
+{
+    auto run = [](const std::string& name, const std::string& style, bool translucent) {
+        const std::string dir = freshDir(name);
+        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
+                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
+        if (translucent) app.push_back("--translucent");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        if (style != "none") {
+            EXPECT_NE(r.err.find(" styled, 0 left as the program drew them"), std::string::npos)
+                << r.err;
+        }
+        return dir + "/textured_3.png";
+    };
+    const std::string glass = run("glass_toon", "toon", true);
+    const std::string solid = run("solid_toon", "toon", false);
+    const std::string native = run("glass_native", "none", true);
+    PngImage a, b, c;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(glass, a, error)) << error;
+    ASSERT_TRUE(PngImage::read(solid, b, error)) << error;
+    ASSERT_TRUE(PngImage::read(native, c, error)) << error;
+    // The sphere's middle, right of the frame's centre.
+    auto share = [](const PngImage& x, const PngImage& y) {
+        int n = 0, all = 0;
+        for (int row = 110; row < 145; ++row) {
+            for (int col = 190; col < 225; ++col) {
+                const size_t i = (size_t(row) * x.width + col) * 4;
+                int d = 0;
+                for (int k = 0; k < 3; ++k) d += std::abs(int(x.rgba[i + k]) - int(y.rgba[i + k]));
+                n += d > 24;
+                ++all;
+            }
+        }
+        return float(n) / float(all);
+    };
+    EXPECT_GT(share(a, b), 0.5f) << "the styled sphere is not translucent";
+    EXPECT_GT(share(a, c), 0.3f) << "the translucent sphere is not styled";
 }

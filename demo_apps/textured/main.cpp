@@ -2,7 +2,8 @@
 // (GL_MODULATE, no mipmaps, glTexCoord2f per vertex); --sphere-map gives the sphere a
 // sphere-mapped reflection (generated coordinates) instead of its own; --face-textures gives
 // each face of the cube its own texture (six glBegin/glEnd, one object); --translucent
-// blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
+// blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
+// to the scene (GL_ONE, GL_ONE, a glow).
 
 #include "Demo.h"
 
@@ -107,13 +108,16 @@ public:
                 {"face-textures", demo::ExtraOption::Kind::Flag,
                  "each face of the cube has its own texture"},
                 {"translucent", demo::ExtraOption::Kind::Flag,
-                 "the sphere is blended over the scene at 60% opacity"}};
+                 "the sphere is blended over the scene at 60% opacity"},
+                {"additive", demo::ExtraOption::Kind::Flag,
+                 "the sphere is added to the scene (GL_ONE, GL_ONE)"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
     {
         sphereMap_ = options.has("sphere-map");
         translucent_ = options.has("translucent");
+        additive_ = options.has("additive");
         if (options.has("face-textures")) {
             // Red, green, blue, yellow, magenta, cyan checks on white.
             const uint8_t colours[6][3] = {{200, 40, 40}, {40, 170, 40},  {40, 60, 210},
@@ -196,8 +200,13 @@ public:
             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
         }
+        if (additive_) {
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE);
+            glDepthMask(GL_FALSE);
+        }
         demo::drawSphere(0.95f, 24, 32, 2.0f);
-        if (translucent_) {
+        if (translucent_ || additive_) {
             const float opaque[] = {1.0f, 1.0f, 1.0f, 1.0f};
             glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, opaque);
             glDisable(GL_BLEND);
@@ -223,6 +232,7 @@ private:
     GLuint faceTextures_[6] = {};
     bool sphereMap_ = false;
     bool translucent_ = false;
+    bool additive_ = false;
     static constexpr uint8_t white_[3] = {235, 235, 235};
 };
 
