@@ -23,6 +23,8 @@ void AttribStack::pop()
         a.blendSrc = saved.blendSrc;
         a.blendDst = saved.blendDst;
         a.alphaTest = saved.alphaTest;
+        a.alphaFunc = saved.alphaFunc;
+        a.alphaRef = saved.alphaRef;
         a.stencilTest = saved.stencilTest;
         a.light0On = saved.light0On;
         a.vertexProgram = saved.vertexProgram;

@@ -20,6 +20,8 @@ struct AttribState {
     bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
     bool fillFront = true, fillBack = true, colorMaskAll = true, depthMask = true;
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
+    GLenum alphaFunc = GL_ALWAYS;
+    float alphaRef = 0.0f;
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
     glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};

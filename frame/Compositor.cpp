@@ -559,7 +559,8 @@ void Compositor::buildScene()
         b.mode = t.mode;
         b.modelview = t.modelview;
         b.materialId = t.materialId;
-        b.pass = t.translucent ? 1 : 0;
+        // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render).
+        b.pass = t.translucent ? 1 : t.alphaFunc != GL_ALWAYS ? 2 : 0;
         b.vertices.swap(t.vertices);
         b.contentHash = t.contentHash != 0 ? t.contentHash : reconstruct::hashBatch(b);
     }
@@ -589,6 +590,8 @@ void Compositor::buildScene()
         s.texture = t.texture;
         s.translucent = t.translucent;
         s.depthWrite = t.depthWrite;
+        s.alphaFunc = t.alphaFunc;
+        s.alphaRef = t.alphaRef;
         textureRuns(o, s);
         s.id = uint32_t(mScene.objects.size() + 1);
         mScene.objects.push_back(std::move(s));

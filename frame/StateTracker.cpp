@@ -217,6 +217,7 @@ void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
     T().blendFunc(srcRgb, dstRgb);
 }
 void APIENTRY tDepthMask(GLboolean flag) { T().depthMask(flag == GL_TRUE); }
+void APIENTRY tAlphaFunc(GLenum func, GLfloat ref) { T().alphaFunc(func, ref); }
 void APIENTRY tPushAttrib(GLbitfield mask) { T().pushAttrib(mask); }
 void APIENTRY tPopAttrib() { T().popAttrib(); }
 void APIENTRY tPushClientAttrib(GLbitfield) { T().pushClientAttrib(); }
@@ -338,6 +339,7 @@ StateTracker::StateTracker()
     d.glBlendFunc = tBlendFunc;
     d.glBlendFuncSeparate = tBlendFuncSeparate;
     d.glDepthMask = tDepthMask;
+    d.glAlphaFunc = tAlphaFunc;
     d.glViewport = tViewport;
     d.glPushAttrib = tPushAttrib;
     d.glPopAttrib = tPopAttrib;
@@ -433,7 +435,6 @@ const char* StateTracker::unstylableState() const
     if (a.blend && !translucent()) {
         return "blending other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA (additive, effects)";
     }
-    if (a.alphaTest) return "the alpha test";
     if (a.stencilTest) return "the stencil test";
     if (!a.fillFront || !a.fillBack) return "glPolygonMode lines or points";
     if (!a.colorMaskAll) return "a colour mask";
@@ -510,6 +511,13 @@ void StateTracker::blendFunc(GLenum src, GLenum dst)
 }
 
 void StateTracker::depthMask(bool on) { mAttrib.depthMask = on; }
+
+void StateTracker::alphaFunc(GLenum func, float ref)
+{
+    if (func < GL_NEVER || func > GL_ALWAYS) return; // GL_INVALID_ENUM: nothing changes
+    mAttrib.alphaFunc = func;
+    mAttrib.alphaRef = std::clamp(ref, 0.0f, 1.0f);
+}
 
 void StateTracker::polygonMode(GLenum face, GLenum mode)
 {
@@ -748,6 +756,9 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.texture = detailTexture();
     batch.translucent = translucent();
     batch.depthWrite = a.depthMask;
+    // The styles test their alpha (the program's, its texture modulating) as it would.
+    batch.alphaFunc = a.alphaTest ? a.alphaFunc : GL_ALWAYS;
+    batch.alphaRef = a.alphaRef;
     batch.viewport = a.viewport;
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =

@@ -42,6 +42,8 @@ struct TrackedBatch {
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     bool translucent = false; // blended by its alpha over what is behind (StateTracker::translucent)
     bool depthWrite = true;
+    GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
+    float alphaRef = 0.0f;
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
 };
@@ -155,6 +157,7 @@ public:
     void light(GLenum light, GLenum pname, const float* v);
     void blendFunc(GLenum src, GLenum dst);
     void depthMask(bool on);
+    void alphaFunc(GLenum func, float ref);
     // Blending on with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.
     bool translucent() const;
     void polygonMode(GLenum face, GLenum mode);

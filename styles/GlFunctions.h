@@ -15,7 +15,7 @@ namespace nprgl::styles {
 
 // X(name): the member `name` holds the driver's `gl##name`.
 #define NPRGL_STYLE_GL_FUNCTIONS(X)                                                             \
-    X(ActiveTexture) X(AttachShader) X(BeginQuery) X(BindAttribLocation) X(BindBuffer)          \
+    X(ActiveTexture) X(AlphaFunc) X(AttachShader) X(BeginQuery) X(BindAttribLocation) X(BindBuffer)          \
     X(BindFragDataLocation) X(BindFramebuffer) X(BindRenderbuffer) X(BindTexture)               \
     X(BindVertexArray) X(BlendEquation) X(BlendFunc) X(BlendFuncSeparate) X(BlitFramebuffer)    \
     X(BufferData) X(BufferSubData) X(CheckFramebufferStatus) X(Clear) X(ClearColor)             \

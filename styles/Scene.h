@@ -37,6 +37,10 @@ struct SceneObject {
     // had them (StyleChain::render).
     bool translucent = false;
     bool depthWrite = true;
+    // The program's alpha test (GL_ALWAYS: none): the shading style's alpha is tested as the
+    // program's would be, so cut-outs keep their shape; outlines leave such objects out.
+    GLenum alphaFunc = GL_ALWAYS;
+    float alphaRef = 0.0f;
 
     // Whether any face is drawn with a texture of the program's.
     bool textured() const

@@ -80,23 +80,50 @@ void StyleChain::render(const Scene& scene)
     // The opaque scene goes through the whole chain; the translucent objects then through the
     // shading style alone, in the program's order, blended over everything (outlines and the
     // page included), as the program blends them over its own picture.
+    // Alpha-tested objects are shaded with the program's alpha test and left out of the
+    // styles after the shading (their edges are not their cut-outs' edges).
     mOpaque.objects.clear();
     mTranslucent.objects.clear();
+    mCutOut.objects.clear();
     for (const SceneObject& o : scene.objects) {
-        (o.translucent && mHasShading ? mTranslucent : mOpaque).objects.push_back(o);
+        if (!mHasShading) {
+            mOpaque.objects.push_back(o);
+        } else if (o.translucent) {
+            mTranslucent.objects.push_back(o);
+        } else {
+            (o.alphaFunc != GL_ALWAYS ? mCutOut : mOpaque).objects.push_back(o);
+        }
     }
-    for (Scene* part : {&mOpaque, &mTranslucent}) {
+    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mRun}) {
         part->viewport = scene.viewport;
         part->clearColor = scene.clearColor;
         part->frame = scene.frame;
     }
-    if (!mOpaque.objects.empty()) {
-        for (size_t i = 0; i < mStyles.size(); ++i) {
-            setBaseline(mOpaque, mHasShading && i == 0); // the shading style is ordered first
+    const GlFunctions& gl = mContext.gl;
+    for (size_t i = 0; i < mStyles.size(); ++i) {
+        const bool shading = mHasShading && i == 0; // the shading style is ordered first
+        if (!mOpaque.objects.empty()) {
+            setBaseline(mOpaque, shading);
             mStyles[i]->render(mOpaque, mContext);
         }
+        if (!shading) continue;
+        for (size_t k = 0; k < mCutOut.objects.size();) {
+            size_t end = k + 1;
+            const SceneObject& first = mCutOut.objects[k];
+            while (end < mCutOut.objects.size() &&
+                   mCutOut.objects[end].alphaFunc == first.alphaFunc &&
+                   mCutOut.objects[end].alphaRef == first.alphaRef)
+                ++end;
+            mRun.objects.assign(mCutOut.objects.begin() + long(k),
+                                mCutOut.objects.begin() + long(end));
+            setBaseline(mRun, true);
+            gl.Enable(GL_ALPHA_TEST);
+            gl.AlphaFunc(first.alphaFunc, first.alphaRef);
+            mStyles[i]->render(mRun, mContext);
+            gl.Disable(GL_ALPHA_TEST);
+            k = end;
+        }
     }
-    const GlFunctions& gl = mContext.gl;
     for (size_t i = 0; i < mTranslucent.objects.size();) {
         // Runs of objects with the same depth writes.
         size_t end = i + 1;
@@ -105,9 +132,6 @@ void StyleChain::render(const Scene& scene)
             ++end;
         mRun.objects.assign(mTranslucent.objects.begin() + long(i),
                             mTranslucent.objects.begin() + long(end));
-        mRun.viewport = scene.viewport;
-        mRun.clearColor = scene.clearColor;
-        mRun.frame = scene.frame;
         setBaseline(mRun, true);
         gl.Enable(GL_BLEND);
         gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);

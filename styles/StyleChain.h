@@ -32,7 +32,7 @@ private:
     StyleContext mContext;
     std::vector<std::unique_ptr<Style>> mStyles;
     bool mHasShading = false;
-    Scene mOpaque, mTranslucent, mRun; // render()'s parts, kept for their storage
+    Scene mOpaque, mCutOut, mTranslucent, mRun; // render()'s parts, kept for their storage
 };
 
 } // namespace nprgl::styles

@@ -664,3 +664,40 @@ TEST(Compositor, TranslucentSurfacesAreStyledAndBlendedOverTheScene)
     EXPECT_GT(share(a, b), 0.5f) << "the styled sphere is not translucent";
     EXPECT_GT(share(a, c), 0.3f) << "the translucent sphere is not styled";
 }
+
+// Cut-outs: a cube whose texture has round holes (alpha 0) drawn with the alpha test keeps its
+// holes when styled: the floor shows through them as it does natively, and not when the same
+// cube has no holes.
+TEST(Compositor, AlphaTestedCutOutsKeepTheirHoles)
+{
+    auto run = [](const std::string& name, const std::string& style, bool cutout) {
+        const std::string dir = freshDir(name);
+        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
+                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
+        if (cutout) app.push_back("--cutout");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        if (style != "none") {
+            EXPECT_NE(r.err.find(" styled, 0 left as the program drew them"), std::string::npos)
+                << r.err;
+        }
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+        // Floor blue around and through the cube (left of the frame's middle).
+        int blue = 0;
+        for (int y = 90; y < 180 && !image.rgba.empty(); ++y) {
+            for (int x = 75; x < 150; ++x) {
+                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                blue += p[2] > p[0] + 60 && p[2] > p[1] + 30;
+            }
+        }
+        return blue;
+    };
+    const int native = run("cutout_native", "none", true);
+    const int styled = run("cutout_toon", "toon", true);
+    const int solid = run("solid_cube_toon", "toon", false);
+    EXPECT_GT(native, solid + 150) << "the demo's holes do not show the floor";
+    EXPECT_GT(styled, solid + 150) << "the styled cube lost its holes";
+    EXPECT_NEAR(styled, native, native / 5);
+}

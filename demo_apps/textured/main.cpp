@@ -3,7 +3,8 @@
 // sphere-mapped reflection (generated coordinates) instead of its own; --face-textures gives
 // each face of the cube its own texture (six glBegin/glEnd, one object); --translucent
 // blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
-// to the scene (GL_ONE, GL_ONE, a glow).
+// to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
+// its texture's alpha and the alpha test (GL_GREATER 0.5).
 
 #include "Demo.h"
 
@@ -51,6 +52,35 @@ std::vector<uint8_t> makeStripes()
         }
     }
     return pixels;
+}
+
+// Red and white checks with a round hole (alpha 0) in the middle of each of 2 x 2 cells.
+GLuint uploadHoles()
+{
+    std::vector<uint8_t> pixels(textureSize * textureSize * 4);
+    const int cell = textureSize / 2;
+    for (int y = 0; y < textureSize; ++y) {
+        for (int x = 0; x < textureSize; ++x) {
+            const float dx = float(x % cell) - 0.5f * float(cell) + 0.5f;
+            const float dy = float(y % cell) - 0.5f * float(cell) + 0.5f;
+            const bool hole = dx * dx + dy * dy < 0.1f * float(cell * cell);
+            const bool red = ((x / cell) + (y / cell)) % 2 == 0;
+            uint8_t* p = &pixels[(y * textureSize + x) * 4];
+            p[0] = red ? 200 : 235;
+            p[1] = red ? 40 : 235;
+            p[2] = red ? 40 : 235;
+            p[3] = hole ? 0 : 255;
+        }
+    }
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, textureSize, textureSize, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, pixels.data());
+    return texture;
 }
 
 GLuint uploadTexture(const std::vector<uint8_t>& pixels)
@@ -110,7 +140,9 @@ public:
                 {"translucent", demo::ExtraOption::Kind::Flag,
                  "the sphere is blended over the scene at 60% opacity"},
                 {"additive", demo::ExtraOption::Kind::Flag,
-                 "the sphere is added to the scene (GL_ONE, GL_ONE)"}};
+                 "the sphere is added to the scene (GL_ONE, GL_ONE)"},
+                {"cutout", demo::ExtraOption::Kind::Flag,
+                 "round holes in the cube's faces (texture alpha and the alpha test)"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
@@ -118,6 +150,7 @@ public:
         sphereMap_ = options.has("sphere-map");
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
+        if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         if (options.has("face-textures")) {
             // Red, green, blue, yellow, magenta, cyan checks on white.
             const uint8_t colours[6][3] = {{200, 40, 40}, {40, 170, 40},  {40, 60, 210},
@@ -175,12 +208,17 @@ public:
         glVertex3f(-3.0f, -1.0f, -3.0f);
         glEnd();
 
-        glBindTexture(GL_TEXTURE_2D, cubeTexture_);
+        glBindTexture(GL_TEXTURE_2D, cutoutTexture_ ? cutoutTexture_ : cubeTexture_);
+        if (cutoutTexture_) {
+            glEnable(GL_ALPHA_TEST);
+            glAlphaFunc(GL_GREATER, 0.5f);
+        }
         glPushMatrix();
         glTranslatef(-1.3f, 0.0f, 0.0f);
         glRotatef(frame * 2.0f, 0.3f, 1.0f, 0.2f);
         drawCube(0.8f, faceTextures_[0] ? faceTextures_ : nullptr);
         glPopMatrix();
+        glDisable(GL_ALPHA_TEST);
 
         glBindTexture(GL_TEXTURE_2D, sphereTexture_);
         glPushMatrix();
@@ -223,6 +261,7 @@ public:
         const GLuint textures[] = {cubeTexture_, floorTexture_, sphereTexture_};
         glDeleteTextures(3, textures);
         if (faceTextures_[0]) glDeleteTextures(6, faceTextures_);
+        if (cutoutTexture_) glDeleteTextures(1, &cutoutTexture_);
     }
 
 private:
@@ -233,6 +272,7 @@ private:
     bool sphereMap_ = false;
     bool translucent_ = false;
     bool additive_ = false;
+    GLuint cutoutTexture_ = 0;
     static constexpr uint8_t white_[3] = {235, 235, 235};
 };
 

@@ -23,8 +23,11 @@ void main()
     vec3 n = shadingNormal(eyeNormal);
     float d = dot(n, lightDir);
     vec3 k = baseColor.rgb;
+    float a = baseColor.a; // the program's, for its alpha test and blending
 #if DETAIL
-    k *= texture(detail, uv).rgb;
+    vec4 t = texture(detail, uv);
+    k *= t.rgb;
+    a *= t.a;
 #endif
     // k_cool = (0, 0, b) + alpha k_d, k_warm = (y, y, 0) + beta k_d, blended by (1 + L.n) / 2.
     vec3 cool = vec3(0.0, 0.0, blue) + alpha * k;
@@ -35,7 +38,7 @@ void main()
     vec3 h = normalize(lightDir + vec3(0.0, 0.0, 1.0));
     c = mix(c, vec3(1.0), pow(max(dot(n, h), 0.0), highlight));
 #endif
-    fragColor = vec4(min(c, vec3(1.0)), baseColor.a);
+    fragColor = vec4(min(c, vec3(1.0)), a);
 }
 )";
 

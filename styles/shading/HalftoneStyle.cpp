@@ -37,8 +37,10 @@ void main()
     vec4 t = texture(detail, uv);
     float T = mix(1.0, dot(t.rgb, vec3(0.299, 0.587, 0.114)), t.a * detailStrength);
     float IT = I * T;
+    float alpha = baseColor.a * t.a; // the program's, for its alpha test and blending
 #else
     float IT = I;
+    float alpha = baseColor.a;
 #endif
     // Screen coordinates: texcoords x s_H (x 8 tiles per unit) in object space, else window
     // pixels x s_H / tile size anchored at the object's origin, where the level of detail
@@ -49,7 +51,7 @@ void main()
     float H = textureLod(screen, (gl_FragCoord.xy - anchor) * screenStep, screenLod).r;
 #endif
     float C = clamp(1.0 - smoothness * (1.0 - IT - H), 0.0, 1.0);
-    fragColor = vec4(mix(INK_COLOR, paper, C), baseColor.a);
+    fragColor = vec4(mix(INK_COLOR, paper, C), alpha);
 }
 )";
 

@@ -53,7 +53,12 @@ void main()
     float ws = 1.0 - ramp(d, bandHigh - w, bandHigh);
     vec3 c = shade * mix(vec3(1.0), L, wl) * mix(vec3(1.0), S, ws);
 #endif
+#if PROGRAM_TEXTURE
+    // The program's alpha, its texture modulating: what its alpha test and blending see.
+    fragColor = vec4(c, baseColor.a * texture(programTex, uv).a);
+#else
     fragColor = vec4(c, baseColor.a);
+#endif
 }
 )";
 
@@ -220,6 +225,7 @@ std::string TexturedStyle::fragmentSource(bool textured) const
     s += "#define TONES " + std::to_string(mTones) + "\n";
     s += flag("TINT", mTint);
     s += flag("ASYMMETRIC", mAsymmetric);
+    s += flag("PROGRAM_TEXTURE", textured);
     s += "const float diffuseThreshold = " + f(mDiffuseThreshold) + ";\n";
     s += "const float highlightThreshold = " + f(mHighlightThreshold) + ";\n";
     s += "const float shadowScale = " + f(mShadowScale) + ";\n";

@@ -53,11 +53,16 @@ void main()
 #if TONES == 3
     c = mix(c, HIGHLIGHT_COLOR, above(d, highlightThreshold, pixel));
 #endif
+    // The program's alpha, texture modulating: what its alpha test and blending see.
+    float alpha = baseColor.a;
 #if DETAIL == 1
-    c = c * texture(detail, uv).rgb;
+    vec4 t = texture(detail, uv);
+    c = c * t.rgb;
+    alpha *= t.a;
 #elif DETAIL == 2
     vec4 t = texture(detail, uv);
     c = mix(c, t.rgb, t.a);
+    alpha *= t.a;
 #endif
 #if BAND_LINES
     float ink = boundaryInk(d, diffuseThreshold, pixel);
@@ -66,7 +71,7 @@ void main()
 #endif
     c *= 1.0 - ink;
 #endif
-    fragColor = vec4(c, baseColor.a);
+    fragColor = vec4(c, alpha);
 }
 )";
 
