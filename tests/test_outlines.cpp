@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -623,4 +624,127 @@ TEST(Pencil, TheSameSceneIsTheSameDrawingInEveryFrame)
     const PngImage second = render(harness, scene, "pencil", "", "pencil_frame2");
     EXPECT_EQ(first.rgba, second.rgba);
     EXPECT_GT(countInk(first), 300) << "nothing drawn";
+}
+
+namespace {
+
+// Speed lines need earlier frames: one harness chain renders a sequence of scenes, frame by
+// frame, as a program's context would. sceneAt(frame) gives that frame's batches.
+template <typename SceneAt>
+std::vector<PngImage> renderMotion(int frames, SceneAt sceneAt, const std::string& config,
+                                   const std::string& name)
+{
+    std::vector<PngImage> out;
+    StyleHarness harness(kSize, kSize);
+    EXPECT_TRUE(harness.ok());
+    if (!harness.ok()) return out;
+    harness.keepChain(true);
+    for (int f = 0; f < frames; ++f) {
+        styles::Scene scene = harness.makeScene(sceneAt(f), perspective());
+        scene.frame = uint64_t(f);
+        out.push_back(render(harness, scene, "motion", config, name + std::to_string(f)));
+    }
+    return out;
+}
+
+// Over the white page (the chain has no shading: the objects leave depth only) every pixel
+// darker than white is line: summed darkness of the picture, and of a column range.
+double darkness(const PngImage& image, int fromX = 0, int toX = kSize)
+{
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = std::max(fromX, 0); x < std::min(toX, image.width); ++x) {
+            const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+            sum += 255 - std::min({p[0], p[1], p[2]});
+        }
+    }
+    return sum;
+}
+
+// Pixels per object unit at the sphere's distance, and a sphere moved sideways by x units.
+float pixelsPerUnit()
+{
+    return float(kSize) * 0.5f / std::tan(glm::radians(kFov) * 0.5f) / kDistance;
+}
+
+reconstruct::Batch sphereAt(float x)
+{
+    return sphereBatch(glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.0f, -kDistance)), kRadius,
+                       48, 24, kRed);
+}
+
+} // namespace
+
+// A still object gets no speed lines, however many frames it stays.
+TEST(Motion, StillObjectsGetNoLines)
+{
+    auto still = [](int) { return std::vector<reconstruct::Batch>{sphereAt(0.0f)}; };
+    const auto images = renderMotion(5, still, "", "motion_still");
+    ASSERT_EQ(images.size(), 5u);
+    for (size_t f = 0; f < images.size(); ++f) {
+        EXPECT_EQ(darkness(images[f]), 0.0) << "frame " << f;
+    }
+}
+
+// Moving right, the sphere trails lines to its left, none on its leading (right) side nor
+// over the sphere; and none in the first frame, which has no earlier one to move from.
+TEST(Motion, LinesTrailBehindTheMotion)
+{
+    constexpr float kStep = 0.1f; // units a frame: about 6 pixels
+    auto right = [](int f) {
+        return std::vector<reconstruct::Batch>{sphereAt(-0.3f + kStep * float(f))};
+    };
+    const auto images = renderMotion(4, right, "", "motion_right");
+    ASSERT_EQ(images.size(), 4u);
+    EXPECT_EQ(darkness(images[0]), 0.0) << "lines without motion in the first frame";
+    const float centre = kCentre.x + (-0.3f + kStep * 3) * pixelsPerUnit();
+    const float r = silhouetteRadius(kSize);
+    const PngImage& last = images[3];
+    EXPECT_GT(countInk(last, 160), 30) << "no (or too faint) speed lines";
+    // Left of the sphere's centre the lines, reaching past its left side; right: nothing.
+    EXPECT_GT(darkness(last, 0, int(centre - r)), 0.0) << "no lines behind the sphere";
+    EXPECT_EQ(darkness(last, int(std::ceil(centre)), kSize), 0.0) << "lines on the leading side";
+    // The lines run horizontally: within the sphere's height.
+    int strays = 0;
+    for (int y = 0; y < kSize; ++y) {
+        const float up = std::abs(kSize * 0.5f - (float(y) + 0.5f));
+        for (int x = 0; x < kSize && up > r + 3.0f; ++x) strays += isInk(last, x, y, 250);
+    }
+    EXPECT_EQ(strays, 0) << "lines above or below the sphere";
+}
+
+// After the object stops the lines fade over fade_frames frames, then are gone.
+TEST(Motion, LinesFadeAfterTheObjectStops)
+{
+    // Frames 0-3 move, 4-7 stand where frame 3 was.
+    const auto images = renderMotion(
+        8,
+        [](int f) {
+            return std::vector<reconstruct::Batch>{sphereAt(-0.3f + 0.1f * std::min(f, 3))};
+        },
+        "motion.fade_frames=3", "motion_fade");
+    ASSERT_EQ(images.size(), 8u);
+    const double moving = darkness(images[3]);
+    EXPECT_GT(moving, 0.0);
+    EXPECT_GT(darkness(images[4]), 0.0) << "gone at once, not fading";
+    EXPECT_LT(darkness(images[4]), moving) << "not fading";
+    EXPECT_LT(darkness(images[5]), darkness(images[4])) << "not fading";
+    EXPECT_EQ(darkness(images[6]), 0.0) << "still there after fade_frames";
+    EXPECT_EQ(darkness(images[7]), 0.0);
+}
+
+// A flat box spinning in place about its own axis, like a gear: its centre never moves, its
+// corners do, and they trail lines.
+TEST(Motion, ObjectsTurningInPlaceGetLines)
+{
+    auto gear = [](int f) {
+        glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+        mv = glm::rotate(mv, glm::radians(25.0f), glm::vec3(1, 0, 0));
+        mv = glm::rotate(mv, glm::radians(8.0f * float(f)), glm::vec3(0, 0, 1));
+        return std::vector<reconstruct::Batch>{boxBatch(mv, glm::vec3(1.2f, 1.2f, 0.3f), kPale)};
+    };
+    const auto images = renderMotion(4, gear, "", "motion_spin");
+    ASSERT_EQ(images.size(), 4u);
+    EXPECT_EQ(darkness(images[0]), 0.0);
+    EXPECT_GT(countInk(images[3], 160), 30) << "no speed lines on a spinning object";
 }
