@@ -79,10 +79,10 @@ StyleInfo motionStyleInfo()
     p.push_back(ParamInfo::colour("color", "line colour, hex rrggbb", "000000"));
     p.push_back(ParamInfo::number("min_speed", "screen speed in pixels per frame below which "
                                                "a point draws no line",
-                                  1.5, 0.0, 50.0));
+                                  0.5, 0.0, 50.0));
     p.push_back(ParamInfo::number("length_scale", "line length per pixel of motion a frame",
-                                  4.0, 0.0, 20.0));
-    p.push_back(ParamInfo::number("max_length", "longest line in pixels", 60.0, 1.0, 400.0));
+                                  8.0, 0.0, 40.0));
+    p.push_back(ParamInfo::number("max_length", "longest line in pixels", 80.0, 1.0, 400.0));
     p.push_back(ParamInfo::number("spacing", "least distance in pixels between lines side by "
                                              "side (fewer lines when larger)",
                                   8.0, 1.0, 100.0));
@@ -187,7 +187,7 @@ void MotionStyle::addLines(const SceneObject& object, const std::vector<glm::vec
         const float unit = float(mixBits(c.vertex ^ 0x9e3779b9u) >> 8) / 16777216.0f;
         const float vary = 0.6f + 0.4f * unit;
         const float length = std::min(mLengthScale * c.speed, mMaxLength) * vary;
-        if (length < 1.0f) continue;
+        if (length < 3.0f) continue; // a speck, not a line
         const glm::vec2 head = glm::vec2(now[c.vertex]) + c.trail * mGap;
         bool crowded = false;
         for (const glm::vec3& p : mPlaced) {
@@ -260,7 +260,9 @@ void MotionStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Uniform3fv(mColour, 1, glm::value_ptr(mColourValue));
     gl.DepthMask(GL_FALSE);
     gl.Enable(GL_BLEND);
-    gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    // Lines trail over the background too: their coverage joins the picture's alpha (as
+    // strokes' does), or a program's transparent clear would hide them in a saved frame.
+    gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     gl.BindBuffer(GL_ARRAY_BUFFER, mBuffer);
     gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(mUpload.size() * sizeof(QuadVertex)),
                   mUpload.data(), GL_STREAM_DRAW);

@@ -48,7 +48,7 @@ private:
     GLuint mBuffer = 0;
     GLint mViewport = -1, mColour = -1;
     glm::vec3 mColourValue{0.0f};
-    float mMinSpeed = 1.5f, mLengthScale = 4.0f, mMaxLength = 60.0f, mSpacing = 8.0f;
+    float mMinSpeed = 0.5f, mLengthScale = 8.0f, mMaxLength = 80.0f, mSpacing = 8.0f;
     float mWidth = 1.5f, mGap = 3.0f, mOpacity = 0.9f;
     int mFadeFrames = 4;
     glm::ivec4 mLinesViewport{0}; // the pixels mLines are in
