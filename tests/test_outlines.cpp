@@ -5,6 +5,7 @@
 
 #include "styles/StyleChain.h"
 #include "styles/StyleSettings.h"
+#include "styles/outlines/MotionHistory.h"
 
 #include <GL/osmesa.h>
 #include <gtest/gtest.h>
@@ -747,4 +748,63 @@ TEST(Motion, ObjectsTurningInPlaceGetLines)
     ASSERT_EQ(images.size(), 4u);
     EXPECT_EQ(darkness(images[0]), 0.0);
     EXPECT_GT(countInk(images[3], 160), 30) << "no speed lines on a spinning object";
+}
+
+// A skinned object: the program moves the vertices themselves (the modelview stays), so the
+// reconstruction updates the mesh every frame; the lines still trail behind it.
+TEST(Motion, DeformedMeshesTrailLinesToo)
+{
+    auto moved = [](int f) {
+        const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+        reconstruct::Batch b = sphereBatch(mv, kRadius, 48, 24, kRed);
+        for (reconstruct::Vertex& v : b.vertices) v.position.x += -0.3f + 0.1f * float(f);
+        return std::vector<reconstruct::Batch>{b};
+    };
+    const auto images = renderMotion(4, moved, "", "motion_skinned");
+    ASSERT_EQ(images.size(), 4u);
+    const float centre = kCentre.x; // where frame 3 has it
+    EXPECT_GT(countInk(images[3], 160), 30) << "no lines on a deforming mesh";
+    EXPECT_EQ(darkness(images[3], int(std::ceil(centre)), kSize), 0.0);
+}
+
+// Which object of the last frame an object is: the same mesh, else the same place in the
+// drawing order with the same topology; never a mesh of another topology.
+TEST(Motion, HistoryFollowsMeshesThenDrawingOrderAndTopology)
+{
+    const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+    // Separate reconstructors: separate meshes of the same topology (a skinned mesh that
+    // the cache copied), and one of another.
+    reconstruct::Reconstructor r1, r2, r3;
+    reconstruct::Batch moved = sphereBatch(mv, kRadius, 48, 24, kRed);
+    for (reconstruct::Vertex& v : moved.vertices) v.position.x += 0.1f;
+    auto a = r1.build({sphereBatch(mv, kRadius, 48, 24, kRed)});
+    auto b = r2.build({moved});
+    auto c = r3.build({sphereBatch(mv, kRadius, 40, 20, kRed)});
+    ASSERT_EQ(a.size(), 1u);
+    ASSERT_EQ(b.size(), 1u);
+    ASSERT_EQ(c.size(), 1u);
+    auto object = [&](const reconstruct::FrameObject& o) {
+        styles::SceneObject s;
+        s.mesh = o.mesh;
+        s.modelview = o.modelview;
+        s.projection = perspective();
+        return s;
+    };
+    const glm::ivec4 viewport(0, 0, kSize, kSize);
+    styles::MotionHistory history;
+    EXPECT_TRUE(history.beginFlush(0, viewport));
+    EXPECT_EQ(history.track(object(a[0])).before, nullptr) << "a history before the first frame";
+    EXPECT_FALSE(history.beginFlush(0, viewport)) << "a second flush is not a new frame";
+    EXPECT_TRUE(history.beginFlush(1, viewport));
+    // Another mesh of the same topology in the same place: the same object, moved right.
+    const auto motion = history.track(object(b[0]));
+    ASSERT_NE(motion.before, nullptr);
+    ASSERT_EQ(motion.now->size(), motion.before->size());
+    const float dx = (*motion.now)[0].x - (*motion.before)[0].x;
+    EXPECT_GT(dx, 0.1f * pixelsPerUnit() * 0.8f);
+    EXPECT_TRUE(history.beginFlush(2, viewport));
+    EXPECT_EQ(history.track(object(c[0])).before, nullptr) << "matched another topology";
+    // A skipped frame forgets: frame 2 had c, frame 4 has c again.
+    EXPECT_TRUE(history.beginFlush(4, viewport));
+    EXPECT_EQ(history.track(object(c[0])).before, nullptr) << "motion across a skipped frame";
 }
