@@ -39,6 +39,8 @@ const std::vector<Preset>& Presets::shipped()
         {"pencil", "a graphite drawing: hatching by the light, overdrawn pencil outlines",
          "style=pencil+paper\n"
          "paper.grain=0.18\n"},
+        {"motion", "the cartoon look with speed lines behind moving objects",
+         "style=toon+paper+edges+motion\n"},
         {"technical", "technical illustration: cool-to-warm tones, a highlight, ink outlines",
          "style=gooch+edges\n"
          "gooch.highlight=40\n"},

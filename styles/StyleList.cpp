@@ -15,6 +15,7 @@ StyleInfo goochStyleInfo();
 StyleInfo depthcueStyleInfo();
 StyleInfo blueprintStyleInfo();
 StyleInfo pencilStyleInfo();
+StyleInfo motionStyleInfo();
 StyleInfo coverageStyleInfo();
 
 const char* const kDefaultChain = "toon+paper+edges";
@@ -33,6 +34,7 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(depthcueStyleInfo());
     out.push_back(blueprintStyleInfo());
     out.push_back(pencilStyleInfo());
+    out.push_back(motionStyleInfo());
     out.push_back(coverageStyleInfo());
 }
 

@@ -5,11 +5,13 @@
 
 #include "styles/StyleChain.h"
 #include "styles/StyleSettings.h"
+#include "styles/outlines/MotionHistory.h"
 
 #include <GL/osmesa.h>
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -668,4 +670,186 @@ TEST(Pencil, TheSameSceneIsTheSameDrawingInEveryFrame)
     const PngImage second = render(harness, scene, "pencil", "", "pencil_frame2");
     EXPECT_EQ(first.rgba, second.rgba);
     EXPECT_GT(countInk(first), 300) << "nothing drawn";
+}
+
+namespace {
+
+// Speed lines need earlier frames: one harness chain renders a sequence of scenes, frame by
+// frame, as a program's context would. sceneAt(frame) gives that frame's batches.
+template <typename SceneAt>
+std::vector<PngImage> renderMotion(int frames, SceneAt sceneAt, const std::string& config,
+                                   const std::string& name)
+{
+    std::vector<PngImage> out;
+    StyleHarness harness(kSize, kSize);
+    EXPECT_TRUE(harness.ok());
+    if (!harness.ok()) return out;
+    harness.keepChain(true);
+    for (int f = 0; f < frames; ++f) {
+        styles::Scene scene = harness.makeScene(sceneAt(f), perspective());
+        scene.frame = uint64_t(f);
+        out.push_back(render(harness, scene, "motion", config, name + std::to_string(f)));
+    }
+    return out;
+}
+
+// Over the white page (the chain has no shading: the objects leave depth only) every pixel
+// darker than white is line: summed darkness of the picture, and of a column range.
+double darkness(const PngImage& image, int fromX = 0, int toX = kSize)
+{
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = std::max(fromX, 0); x < std::min(toX, image.width); ++x) {
+            const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+            sum += 255 - std::min({p[0], p[1], p[2]});
+        }
+    }
+    return sum;
+}
+
+// Pixels per object unit at the sphere's distance, and a sphere moved sideways by x units.
+float pixelsPerUnit()
+{
+    return float(kSize) * 0.5f / std::tan(glm::radians(kFov) * 0.5f) / kDistance;
+}
+
+reconstruct::Batch sphereAt(float x)
+{
+    return sphereBatch(glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.0f, -kDistance)), kRadius,
+                       48, 24, kRed);
+}
+
+} // namespace
+
+// A still object gets no speed lines, however many frames it stays.
+TEST(Motion, StillObjectsGetNoLines)
+{
+    auto still = [](int) { return std::vector<reconstruct::Batch>{sphereAt(0.0f)}; };
+    const auto images = renderMotion(5, still, "", "motion_still");
+    ASSERT_EQ(images.size(), 5u);
+    for (size_t f = 0; f < images.size(); ++f) {
+        EXPECT_EQ(darkness(images[f]), 0.0) << "frame " << f;
+    }
+}
+
+// Moving right, the sphere trails lines to its left, none on its leading (right) side nor
+// over the sphere; and none in the first frame, which has no earlier one to move from.
+TEST(Motion, LinesTrailBehindTheMotion)
+{
+    constexpr float kStep = 0.1f; // units a frame: about 6 pixels
+    auto right = [](int f) {
+        return std::vector<reconstruct::Batch>{sphereAt(-0.3f + kStep * float(f))};
+    };
+    const auto images = renderMotion(4, right, "", "motion_right");
+    ASSERT_EQ(images.size(), 4u);
+    EXPECT_EQ(darkness(images[0]), 0.0) << "lines without motion in the first frame";
+    const float centre = kCentre.x + (-0.3f + kStep * 3) * pixelsPerUnit();
+    const float r = silhouetteRadius(kSize);
+    const PngImage& last = images[3];
+    EXPECT_GT(countInk(last, 160), 30) << "no (or too faint) speed lines";
+    // Left of the sphere's centre the lines, reaching past its left side; right: nothing.
+    EXPECT_GT(darkness(last, 0, int(centre - r)), 0.0) << "no lines behind the sphere";
+    EXPECT_EQ(darkness(last, int(std::ceil(centre)), kSize), 0.0) << "lines on the leading side";
+    // The lines run horizontally: within the sphere's height.
+    int strays = 0;
+    for (int y = 0; y < kSize; ++y) {
+        const float up = std::abs(kSize * 0.5f - (float(y) + 0.5f));
+        for (int x = 0; x < kSize && up > r + 3.0f; ++x) strays += isInk(last, x, y, 250);
+    }
+    EXPECT_EQ(strays, 0) << "lines above or below the sphere";
+}
+
+// After the object stops the lines fade over fade_frames frames, then are gone.
+TEST(Motion, LinesFadeAfterTheObjectStops)
+{
+    // Frames 0-3 move, 4-7 stand where frame 3 was.
+    const auto images = renderMotion(
+        8,
+        [](int f) {
+            return std::vector<reconstruct::Batch>{sphereAt(-0.3f + 0.1f * std::min(f, 3))};
+        },
+        "motion.fade_frames=3", "motion_fade");
+    ASSERT_EQ(images.size(), 8u);
+    const double moving = darkness(images[3]);
+    EXPECT_GT(moving, 0.0);
+    EXPECT_GT(darkness(images[4]), 0.0) << "gone at once, not fading";
+    EXPECT_LT(darkness(images[4]), moving) << "not fading";
+    EXPECT_LT(darkness(images[5]), darkness(images[4])) << "not fading";
+    EXPECT_EQ(darkness(images[6]), 0.0) << "still there after fade_frames";
+    EXPECT_EQ(darkness(images[7]), 0.0);
+}
+
+// A flat box spinning in place about its own axis, like a gear: its centre never moves, its
+// corners do, and they trail lines.
+TEST(Motion, ObjectsTurningInPlaceGetLines)
+{
+    auto gear = [](int f) {
+        glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+        mv = glm::rotate(mv, glm::radians(25.0f), glm::vec3(1, 0, 0));
+        mv = glm::rotate(mv, glm::radians(8.0f * float(f)), glm::vec3(0, 0, 1));
+        return std::vector<reconstruct::Batch>{boxBatch(mv, glm::vec3(1.2f, 1.2f, 0.3f), kPale)};
+    };
+    const auto images = renderMotion(4, gear, "", "motion_spin");
+    ASSERT_EQ(images.size(), 4u);
+    EXPECT_EQ(darkness(images[0]), 0.0);
+    EXPECT_GT(countInk(images[3], 160), 30) << "no speed lines on a spinning object";
+}
+
+// A skinned object: the program moves the vertices themselves (the modelview stays), so the
+// reconstruction updates the mesh every frame; the lines still trail behind it.
+TEST(Motion, DeformedMeshesTrailLinesToo)
+{
+    auto moved = [](int f) {
+        const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+        reconstruct::Batch b = sphereBatch(mv, kRadius, 48, 24, kRed);
+        for (reconstruct::Vertex& v : b.vertices) v.position.x += -0.3f + 0.1f * float(f);
+        return std::vector<reconstruct::Batch>{b};
+    };
+    const auto images = renderMotion(4, moved, "", "motion_skinned");
+    ASSERT_EQ(images.size(), 4u);
+    const float centre = kCentre.x; // where frame 3 has it
+    EXPECT_GT(countInk(images[3], 160), 30) << "no lines on a deforming mesh";
+    EXPECT_EQ(darkness(images[3], int(std::ceil(centre)), kSize), 0.0);
+}
+
+// Which object of the last frame an object is: the same mesh, else the same place in the
+// drawing order with the same topology; never a mesh of another topology.
+TEST(Motion, HistoryFollowsMeshesThenDrawingOrderAndTopology)
+{
+    const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+    // Separate reconstructors: separate meshes of the same topology (a skinned mesh that
+    // the cache copied), and one of another.
+    reconstruct::Reconstructor r1, r2, r3;
+    reconstruct::Batch moved = sphereBatch(mv, kRadius, 48, 24, kRed);
+    for (reconstruct::Vertex& v : moved.vertices) v.position.x += 0.1f;
+    auto a = r1.build({sphereBatch(mv, kRadius, 48, 24, kRed)});
+    auto b = r2.build({moved});
+    auto c = r3.build({sphereBatch(mv, kRadius, 40, 20, kRed)});
+    ASSERT_EQ(a.size(), 1u);
+    ASSERT_EQ(b.size(), 1u);
+    ASSERT_EQ(c.size(), 1u);
+    auto object = [&](const reconstruct::FrameObject& o) {
+        styles::SceneObject s;
+        s.mesh = o.mesh;
+        s.modelview = o.modelview;
+        s.projection = perspective();
+        return s;
+    };
+    const glm::ivec4 viewport(0, 0, kSize, kSize);
+    styles::MotionHistory history;
+    EXPECT_TRUE(history.beginFlush(0, viewport));
+    EXPECT_EQ(history.track(object(a[0])).before, nullptr) << "a history before the first frame";
+    EXPECT_FALSE(history.beginFlush(0, viewport)) << "a second flush is not a new frame";
+    EXPECT_TRUE(history.beginFlush(1, viewport));
+    // Another mesh of the same topology in the same place: the same object, moved right.
+    const auto motion = history.track(object(b[0]));
+    ASSERT_NE(motion.before, nullptr);
+    ASSERT_EQ(motion.now->size(), motion.before->size());
+    const float dx = (*motion.now)[0].x - (*motion.before)[0].x;
+    EXPECT_GT(dx, 0.1f * pixelsPerUnit() * 0.8f);
+    EXPECT_TRUE(history.beginFlush(2, viewport));
+    EXPECT_EQ(history.track(object(c[0])).before, nullptr) << "matched another topology";
+    // A skipped frame forgets: frame 2 had c, frame 4 has c again.
+    EXPECT_TRUE(history.beginFlush(4, viewport));
+    EXPECT_EQ(history.track(object(c[0])).before, nullptr) << "motion across a skipped frame";
 }

@@ -41,6 +41,7 @@ StyleHarness::StyleHarness(int width, int height) : mWidth(width), mHeight(heigh
 
 StyleHarness::~StyleHarness()
 {
+    keepChain(false);
     if (mContext) OSMesaDestroyContext(static_cast<OSMesaContext>(mContext));
 }
 
@@ -61,6 +62,15 @@ styles::Scene StyleHarness::makeScene(const std::vector<reconstruct::Batch>& bat
         scene.objects.push_back(std::move(s));
     }
     return scene;
+}
+
+void StyleHarness::keepChain(bool keep)
+{
+    mKeepChain = keep;
+    if (!keep && mKept) {
+        mKept->shutdown();
+        mKept.reset();
+    }
 }
 
 const char* StyleHarness::depthVertexShader() { return kDepthVertex; }
@@ -95,10 +105,19 @@ bool StyleHarness::render(const styles::Scene& scene, const std::string& chain,
         error = "no OSMesa GL 3.0 context";
         return false;
     }
-    StyleSettings settings;
-    if (!StyleSettings::parse(chain, config, settings, error)) return false;
-    styles::StyleChain styleChain;
-    if (!styleChain.init(settings, &getProc, error)) return false;
+    const std::string key = chain + "\n" + config;
+    if (mKept && (!mKeepChain || key != mKeptKey)) {
+        mKept->shutdown();
+        mKept.reset();
+    }
+    std::unique_ptr<styles::StyleChain> fresh;
+    if (!mKept) {
+        StyleSettings settings;
+        if (!StyleSettings::parse(chain, config, settings, error)) return false;
+        fresh = std::make_unique<styles::StyleChain>();
+        if (!fresh->init(settings, &getProc, error)) return false;
+    }
+    styles::StyleChain& styleChain = mKept ? *mKept : *fresh;
     const styles::GlFunctions& gl = mGl;
     gl.Viewport(0, 0, mWidth, mHeight);
     gl.ClearColor(background.r, background.g, background.b, background.a);
@@ -125,7 +144,12 @@ bool StyleHarness::render(const styles::Scene& scene, const std::string& chain,
     gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
     gl.ReadPixels(0, 0, mWidth, mHeight, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
     out.flipRows();
-    styleChain.shutdown();
+    if (mKeepChain) {
+        if (fresh) mKept = std::move(fresh);
+        mKeptKey = key;
+    } else {
+        styleChain.shutdown();
+    }
     return true;
 }
 

@@ -6,6 +6,7 @@
 #include "styles/Scene.h"
 #include "styles/StyleChain.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ public:
     // on a bad chain or a style that cannot start.
     bool render(const styles::Scene& scene, const std::string& chain, const std::string& config,
                 PngImage& out, std::string& error, glm::vec4 background = glm::vec4(1.0f));
+    // On: successive render()s with the same chain and config go through the same styles,
+    // as a program's frames do in one context (styles that remember earlier frames). Off (the
+    // default): every render() starts new styles.
+    void keepChain(bool keep);
     const styles::GlFunctions& gl() const { return mGl; }
     // A depth-only program's sources (uniform mat4 mvp; attribute 0 position).
     static const char* depthVertexShader();
@@ -42,6 +47,9 @@ private:
     void* mContext = nullptr;
     std::vector<uint8_t> mBuffer;
     bool mOk = false;
+    bool mKeepChain = false;
+    std::unique_ptr<styles::StyleChain> mKept; // with mKeepChain: the last render()'s styles
+    std::string mKeptKey;                      // its chain and config
     styles::GlFunctions mGl;
     reconstruct::Reconstructor mReconstructor;
     std::vector<reconstruct::FrameObject> mObjects;
