@@ -17,6 +17,7 @@ StyleInfo blueprintStyleInfo();
 StyleInfo pencilStyleInfo();
 StyleInfo motionStyleInfo();
 StyleInfo coverageStyleInfo();
+StyleInfo xtoonStyleInfo();
 
 const char* const kDefaultChain = "toon+paper+edges";
 
@@ -31,6 +32,7 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(halftoneStyleInfo());
     out.push_back(paperStyleInfo());
     out.push_back(goochStyleInfo());
+    out.push_back(xtoonStyleInfo());
     out.push_back(depthcueStyleInfo());
     out.push_back(blueprintStyleInfo());
     out.push_back(pencilStyleInfo());

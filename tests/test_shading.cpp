@@ -606,3 +606,102 @@ TEST_F(Shading, GoochWithoutTonesIsTheObjectsColour)
     EXPECT_EQ(distinct(colours), 1u);
     EXPECT_TRUE(near(*colours.begin(), kDiffuse, 2));
 }
+
+namespace {
+
+// A tone map for xtoon: colour(u, v) for u, v in [0, 1], v = 0 the top row.
+std::string toneMapPng(const std::string& name, const std::function<Rgb(float, float)>& colour)
+{
+    PngImage image;
+    image.width = 64;
+    image.height = 32;
+    image.rgba.resize(size_t(image.width) * image.height * 4);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const Rgb c = colour((x + 0.5f) / image.width, (y + 0.5f) / image.height);
+            uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+            p[0] = uint8_t(c.r);
+            p[1] = uint8_t(c.g);
+            p[2] = uint8_t(c.b);
+            p[3] = 255;
+        }
+    }
+    const std::string path = freshDir("xtoon_maps") + "/" + name + ".png";
+    std::string error;
+    EXPECT_TRUE(image.write(path, error)) << error;
+    return path;
+}
+
+const glm::vec4 kWhite(1.0f);
+
+} // namespace
+
+// The map's first axis is L.n: a user map blue on its left half, yellow on its right, gives
+// a white sphere blue where it turns from the light and yellow where it faces it.
+TEST_F(Shading, XToonTakesItsToneFromTheMapByTheLight)
+{
+    const std::string map = toneMapPng("halves", [](float u, float) {
+        return u < 0.5f ? Rgb{40, 60, 220} : Rgb{230, 210, 40};
+    });
+    PngImage image = render("xtoon", "xtoon.texture=" + map, "xtoon_halves", kWhite);
+    int right = 0, wrong = 0;
+    forSphere(image, [&](const Rgb& c, float ln) {
+        if (std::abs(ln) < 0.15f) return; // the boundary, filtered
+        const bool blue = c.b > c.r + 100, yellow = c.r > c.b + 100 && c.g > c.b + 100;
+        ((ln < 0.0f ? blue : yellow) ? right : wrong)++;
+    });
+    EXPECT_GT(right, 2000);
+    EXPECT_LT(wrong, right / 100);
+}
+
+// The depth axis: with the whole sphere nearer than `far` the bands are there (v = 0); with
+// all of it beyond `far`, the generated map's top row gives nearly one flat tone.
+TEST_F(Shading, XToonFlattensTheBandsWithDepth)
+{
+    auto spread = [](const PngImage& image) {
+        float lo = 1.0f, hi = 0.0f;
+        forSphere(image, [&](const Rgb& c, float) {
+            lo = std::min(lo, luminance(c));
+            hi = std::max(hi, luminance(c));
+        });
+        return hi - lo;
+    };
+    const float detailed =
+        spread(render("xtoon", "xtoon.near=0.1,xtoon.far=100", "xtoon_near", kWhite));
+    const float abstract =
+        spread(render("xtoon", "xtoon.near=0.1,xtoon.far=2", "xtoon_far", kWhite));
+    EXPECT_GT(detailed, 0.45f) << "no bands in full detail";
+    EXPECT_LT(abstract, 0.2f) << "the far sphere kept its bands";
+}
+
+// The orientation axis: v = 1 - |n.v|^r. A map green on its top half (v < 0.5), magenta below
+// gives the sphere's middle green and its rim magenta.
+TEST_F(Shading, XToonOrientationTintsTheRim)
+{
+    const std::string map = toneMapPng("rims", [](float, float v) {
+        return v < 0.5f ? Rgb{40, 200, 60} : Rgb{210, 40, 200};
+    });
+    PngImage image = render("xtoon", "xtoon.mode=orientation,xtoon.texture=" + map,
+                            "xtoon_rims", kWhite);
+    auto isGreen = [](const Rgb& c) { return c.g > c.r + 100; };
+    auto isMagenta = [](const Rgb& c) { return c.r > c.g + 100 && c.b > c.g + 100; };
+    const int cx = kSize / 2, cy = kSize / 2;
+    EXPECT_TRUE(isGreen(pixel(image, cx, cy))) << "the middle is not green";
+    // Just inside the outline, left and right.
+    const float t = std::tan(glm::radians(kFov) / 2.0f);
+    const int r = int(kRadius / (-kCentre.z * t) * (kSize / 2.0f) * 0.97f);
+    EXPECT_TRUE(isMagenta(pixel(image, cx - r + 2, cy))) << "the left rim is not magenta";
+    EXPECT_TRUE(isMagenta(pixel(image, cx + r - 2, cy))) << "the right rim is not magenta";
+}
+
+// A tone map that cannot be read is said and replaced by the generated one: the same picture.
+TEST_F(Shading, XToonFallsBackToTheGeneratedMap)
+{
+    const PngImage generated = render("xtoon", "", "xtoon_default", kWhite);
+    const PngImage fallback =
+        render("xtoon", "xtoon.texture=/nonexistent/tone.png", "xtoon_fallback", kWhite);
+    EXPECT_EQ(generated.rgba, fallback.rgba);
+    std::set<Rgb> colours;
+    forSphere(generated, [&](const Rgb& c, float) { colours.insert(c); });
+    EXPECT_GT(distinct(colours), 2u) << "nothing drawn";
+}

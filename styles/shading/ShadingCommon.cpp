@@ -22,12 +22,15 @@ in vec2 texcoord;
 out vec3 eyeNormal;
 out vec4 baseColor;
 out vec2 uv;
+out vec3 eyePosition;
 void main()
 {
     eyeNormal = normalMatrix * normal;
     baseColor = color;
     uv = texcoord;
-    gl_Position = projection * (modelview * vec4(position, 1.0));
+    vec4 eye = modelview * vec4(position, 1.0);
+    eyePosition = eye.xyz / eye.w;
+    gl_Position = projection * eye;
 }
 )";
 }

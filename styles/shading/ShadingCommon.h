@@ -17,7 +17,8 @@ namespace nprgl::styles {
 // or not) and the uniforms below.
 class ShadingCommon {
 public:
-    // Eye-space normal, the program's colour and texcoord, and `facing` for shadingNormal().
+    // Eye-space normal and position, the program's colour and texcoord, and `facing` for
+    // shadingNormal().
     // Uniforms: see ObjectUniforms.
     static const char* vertexShader();
     // GLSL helper for fragment shaders: `vec3 shadingNormal(vec3 eyeNormal)` normalises and

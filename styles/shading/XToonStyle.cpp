@@ -1,0 +1,192 @@
+#include "styles/shading/XToonStyle.h"
+
+#include "common/Log.h"
+#include "styles/StyleRegistry.h"
+#include "styles/textures/XToonTexture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nprgl::styles {
+
+namespace {
+
+constexpr const char* kStyle = "xtoon";
+
+// Parameters arrive as constants and #defines (see fragmentSource()).
+const char* kFragment = R"(
+uniform vec3 lightDir;
+uniform sampler2D detail;  // unit 0: the program's texture
+uniform sampler2D toneMap; // unit 1
+uniform vec2 depthRange;   // eye distances of v = 0 and v = 1
+uniform float perspectiveView;
+in vec3 eyeNormal;
+in vec4 baseColor;
+in vec2 uv;
+in vec3 eyePosition;
+out vec4 fragColor;
+
+void main()
+{
+    vec3 n = shadingNormal(eyeNormal);
+    float u = clamp(0.5 * dot(n, lightDir) + 0.5, 0.0, 1.0);
+#if ORIENTATION
+    vec3 toEye = perspectiveView > 0.5 ? normalize(-eyePosition) : vec3(0.0, 0.0, 1.0);
+    float v = 1.0 - pow(abs(dot(n, toEye)), exponent);
+#else
+    float v = clamp((-eyePosition.z - depthRange.x) / max(depthRange.y - depthRange.x, 1e-6),
+                    0.0, 1.0);
+#endif
+    vec3 c = texture(toneMap, vec2(u, v)).rgb * baseColor.rgb;
+    float alpha = baseColor.a;
+#if DETAIL
+    vec4 t = texture(detail, uv);
+    c *= t.rgb;
+    alpha *= t.a;
+#endif
+    fragColor = vec4(c, alpha);
+}
+)";
+
+std::unique_ptr<Style> create() { return std::make_unique<XToonStyle>(); }
+
+} // namespace
+
+StyleInfo xtoonStyleInfo()
+{
+    StyleInfo info;
+    info.name = kStyle;
+    info.summary = "X-Toon: a 2D tone map indexed by L.n and by depth (level of abstraction) "
+                   "or view orientation (back-light, rims) (Barla et al. 2006)";
+    info.role = StyleRole::Shading;
+    info.create = &create;
+    info.params = {
+        ParamInfo::choice("mode", "the tone map's second axis: depth (eye distance from near "
+                                  "to far) or orientation (1 - |n.v|^r)",
+                          {"depth", "orientation"}, 0),
+        ParamInfo::text("texture", "PNG tone map (x: L.n from -1 to 1, y from the top: full "
+                                   "detail to the most abstract); empty: the generated one"),
+        ParamInfo::number("near", "eye distance of full detail (near and far 0: the scene's "
+                                  "nearest and farthest points)",
+                          0.0, 0.0, 1e6),
+        ParamInfo::number("far", "eye distance of the most abstract tone", 0.0, 0.0, 1e6),
+        ParamInfo::number("r", "orientation: exponent of |n.v| (higher: thinner rims)", 2.0,
+                          0.1, 32.0),
+        ParamInfo::flag("detail", "the program's own texture modulates the tones", true),
+    };
+    return info;
+}
+
+std::string XToonStyle::fragmentSource(bool detail) const
+{
+    std::string s = "#version 130\n";
+    s += std::string("#define DETAIL ") + (detail ? "1" : "0") + "\n";
+    s += std::string("#define ORIENTATION ") + (mOrientation ? "1" : "0") + "\n";
+    s += "const float exponent = " + ShadingCommon::glslFloat(mExponent) + ";\n";
+    return s + ShadingCommon::normalFunction() + kFragment;
+}
+
+bool XToonStyle::init(StyleContext& ctx, std::string& error)
+{
+    const GlFunctions& gl = ctx.gl;
+    mOrientation = std::lround(ctx.param(kStyle, "mode")) == 1;
+    mNear = float(ctx.param(kStyle, "near"));
+    mFar = float(ctx.param(kStyle, "far"));
+    mExponent = float(ctx.param(kStyle, "r"));
+    mDetail = ctx.param(kStyle, "detail") >= 0.5;
+    if (mFar > 0.0f && mFar <= mNear) {
+        NPRGL_WARN("xtoon: far (%g) must lie beyond near (%g); using the scene's range",
+                   double(mFar), double(mNear));
+        mNear = mFar = 0.0f;
+    }
+    const std::string path = ctx.text(kStyle, "texture");
+    std::string why;
+    if (path.empty() || !GlTexture::loadPng(path, false, mToneImage, why)) {
+        if (!path.empty()) {
+            NPRGL_ERROR("xtoon: cannot use texture=%s (%s); using the generated tone map",
+                        path.c_str(), why.c_str());
+        }
+        mToneImage = XToonTexture::generate();
+    }
+    for (int v = 0; v < (mDetail ? 2 : 1); ++v) {
+        const std::string fragment = fragmentSource(v == 1);
+        Variant& variant = mVariants[v];
+        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
+                                   error)) {
+            return false;
+        }
+        variant.u.find(gl, variant.program.id());
+        variant.depthRange = variant.program.uniform(gl, "depthRange");
+        variant.perspectiveView = variant.program.uniform(gl, "perspectiveView");
+        variant.toneMap = variant.program.uniform(gl, "toneMap");
+    }
+    return true;
+}
+
+glm::vec2 XToonStyle::sceneDepthRange(const Scene& scene) const
+{
+    float nearest = std::numeric_limits<float>::max(), farthest = 0.0f;
+    for (const SceneObject& o : scene.objects) {
+        const uint32_t n = o.mesh->vertexCount();
+        // A few hundred points per object give the range; every vertex would cost as much
+        // as the drawing on large meshes.
+        const uint32_t step = std::max(1u, n / 256u);
+        for (uint32_t v = 0; v < n; v += step) {
+            const glm::vec4 e = o.modelview * glm::vec4(o.mesh->position(v), 1.0f);
+            const float d = -e.z / (e.w != 0.0f ? e.w : 1.0f);
+            if (!std::isfinite(d)) continue;
+            nearest = std::min(nearest, d);
+            farthest = std::max(farthest, d);
+        }
+    }
+    if (!(farthest > nearest)) return {0.0f, 1.0f};
+    return {nearest, farthest};
+}
+
+void XToonStyle::render(const Scene& scene, StyleContext& ctx)
+{
+    const GlFunctions& gl = ctx.gl;
+    if (!mToneMap.valid()) {
+        gl.ActiveTexture(GL_TEXTURE1);
+        mToneMap.upload(gl, mToneImage, false);
+        // The axes end at the map's edges: no wrapping from lit to shadow.
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        gl.ActiveTexture(GL_TEXTURE0);
+    }
+    const glm::vec2 range = mFar > mNear ? glm::vec2(mNear, mFar) : sceneDepthRange(scene);
+    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
+    gl.ActiveTexture(GL_TEXTURE1);
+    gl.BindTexture(GL_TEXTURE_2D, mToneMap.id());
+    gl.ActiveTexture(GL_TEXTURE0);
+    GLuint current = 0;
+    for (const SceneObject& object : scene.objects) {
+        const bool textured = object.textured() && mDetail;
+        const Variant& variant = mVariants[textured ? 1 : 0];
+        if (variant.program.id() != current) {
+            current = variant.program.id();
+            gl.UseProgram(current);
+            gl.Uniform1i(variant.toneMap, 1);
+            gl.Uniform2f(variant.depthRange, range.x, range.y);
+        }
+        variant.u.set(gl, object, frontIsCcw);
+        gl.Uniform1f(variant.perspectiveView, object.orthographic() ? 0.0f : 1.0f);
+        if (textured) {
+            ShadingCommon::drawTextured(ctx, object);
+        } else {
+            ctx.meshes.draw(gl, *object.mesh);
+        }
+    }
+    gl.ActiveTexture(GL_TEXTURE1);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    gl.ActiveTexture(GL_TEXTURE0);
+}
+
+void XToonStyle::shutdown(StyleContext& ctx)
+{
+    for (Variant& v : mVariants) v.program.destroy(ctx.gl);
+    mToneMap.destroy(ctx.gl);
+}
+
+} // namespace nprgl::styles

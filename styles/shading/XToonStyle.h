@@ -1,0 +1,42 @@
+#pragma once
+
+// XToonStyle: X-Toon shading, a 2D tone map indexed by the light and by depth or orientation.
+
+#include "styles/ShaderProgram.h"
+#include "styles/Style.h"
+#include "styles/shading/ShadingCommon.h"
+#include "styles/textures/GlTexture.h"
+
+namespace nprgl::styles {
+
+// X-Toon (Barla, Thollot and Markosian, NPAR 2006): toon shading extended by a second axis.
+// The tone comes from a 2D texture at (u, v): u the diffuse term L.n, v a detail attribute,
+// either the eye distance between a near and a far plane (level of abstraction: far parts
+// lose their bands) or 1 - |n.v|^r (orientation: grazing parts, the silhouettes, take the top
+// row's tone, for back-lighting and rim effects). The tone multiplies the object's colour
+// (and the program's texture, as detail). The tone map is a user PNG or XToonTexture's.
+class XToonStyle : public Style {
+public:
+    bool init(StyleContext& ctx, std::string& error) override;
+    void render(const Scene& scene, StyleContext& ctx) override;
+    void shutdown(StyleContext& ctx) override;
+
+private:
+    struct Variant {
+        ShaderProgram program;
+        ShadingCommon::ObjectUniforms u;
+        GLint depthRange = -1, perspectiveView = -1, toneMap = -1;
+    };
+    std::string fragmentSource(bool detail) const;
+    // The scene's eye distances: the near and far of the depth axis when not configured.
+    glm::vec2 sceneDepthRange(const Scene& scene) const;
+
+    Variant mVariants[2]; // [0] untextured objects, [1] with the program's texture
+    GlTexture mToneMap;
+    TextureImage mToneImage;
+    bool mOrientation = false;
+    bool mDetail = true;
+    float mNear = 0.0f, mFar = 0.0f, mExponent = 2.0f;
+};
+
+} // namespace nprgl::styles
