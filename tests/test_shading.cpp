@@ -705,3 +705,39 @@ TEST_F(Shading, XToonFallsBackToTheGeneratedMap)
     forSphere(generated, [&](const Rgb& c, float) { colours.insert(c); });
     EXPECT_GT(distinct(colours), 2u) << "nothing drawn";
 }
+
+// Gooch's pure tones: generated from b and y (blue facing away from the light, yellow facing
+// it), or the user's ramp; with the object's share at zero only the tones show.
+TEST_F(Shading, GoochTakesItsPureTonesFromTheRamp)
+{
+    const std::string bare = "gooch.alpha=0,gooch.beta=0";
+    auto count = [](const PngImage& image, const std::function<bool(const Rgb&)>& shadow,
+                    const std::function<bool(const Rgb&)>& lit) {
+        int right = 0, wrong = 0;
+        forSphere(image, [&](const Rgb& c, float ln) {
+            if (std::abs(ln) < 0.5f) return; // the middle of the ramp mixes both
+            ((ln < 0.0f ? shadow(c) : lit(c)) ? right : wrong)++;
+        });
+        return std::pair{right, wrong};
+    };
+    const PngImage generated = render("gooch", bare, "gooch_generated", kWhite);
+    auto [gRight, gWrong] = count(
+        generated, [](const Rgb& c) { return c.b > c.r + 40 && c.b > c.g + 40; },
+        [](const Rgb& c) { return c.r > c.b + 40 && c.g > c.b + 40; });
+    EXPECT_GT(gRight, 1000);
+    EXPECT_LT(gWrong, gRight / 100);
+
+    const std::string map = toneMapPng("gooch_ramp", [](float u, float) {
+        return u < 0.5f ? Rgb{200, 30, 200} : Rgb{30, 200, 200};
+    });
+    const PngImage user = render("gooch", bare + ",gooch.texture=" + map, "gooch_user", kWhite);
+    auto [uRight, uWrong] = count(
+        user, [](const Rgb& c) { return c.r > c.g + 100 && c.b > c.g + 100; },
+        [](const Rgb& c) { return c.g > c.r + 100 && c.b > c.r + 100; });
+    EXPECT_GT(uRight, 1000);
+    EXPECT_LT(uWrong, uRight / 100);
+
+    const PngImage fallback =
+        render("gooch", bare + ",gooch.texture=/nonexistent/ramp.png", "gooch_fallback", kWhite);
+    EXPECT_EQ(fallback.rgba, generated.rgba);
+}

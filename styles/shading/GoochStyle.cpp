@@ -1,5 +1,6 @@
 #include "styles/shading/GoochStyle.h"
 
+#include "common/Log.h"
 #include "styles/StyleRegistry.h"
 
 #include <cmath>
@@ -13,6 +14,7 @@ namespace {
 const char* kFragment = R"(
 uniform vec3 lightDir;
 uniform sampler2D detail;
+uniform sampler2D ramp; // unit 1: the pure tones from cool (left) to warm (right)
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
@@ -29,10 +31,11 @@ void main()
     k *= t.rgb;
     a *= t.a;
 #endif
-    // k_cool = (0, 0, b) + alpha k_d, k_warm = (y, y, 0) + beta k_d, blended by (1 + L.n) / 2.
-    vec3 cool = vec3(0.0, 0.0, blue) + alpha * k;
-    vec3 warm = vec3(yellow, yellow, 0.0) + beta * k;
-    vec3 c = mix(cool, warm, 0.5 * (1.0 + d));
+    // k_cool = (0, 0, b) + alpha k_d, k_warm = (y, y, 0) + beta k_d, blended by
+    // x = (1 + L.n) / 2: the pure tones come from the ramp (generated from b and y, or the
+    // user's), the object's share is mixed in by the same x.
+    float x = 0.5 * (1.0 + d);
+    vec3 c = texture(ramp, vec2(x, 0.5)).rgb + mix(alpha, beta, x) * k;
 #if HIGHLIGHT
     // Blinn's half vector with the viewer on the eye axis (the tone is already view-free).
     vec3 h = normalize(lightDir + vec3(0.0, 0.0, 1.0));
@@ -63,6 +66,9 @@ StyleInfo goochStyleInfo()
         ParamInfo::number("highlight", "exponent of a white highlight (0: none)", 0.0, 0.0,
                           256.0),
         ParamInfo::flag("detail", "the program's own texture modulates the tones", true),
+        ParamInfo::text("texture", "PNG of the pure tones from cool (left, facing away from "
+                                   "the light) to warm (right), its middle row; empty: "
+                                   "blue to yellow from b and y"),
     };
     return info;
 }
@@ -73,8 +79,6 @@ std::string GoochStyle::fragmentSource(bool detail) const
     std::string s = "#version 130\n";
     s += std::string("#define DETAIL ") + (detail ? "1" : "0") + "\n";
     s += std::string("#define HIGHLIGHT ") + (mHighlight > 0.0f ? "1" : "0") + "\n";
-    s += "const float blue = " + f(mBlue) + ";\n";
-    s += "const float yellow = " + f(mYellow) + ";\n";
     s += "const float alpha = " + f(mAlpha) + ";\n";
     s += "const float beta = " + f(mBeta) + ";\n";
     s += "const float highlight = " + f(mHighlight) + ";\n";
@@ -98,13 +102,50 @@ bool GoochStyle::init(StyleContext& ctx, std::string& error)
             return false;
         }
         variant.u.find(gl, variant.program.id());
+        variant.ramp = variant.program.uniform(gl, "ramp");
+    }
+    const std::string path = ctx.text("gooch", "texture");
+    std::string why;
+    if (path.empty() || !GlTexture::loadPng(path, false, mRampImage, why)) {
+        if (!path.empty()) {
+            NPRGL_ERROR("gooch: cannot use texture=%s (%s); using the blue-to-yellow ramp",
+                        path.c_str(), why.c_str());
+        }
+        mRampImage = generatedRamp();
     }
     return true;
+}
+
+TextureImage GoochStyle::generatedRamp() const
+{
+    // (0, 0, b) at the cool end to (y, y, 0) at the warm end, linear in x.
+    TextureImage image;
+    image.width = 256;
+    image.height = 1;
+    image.channels = 4;
+    image.pixels.resize(256 * 4);
+    for (int i = 0; i < 256; ++i) {
+        const float x = float(i) / 255.0f;
+        uint8_t* p = &image.pixels[size_t(i) * 4];
+        p[0] = p[1] = uint8_t(std::lround(255.0f * mYellow * x));
+        p[2] = uint8_t(std::lround(255.0f * mBlue * (1.0f - x)));
+        p[3] = 255;
+    }
+    return image;
 }
 
 void GoochStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
+    gl.ActiveTexture(GL_TEXTURE1);
+    if (!mRamp.valid()) {
+        mRamp.upload(gl, mRampImage, false);
+        // The ends are the ends: no wrapping from warm to cool.
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    gl.BindTexture(GL_TEXTURE_2D, mRamp.id());
+    gl.ActiveTexture(GL_TEXTURE0);
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
@@ -113,6 +154,7 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);
+            gl.Uniform1i(variant.ramp, 1);
         }
         variant.u.set(gl, object, frontIsCcw);
         // The program's textures keep their own filtering and wrapping; both sides are
@@ -128,6 +170,7 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
 void GoochStyle::shutdown(StyleContext& ctx)
 {
     for (Variant& v : mVariants) v.program.destroy(ctx.gl);
+    mRamp.destroy(ctx.gl);
 }
 
 } // namespace nprgl::styles
