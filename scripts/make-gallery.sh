@@ -16,7 +16,8 @@ rm -f "$out"/*.png
 models=/usr/share/assimp/models
 styles=(none toon+paper+edges toon textured halftone toon+edges toon+wireframe
         toon+perpixel toon+strokes halftone+paper+edges textured+paper+strokes gooch+edges
-        preset:technical preset:blueprint)
+        preset:technical preset:blueprint preset:pencil xtoon+paper+edges toon+depthcue
+        preset:motion)
 # An entry "preset:NAME" renders with --preset NAME.
 fileName() { case "$1" in preset:*) echo "preset-${1#preset:}" ;; *) echo "$1" | tr '+' '-' ;; esac; }
 label() { case "$1" in preset:*) echo "--preset ${1#preset:}" ;; *) echo "$1" ;; esac; }
