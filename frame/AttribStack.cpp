@@ -26,16 +26,18 @@ void AttribStack::pop()
         a.alphaFunc = saved.alphaFunc;
         a.alphaRef = saved.alphaRef;
         a.stencilTest = saved.stencilTest;
-        a.light0On = saved.light0On;
+        a.lightsOn = saved.lightsOn;
+        a.fog = saved.fog;
         a.vertexProgram = saved.vertexProgram;
         a.fragmentProgram = saved.fragmentProgram;
     }
     if (mask & GL_LIGHTING_BIT) {
         a.lighting = saved.lighting;
         a.colorMaterial = saved.colorMaterial;
-        a.light0On = saved.light0On;
+        a.lightsOn = saved.lightsOn;
         a.materialDiffuse = saved.materialDiffuse;
-        a.light0 = saved.light0;
+        a.lightPosition = saved.lightPosition;
+        a.lightDiffuse = saved.lightDiffuse;
     }
     if (mask & GL_DEPTH_BUFFER_BIT) {
         a.depthTest = saved.depthTest;
@@ -57,6 +59,14 @@ void AttribStack::pop()
         a.texGen = saved.texGen;
     }
     if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
+    if (mask & GL_FOG_BIT) {
+        a.fog = saved.fog;
+        a.fogMode = saved.fogMode;
+        a.fogStart = saved.fogStart;
+        a.fogEnd = saved.fogEnd;
+        a.fogDensity = saved.fogDensity;
+        a.fogColour = saved.fogColour;
+    }
 }
 
 } // namespace nprgl

@@ -6,6 +6,7 @@
 #include <GL/gl.h>
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -16,14 +17,36 @@ struct AttribState {
     bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
     uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
     uint32_t texGen = 0;       // bit 4u + c: coordinate c (S, T, R, Q) generated on unit u < 8
-    bool blend = false, alphaTest = false, stencilTest = false, light0On = false;
+    bool blend = false, alphaTest = false, stencilTest = false;
     bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
     bool fillFront = true, fillBack = true, colorMaskAll = true, depthMask = true;
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
+    bool fog = false;
+    GLenum fogMode = GL_EXP;
+    float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
+    glm::vec3 fogColour{0.0f};
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
-    glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f};
+    uint8_t lightsOn = 0; // bit i: GL_LIGHTi enabled
+    // GL_POSITION in eye space (transformed by the modelview of the call), and GL_DIFFUSE:
+    // GL's defaults, white for light 0 and black for the others.
+    std::array<glm::vec4, 8> lightPosition = defaultPositions();
+    std::array<glm::vec3, 8> lightDiffuse = defaultDiffuse();
+
+    static std::array<glm::vec4, 8> defaultPositions()
+    {
+        std::array<glm::vec4, 8> p;
+        p.fill(glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+        return p;
+    }
+    static std::array<glm::vec3, 8> defaultDiffuse()
+    {
+        std::array<glm::vec3, 8> d;
+        d.fill(glm::vec3(0.0f));
+        d[0] = glm::vec3(1.0f);
+        return d;
+    }
     glm::ivec4 viewport{0, 0, 0, 0};
 };
 

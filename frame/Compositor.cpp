@@ -148,11 +148,11 @@ void* realProc(const char* name) { return realProcAddress(name); }
 
 glm::vec3 lightDirection(const TrackedBatch& b)
 {
-    if (b.lit && b.light0On) {
-        glm::vec3 toLight = glm::vec3(b.light0);
-        if (b.light0.w != 0.0f) {
+    if (b.lit && b.lightOn) {
+        glm::vec3 toLight = glm::vec3(b.keyLight);
+        if (b.keyLight.w != 0.0f) {
             // A positional light: towards it from the object's origin.
-            toLight = glm::vec3(b.light0) / b.light0.w - glm::vec3(b.modelview[3]);
+            toLight = glm::vec3(b.keyLight) / b.keyLight.w - glm::vec3(b.modelview[3]);
         }
         if (glm::dot(toLight, toLight) > 1e-12f) return glm::normalize(toLight);
     }
@@ -592,6 +592,7 @@ void Compositor::buildScene()
         s.depthWrite = t.depthWrite;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
+        s.fog = {t.fogMode, t.fogStart, t.fogEnd, t.fogDensity, t.fogColour};
         textureRuns(o, s);
         s.id = uint32_t(mScene.objects.size() + 1);
         mScene.objects.push_back(std::move(s));

@@ -218,6 +218,27 @@ void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
 }
 void APIENTRY tDepthMask(GLboolean flag) { T().depthMask(flag == GL_TRUE); }
 void APIENTRY tAlphaFunc(GLenum func, GLfloat ref) { T().alphaFunc(func, ref); }
+void APIENTRY tFogf(GLenum pname, GLfloat v) { T().fog(pname, &v, 1); }
+void APIENTRY tFogi(GLenum pname, GLint v)
+{
+    const float f = float(v);
+    T().fog(pname, &f, 1);
+}
+void APIENTRY tFogfv(GLenum pname, const GLfloat* v)
+{
+    if (v) T().fog(pname, v, pname == GL_FOG_COLOR ? 4 : 1);
+}
+void APIENTRY tFogiv(GLenum pname, const GLint* v)
+{
+    if (!v) return;
+    // Integer colours map the full int range to [-1, 1], as glFogiv's do.
+    float f[4] = {};
+    const size_t n = pname == GL_FOG_COLOR ? 4 : 1;
+    for (size_t i = 0; i < n; ++i) {
+        f[i] = pname == GL_FOG_COLOR ? float(v[i]) / 2147483647.0f : float(v[i]);
+    }
+    T().fog(pname, f, n);
+}
 void APIENTRY tPushAttrib(GLbitfield mask) { T().pushAttrib(mask); }
 void APIENTRY tPopAttrib() { T().popAttrib(); }
 void APIENTRY tPushClientAttrib(GLbitfield) { T().pushClientAttrib(); }
@@ -340,6 +361,10 @@ StateTracker::StateTracker()
     d.glBlendFuncSeparate = tBlendFuncSeparate;
     d.glDepthMask = tDepthMask;
     d.glAlphaFunc = tAlphaFunc;
+    d.glFogf = tFogf;
+    d.glFogi = tFogi;
+    d.glFogfv = tFogfv;
+    d.glFogiv = tFogiv;
     d.glViewport = tViewport;
     d.glPushAttrib = tPushAttrib;
     d.glPopAttrib = tPopAttrib;
@@ -489,11 +514,43 @@ bool StateTracker::listHoldable(GLuint list, bool& anyBatch) const
 
 void StateTracker::light(GLenum light, GLenum pname, const float* v)
 {
-    if (light != GL_LIGHT0 || !v) return;
+    if (light < GL_LIGHT0 || light >= GL_LIGHT0 + 8 || !v) return;
+    const size_t i = light - GL_LIGHT0;
     if (pname == GL_POSITION) {
         // GL stores the position in eye space, transformed by the modelview of the call.
-        mAttrib.light0 = mMatrices.modelview() * glm::vec4(v[0], v[1], v[2], v[3]);
+        mAttrib.lightPosition[i] = mMatrices.modelview() * glm::vec4(v[0], v[1], v[2], v[3]);
+    } else if (pname == GL_DIFFUSE) {
+        mAttrib.lightDiffuse[i] = glm::vec3(v[0], v[1], v[2]);
     }
+}
+
+size_t StateTracker::keyLight() const
+{
+    // The brightest enabled light gives the styles their L: the others only brighten.
+    const AttribState& a = mAttrib;
+    size_t key = 0;
+    float best = -1.0f;
+    for (size_t i = 0; i < 8; ++i) {
+        if (!(a.lightsOn & (1u << i))) continue;
+        const float y = glm::dot(a.lightDiffuse[i], glm::vec3(0.299f, 0.587f, 0.114f));
+        if (y > best) {
+            best = y;
+            key = i;
+        }
+    }
+    return key;
+}
+
+glm::vec3 StateTracker::lightTint() const
+{
+    // The enabled lights' colours together, brightest channel at 1: the hue they give.
+    const AttribState& a = mAttrib;
+    glm::vec3 sum(0.0f);
+    for (size_t i = 0; i < 8; ++i) {
+        if (a.lightsOn & (1u << i)) sum += glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
+    }
+    const float top = std::max({sum.r, sum.g, sum.b});
+    return top > 1e-6f ? sum / top : glm::vec3(1.0f);
 }
 
 bool StateTracker::translucent() const
@@ -511,6 +568,27 @@ void StateTracker::blendFunc(GLenum src, GLenum dst)
 }
 
 void StateTracker::depthMask(bool on) { mAttrib.depthMask = on; }
+
+void StateTracker::fog(GLenum pname, const float* v, size_t count)
+{
+    AttribState& a = mAttrib;
+    switch (pname) {
+    case GL_FOG_MODE: {
+        const GLenum mode = GLenum(v[0]);
+        if (mode == GL_LINEAR || mode == GL_EXP || mode == GL_EXP2) a.fogMode = mode;
+        break;
+    }
+    case GL_FOG_START: a.fogStart = v[0]; break;
+    case GL_FOG_END: a.fogEnd = v[0]; break;
+    case GL_FOG_DENSITY:
+        if (v[0] >= 0.0f) a.fogDensity = v[0]; // a negative one is GL_INVALID_VALUE
+        break;
+    case GL_FOG_COLOR:
+        if (count >= 3) a.fogColour = glm::clamp(glm::vec3(v[0], v[1], v[2]), 0.0f, 1.0f);
+        break;
+    default: break;
+    }
+}
 
 void StateTracker::alphaFunc(GLenum func, float ref)
 {
@@ -739,9 +817,18 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.projection = mMatrices.projection();
     batch.materialId = currentMaterialId();
     const AttribState& a = mAttrib;
-    // What the program's picture shows: lit surfaces take the material's colour.
+    // What the program's picture shows: lit surfaces take the material's colour, in the
+    // colour of the lights on them (a white light changes nothing).
     if (a.lighting && !a.colorMaterial) {
         for (TrackedVertex& v : batch.vertices) v.color = a.materialDiffuse;
+    }
+    if (a.lighting) {
+        const glm::vec3 tint = lightTint();
+        if (tint != glm::vec3(1.0f)) {
+            for (TrackedVertex& v : batch.vertices) {
+                v.color = glm::vec4(glm::vec3(v.color) * tint, v.color.a);
+            }
+        }
     }
     batch.is3D = a.depthTest || batch.projection[3][3] == 0.0f;
     if (mHolding) {
@@ -751,14 +838,19 @@ bool StateTracker::keep(TrackedBatch& batch)
         if (!batch.held) return false; // the compositor keeps only what it re-draws
     }
     batch.lit = a.lighting;
-    batch.light0 = a.light0;
-    batch.light0On = a.light0On;
+    batch.lightOn = a.lightsOn != 0;
+    batch.keyLight = a.lightPosition[keyLight()];
     batch.texture = detailTexture();
     batch.translucent = translucent();
     batch.depthWrite = a.depthMask;
     // The styles test their alpha (the program's, its texture modulating) as it would.
     batch.alphaFunc = a.alphaTest ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
+    batch.fogMode = a.fog ? a.fogMode : 0;
+    batch.fogStart = a.fogStart;
+    batch.fogEnd = a.fogEnd;
+    batch.fogDensity = a.fogDensity;
+    batch.fogColour = a.fogColour;
     batch.viewport = a.viewport;
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
@@ -799,9 +891,21 @@ void StateTracker::setEnabled(GLenum cap, bool on)
         }
         break;
     case GL_BLEND: a.blend = on; break;
+    case GL_FOG: a.fog = on; break;
     case GL_ALPHA_TEST: a.alphaTest = on; break;
     case GL_STENCIL_TEST: a.stencilTest = on; break;
-    case GL_LIGHT0: a.light0On = on; break;
+    case GL_LIGHT0:
+    case GL_LIGHT1:
+    case GL_LIGHT2:
+    case GL_LIGHT3:
+    case GL_LIGHT4:
+    case GL_LIGHT5:
+    case GL_LIGHT6:
+    case GL_LIGHT7: {
+        const uint8_t bit = uint8_t(1u << (cap - GL_LIGHT0));
+        a.lightsOn = on ? uint8_t(a.lightsOn | bit) : uint8_t(a.lightsOn & ~bit);
+        break;
+    }
     case GL_VERTEX_PROGRAM_ARB: a.vertexProgram = on; break;
     case GL_FRAGMENT_PROGRAM_ARB: a.fragmentProgram = on; break;
     default: break;

@@ -37,13 +37,16 @@ struct TrackedBatch {
     bool is3D = false; // perspective projection or depth test on: what nprgl stylises
     bool held = false; // the compositor held it back (only when holding is on)
     bool lit = false;
-    glm::vec4 light0{0.0f, 0.0f, 1.0f, 0.0f}; // GL_LIGHT0's position in eye space
-    bool light0On = false;
+    glm::vec4 keyLight{0.0f, 0.0f, 1.0f, 0.0f}; // the brightest enabled light, eye space
+    bool lightOn = false;                       // any light enabled
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     bool translucent = false; // blended by its alpha over what is behind (StateTracker::translucent)
     bool depthWrite = true;
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
+    GLenum fogMode = 0; // GL_LINEAR, GL_EXP, GL_EXP2; 0 when fog is off
+    float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
+    glm::vec3 fogColour{0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
 };
@@ -158,8 +161,13 @@ public:
     void blendFunc(GLenum src, GLenum dst);
     void depthMask(bool on);
     void alphaFunc(GLenum func, float ref);
+    void fog(GLenum pname, const float* v, size_t count);
     // Blending on with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.
     bool translucent() const;
+    // The enabled light with the brightest diffuse colour (0 when none is on).
+    size_t keyLight() const;
+    // The hue of the enabled lights' diffuse colours, scaled so its brightest channel is 1.
+    glm::vec3 lightTint() const;
     void polygonMode(GLenum face, GLenum mode);
     void colorMask(bool r, bool g, bool b, bool a) { mAttrib.colorMaskAll = r && g && b && a; }
     void pushAttrib(GLbitfield mask) { mAttribs.push(mask); }

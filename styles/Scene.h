@@ -18,8 +18,8 @@ struct SceneObject {
     std::shared_ptr<const reconstruct::ObjectMesh> mesh;
     glm::mat4 modelview{1.0f};
     glm::mat4 projection{1.0f};
-    // Towards the light in eye space, unit: GL_LIGHT0's position (or direction) when the
-    // program lit the object, else a head-light from the upper left.
+    // Towards the light in eye space, unit: the brightest enabled light's position (or
+    // direction) when the program lit the object, else a head-light from the upper left.
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     // Faces drawn with another texture than `texture` (a cube with a texture per face is one
@@ -41,6 +41,13 @@ struct SceneObject {
     // program's would be, so cut-outs keep their shape; outlines leave such objects out.
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
+    // The program's fog at its draw (mode 0: none), applied to the styled colours by the
+    // eye distance as GL's fixed pipeline does.
+    struct Fog {
+        GLenum mode = 0; // GL_LINEAR, GL_EXP, GL_EXP2, or 0 when fog is off
+        float start = 0.0f, end = 1.0f, density = 1.0f;
+        glm::vec3 colour{0.0f};
+    } fog;
 
     // Whether any face is drawn with a texture of the program's.
     bool textured() const

@@ -701,3 +701,39 @@ TEST(Compositor, AlphaTestedCutOutsKeepTheirHoles)
     EXPECT_GT(styled, solid + 150) << "the styled cube lost its holes";
     EXPECT_NEAR(styled, native, native / 5);
 }
+
+// The program's fog (linear, 6 to 11 units, pale) is applied to the styled colours: the far
+// floor fades into the fog colour as it does natively, and does not without fog.
+TEST(Compositor, TheProgramsFogFadesTheStyledScene)
+{
+    auto distance = [](const std::string& style, bool fog, int x0, int y0, int x1, int y1) {
+        const std::string dir = freshDir("fog_" + style);
+        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
+                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
+        if (fog) app.push_back("--fog");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+        if (image.rgba.empty()) return 0.0;
+        // Mean distance (sum over channels) from the demo's fog colour 0.7, 0.72, 0.78.
+        const int fogColour[3] = {178, 184, 199};
+        double sum = 0.0;
+        int n = 0;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                for (int c = 0; c < 3; ++c) sum += std::abs(p[c] - fogColour[c]);
+                ++n;
+            }
+        }
+        return sum / n;
+    };
+    // The floor's far edge between the cube and the sphere, and a nearer patch.
+    EXPECT_LT(distance("none", true, 145, 119, 170, 123), 20.0) << "the demo has no fog there";
+    EXPECT_LT(distance("toon", true, 145, 119, 170, 123), 60.0) << "the styled floor is unfogged";
+    EXPECT_GT(distance("toon", false, 145, 119, 170, 123), 120.0);
+    EXPECT_NEAR(distance("toon", true, 60, 160, 75, 170), distance("none", true, 60, 160, 75, 170),
+                40.0);
+}

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <map>
 #include <set>
 
@@ -277,6 +278,66 @@ TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
     EXPECT_STREQ(tracker.unstylableState(), "multitexturing");
     enable(GL_TEXTURE_GEN_S, false);
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+}
+
+// Lights other than GL_LIGHT0: the brightest enabled one gives the direction, and the lights'
+// colours tint lit surfaces (a floor under a green GL_LIGHT1 is not white when styled).
+TEST(StateTracker, TheBrightestEnabledLightAndTheLightsColoursReachTheBatch)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    std::string error;
+    auto run = [&](auto&& write) {
+        CallWriter w;
+        write(w);
+        ASSERT_TRUE(tracker.feed(w.data(), w.size(), nullptr, error)) << error;
+    };
+    auto enable = [&](GLenum cap, bool on) {
+        run([&](CallWriter& w) {
+            w.op(on ? op::glEnable : op::glDisable);
+            w.put<GLenum>(cap);
+        });
+    };
+    auto lightfv = [&](GLenum light, GLenum pname, std::array<float, 4> v) {
+        run([&](CallWriter& w) {
+            w.op(op::glLightfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(light);
+            w.put<GLenum>(pname);
+            w.putBytes(v.data(), sizeof(float) * v.size());
+            w.endPayload(mark);
+        });
+    };
+    auto triangle = [&] {
+        run([](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (float x : {0.0f, 1.0f, 0.0f}) {
+                w.op(op::glVertex3f);
+                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    enable(GL_DEPTH_TEST, true);
+    enable(GL_LIGHTING, true);
+    enable(GL_LIGHT1, true); // light 0 stays off
+    lightfv(GL_LIGHT1, GL_DIFFUSE, {0.2f, 0.9f, 0.2f, 1.0f});
+    lightfv(GL_LIGHT1, GL_POSITION, {1.0f, 0.0f, 0.0f, 0.0f});
+    triangle();
+    enable(GL_LIGHT0, true); // white: now the brightest, and the tint goes towards white
+    triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 2u);
+    EXPECT_TRUE(batches[0].lightOn);
+    EXPECT_EQ(batches[0].keyLight, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f));
+    const glm::vec4 green = batches[0].vertices[0].color;
+    EXPECT_GT(green.g, green.r + 0.4f) << "the green light did not tint the white material";
+    EXPECT_EQ(batches[1].keyLight, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+    const glm::vec4 mixed = batches[1].vertices[0].color;
+    EXPECT_GT(mixed.r, green.r + 0.2f);
+    EXPECT_LT(mixed.g - mixed.r, green.g - green.r);
 }
 
 TEST(StateTracker, FramesReuseTheirVertexStorage)

@@ -4,7 +4,8 @@
 // each face of the cube its own texture (six glBegin/glEnd, one object); --translucent
 // blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
 // to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
-// its texture's alpha and the alpha test (GL_GREATER 0.5).
+// its texture's alpha and the alpha test (GL_GREATER 0.5); --fog fades the scene into a pale
+// linear fog between eye distances 6 and 11.
 
 #include "Demo.h"
 
@@ -142,7 +143,8 @@ public:
                 {"additive", demo::ExtraOption::Kind::Flag,
                  "the sphere is added to the scene (GL_ONE, GL_ONE)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
-                 "round holes in the cube's faces (texture alpha and the alpha test)"}};
+                 "round holes in the cube's faces (texture alpha and the alpha test)"},
+                {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
@@ -151,6 +153,14 @@ public:
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
+        if (options.has("fog")) {
+            const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
+            glEnable(GL_FOG);
+            glFogi(GL_FOG_MODE, GL_LINEAR);
+            glFogf(GL_FOG_START, 6.0f);
+            glFogf(GL_FOG_END, 11.0f);
+            glFogfv(GL_FOG_COLOR, fogColour);
+        }
         if (options.has("face-textures")) {
             // Red, green, blue, yellow, magenta, cyan checks on white.
             const uint8_t colours[6][3] = {{200, 40, 40}, {40, 170, 40},  {40, 60, 210},

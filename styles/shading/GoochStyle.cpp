@@ -18,6 +18,7 @@ uniform sampler2D ramp; // unit 1: the pure tones from cool (left) to warm (righ
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
+in vec3 eyePosition;
 out vec4 fragColor;
 
 void main()
@@ -41,7 +42,7 @@ void main()
     vec3 h = normalize(lightDir + vec3(0.0, 0.0, 1.0));
     c = mix(c, vec3(1.0), pow(max(dot(n, h), 0.0), highlight));
 #endif
-    fragColor = vec4(min(c, vec3(1.0)), a);
+    fragColor = vec4(programFog(min(c, vec3(1.0)), eyePosition), a);
 }
 )";
 
@@ -82,7 +83,8 @@ std::string GoochStyle::fragmentSource(bool detail) const
     s += "const float alpha = " + f(mAlpha) + ";\n";
     s += "const float beta = " + f(mBeta) + ";\n";
     s += "const float highlight = " + f(mHighlight) + ";\n";
-    return s + ShadingCommon::normalFunction() + kFragment;
+    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+           kFragment;
 }
 
 bool GoochStyle::init(StyleContext& ctx, std::string& error)

@@ -22,6 +22,7 @@ uniform vec2 anchor;      // window pixel of the object's origin
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
+in vec3 eyePosition;
 out vec4 fragColor;
 
 void main()
@@ -51,7 +52,7 @@ void main()
     float H = textureLod(screen, (gl_FragCoord.xy - anchor) * screenStep, screenLod).r;
 #endif
     float C = clamp(1.0 - smoothness * (1.0 - IT - H), 0.0, 1.0);
-    fragColor = vec4(mix(INK_COLOR, paper, C), alpha);
+    fragColor = vec4(programFog(mix(INK_COLOR, paper, C), eyePosition), alpha);
 }
 )";
 
@@ -153,7 +154,8 @@ std::string HalftoneStyle::fragmentSource(bool textured) const
     s += "const vec3 paper = " + ShadingCommon::glslVec3(mPaper) + ";\n";
     s += std::string("#define INK_COLOR ") +
          (mInkFromObject ? "(baseColor.rgb * 0.6)" : ShadingCommon::glslVec3(mInk)) + "\n";
-    return s + ShadingCommon::normalFunction() + kFragment;
+    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+           kFragment;
 }
 
 bool HalftoneStyle::init(StyleContext& ctx, std::string& error)

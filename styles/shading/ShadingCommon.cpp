@@ -51,8 +51,34 @@ vec3 shadingNormal(vec3 eyeNormal)
 )";
 }
 
+const char* ShadingCommon::fogFunction()
+{
+    return R"(
+uniform float fogMode;  // 0 none, 1 linear, 2 exp, 3 exp2
+uniform vec3 fogRange;  // start, end, density
+uniform vec3 fogColour;
+vec3 programFog(vec3 colour, vec3 eyePosition)
+{
+    if (fogMode < 0.5) return colour;
+    float z = abs(eyePosition.z); // GL's fog coordinate: the eye-space depth
+    float f;
+    if (fogMode < 1.5) {
+        f = (fogRange.y - z) / max(fogRange.y - fogRange.x, 1e-6);
+    } else if (fogMode < 2.5) {
+        f = exp(-fogRange.z * z);
+    } else {
+        f = exp(-(fogRange.z * z) * (fogRange.z * z));
+    }
+    return mix(fogColour, colour, clamp(f, 0.0, 1.0));
+}
+)";
+}
+
 void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
 {
+    fogMode = gl.GetUniformLocation(program, "fogMode");
+    fogRange = gl.GetUniformLocation(program, "fogRange");
+    fogColour = gl.GetUniformLocation(program, "fogColour");
     modelview = gl.GetUniformLocation(program, "modelview");
     projection = gl.GetUniformLocation(program, "projection");
     normalMatrix = gl.GetUniformLocation(program, "normalMatrix");
@@ -89,6 +115,16 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     const bool flip = !frontIsCcw ^ mirrored ^ !normalsFollowCcw(*object.mesh);
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
+    if (fogMode >= 0) {
+        const SceneObject::Fog& f = object.fog;
+        const float mode = f.mode == GL_LINEAR ? 1.0f
+                           : f.mode == GL_EXP  ? 2.0f
+                           : f.mode == GL_EXP2 ? 3.0f
+                                               : 0.0f;
+        gl.Uniform1f(fogMode, mode);
+        gl.Uniform3f(fogRange, f.start, f.end, f.density);
+        gl.Uniform3fv(fogColour, 1, glm::value_ptr(f.colour));
+    }
 }
 
 bool ShadingCommon::beginTwoSided(const GlFunctions& gl)

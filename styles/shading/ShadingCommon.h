@@ -24,9 +24,13 @@ public:
     // GLSL helper for fragment shaders: `vec3 shadingNormal(vec3 eyeNormal)` normalises and
     // flips it when it points away from the visible side (two-sided lighting).
     static const char* normalFunction();
-    // The per-object uniforms of vertexShader(), plus the fragment shaders' lightDir.
+    // GLSL helper for fragment shaders: `vec3 programFog(vec3 colour, vec3 eyePosition)`, the
+    // program's fog (SceneObject::fog) over a styled colour. Declare `in vec3 eyePosition`.
+    static const char* fogFunction();
+    // The per-object uniforms of vertexShader(), plus the fragment shaders' lightDir and fog.
     struct ObjectUniforms {
         GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
+        GLint fogMode = -1, fogRange = -1, fogColour = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;

@@ -55,9 +55,9 @@ void main()
 #endif
 #if PROGRAM_TEXTURE
     // The program's alpha, its texture modulating: what its alpha test and blending see.
-    fragColor = vec4(c, baseColor.a * texture(programTex, uv).a);
+    fragColor = vec4(programFog(c, eyePosition), baseColor.a * texture(programTex, uv).a);
 #else
-    fragColor = vec4(c, baseColor.a);
+    fragColor = vec4(programFog(c, eyePosition), baseColor.a);
 #endif
 }
 )";
@@ -234,6 +234,7 @@ std::string TexturedStyle::fragmentSource(bool textured) const
     s += "const float bandHigh = " + f(mBandHigh) + ";\n"; // ta_u
     s += "const float falloff = " + f(mFalloff) + ";\n";
     s += ShadingCommon::normalFunction();
+    s += ShadingCommon::fogFunction();
     s += "uniform vec3 lightDir;\n"
          "uniform sampler2D lightTex;\n"
          "uniform sampler2D shadowTex;\n"
@@ -242,6 +243,7 @@ std::string TexturedStyle::fragmentSource(bool textured) const
          "in vec3 eyeNormal;\n"
          "in vec4 baseColor;\n"
          "in vec2 uv;\n"
+         "in vec3 eyePosition;\n"
          "out vec4 fragColor;\n";
     s += layerFunction("lightLayer", mLight, lightMode, "lightTex", objectSpace);
     s += layerFunction("shadowLayer", mShadow, shadowMode, "shadowTex", objectSpace);

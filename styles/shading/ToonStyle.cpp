@@ -19,6 +19,7 @@ uniform sampler2D detail;
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
+in vec3 eyePosition;
 out vec4 fragColor;
 
 // 0 below the threshold, 1 above; with SMOOTH a one-pixel ramp (screen-space antialiasing of
@@ -71,7 +72,7 @@ void main()
 #endif
     c *= 1.0 - ink;
 #endif
-    fragColor = vec4(c, alpha);
+    fragColor = vec4(programFog(c, eyePosition), alpha);
 }
 )";
 
@@ -134,7 +135,8 @@ std::string ToonStyle::fragmentSource(int detail) const
          ((mFixed & 4) ? ShadingCommon::glslVec3(mColors[2])
                        : "mix(base, vec3(1.0), " + f(mHighlightMix) + ")") +
          "\n";
-    return s + ShadingCommon::normalFunction() + kFragment;
+    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+           kFragment;
 }
 
 bool ToonStyle::init(StyleContext& ctx, std::string& error)

@@ -45,7 +45,7 @@ void main()
     c *= t.rgb;
     alpha *= t.a;
 #endif
-    fragColor = vec4(c, alpha);
+    fragColor = vec4(programFog(c, eyePosition), alpha);
 }
 )";
 
@@ -84,7 +84,8 @@ std::string XToonStyle::fragmentSource(bool detail) const
     s += std::string("#define DETAIL ") + (detail ? "1" : "0") + "\n";
     s += std::string("#define ORIENTATION ") + (mOrientation ? "1" : "0") + "\n";
     s += "const float exponent = " + ShadingCommon::glslFloat(mExponent) + ";\n";
-    return s + ShadingCommon::normalFunction() + kFragment;
+    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+           kFragment;
 }
 
 bool XToonStyle::init(StyleContext& ctx, std::string& error)
