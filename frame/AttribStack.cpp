@@ -47,6 +47,7 @@ void AttribStack::pop()
         a.blend = saved.blend;
         a.alphaTest = saved.alphaTest;
         a.colorMaskAll = saved.colorMaskAll;
+        a.colorMaskNone = saved.colorMaskNone;
     }
     if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
     if (mask & GL_POLYGON_BIT) {

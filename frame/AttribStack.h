@@ -20,6 +20,7 @@ struct AttribState {
     bool blend = false, alphaTest = false, stencilTest = false;
     bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
     bool fillFront = true, fillBack = true, colorMaskAll = true, depthMask = true;
+    bool colorMaskNone = false; // no colour channel written: a depth-only pass
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;

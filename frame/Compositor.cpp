@@ -560,7 +560,7 @@ void Compositor::buildScene()
         b.modelview = t.modelview;
         b.materialId = t.materialId;
         // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render).
-        b.pass = t.translucent ? 1 : t.alphaFunc != GL_ALWAYS ? 2 : 0;
+        b.pass = t.depthOnly ? 3 : t.translucent ? 1 : t.alphaFunc != GL_ALWAYS ? 2 : 0;
         b.vertices.swap(t.vertices);
         b.contentHash = t.contentHash != 0 ? t.contentHash : reconstruct::hashBatch(b);
     }
@@ -592,6 +592,7 @@ void Compositor::buildScene()
         s.depthWrite = t.depthWrite;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
+        s.depthOnly = t.depthOnly;
         s.fog = {t.fogMode, t.fogStart, t.fogEnd, t.fogDensity, t.fogColour};
         textureRuns(o, s);
         s.id = uint32_t(mScene.objects.size() + 1);

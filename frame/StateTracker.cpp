@@ -462,7 +462,8 @@ const char* StateTracker::unstylableState() const
     }
     if (a.stencilTest) return "the stencil test";
     if (!a.fillFront || !a.fillBack) return "glPolygonMode lines or points";
-    if (!a.colorMaskAll) return "a colour mask";
+    // A depth-only pass (no colour channel) is held: the styles supply its depth.
+    if (!a.colorMaskAll && !a.colorMaskNone) return "a partial colour mask";
     // The styles run inside one more glPushAttrib/glPushClientAttrib: a full stack would
     // leave the held scene undrawn.
     if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
@@ -846,6 +847,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     // The styles test their alpha (the program's, its texture modulating) as it would.
     batch.alphaFunc = a.alphaTest ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
+    batch.depthOnly = a.colorMaskNone;
     batch.fogMode = a.fog ? a.fogMode : 0;
     batch.fogStart = a.fogStart;
     batch.fogEnd = a.fogEnd;

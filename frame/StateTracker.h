@@ -44,6 +44,7 @@ struct TrackedBatch {
     bool depthWrite = true;
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
+    bool depthOnly = false; // drawn with no colour channel: it only supplies depth
     GLenum fogMode = 0; // GL_LINEAR, GL_EXP, GL_EXP2; 0 when fog is off
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
     glm::vec3 fogColour{0.0f};
@@ -169,7 +170,11 @@ public:
     // The hue of the enabled lights' diffuse colours, scaled so its brightest channel is 1.
     glm::vec3 lightTint() const;
     void polygonMode(GLenum face, GLenum mode);
-    void colorMask(bool r, bool g, bool b, bool a) { mAttrib.colorMaskAll = r && g && b && a; }
+    void colorMask(bool r, bool g, bool b, bool a)
+    {
+        mAttrib.colorMaskAll = r && g && b && a;
+        mAttrib.colorMaskNone = !r && !g && !b;
+    }
     void pushAttrib(GLbitfield mask) { mAttribs.push(mask); }
     void popAttrib() { mAttribs.pop(); }
     void pushClientAttrib();

@@ -41,6 +41,9 @@ struct SceneObject {
     // program's would be, so cut-outs keep their shape; outlines leave such objects out.
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
+    // Drawn by the program with no colour channel (a depth pre-pass, an occluder): the chain
+    // writes its depth after the opaque scene and draws no colour for it.
+    bool depthOnly = false;
     // The program's fog at its draw (mode 0: none), applied to the styled colours by the
     // eye distance as GL's fixed pipeline does.
     struct Fog {

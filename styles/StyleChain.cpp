@@ -85,8 +85,13 @@ void StyleChain::render(const Scene& scene)
     mOpaque.objects.clear();
     mTranslucent.objects.clear();
     mCutOut.objects.clear();
+    mDepthOnly.objects.clear();
     for (const SceneObject& o : scene.objects) {
-        if (!mHasShading) {
+        if (o.depthOnly) {
+            // Its colours come from the program's colour pass over the same geometry; drawn
+            // first, its depth would hide that pass's styled surfaces (equal depth).
+            if (mHasShading) mDepthOnly.objects.push_back(o);
+        } else if (!mHasShading) {
             mOpaque.objects.push_back(o);
         } else if (o.translucent) {
             mTranslucent.objects.push_back(o);
@@ -94,7 +99,7 @@ void StyleChain::render(const Scene& scene)
             (o.alphaFunc != GL_ALWAYS ? mCutOut : mOpaque).objects.push_back(o);
         }
     }
-    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mRun}) {
+    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mDepthOnly, &mRun}) {
         part->viewport = scene.viewport;
         part->clearColor = scene.clearColor;
         part->frame = scene.frame;
@@ -123,6 +128,12 @@ void StyleChain::render(const Scene& scene)
             gl.Disable(GL_ALPHA_TEST);
             k = end;
         }
+    }
+    if (!mDepthOnly.objects.empty()) {
+        setBaseline(mDepthOnly, true);
+        gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        mStyles.front()->render(mDepthOnly, mContext);
+        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     for (size_t i = 0; i < mTranslucent.objects.size();) {
         // Runs of objects with the same depth writes.

@@ -32,7 +32,7 @@ private:
     StyleContext mContext;
     std::vector<std::unique_ptr<Style>> mStyles;
     bool mHasShading = false;
-    Scene mOpaque, mCutOut, mTranslucent, mRun; // render()'s parts, kept for their storage
+    Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
 };
 
 } // namespace nprgl::styles

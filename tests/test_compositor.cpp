@@ -737,3 +737,24 @@ TEST(Compositor, TheProgramsFogFadesTheStyledScene)
     EXPECT_NEAR(distance("toon", true, 60, 160, 75, 170), distance("none", true, 60, 160, 75, 170),
                 40.0);
 }
+
+// A depth pre-pass (the scene with the colour mask off, then its colours at GL_LEQUAL) is
+// styled as the scene alone: the pre-pass supplies depth only, nothing is drawn twice and the
+// styled surfaces do not fight the pre-pass's depth (which striped them).
+TEST(Compositor, DepthOnlyPassesSupplyDepthAndNothingElse)
+{
+    auto run = [](const std::string& name, bool prepass) {
+        const std::string dir = freshDir(name);
+        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
+                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
+        if (prepass) app.push_back("--depth-prepass");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+edges"}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.err.find(" styled, 0 left as the program drew them"), std::string::npos)
+            << r.err;
+        return dir + "/textured_3.png";
+    };
+    const ImageDiff diff = compareImages(run("prepass_off", false), run("prepass_on", true), 24);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_LT(diff.differingPixels, 320u * 240u / 200u) << "the pre-pass changed the picture";
+}

@@ -5,7 +5,8 @@
 // blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
 // to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
 // its texture's alpha and the alpha test (GL_GREATER 0.5); --fog fades the scene into a pale
-// linear fog between eye distances 6 and 11.
+// linear fog between eye distances 6 and 11; --depth-prepass draws the scene twice, depth
+// only (colour mask off), then colours at equal depth.
 
 #include "Demo.h"
 
@@ -144,7 +145,9 @@ public:
                  "the sphere is added to the scene (GL_ONE, GL_ONE)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
-                {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"}};
+                {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
+                {"depth-prepass", demo::ExtraOption::Kind::Flag,
+                 "draw the scene's depth first with the colour mask off, then its colours"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
@@ -152,6 +155,7 @@ public:
         sphereMap_ = options.has("sphere-map");
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
+        depthPrepass_ = options.has("depth-prepass");
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -196,6 +200,21 @@ public:
     void draw(int frame) override
     {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (depthPrepass_) {
+            // Depth first, colour off; then the colours on equal depth.
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            drawScene(frame);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glDepthFunc(GL_LEQUAL);
+            drawScene(frame);
+            glDepthFunc(GL_LESS);
+            return;
+        }
+        drawScene(frame);
+    }
+
+    void drawScene(int frame)
+    {
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
         const float lightDirection[] = {-0.5f, 0.8f, 0.7f, 0.0f};
@@ -282,6 +301,7 @@ private:
     bool sphereMap_ = false;
     bool translucent_ = false;
     bool additive_ = false;
+    bool depthPrepass_ = false;
     GLuint cutoutTexture_ = 0;
     static constexpr uint8_t white_[3] = {235, 235, 235};
 };
