@@ -50,7 +50,10 @@ void AttribStack::pop()
         a.colorMaskNone = saved.colorMaskNone;
     }
     if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
+    if (mask & (GL_POLYGON_BIT | GL_ENABLE_BIT)) a.polygonOffsetFill = saved.polygonOffsetFill;
     if (mask & GL_POLYGON_BIT) {
+        a.offsetFactor = saved.offsetFactor;
+        a.offsetUnits = saved.offsetUnits;
         a.fillFront = saved.fillFront;
         a.fillBack = saved.fillBack;
     }

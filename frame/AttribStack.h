@@ -24,6 +24,8 @@ struct AttribState {
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
+    bool polygonOffsetFill = false;
+    float offsetFactor = 0.0f, offsetUnits = 0.0f;
     bool fog = false;
     GLenum fogMode = GL_EXP;
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;

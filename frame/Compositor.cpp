@@ -560,7 +560,12 @@ void Compositor::buildScene()
         b.modelview = t.modelview;
         b.materialId = t.materialId;
         // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render).
-        b.pass = t.depthOnly ? 3 : t.translucent ? 1 : t.alphaFunc != GL_ALWAYS ? 2 : 0;
+        const bool offset = t.offsetFactor != 0.0f || t.offsetUnits != 0.0f;
+        b.pass = t.depthOnly       ? 3
+                 : t.translucent   ? 1
+                 : t.alphaFunc != GL_ALWAYS ? 2
+                 : offset          ? 4
+                                   : 0;
         b.vertices.swap(t.vertices);
         b.contentHash = t.contentHash != 0 ? t.contentHash : reconstruct::hashBatch(b);
     }
@@ -593,6 +598,8 @@ void Compositor::buildScene()
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
         s.depthOnly = t.depthOnly;
+        s.offsetFactor = t.offsetFactor;
+        s.offsetUnits = t.offsetUnits;
         s.fog = {t.fogMode, t.fogStart, t.fogEnd, t.fogDensity, t.fogColour};
         textureRuns(o, s);
         s.id = uint32_t(mScene.objects.size() + 1);

@@ -218,6 +218,7 @@ void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
 }
 void APIENTRY tDepthMask(GLboolean flag) { T().depthMask(flag == GL_TRUE); }
 void APIENTRY tAlphaFunc(GLenum func, GLfloat ref) { T().alphaFunc(func, ref); }
+void APIENTRY tPolygonOffset(GLfloat factor, GLfloat units) { T().polygonOffset(factor, units); }
 void APIENTRY tFogf(GLenum pname, GLfloat v) { T().fog(pname, &v, 1); }
 void APIENTRY tFogi(GLenum pname, GLint v)
 {
@@ -361,6 +362,7 @@ StateTracker::StateTracker()
     d.glBlendFuncSeparate = tBlendFuncSeparate;
     d.glDepthMask = tDepthMask;
     d.glAlphaFunc = tAlphaFunc;
+    d.glPolygonOffset = tPolygonOffset;
     d.glFogf = tFogf;
     d.glFogi = tFogi;
     d.glFogfv = tFogfv;
@@ -848,6 +850,9 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.alphaFunc = a.alphaTest ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
     batch.depthOnly = a.colorMaskNone;
+    // Decals: the styles pull the surface towards the eye by the program's offset.
+    batch.offsetFactor = a.polygonOffsetFill ? a.offsetFactor : 0.0f;
+    batch.offsetUnits = a.polygonOffsetFill ? a.offsetUnits : 0.0f;
     batch.fogMode = a.fog ? a.fogMode : 0;
     batch.fogStart = a.fogStart;
     batch.fogEnd = a.fogEnd;
@@ -894,6 +899,7 @@ void StateTracker::setEnabled(GLenum cap, bool on)
         break;
     case GL_BLEND: a.blend = on; break;
     case GL_FOG: a.fog = on; break;
+    case GL_POLYGON_OFFSET_FILL: a.polygonOffsetFill = on; break;
     case GL_ALPHA_TEST: a.alphaTest = on; break;
     case GL_STENCIL_TEST: a.stencilTest = on; break;
     case GL_LIGHT0:

@@ -45,6 +45,7 @@ struct TrackedBatch {
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
     bool depthOnly = false; // drawn with no colour channel: it only supplies depth
+    float offsetFactor = 0.0f, offsetUnits = 0.0f; // GL_POLYGON_OFFSET_FILL's, 0 when off
     GLenum fogMode = 0; // GL_LINEAR, GL_EXP, GL_EXP2; 0 when fog is off
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
     glm::vec3 fogColour{0.0f};
@@ -162,6 +163,11 @@ public:
     void blendFunc(GLenum src, GLenum dst);
     void depthMask(bool on);
     void alphaFunc(GLenum func, float ref);
+    void polygonOffset(float factor, float units)
+    {
+        mAttrib.offsetFactor = factor;
+        mAttrib.offsetUnits = units;
+    }
     void fog(GLenum pname, const float* v, size_t count);
     // Blending on with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.
     bool translucent() const;

@@ -44,6 +44,13 @@ struct SceneObject {
     // Drawn by the program with no colour channel (a depth pre-pass, an occluder): the chain
     // writes its depth after the opaque scene and draws no colour for it.
     bool depthOnly = false;
+    // The program's polygon offset (decals on a surface): applied in the shading pass;
+    // outline styles leave such objects out (their edges would fight the surface's).
+    float offsetFactor = 0.0f, offsetUnits = 0.0f;
+    bool special() const
+    {
+        return alphaFunc != GL_ALWAYS || offsetFactor != 0.0f || offsetUnits != 0.0f;
+    }
     // The program's fog at its draw (mode 0: none), applied to the styled colours by the
     // eye distance as GL's fixed pipeline does.
     struct Fog {

@@ -80,8 +80,9 @@ void StyleChain::render(const Scene& scene)
     // The opaque scene goes through the whole chain; the translucent objects then through the
     // shading style alone, in the program's order, blended over everything (outlines and the
     // page included), as the program blends them over its own picture.
-    // Alpha-tested objects are shaded with the program's alpha test and left out of the
-    // styles after the shading (their edges are not their cut-outs' edges).
+    // Alpha-tested objects and decals are shaded with the program's alpha test and polygon
+    // offset and left out of the styles after the shading (their edges are not their
+    // cut-outs' edges; a decal's would fight its surface's).
     mOpaque.objects.clear();
     mTranslucent.objects.clear();
     mCutOut.objects.clear();
@@ -96,7 +97,7 @@ void StyleChain::render(const Scene& scene)
         } else if (o.translucent) {
             mTranslucent.objects.push_back(o);
         } else {
-            (o.alphaFunc != GL_ALWAYS ? mCutOut : mOpaque).objects.push_back(o);
+            (o.special() ? mCutOut : mOpaque).objects.push_back(o);
         }
     }
     for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mDepthOnly, &mRun}) {
@@ -115,17 +116,25 @@ void StyleChain::render(const Scene& scene)
         for (size_t k = 0; k < mCutOut.objects.size();) {
             size_t end = k + 1;
             const SceneObject& first = mCutOut.objects[k];
-            while (end < mCutOut.objects.size() &&
-                   mCutOut.objects[end].alphaFunc == first.alphaFunc &&
-                   mCutOut.objects[end].alphaRef == first.alphaRef)
-                ++end;
+            auto same = [&first](const SceneObject& o) {
+                return o.alphaFunc == first.alphaFunc && o.alphaRef == first.alphaRef &&
+                       o.offsetFactor == first.offsetFactor && o.offsetUnits == first.offsetUnits;
+            };
+            while (end < mCutOut.objects.size() && same(mCutOut.objects[end])) ++end;
             mRun.objects.assign(mCutOut.objects.begin() + long(k),
                                 mCutOut.objects.begin() + long(end));
             setBaseline(mRun, true);
-            gl.Enable(GL_ALPHA_TEST);
-            gl.AlphaFunc(first.alphaFunc, first.alphaRef);
+            if (first.alphaFunc != GL_ALWAYS) {
+                gl.Enable(GL_ALPHA_TEST);
+                gl.AlphaFunc(first.alphaFunc, first.alphaRef);
+            }
+            if (first.offsetFactor != 0.0f || first.offsetUnits != 0.0f) {
+                gl.Enable(GL_POLYGON_OFFSET_FILL);
+                gl.PolygonOffset(first.offsetFactor, first.offsetUnits);
+            }
             mStyles[i]->render(mRun, mContext);
             gl.Disable(GL_ALPHA_TEST);
+            gl.Disable(GL_POLYGON_OFFSET_FILL);
             k = end;
         }
     }

@@ -758,3 +758,31 @@ TEST(Compositor, DepthOnlyPassesSupplyDepthAndNothingElse)
     ASSERT_TRUE(diff.comparable) << diff.error;
     EXPECT_LT(diff.differingPixels, 320u * 240u / 200u) << "the pre-pass changed the picture";
 }
+
+// A decal: a yellow square in the floor's plane, kept in front of it by glPolygonOffset. The
+// styled decal is whole, as it is natively, not striped by the floor fighting it.
+TEST(Compositor, DecalsStayOnTheirSurface)
+{
+    auto yellowShare = [](const std::string& name, const std::string& style) {
+        const std::string dir = freshDir(name);
+        ProcessResult r = runProcess(
+            under({nprglCommand(), "--style", style},
+                  {demo("textured"), "--decal", "--offscreen", "--size", "320x240", "--frames",
+                   "3", "--save-frames", "3", "--save-dir", dir}));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+        int yellow = 0, all = 0;
+        for (int y = 198; y < 225 && !image.rgba.empty(); ++y) {
+            for (int x = 142; x < 182; ++x) {
+                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                yellow += p[0] > 150 && p[1] > 110 && p[2] < 90;
+                ++all;
+            }
+        }
+        return float(yellow) / float(std::max(all, 1));
+    };
+    EXPECT_GT(yellowShare("decal_native", "none"), 0.95f) << "the decal is not where we look";
+    EXPECT_GT(yellowShare("decal_toon", "toon+edges"), 0.95f) << "the floor fights the decal";
+}

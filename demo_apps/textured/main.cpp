@@ -6,7 +6,8 @@
 // to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
 // its texture's alpha and the alpha test (GL_GREATER 0.5); --fog fades the scene into a pale
 // linear fog between eye distances 6 and 11; --depth-prepass draws the scene twice, depth
-// only (colour mask off), then colours at equal depth.
+// only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
+// floor with glPolygonOffset.
 
 #include "Demo.h"
 
@@ -147,7 +148,9 @@ public:
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
                 {"depth-prepass", demo::ExtraOption::Kind::Flag,
-                 "draw the scene's depth first with the colour mask off, then its colours"}};
+                 "draw the scene's depth first with the colour mask off, then its colours"},
+                {"decal", demo::ExtraOption::Kind::Flag,
+                 "a yellow square on the floor, coplanar, drawn with glPolygonOffset"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
@@ -156,6 +159,7 @@ public:
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
         depthPrepass_ = options.has("depth-prepass");
+        decal_ = options.has("decal");
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -236,6 +240,24 @@ public:
         glTexCoord2f(0.0f, 4.0f);
         glVertex3f(-3.0f, -1.0f, -3.0f);
         glEnd();
+        if (decal_) {
+            // In the floor's plane: only the offset keeps it in front of the floor.
+            glDisable(GL_TEXTURE_2D);
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(-1.0f, -2.0f);
+            const float yellow[] = {1.0f, 0.85f, 0.1f, 1.0f};
+            glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, yellow);
+            glBegin(GL_QUADS);
+            glVertex3f(-0.6f, -1.0f, 2.6f);
+            glVertex3f(0.6f, -1.0f, 2.6f);
+            glVertex3f(0.6f, -1.0f, 1.4f);
+            glVertex3f(-0.6f, -1.0f, 1.4f);
+            glEnd();
+            const float white[] = {1.0f, 1.0f, 1.0f, 1.0f};
+            glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, white);
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            glEnable(GL_TEXTURE_2D);
+        }
 
         glBindTexture(GL_TEXTURE_2D, cutoutTexture_ ? cutoutTexture_ : cubeTexture_);
         if (cutoutTexture_) {
@@ -302,6 +324,7 @@ private:
     bool translucent_ = false;
     bool additive_ = false;
     bool depthPrepass_ = false;
+    bool decal_ = false;
     GLuint cutoutTexture_ = 0;
     static constexpr uint8_t white_[3] = {235, 235, 235};
 };
