@@ -57,14 +57,21 @@ int replayCommand(const ReplayCommandOptions& options)
     }
     replay.outDir = options.outDir;
     replay.contextId = options.context;
-    replay.progress = isatty(STDERR_FILENO);
-    std::error_code ec;
-    std::filesystem::create_directories(replay.outDir, ec);
-    if (ec) return fail("cannot create " + replay.outDir + ": " + ec.message());
+    replay.stats = options.stats;
+    // The progress bar would interleave with the per-frame figures.
+    replay.progress = isatty(STDERR_FILENO) && !options.stats;
+    if (replay.outDir.empty() && !options.stats) return fail("-o DIR or --stats is required");
+    if (!replay.outDir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(replay.outDir, ec);
+        if (ec) return fail("cannot create " + replay.outDir + ": " + ec.message());
+    }
     uint64_t written = 0;
     if (!Replayer::run(options.file, replay, error, &written)) return fail(error);
-    std::fprintf(stderr, "nprgl: wrote %llu frames to %s\n",
-                 static_cast<unsigned long long>(written), replay.outDir.c_str());
+    if (!replay.outDir.empty()) {
+        std::fprintf(stderr, "nprgl: wrote %llu frames to %s\n",
+                     static_cast<unsigned long long>(written), replay.outDir.c_str());
+    }
     return 0;
 }
 

@@ -15,6 +15,7 @@ struct ReplayCommandOptions {
     std::string size;
     std::string outDir;
     unsigned context = 0;
+    bool stats = false;
 };
 
 int replayCommand(const ReplayCommandOptions& options);

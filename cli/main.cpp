@@ -22,7 +22,7 @@ Commands:
   record          run PROGRAM and record its GL stream: nprgl record [-o FILE] [--frames A-B]
                   [--] PROGRAM ARGS... (default FILE: <program>.nprgl)
   replay          render a capture headless into PNGs: nprgl replay FILE -o DIR [--style S]
-                  [--set k=v]... [--frames A-B] [--size WxH] [--context N]
+                  [--set k=v]... [--frames A-B] [--size WxH] [--context N] [--stats]
   dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
   info            print a capture's metadata, frames, calls and what was not captured
   export          write a frame's reconstructed meshes: nprgl export FILE --frame N -o out.obj
@@ -71,7 +71,10 @@ int replayMain(int argc, char** argv)
     CLI::App app{"Render a capture headless (OSMesa) into PNGs frame_0000000042.png",
                  "nprgl replay"};
     app.add_option("file", o.file, "the capture")->required();
-    app.add_option("-o,--output", o.outDir, "directory for the PNGs")->required();
+    app.add_option("-o,--output", o.outDir, "directory for the PNGs (none: render only)");
+    app.add_flag("--stats", o.stats,
+                 "print each frame's 3D polygon draws, styled and left by reason (the run's "
+                 "totals are logged at the end)");
     app.add_option("-s,--style", o.style, "style chain");
     app.add_option("--preset", o.preset, "a shipped preset (see nprgl styles) or a preset file");
     app.add_option("--set", o.settings, "style parameter, style.param=value (repeatable)")

@@ -169,18 +169,9 @@ Compositor::Compositor(Context& ctx, Recorder& recorder)
 
 Compositor::~Compositor()
 {
-    uint64_t left = 0;
-    std::string reasons;
-    for (const auto& [why, n] : mLeftDraws) {
-        left += n;
-        reasons += (reasons.empty() ? "" : ", ") + std::string(why) + " " + std::to_string(n);
-    }
-    if (mStyledDraws == 0 && left == 0) return;
-    NPRGL_INFO("context %u: 3D polygon draws: %llu styled, %llu left as the program drew "
-               "them%s%s%s",
-               mContext.serial(), static_cast<unsigned long long>(mStyledDraws),
-               static_cast<unsigned long long>(left), left ? " (" : "", reasons.c_str(),
-               left ? ")" : "");
+    if (mRunCounts.styled() == 0 && mRunCounts.left() == 0) return;
+    NPRGL_INFO("context %u: 3D polygon draws: %s", mContext.serial(),
+               mRunCounts.describe().c_str());
 }
 
 void Compositor::install(GlDispatch& d)
@@ -364,6 +355,12 @@ void Compositor::restyle(const StyleSettings& settings)
                mSettings.chainName().c_str());
 }
 
+void Compositor::endFrameCounts()
+{
+    mLastFrameCounts = mFrameCounts;
+    mFrameCounts.clear();
+}
+
 void Compositor::setEnabled(bool enabled)
 {
     if (enabled == mEnabled) return;
@@ -405,13 +402,8 @@ void Compositor::noteUnstyled(bool polygonal)
     if (!why) return;
     // The coverage style paints it red, unless the attribute stack has no room to do so.
     mLeftNow = std::strcmp(why, "a full attribute stack") != 0;
-    auto seen = std::find_if(mLeftDraws.begin(), mLeftDraws.end(),
-                             [why](const auto& entry) { return entry.first == why; });
-    if (seen != mLeftDraws.end()) {
-        ++seen->second;
-        return;
-    }
-    mLeftDraws.emplace_back(why, 1);
+    mFrameCounts.noteLeft(why);
+    if (!mRunCounts.noteLeft(why)) return;
     NPRGL_INFO("context %u: 3D polygons drawn with %s are left as the program draws them",
                mContext.serial(), why);
 }
@@ -456,7 +448,8 @@ bool Compositor::holdLists(GLsizei n, GLenum type, const void* lists)
 
 void Compositor::noteHeld()
 {
-    ++mStyledDraws;
+    mRunCounts.noteStyled();
+    mFrameCounts.noteStyled();
     GLint framebuffer = 0;
     gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     if (mHeld && framebuffer != mHeldFramebuffer) flush(); // one scene per framebuffer

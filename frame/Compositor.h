@@ -1,5 +1,6 @@
 #pragma once
 
+#include "frame/DrawCounts.h"
 #include "frame/StateTracker.h"
 #include "reconstruct/Reconstructor.h"
 #include "shim/Api.h"
@@ -57,6 +58,10 @@ public:
     // Styling off shows the program's own picture (for comparison); on again restyles it.
     void setEnabled(bool enabled);
     bool enabled() const { return mEnabled; }
+    // At a frame end: the frame's counts become lastFrameCounts(), the next frame's start.
+    void endFrameCounts();
+    const DrawCounts& lastFrameCounts() const { return mLastFrameCounts; }
+    const DrawCounts& runCounts() const { return mRunCounts; }
 
     // Dispatch entry points (through the current context's compositor).
     void begin(GLenum mode);
@@ -125,10 +130,10 @@ private:
     GLint mHeldFramebuffer = 0;
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
-    // 3D polygon draws (a glBegin/glEnd, an array draw, a held glCallList) over the run:
-    // styled, and left as the program draws them by reason (each reason said at its first).
-    uint64_t mStyledDraws = 0;
-    std::vector<std::pair<const char*, uint64_t>> mLeftDraws;
+    // 3D polygon draws (a glBegin/glEnd, an array draw, a held glCallList) over the run and
+    // in this frame: styled, and left as the program draws them by reason (each reason said
+    // at its first).
+    DrawCounts mRunCounts, mFrameCounts, mLastFrameCounts;
 
     std::vector<TrackedBatch> mTracked;
     std::vector<reconstruct::Batch> mBatches;

@@ -3,9 +3,11 @@
 #include "common/Log.h"
 #include "common/PngImage.h"
 #include "frame/CaptureBlobs.h"
+#include "frame/Compositor.h"
 #include "frame/ShadowArrays.h"
 #include "replay/ReplaySink.h"
 #include "shim/Api.h"
+#include "shim/Context.h"
 #include "shim/RealGl.h"
 #include "shim/ThreadState.h"
 #include "stream/CallDecoder.h"
@@ -83,6 +85,12 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         // Through the context's own glFinish: the compositor draws what it holds, as at the
         // end of a live frame.
         tThread.dispatch->glFinish();
+        if (options.stats) {
+            const Compositor* c = tThread.context ? tThread.context->compositor() : nullptr;
+            std::printf("frame %llu: 3D polygon draws: %s\n",
+                        static_cast<unsigned long long>(frame),
+                        c ? c->lastFrameCounts().describe().c_str() : "not styled (style none)");
+        }
         if (options.outDir.empty() ||
             (!options.frames.empty() && !options.frames.contains(frame))) {
             return true;

@@ -129,7 +129,10 @@ void Context::queryCaps()
 
 bool Context::endFrame()
 {
-    if (mCompositor) mCompositor->flush();
+    if (mCompositor) {
+        mCompositor->flush();
+        mCompositor->endFrameCounts();
+    }
     followConfig();
     applyKeys();
     ++mFrame;

@@ -318,3 +318,29 @@ TEST(Replay, ListEndedInsideBeginIsRefused)
               std::string::npos)
         << error;
 }
+
+// `nprgl replay --stats`: each frame's 3D polygon draws, styled and left by reason, on stdout
+// (glxgears: its three gears, one held display list each, every frame), with no PNGs asked.
+TEST(Replay, StatsCountEachFramesStyledAndLeftDraws)
+{
+    const std::string capture = std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/glxgears.nprgl";
+    ProcessResult p = runProcess({binDir() + "/nprgl", "replay", capture, "--stats", "--style",
+                                  "toon", "--frames", "1-3"});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    for (int f = 1; f <= 3; ++f) {
+        EXPECT_NE(p.out.find("frame " + std::to_string(f) +
+                             ": 3D polygon draws: 3 styled, 0 left as the program drew them\n"),
+                  std::string::npos)
+            << p.out;
+    }
+    ProcessResult none = runProcess({binDir() + "/nprgl", "replay", capture, "--stats",
+                                     "--style", "none", "--frames", "1"});
+    ASSERT_EQ(none.exitCode, 0) << none.err;
+    EXPECT_NE(none.out.find("frame 1: 3D polygon draws: not styled (style none)"),
+              std::string::npos)
+        << none.out;
+    ProcessResult neither = runProcess({binDir() + "/nprgl", "replay", capture});
+    EXPECT_NE(neither.exitCode, 0);
+    EXPECT_NE(neither.err.find("-o DIR or --stats is required"), std::string::npos)
+        << neither.err;
+}

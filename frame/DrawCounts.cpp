@@ -1,0 +1,46 @@
+#include "frame/DrawCounts.h"
+
+#include <algorithm>
+
+namespace nprgl {
+
+bool DrawCounts::noteLeft(const char* why)
+{
+    auto seen = std::find_if(mLeft.begin(), mLeft.end(),
+                             [why](const auto& entry) { return entry.first == why; });
+    if (seen != mLeft.end()) {
+        ++seen->second;
+        return false;
+    }
+    mLeft.emplace_back(why, 1);
+    return true;
+}
+
+void DrawCounts::clear()
+{
+    mStyled = 0;
+    for (auto& entry : mLeft) entry.second = 0; // keeps the reasons: no allocation per frame
+}
+
+uint64_t DrawCounts::left() const
+{
+    uint64_t n = 0;
+    for (const auto& entry : mLeft) n += entry.second;
+    return n;
+}
+
+std::string DrawCounts::describe() const
+{
+    std::string reasons;
+    for (const auto& [why, n] : mLeft) {
+        if (n == 0) continue;
+        reasons += (reasons.empty() ? "" : ", ") + std::string(why) + " " + std::to_string(n);
+    }
+    const uint64_t leftDraws = left();
+    std::string s = std::to_string(mStyled) + " styled, " + std::to_string(leftDraws) +
+                    " left as the program drew them";
+    if (leftDraws) s += " (" + reasons + ")";
+    return s;
+}
+
+} // namespace nprgl

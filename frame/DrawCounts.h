@@ -1,0 +1,32 @@
+#pragma once
+
+// DrawCounts: how many 3D polygon draws nprgl styled, and how many it left, by reason.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace nprgl {
+
+// Reasons are the tracker's static strings (StateTracker::unstylableState), compared by
+// address. Counting allocates only the first time a reason is seen.
+class DrawCounts {
+public:
+    void noteStyled() { ++mStyled; }
+    // True the first time this reason is counted.
+    bool noteLeft(const char* why);
+    void clear();
+
+    uint64_t styled() const { return mStyled; }
+    uint64_t left() const;
+    const std::vector<std::pair<const char*, uint64_t>>& leftByReason() const { return mLeft; }
+    // "12 styled, 3 left as the program drew them (blending 3)".
+    std::string describe() const;
+
+private:
+    uint64_t mStyled = 0;
+    std::vector<std::pair<const char*, uint64_t>> mLeft;
+};
+
+} // namespace nprgl
