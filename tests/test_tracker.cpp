@@ -214,26 +214,27 @@ TEST(StateTracker, NothingIsHeldWhileTheAttributeStacksHaveNoRoomForTheStyles)
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
 }
 
-// Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
-// the generation off again gives the plain texture back (a program that sphere-maps one
-// object must not leave every later draw unstyled). Generation on unit 1 is multitexturing.
-TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
-{
-    StateTracker tracker;
-    tracker.setHolding(true);
-    std::string error;
-    auto run = [&](auto&& write) {
+// Feeds a tracker calls written on the spot: the state tests' building blocks.
+struct Feed {
+    StateTracker& tracker;
+    template <typename Write>
+    void run(Write&& write)
+    {
         CallWriter w;
         write(w);
+        std::string error;
         ASSERT_TRUE(tracker.feed(w.data(), w.size(), nullptr, error)) << error;
-    };
-    auto enable = [&](GLenum cap, bool on) {
+    }
+    void enable(GLenum cap, bool on)
+    {
         run([&](CallWriter& w) {
             w.op(on ? op::glEnable : op::glDisable);
             w.put<GLenum>(cap);
         });
-    };
-    auto triangle = [&] {
+    }
+    // One triangle in immediate mode.
+    void triangle()
+    {
         run([](CallWriter& w) {
             w.op(op::glBegin);
             w.put<GLenum>(GL_TRIANGLES);
@@ -243,7 +244,20 @@ TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
             }
             w.op(op::glEnd);
         });
-    };
+    }
+};
+
+// Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
+// the generation off again gives the plain texture back (a program that sphere-maps one
+// object must not leave every later draw unstyled). Generation on unit 1 is multitexturing.
+TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    auto enable = [&](GLenum cap, bool on) { feed.enable(cap, on); };
+    auto triangle = [&] { feed.triangle(); };
     enable(GL_DEPTH_TEST, true);
     enable(GL_TEXTURE_2D, true);
     run([](CallWriter& w) {
@@ -286,18 +300,9 @@ TEST(StateTracker, TheBrightestEnabledLightAndTheLightsColoursReachTheBatch)
 {
     StateTracker tracker;
     tracker.setHolding(true);
-    std::string error;
-    auto run = [&](auto&& write) {
-        CallWriter w;
-        write(w);
-        ASSERT_TRUE(tracker.feed(w.data(), w.size(), nullptr, error)) << error;
-    };
-    auto enable = [&](GLenum cap, bool on) {
-        run([&](CallWriter& w) {
-            w.op(on ? op::glEnable : op::glDisable);
-            w.put<GLenum>(cap);
-        });
-    };
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    auto enable = [&](GLenum cap, bool on) { feed.enable(cap, on); };
     auto lightfv = [&](GLenum light, GLenum pname, std::array<float, 4> v) {
         run([&](CallWriter& w) {
             w.op(op::glLightfv);
@@ -308,17 +313,7 @@ TEST(StateTracker, TheBrightestEnabledLightAndTheLightsColoursReachTheBatch)
             w.endPayload(mark);
         });
     };
-    auto triangle = [&] {
-        run([](CallWriter& w) {
-            w.op(op::glBegin);
-            w.put<GLenum>(GL_TRIANGLES);
-            for (float x : {0.0f, 1.0f, 0.0f}) {
-                w.op(op::glVertex3f);
-                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
-            }
-            w.op(op::glEnd);
-        });
-    };
+    auto triangle = [&] { feed.triangle(); };
     enable(GL_DEPTH_TEST, true);
     enable(GL_LIGHTING, true);
     enable(GL_LIGHT1, true); // light 0 stays off
