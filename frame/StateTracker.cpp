@@ -822,15 +822,14 @@ bool StateTracker::keep(TrackedBatch& batch)
     const AttribState& a = mAttrib;
     // What the program's picture shows: lit surfaces take the material's colour, in the
     // colour of the lights on them (a white light changes nothing).
-    if (a.lighting && !a.colorMaterial) {
-        for (TrackedVertex& v : batch.vertices) v.color = a.materialDiffuse;
-    }
     if (a.lighting) {
-        const glm::vec3 tint = lightTint();
-        if (tint != glm::vec3(1.0f)) {
-            for (TrackedVertex& v : batch.vertices) {
-                v.color = glm::vec4(glm::vec3(v.color) * tint, v.color.a);
-            }
+        // One pass over the vertices: the material's colour (or the vertex's), tinted.
+        const glm::vec4 tint(lightTint(), 1.0f);
+        if (!a.colorMaterial) {
+            const glm::vec4 c = a.materialDiffuse * tint;
+            for (TrackedVertex& v : batch.vertices) v.color = c;
+        } else if (tint != glm::vec4(1.0f)) {
+            for (TrackedVertex& v : batch.vertices) v.color *= tint;
         }
     }
     batch.is3D = a.depthTest || batch.projection[3][3] == 0.0f;
