@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
@@ -694,16 +695,124 @@ TEST_F(Shading, XToonOrientationTintsTheRim)
     EXPECT_TRUE(isMagenta(pixel(image, cx + r - 2, cy))) << "the right rim is not magenta";
 }
 
-// A tone map that cannot be read is said and replaced by the generated one: the same picture.
+// A tone map that cannot be read (missing, or not a PNG) is said and replaced by the
+// generated one: the same picture.
 TEST_F(Shading, XToonFallsBackToTheGeneratedMap)
 {
     const PngImage generated = render("xtoon", "", "xtoon_default", kWhite);
-    const PngImage fallback =
-        render("xtoon", "xtoon.texture=/nonexistent/tone.png", "xtoon_fallback", kWhite);
-    EXPECT_EQ(generated.rgba, fallback.rgba);
     std::set<Rgb> colours;
     forSphere(generated, [&](const Rgb& c, float) { colours.insert(c); });
     EXPECT_GT(distinct(colours), 2u) << "nothing drawn";
+    const std::string garbage = freshDir("xtoon_garbage") + "/tone.png";
+    {
+        std::ofstream out(garbage);
+        out << "not a PNG at all";
+    }
+    for (const std::string& path : {std::string("/nonexistent/tone.png"), garbage}) {
+        testing::internal::CaptureStderr();
+        const PngImage fallback = render("xtoon", "xtoon.texture=" + path, "xtoon_fallback",
+                                         kWhite);
+        const std::string log = testing::internal::GetCapturedStderr();
+        EXPECT_NE(log.find("nprgl"), std::string::npos) << log;
+        EXPECT_NE(log.find(path), std::string::npos) << log;
+        EXPECT_EQ(generated.rgba, fallback.rgba) << path;
+    }
+}
+
+// r widens the rims: more of the sphere reaches the map's lower half with r = 8 than with
+// r = 1 (v = 1 - |n.v|^r grows with r wherever |n.v| < 1).
+TEST_F(Shading, XToonRimWidensWithR)
+{
+    const std::string map = toneMapPng("rims_r", [](float, float v) {
+        return v < 0.5f ? Rgb{40, 200, 60} : Rgb{210, 40, 200};
+    });
+    auto rim = [&](const std::string& r) {
+        const PngImage image = render("xtoon", "xtoon.mode=orientation,xtoon.r=" + r +
+                                                   ",xtoon.texture=" + map,
+                                      "xtoon_rims_r" + r, kWhite);
+        int magenta = 0;
+        forSphere(image, [&](const Rgb& c, float) { magenta += c.r > c.g + 100; });
+        return magenta;
+    };
+    const int thin = rim("1"), wide = rim("8");
+    EXPECT_GT(thin, 100) << "no rim at r = 1";
+    EXPECT_GT(wide, 2 * thin) << "the rim did not widen with r";
+}
+
+// The generated map has `bands` cel bands: in full detail (v about 0) the sphere shows that
+// many flat tones, each over a good number of pixels.
+TEST_F(Shading, XToonGeneratedMapHasTheBandsAskedFor)
+{
+    auto plateaus = [&](int bands) {
+        const PngImage image = render(
+            "xtoon", "xtoon.near=0.1,xtoon.far=10000,xtoon.bands=" + std::to_string(bands),
+            "xtoon_bands" + std::to_string(bands), kWhite);
+        std::map<int, int> counts;
+        forSphere(image, [&](const Rgb& c, float) { ++counts[c.g]; });
+        int n = 0;
+        for (const auto& [level, count] : counts) n += count >= 60;
+        return n;
+    };
+    EXPECT_EQ(plateaus(2), 2);
+    EXPECT_EQ(plateaus(3), 3);
+    EXPECT_EQ(plateaus(5), 5);
+}
+
+namespace {
+
+// Luminance spread (max - min) of the pixels within 0.85 of a sphere's projected radius.
+float sphereSpread(const PngImage& image, const glm::mat4& projection, glm::vec3 centre,
+                   float radius)
+{
+    const glm::vec4 clip = projection * glm::vec4(centre, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const glm::vec2 px((ndc.x + 1.0f) * 0.5f * image.width, (1.0f - ndc.y) * 0.5f * image.height);
+    const float r = 0.85f * radius / -centre.z * projection[1][1] * 0.5f * image.height;
+    float lo = 1.0f, hi = 0.0f;
+    int n = 0;
+    for (int y = 0; y < int(image.height); ++y) {
+        for (int x = 0; x < int(image.width); ++x) {
+            if (glm::length(glm::vec2(x + 0.5f, y + 0.5f) - px) > r) continue;
+            lo = std::min(lo, luminance(pixel(image, x, y)));
+            hi = std::max(hi, luminance(pixel(image, x, y)));
+            ++n;
+        }
+    }
+    EXPECT_GT(n, 300);
+    return hi - lo;
+}
+
+} // namespace
+
+// With near and far at 0 the depth axis spans the scene: of two like spheres the near one
+// keeps its bands, the far one is flattened (level of abstraction). Moving only `near` out to
+// the far sphere gives it back its bands, the scene still giving `far`.
+TEST(XToon, DepthAxisSpansTheScene)
+{
+    StyleHarness harness(256, 128);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 projection =
+        glm::perspective(glm::radians(kFov), 2.0f, 1.0f, 40.0f);
+    const glm::vec3 nearCentre(-1.5f, 0.0f, -4.0f), farCentre(4.5f, 0.0f, -12.0f);
+    auto scene = harness.makeScene(
+        {sphereBatch(glm::translate(glm::mat4(1.0f), nearCentre), 1.0f, 48, 24, kWhite, 1),
+         sphereBatch(glm::translate(glm::mat4(1.0f), farCentre), 1.0f, 48, 24, kWhite, 2)},
+        projection, glm::normalize(glm::vec3(-1.0f, 0.4f, 0.3f))); // from the side: all bands
+    ASSERT_EQ(scene.objects.size(), 2u);
+    auto spreads = [&](const std::string& config, const std::string& name) {
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "xtoon", config, image, error)) << error;
+        save(image, name);
+        return std::make_pair(sphereSpread(image, projection, nearCentre, 1.0f),
+                              sphereSpread(image, projection, farCentre, 1.0f));
+    };
+    const auto [nearBands, farBands] = spreads("", "xtoon_scene_depth");
+    EXPECT_GT(nearBands, 0.45f) << "the near sphere lost its bands";
+    EXPECT_LT(farBands, 0.2f) << "the far sphere kept its bands";
+    const auto [nearAgain, farNow] = spreads("xtoon.near=10.5", "xtoon_scene_depth_near");
+    EXPECT_GT(nearAgain, 0.45f);
+    EXPECT_GT(farNow, 0.3f) << "near alone did not move the axis";
 }
 
 // Gooch's pure tones: generated from b and y (blue facing away from the light, yellow facing

@@ -67,12 +67,16 @@ StyleInfo xtoonStyleInfo()
                           {"depth", "orientation"}, 0),
         ParamInfo::text("texture", "PNG tone map (x: L.n from -1 to 1, y from the top: full "
                                    "detail to the most abstract); empty: the generated one"),
-        ParamInfo::number("near", "eye distance of full detail (near and far 0: the scene's "
-                                  "nearest and farthest points)",
+        ParamInfo::number("near", "depth: eye distance of full detail (0: the scene's nearest "
+                                  "point)",
                           0.0, 0.0, 1e6),
-        ParamInfo::number("far", "eye distance of the most abstract tone", 0.0, 0.0, 1e6),
-        ParamInfo::number("r", "orientation: exponent of |n.v| (higher: thinner rims)", 2.0,
-                          0.1, 32.0),
+        ParamInfo::number("far", "depth: eye distance of the most abstract tone (0: the scene's "
+                                 "farthest point)",
+                          0.0, 0.0, 1e6),
+        ParamInfo::number("r", "orientation: exponent of |n.v| (higher: wider rims)", 2.0, 0.1,
+                          32.0),
+        ParamInfo::number("bands", "cel bands of the generated tone map (not of a texture=)", 3,
+                          XToonTexture::kMinBands, XToonTexture::kMaxBands),
         ParamInfo::flag("detail", "the program's own texture modulates the tones", true),
     };
     return info;
@@ -96,6 +100,7 @@ bool XToonStyle::init(StyleContext& ctx, std::string& error)
     mFar = float(ctx.param(kStyle, "far"));
     mExponent = float(ctx.param(kStyle, "r"));
     mDetail = ctx.param(kStyle, "detail") >= 0.5;
+    const int bands = int(std::lround(ctx.param(kStyle, "bands")));
     if (mFar > 0.0f && mFar <= mNear) {
         NPRGL_WARN("xtoon: far (%g) must lie beyond near (%g); using the scene's range",
                    double(mFar), double(mNear));
@@ -108,7 +113,7 @@ bool XToonStyle::init(StyleContext& ctx, std::string& error)
             NPRGL_ERROR("xtoon: cannot use texture=%s (%s); using the generated tone map",
                         path.c_str(), why.c_str());
         }
-        mToneImage = XToonTexture::generate();
+        mToneImage = XToonTexture::generate(bands);
     }
     for (int v = 0; v < (mDetail ? 2 : 1); ++v) {
         const std::string fragment = fragmentSource(v == 1);
@@ -145,6 +150,24 @@ glm::vec2 XToonStyle::sceneDepthRange(const Scene& scene) const
     return {nearest, farthest};
 }
 
+glm::vec2 XToonStyle::depthRange(const Scene& scene)
+{
+    if (mNear > 0.0f && mFar > 0.0f) return {mNear, mFar}; // checked in init()
+    if (mOrientation) return {0.0f, 1.0f};                  // unused
+    // An end left at 0 follows the scene, so one configured end can meet the scene's other
+    // on the wrong side (near beyond everything drawn, far before it).
+    const glm::vec2 range = sceneDepthRange(scene);
+    const glm::vec2 configured(mNear > 0.0f ? mNear : range.x, mFar > 0.0f ? mFar : range.y);
+    if (configured.y > configured.x) return configured;
+    if (!mWarnedRange) {
+        NPRGL_WARN("xtoon: near %g and far %g (the scene's where 0) are out of order; using "
+                   "the scene's range %g to %g",
+                   double(configured.x), double(configured.y), double(range.x), double(range.y));
+        mWarnedRange = true;
+    }
+    return range;
+}
+
 void XToonStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
@@ -156,7 +179,7 @@ void XToonStyle::render(const Scene& scene, StyleContext& ctx)
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         gl.ActiveTexture(GL_TEXTURE0);
     }
-    const glm::vec2 range = mFar > mNear ? glm::vec2(mNear, mFar) : sceneDepthRange(scene);
+    const glm::vec2 range = depthRange(scene);
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     gl.ActiveTexture(GL_TEXTURE1);
     gl.BindTexture(GL_TEXTURE_2D, mToneMap.id());

@@ -30,12 +30,15 @@ private:
     std::string fragmentSource(bool detail) const;
     // The scene's eye distances: the near and far of the depth axis when not configured.
     glm::vec2 sceneDepthRange(const Scene& scene) const;
+    // The depth axis' ends: near and far, each the scene's where not configured.
+    glm::vec2 depthRange(const Scene& scene);
 
     Variant mVariants[2]; // [0] untextured objects, [1] with the program's texture
     GlTexture mToneMap;
     TextureImage mToneImage;
     bool mOrientation = false;
     bool mDetail = true;
+    bool mWarnedRange = false; // once per chain, not per frame
     float mNear = 0.0f, mFar = 0.0f, mExponent = 2.0f;
 };
 
