@@ -395,11 +395,14 @@ void Compositor::tintEnd()
 
 void Compositor::noteUnstyled(bool polygonal)
 {
+    if (polygonal) noteLeft(mTracker.unstylableState());
+}
+
+void Compositor::noteLeft(const char* why)
+{
     // Say once per reason why 3D polygons are left as the program draws them: the picture
     // is then partly the program's own, and the user should know why.
-    if (!polygonal || !mTracker.is3D()) return;
-    const char* why = mTracker.unstylableState();
-    if (!why) return;
+    if (!why || !mTracker.is3D()) return;
     // The coverage style paints it red, unless the attribute stack has no room to do so.
     mLeftNow = std::strcmp(why, "a full attribute stack") != 0;
     mFrameCounts.noteLeft(why);
@@ -426,7 +429,7 @@ bool Compositor::holdList(GLuint list)
     if (!ready()) return false;
     syncStream();
     if (!mTracker.wouldHoldList(list)) {
-        noteUnstyled(true);
+        noteLeft(mTracker.listUnstylable(list));
         if (mHeld) flush();
         return false;
     }

@@ -91,6 +91,7 @@ private:
     bool startChain(bool restart, std::string& error);
     void noteHeld();
     void noteUnstyled(bool polygonal);
+    void noteLeft(const char* why);
     void buildScene();
     // The object's texture per batch as runs of faces (SceneObject::textureRuns).
     void textureRuns(const reconstruct::FrameObject& o, styles::SceneObject& s) const;

@@ -22,6 +22,18 @@ void DrawCounts::clear()
     for (auto& entry : mLeft) entry.second = 0; // keeps the reasons: no allocation per frame
 }
 
+DrawCounts DrawCounts::since(const DrawCounts& earlier) const
+{
+    DrawCounts d = *this;
+    d.mStyled -= std::min(earlier.mStyled, mStyled);
+    for (auto& [why, n] : d.mLeft) {
+        for (const auto& [was, m] : earlier.mLeft) {
+            if (was == why) n -= std::min(m, n);
+        }
+    }
+    return d;
+}
+
 uint64_t DrawCounts::left() const
 {
     uint64_t n = 0;

@@ -17,6 +17,8 @@ public:
     // True the first time this reason is counted.
     bool noteLeft(const char* why);
     void clear();
+    // What was counted after `earlier` (a copy of these counts taken then).
+    DrawCounts since(const DrawCounts& earlier) const;
 
     uint64_t styled() const { return mStyled; }
     uint64_t left() const;

@@ -501,6 +501,16 @@ bool StateTracker::wouldHoldList(GLuint list) const
     return wouldHold(GL_TRIANGLES) && listHoldable(list, anyBatch) && anyBatch;
 }
 
+const char* StateTracker::listUnstylable(GLuint list) const
+{
+    if (const char* why = unstylableState()) return why;
+    bool anyBatch = false;
+    if (!listHoldable(list, anyBatch)) {
+        return "display lists that also draw lines, points, bitmaps or pixels";
+    }
+    return nullptr; // holdable, or no polygons at all (nothing to count)
+}
+
 bool StateTracker::listHoldable(GLuint list, bool& anyBatch) const
 {
     // Breadth-first over the lists it calls; cycles and depth bounded like the driver's.
@@ -643,6 +653,31 @@ bool StateTracker::isVertexCall(uint16_t opcode) const
     }
 }
 
+bool StateTracker::runsWhileCompiling(uint16_t opcode)
+{
+    // GL runs these at once even inside glNewList, never compiling them (client state,
+    // buffer objects, list and name management; OpenGL 2.1 section 5.4): a list that sets
+    // up its own vertex arrays still draws from them while it compiles.
+    static const std::vector<bool> immediate = [] {
+        static const char* const kNames[] = {
+            "glEnableClientState", "glDisableClientState", "glVertexPointer",
+            "glNormalPointer",     "glColorPointer",       "glTexCoordPointer",
+            "glIndexPointer",      "glEdgeFlagPointer",    "glInterleavedArrays",
+            "glClientActiveTexture", "glPushClientAttrib", "glPopClientAttrib",
+            "glPixelStorei",       "glPixelStoref",        "glBindBuffer",
+            "glBufferData",        "glBufferSubData",      "glGenBuffers",
+            "glDeleteBuffers",     "glGenLists",           "glDeleteLists",
+            "glSecondaryColorPointer", "glFogCoordPointer", "glVertexAttribPointer",
+            "glEnableVertexAttribArray", "glDisableVertexAttribArray"};
+        std::vector<bool> v(op::kCount);
+        for (uint16_t i = 0; i < op::kCount; ++i) {
+            for (const char* name : kNames) v[i] = v[i] || std::strcmp(kOpcodeNames[i], name) == 0;
+        }
+        return v;
+    }();
+    return opcode < op::kCount && immediate[opcode];
+}
+
 bool StateTracker::runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error)
 {
     CallReader r(data, size, mBlobs, mOpcodes);
@@ -653,7 +688,8 @@ bool StateTracker::runCalls(const uint8_t* data, size_t size, bool topLevel, std
         // While a list compiles (GL_COMPILE), state calls are kept for glCallList and not
         // run; geometry is run so that its batches are captured into the list.
         const bool listControl = opcode == op::glNewList || opcode == op::glEndList;
-        const bool keep = mCompiling && !listControl && !isVertexCall(opcode);
+        const bool keep = mCompiling && !listControl && !isVertexCall(opcode) &&
+                          !runsWhileCompiling(opcode);
         const bool skip = keep && !mCompileAndExecute;
         mSkipping = skip; // decoded (for its bytes and checks) but not followed
         const bool ok = decodeCall(r, opcode, *this);

@@ -82,6 +82,9 @@ public:
     bool wouldHold(GLenum mode) const;
     // Would glCallList(list) issued now be held back as a whole? Its draws are all polygonal
     // (no bitmaps, pixels, lines or points, also in the lists it calls).
+    // Why a list's polygons would be left as the program draws them (nullptr: they would
+    // not, or it draws none).
+    const char* listUnstylable(GLuint list) const;
     bool wouldHoldList(GLuint list) const;
     // glCallLists is held as a whole when every list it calls would be (text drawn from
     // bitmap-font lists never is).
@@ -226,6 +229,7 @@ private:
     bool multitexturedArrays() const; // texcoord arrays on units other than 0
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
     bool isVertexCall(uint16_t opcode) const;
+    static bool runsWhileCompiling(uint16_t opcode);
     void emit(TrackedBatch&& batch);
     bool keep(TrackedBatch& batch);
     std::vector<TrackedVertex> takeVertices();

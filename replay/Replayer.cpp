@@ -80,16 +80,21 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
     size_t done = 0;
     ShadowArrays arrays;
     std::string frameError;
+    DrawCounts statsBefore;
     auto frameEnd = [&](uint64_t frame) {
         // The program's frame is complete; OSMesa renders into our buffer.
         // Through the context's own glFinish: the compositor draws what it holds, as at the
         // end of a live frame.
         tThread.dispatch->glFinish();
         if (options.stats) {
+            // The run's counts since the last recorded frame: a program's own glFinish also
+            // ends a frame on OSMesa, so a recorded frame may be several of the context's.
             const Compositor* c = tThread.context ? tThread.context->compositor() : nullptr;
             std::printf("frame %llu: 3D polygon draws: %s\n",
                         static_cast<unsigned long long>(frame),
-                        c ? c->lastFrameCounts().describe().c_str() : "not styled (style none)");
+                        c ? c->runCounts().since(statsBefore).describe().c_str()
+                          : "not styled (style none)");
+            if (c) statsBefore = c->runCounts();
         }
         if (options.outDir.empty() ||
             (!options.frames.empty() && !options.frames.contains(frame))) {

@@ -556,7 +556,10 @@ TEST(Compositor, EachFaceOfAnObjectKeepsItsOwnTexture)
 
 // Display lists compiled from vertex arrays (glDrawElements/glDrawArrays inside glNewList,
 // replayed with glCallList) are styled with the arrays' own colours and normals, as the list
-// holds them, not with the current colour at the call (which painted them flat grey).
+// holds them, not with the current colour at the call (which painted them flat grey). The
+// demo enables its client arrays inside the list (GL_COMPILE), as xscreensaver's glknots
+// does: GL runs client state at once, so the draws compile from them (the tracker used to
+// keep those calls for later and saw no arrays: nothing styled, nothing counted).
 TEST(Compositor, ListsCompiledFromArraysKeepTheArraysColoursAndNormals)
 {
     const std::string native = freshDir("arraylist_native"), toon = freshDir("arraylist_toon");

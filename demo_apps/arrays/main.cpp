@@ -36,7 +36,8 @@ public:
     {
         return {{"vbo", demo::ExtraOption::Kind::Flag, "draw from buffer objects"},
                 {"list", demo::ExtraOption::Kind::Flag,
-                 "compile the first frame's array draws into a display list and call it"}};
+                 "compile the first frame's array draws (and their client state) into a "
+                 "display list and call it"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
@@ -120,7 +121,18 @@ public:
         }
         if (useList_) {
             list_ = glGenLists(1);
-            glNewList(list_, GL_COMPILE_AND_EXECUTE);
+            glDisableClientState(GL_VERTEX_ARRAY);
+            glDisableClientState(GL_NORMAL_ARRAY);
+            glDisableClientState(GL_COLOR_ARRAY);
+            glNewList(list_, GL_COMPILE);
+            // Client state inside the list, as programs do: GL runs it at once (it is never
+            // compiled), so the draws below read these arrays while the list compiles.
+            glEnableClientState(GL_VERTEX_ARRAY);
+            glEnableClientState(GL_NORMAL_ARRAY);
+            glEnableClientState(GL_COLOR_ARRAY);
+            glVertexPointer(3, GL_FLOAT, sizeof(Vertex), base + offsetof(Vertex, position));
+            glNormalPointer(GL_FLOAT, sizeof(Vertex), base + offsetof(Vertex, normal));
+            glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), base + offsetof(Vertex, colour));
         }
         // Back half of the surface as indexed triangles, front half as one strip per row.
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleIndices_.size()),
@@ -131,7 +143,10 @@ public:
                            stripBase + row * stripLength * sizeof(uint16_t));
         }
         glDrawArrays(GL_TRIANGLES, gridVertices, columnVertices);
-        if (useList_) glEndList();
+        if (useList_) {
+            glEndList();
+            glCallList(list_);
+        }
     }
 
     void shutdown() override
