@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 
 namespace nprgl {
@@ -295,10 +296,7 @@ bool Compositor::ready()
 bool Compositor::startStyles()
 {
     mBindFramebuffer = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(realProc("glBindFramebuffer"));
-    mBindVertexArray = reinterpret_cast<PFNGLBINDVERTEXARRAYPROC>(realProc("glBindVertexArray"));
-    mBindRenderbuffer =
-        reinterpret_cast<PFNGLBINDRENDERBUFFERPROC>(realProc("glBindRenderbuffer"));
-    if (!mBindFramebuffer || !mBindVertexArray || !mBindRenderbuffer) {
+    if (!mSaved.resolve()) {
         NPRGL_WARN("context %u: the driver lacks framebuffer objects; passthrough",
                    mContext.serial());
         return false;
@@ -316,13 +314,13 @@ bool Compositor::startStyles()
 bool Compositor::startChain(bool restart, std::string& error)
 {
     const GLenum appError = gRealGl.glGetError();
-    if (!saveState()) {
+    if (!mSaved.save()) {
         error = "the program's state could not be saved";
         return false;
     }
     if (restart) mChain.shutdown();
     const bool ok = !mHasStyles || mChain.init(mSettings, &realProc, error);
-    restoreState();
+    mSaved.restore();
     while (gRealGl.glGetError() != GL_NO_ERROR) {
     }
     if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
@@ -334,7 +332,7 @@ bool Compositor::startChain(bool restart, std::string& error)
     return ok;
 }
 
-void Compositor::restyle(const StyleSettings& settings)
+void Compositor::restyle(const StyleSettings& settings, bool announce)
 {
     flush();
     mSettings = settings;
@@ -351,6 +349,7 @@ void Compositor::restyle(const StyleSettings& settings)
         return;
     }
     mTracker.setHolding(mEnabled && mHasStyles);
+    if (!announce) return;
     NPRGL_INFO("context %u: configuration changed: style now %s", mContext.serial(),
                mSettings.chainName().c_str());
 }
@@ -359,6 +358,7 @@ void Compositor::endFrameCounts()
 {
     mLastFrameCounts = mFrameCounts;
     mFrameCounts.clear();
+    mLastFrameComposeMs = std::exchange(mFrameComposeMs, 0.0);
 }
 
 void Compositor::setEnabled(bool enabled)
@@ -538,9 +538,13 @@ void Compositor::flush()
     }
     mHeld = false;
     mInFlush = true;
+    const auto start = std::chrono::steady_clock::now();
     mTracker.takeBatches(mTracked);
     buildScene();
     if (!mScene.objects.empty()) render();
+    mFrameComposeMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
     mInFlush = false;
 }
 
@@ -631,13 +635,13 @@ void Compositor::textureRuns(const reconstruct::FrameObject& o, styles::SceneObj
 void Compositor::render()
 {
     const GLenum appError = gRealGl.glGetError();
-    if (saveState()) {
+    if (mSaved.save()) {
         GLint current = 0;
         gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &current);
         if (current != mHeldFramebuffer) mBindFramebuffer(GL_DRAW_FRAMEBUFFER, mHeldFramebuffer);
         gRealGl.glGetFloatv(GL_COLOR_CLEAR_VALUE, glm::value_ptr(mScene.clearColor));
         mChain.render(mScene);
-        restoreState();
+        mSaved.restore();
     } else if (!mStackWarned) {
         // The tracker holds nothing while the stacks are full, so only a program that
         // overflowed them (a GL error of its own) gets here.
@@ -656,67 +660,6 @@ void Compositor::render()
         }
     }
     if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
-}
-
-bool Compositor::saveState()
-{
-    const GlDispatch& gl = gRealGl;
-    GLint depth = 0, max = 0, clientDepth = 0, clientMax = 0;
-    gl.glGetIntegerv(GL_ATTRIB_STACK_DEPTH, &depth);
-    gl.glGetIntegerv(GL_MAX_ATTRIB_STACK_DEPTH, &max);
-    gl.glGetIntegerv(GL_CLIENT_ATTRIB_STACK_DEPTH, &clientDepth);
-    gl.glGetIntegerv(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, &clientMax);
-    if (depth >= max || clientDepth >= clientMax) return false;
-    gl.glPushAttrib(GL_ALL_ATTRIB_BITS);
-    gl.glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS);
-    Saved& s = mSaved;
-    gl.glGetIntegerv(GL_CURRENT_PROGRAM, &s.program);
-    gl.glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &s.arrayBuffer);
-    gl.glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &s.vertexArray);
-    gl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &s.drawFramebuffer);
-    gl.glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &s.readFramebuffer);
-    gl.glGetIntegerv(GL_RENDERBUFFER_BINDING, &s.renderbuffer);
-    gl.glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &s.packBuffer);
-    gl.glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &s.unpackBuffer);
-    gl.glGetIntegerv(GL_ACTIVE_TEXTURE, &s.activeTexture);
-    for (int i = 0; i < 4; ++i) {
-        gl.glActiveTexture(GL_TEXTURE0 + i);
-        gl.glGetIntegerv(GL_TEXTURE_BINDING_2D, &s.textures[i]);
-    }
-    gl.glActiveTexture(GL_TEXTURE0);
-    if (s.packBuffer) gl.glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    if (s.unpackBuffer) gl.glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    // The styles upload and read pixels with the default pixel store.
-    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    gl.glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    gl.glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    gl.glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-    gl.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    gl.glPixelStorei(GL_PACK_SKIP_ROWS, 0);
-    gl.glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
-    return true;
-}
-
-void Compositor::restoreState()
-{
-    const GlDispatch& gl = gRealGl;
-    const Saved& s = mSaved;
-    for (int i = 3; i >= 0; --i) {
-        gl.glActiveTexture(GL_TEXTURE0 + i);
-        gl.glBindTexture(GL_TEXTURE_2D, s.textures[i]);
-    }
-    gl.glActiveTexture(s.activeTexture);
-    mBindVertexArray(s.vertexArray);
-    gl.glBindBuffer(GL_ARRAY_BUFFER, s.arrayBuffer);
-    gl.glBindBuffer(GL_PIXEL_PACK_BUFFER, s.packBuffer);
-    gl.glBindBuffer(GL_PIXEL_UNPACK_BUFFER, s.unpackBuffer);
-    mBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.drawFramebuffer);
-    mBindFramebuffer(GL_READ_FRAMEBUFFER, s.readFramebuffer);
-    mBindRenderbuffer(GL_RENDERBUFFER, s.renderbuffer);
-    gl.glUseProgram(s.program);
-    gl.glPopClientAttrib();
-    gl.glPopAttrib();
 }
 
 } // namespace nprgl

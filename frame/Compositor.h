@@ -1,6 +1,7 @@
 #pragma once
 
 #include "frame/DrawCounts.h"
+#include "frame/SavedGlState.h"
 #include "frame/StateTracker.h"
 #include "reconstruct/Reconstructor.h"
 #include "shim/Api.h"
@@ -54,7 +55,9 @@ public:
 
     // At a frame end: from the next frame on, run `settings` (a chain without styles passes
     // every draw through); the chain is rebuilt in this context with one log line.
-    void restyle(const StyleSettings& settings);
+    // `announce`: say so in the log (the overlay's slider drags say it once, when let go).
+    void restyle(const StyleSettings& settings, bool announce = true);
+    const StyleSettings& settings() const { return mSettings; }
     // Styling off shows the program's own picture (for comparison); on again restyles it.
     void setEnabled(bool enabled);
     bool enabled() const { return mEnabled; }
@@ -62,6 +65,14 @@ public:
     void endFrameCounts();
     const DrawCounts& lastFrameCounts() const { return mLastFrameCounts; }
     const DrawCounts& runCounts() const { return mRunCounts; }
+    // The last frame's time in the compositor (reconstruction and styles), in ms.
+    double lastFrameComposeMs() const { return mLastFrameComposeMs; }
+    // A GL error of the program's that nprgl took while drawing its own things (the
+    // overlay): the program's next glGetError answers it.
+    void keepProgramError(GLenum error)
+    {
+        if (error != GL_NO_ERROR) mPendingErrors.push_back(error);
+    }
 
     // Dispatch entry points (through the current context's compositor).
     void begin(GLenum mode);
@@ -96,8 +107,6 @@ private:
     // The object's texture per batch as runs of faces (SceneObject::textureRuns).
     void textureRuns(const reconstruct::FrameObject& o, styles::SceneObject& s) const;
     void render();
-    bool saveState();
-    void restoreState();
 
     Context& mContext;
     Recorder& mRecorder;
@@ -135,6 +144,7 @@ private:
     // in this frame: styled, and left as the program draws them by reason (each reason said
     // at its first).
     DrawCounts mRunCounts, mFrameCounts, mLastFrameCounts;
+    double mFrameComposeMs = 0.0, mLastFrameComposeMs = 0.0;
 
     std::vector<TrackedBatch> mTracked;
     std::vector<reconstruct::Batch> mBatches;
@@ -143,15 +153,8 @@ private:
     styles::Scene mScene;
     uint64_t mFlushes = 0;
 
-    struct Saved {
-        GLint program = 0, arrayBuffer = 0, vertexArray = 0, drawFramebuffer = 0,
-              readFramebuffer = 0, activeTexture = 0, renderbuffer = 0, packBuffer = 0,
-              unpackBuffer = 0;
-        GLint textures[4] = {};
-    } mSaved;
+    SavedGlState mSaved; // the program's state while the chain starts or renders
     PFNGLBINDFRAMEBUFFERPROC mBindFramebuffer = nullptr;
-    PFNGLBINDVERTEXARRAYPROC mBindVertexArray = nullptr;
-    PFNGLBINDRENDERBUFFERPROC mBindRenderbuffer = nullptr;
 };
 
 } // namespace nprgl

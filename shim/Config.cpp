@@ -110,6 +110,7 @@ Config Config::fromEnvironment(bool reloading)
         if (!file.logLevel.empty()) logLevel = file.logLevel;
         for (const auto& [action, key] : file.keys) s.keys[action] = key;
         if (!file.cycle.empty()) s.cycle = file.cycle;
+        if (!file.overlay.empty()) s.overlayOpen = file.overlay == "open";
     }
     if (!s.tried.empty()) {
         std::string read;
@@ -139,6 +140,13 @@ Config Config::fromEnvironment(bool reloading)
     if (!StyleSettings::parse(chain, config, s.style, error)) {
         NPRGL_ERROR("%s; using style none", error.c_str());
         StyleSettings::parse("none", "", s.style, error);
+    }
+    if (const std::string overlay = envOr("NPRGL_OVERLAY", ""); !overlay.empty()) {
+        if (overlay == "open" || overlay == "closed") {
+            s.overlayOpen = overlay == "open";
+        } else {
+            NPRGL_ERROR("NPRGL_OVERLAY: '%s' is not open or closed; ignored", overlay.c_str());
+        }
     }
     std::string shot = envOr("NPRGL_SCREENSHOT", "");
     if (!shot.empty()) parseScreenshot(shot, s);

@@ -6,6 +6,8 @@
 #include "styles/StyleRegistry.h"
 #include "styles/StyleSettings.h"
 
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -84,6 +86,12 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
                 presetChain = chain;
                 presetConfig = config;
             }
+        } else if (key == "overlay") {
+            if (value != "open" && value != "closed") {
+                skip("overlay: '" + value + "' is not open or closed");
+            } else {
+                out.overlay = value;
+            }
         } else if (key == "screenshot_dir") {
             out.screenshotDir = value;
         } else if (key == "log_level") {
@@ -137,6 +145,49 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
     out.config = presetConfig;
     if (!ownConfig.empty()) out.config += (out.config.empty() ? "" : ",") + ownConfig;
     return out;
+}
+
+bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
+                           const std::string& config, std::string& error)
+{
+    // Keep every line that is not the look (comments, keys, screenshot folder...).
+    std::string kept;
+    if (std::ifstream in(path); in) {
+        std::string raw;
+        while (std::getline(in, raw)) {
+            const std::string line(trimBlanks(raw));
+            const size_t eq = line.find('=');
+            const std::string key =
+                eq == std::string::npos ? std::string() : std::string(trimBlanks(
+                                                              std::string_view(line).substr(0, eq)));
+            const bool look = key == "style" || key == "preset" ||
+                              StyleRegistry::instance().findParam(key) != nullptr;
+            if (!look) kept += raw + "\n";
+        }
+    }
+    std::string text = kept + "style=" + chain + "\n";
+    KeyValueList pairs;
+    if (!parseKeyValues(config, ',', pairs, error)) return false;
+    for (const auto& [key, value] : pairs) text += key + "=" + value + "\n";
+
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+    // Written beside and renamed over: a reader (this process's reload) never sees half a file.
+    const std::string temporary = path + ".nprgl-new";
+    {
+        std::ofstream out(temporary, std::ios::trunc);
+        out << text;
+        if (!out.flush()) {
+            error = "cannot write " + temporary;
+            return false;
+        }
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        error = "cannot replace " + path;
+        std::remove(temporary.c_str());
+        return false;
+    }
+    return true;
 }
 
 } // namespace nprgl

@@ -14,6 +14,7 @@ namespace nprgl {
 //   screenshot_dir=DIR  log_level=error|warn|info|debug
 //   toggle_key= cycle_key= screenshot_key= overlay_key= reload_key=  (e.g. Shift_R+F9)
 //   cycle=CHAIN|preset:NAME, ...   (what cycle_key steps through)
+//   overlay=open|closed            (the overlay at start-up)
 // A bad line is reported as file:line and skipped; the other lines apply.
 struct ConfigFile {
     std::string path;
@@ -24,12 +25,19 @@ struct ConfigFile {
     std::string logLevel;
     std::map<std::string, std::string> keys; // "toggle", "cycle", ... -> key combination
     std::vector<std::string> cycle;
+    std::string overlay; // overlay=open|closed: the overlay's state at start-up (empty: closed)
     std::vector<std::string> errors; // "file:line: message", one per skipped line
 
     // Reads the file at `path`; a file that does not exist is not an error (found = false).
     static ConfigFile read(const std::string& path);
     // Parses text; `origin` names it in messages.
     static ConfigFile parse(const std::string& text, const std::string& origin);
+
+    // Replaces the look (style=, preset= and every STYLE.PARAM line) in the file at `path`
+    // with `chain` and `config` ("key=value,..."), keeping its other lines; creates the file
+    // (and its folder) when missing.
+    static bool writeLook(const std::string& path, const std::string& chain,
+                          const std::string& config, std::string& error);
 
     // The actions a key may be bound to, in the order the overlay lists them.
     static const std::vector<std::string>& actions();

@@ -7,6 +7,7 @@
 #include "frame/LiveExport.h"
 #include "frame/Recorder.h"
 #include "shim/ConfigWatcher.h"
+#include "shim/Overlay.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
 #include "shim/ThreadState.h"
@@ -174,7 +175,8 @@ void Context::applyKeys()
     if (actions & Hotkeys::Cycle) cycleStyle();
     if (actions & Hotkeys::Screenshot) startScreenshotPair();
     if (actions & Hotkeys::Overlay) {
-        NPRGL_WARN("context %u: overlay key: this build has no overlay yet", mSerial);
+        if (!mOverlay) makeOverlay();
+        mOverlay->setOpen(!mOverlay->open());
     }
 }
 
@@ -264,6 +266,13 @@ void Context::followConfig()
 
 void Context::writeScreenshot(int width, int height)
 {
+    writeHotkeyScreenshot(width, height);
+    writeFrameScreenshot(width, height);
+}
+
+void Context::writeFrameScreenshot(int width, int height)
+{
+    if (!mConfig.screenshots || !mConfig.screenshotFrames.contains(mFrame)) return;
     char name[64];
     if (mSerial == 1) {
         std::snprintf(name, sizeof name, "_%llu.png", static_cast<unsigned long long>(mFrame));
@@ -271,13 +280,41 @@ void Context::writeScreenshot(int width, int height)
         std::snprintf(name, sizeof name, "_ctx%u_%llu.png", mSerial,
                       static_cast<unsigned long long>(mFrame));
     }
-    if (mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame)) {
-        const std::string path = mConfig.screenshotDir + "/" + mConfig.programName + name;
-        FrameGrabber::writeFrame(mCaps, width, height, path);
+    const std::string path = mConfig.screenshotDir + "/" + mConfig.programName + name;
+    FrameGrabber::writeFrame(mCaps, width, height, path);
+}
+
+void Context::writeHotkeyScreenshot(int width, int height)
+{
+    if (mShotNow.empty()) return;
+    FrameGrabber::writeFrame(mCaps, width, height, mShotNow);
+    mShotNow.clear();
+}
+
+void Context::makeOverlay()
+{
+    const std::vector<std::string> files = Config::filePaths(mConfig.programName);
+    mOverlay = std::make_unique<Overlay>(mConfig.programName,
+                                         files.empty() ? std::string() : files.back());
+}
+
+bool Context::overlayOpen() const
+{
+    return (mOverlay && mOverlay->open()) || (!mOverlayAsked && mConfig.overlayOpen);
+}
+
+void Context::drawOverlay(_XDisplay* display, unsigned long window, int width, int height)
+{
+    if (!mOverlayAsked) {
+        mOverlayAsked = true;
+        if (mConfig.overlayOpen && mCompositor) {
+            makeOverlay();
+            mOverlay->setOpen(true);
+        }
     }
-    if (!mShotNow.empty()) {
-        FrameGrabber::writeFrame(mCaps, width, height, mShotNow);
-        mShotNow.clear();
+    if (mOverlay && mCompositor) {
+        mOverlay->draw(*mCompositor, display, Window(window), width, height,
+                       mCaps.doubleBuffered);
     }
 }
 

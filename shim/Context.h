@@ -11,6 +11,7 @@
 namespace nprgl {
 
 class Compositor;
+class Overlay;
 class Recorder;
 
 enum class WindowSystem { Glx, Egl, OSMesa };
@@ -41,6 +42,13 @@ public:
     // calls writeScreenshot.
     bool endFrame();
     void writeScreenshot(int width, int height);
+    // writeScreenshot's two halves, for a window system with the overlay between them: the
+    // hotkey's picture (without the overlay) and the configured frames' (as shown).
+    void writeHotkeyScreenshot(int width, int height);
+    void writeFrameScreenshot(int width, int height);
+    // Just before the swap, after the screenshots: the overlay, when it is open.
+    bool overlayOpen() const;
+    void drawOverlay(_XDisplay* display, unsigned long window, int width, int height);
     // Before endFrame on a window system with a keyboard: reads the hotkeys' state.
     void pollKeys(_XDisplay* display);
     // The size of the drawable it was last made current with (0 when not known).
@@ -79,6 +87,7 @@ private:
     void applyKeys();
     void cycleStyle();
     void startScreenshotPair();
+    void makeOverlay();
 
     const Config& mConfig; // the process's (Config::process), which outlives every context
     GlDispatch mDispatch;
@@ -100,6 +109,8 @@ private:
     std::string mShotNext;   // its pair, of the next frame, drawn the other way
     bool mShotRestore = true; // styling on or off after the pair
     std::string mCycled;      // the cycle list's entry running now
+    std::unique_ptr<Overlay> mOverlay; // made when first opened
+    bool mOverlayAsked = false;        // overlay=open at start-up was looked at
     bool mInitialized = false;
 };
 

@@ -1,5 +1,6 @@
 #include "shim/Context.h"
 #include "shim/ContextRegistry.h"
+#include "shim/GlxWindows.h"
 #include "shim/ProcAddress.h"
 #include "shim/RealGl.h"
 #include "shim/ThreadState.h"
@@ -30,6 +31,19 @@ void glXDestroyContext(Display* dpy, GLXContext ctx)
 {
     gRealWs.glXDestroyContext(dpy, ctx);
     ContextRegistry::instance().destroy(WindowSystem::Glx, ctx);
+}
+
+GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win, const int* attribs)
+{
+    const GLXWindow made = gRealWs.glXCreateWindow(dpy, config, win, attribs);
+    if (made) GlxWindows::instance().add(made, win);
+    return made;
+}
+
+void glXDestroyWindow(Display* dpy, GLXWindow win)
+{
+    gRealWs.glXDestroyWindow(dpy, win);
+    GlxWindows::instance().remove(win);
 }
 
 namespace {
@@ -69,12 +83,20 @@ void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
     Context* ctx = tThread.context;
     const bool ours = ctx && ctx->windowSystem() == WindowSystem::Glx &&
                       gRealWs.glXGetCurrentDrawable() == drawable;
-    if (ours) ctx->pollKeys(dpy);
-    if (ours && ctx->endFrame()) {
+    if (ours) {
+        ctx->pollKeys(dpy);
+        const bool shots = ctx->endFrame();
+        // A server round trip: only for a screenshot or the overlay.
         unsigned width = 0, height = 0;
-        gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
-        gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
-        ctx->writeScreenshot(int(width), int(height));
+        if (shots || ctx->overlayOpen()) {
+            gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
+            gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
+        }
+        // The hotkey's pair without the overlay; the configured frames as the window shows.
+        if (shots) ctx->writeHotkeyScreenshot(int(width), int(height));
+        ctx->drawOverlay(dpy, GlxWindows::instance().windowOf(drawable), int(width),
+                         int(height));
+        if (shots) ctx->writeFrameScreenshot(int(width), int(height));
     }
     gRealWs.glXSwapBuffers(dpy, drawable);
 }

@@ -28,7 +28,7 @@ GL_MAX_VERSION = (2, 1)
 GLX_HOOKED = {
     "glXMakeCurrent", "glXMakeContextCurrent", "glXCreateContext", "glXCreateNewContext",
     "glXCreateContextAttribsARB", "glXDestroyContext", "glXSwapBuffers", "glXGetProcAddress",
-    "glXGetProcAddressARB",
+    "glXGetProcAddressARB", "glXCreateWindow", "glXDestroyWindow",
 }
 GLX_EXTRA = ["glXCreateContextAttribsARB", "glXGetProcAddressARB"]
 

@@ -100,6 +100,24 @@ double StyleSettings::value(const std::string& style, const std::string& param) 
 
 namespace nprgl {
 
+std::string StyleSettings::configText() const
+{
+    std::map<std::string, std::string> items(mTexts.begin(), mTexts.end());
+    for (const auto& [key, value] : mValues) {
+        const ParamInfo* p = StyleRegistry::instance().findParam(key);
+        if (p && p->kind == ParamKind::Choice) {
+            const size_t i = size_t(value);
+            items[key] = i < p->choices.size() ? p->choices[i] : p->defaultString();
+        } else {
+            char text[32]; // enough for any double in shortest form
+            items[key] = std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+        }
+    }
+    std::string out;
+    for (const auto& [key, value] : items) out += (out.empty() ? "" : ",") + key + "=" + value;
+    return out;
+}
+
 std::string StyleSettings::text(const std::string& style, const std::string& param) const
 {
     const std::string key = style + "." + param;

@@ -29,6 +29,9 @@ public:
     double value(const std::string& style, const std::string& param) const;
     // A text parameter (a file name): the configured one, else the default.
     std::string text(const std::string& style, const std::string& param) const;
+    // The configured values as parse() reads them ("toon.tones=3,paper.texture=a.png"):
+    // numbers in shortest round-trip form, choices by name. Defaults are not listed.
+    std::string configText() const;
 
 private:
     std::vector<const StyleInfo*> mChain;

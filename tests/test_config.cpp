@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <cstdio>
 #include <fstream>
+#include <iterator>
 
 using namespace nprgl;
 using namespace nprgl::test;
@@ -177,13 +179,20 @@ std::string runHotkeys(const std::string& name, const std::vector<std::string>& 
     const std::string dir = freshDir(name);
     env["NPRGL_SCREENSHOT"] = "frames=" + frames + ";dir=" + dir;
     if (!env.count("NPRGL_CONFIG_FILE")) env["NPRGL_CONFIG_FILE"] = "";
-    env["XDG_CONFIG_HOME"] = freshDir(name + "_home");
+    if (!env.count("XDG_CONFIG_HOME")) env["XDG_CONFIG_HOME"] = freshDir(name + "_home");
     std::vector<std::string> program = {hotkeyProbe()};
     program.insert(program.end(), args.begin(), args.end());
     ProcessResult r = runProcess(under(nprgl, program), env);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, "ok\n");
+    std::ofstream(dir + "/stderr.txt") << r.err;
     return dir;
+}
+
+std::string stderrOf(const std::string& dir)
+{
+    std::ifstream in(dir + "/stderr.txt");
+    return {std::istreambuf_iterator<char>(in), {}};
 }
 
 PngImage shot(const std::string& dir, int frame)
@@ -268,4 +277,122 @@ TEST(Hotkeys, TheCycleKeyStepsThroughTheConfiguredStyles)
                                           {"--frames", "6"}, "6");
     EXPECT_EQ(differing(shot(keyed, 4), shot(halftone, 4)), 0);
     EXPECT_EQ(differing(shot(keyed, 6), shot(pencil, 6)), 0);
+}
+
+namespace {
+
+// Pixels that differ inside the rectangle [x0, x1) x [y0, y1).
+int differingIn(const PngImage& a, const PngImage& b, int x0, int y0, int x1, int y1)
+{
+    if (a.width != b.width || a.height != b.height) return -1;
+    int n = 0;
+    for (int y = y0; y < std::min(y1, int(a.height)); ++y) {
+        for (int x = x0; x < std::min(x1, int(a.width)); ++x) {
+            const size_t i = (size_t(y) * a.width + size_t(x)) * 4;
+            int d = 0;
+            for (int c = 0; c < 3; ++c) d += std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]));
+            n += d > 6;
+        }
+    }
+    return n;
+}
+
+struct ItemRect {
+    int x = -1, y = -1, w = 0, h = 0;
+};
+
+// Where the overlay put an item ("overlay: item KEY at X Y W H", logged at debug level on the
+// second frame it is open).
+ItemRect itemAt(const std::string& log, const std::string& key)
+{
+    ItemRect r;
+    const std::string tag = "overlay: item " + key + " at ";
+    const size_t at = log.find(tag);
+    if (at != std::string::npos) {
+        std::sscanf(log.c_str() + at + tag.size(), "%d %d %d %d", &r.x, &r.y, &r.w, &r.h);
+    }
+    return r;
+}
+
+constexpr const char* kOverlaySize = "600";
+
+} // namespace
+
+// The overlay key (Shift_R+F8) held in frame 3 opens the overlay from that frame's end, held
+// again in frame 6 closes it: its pixels are in frames 4 and 5 only, at the top left.
+TEST(Overlay, ItsPixelsAppearOnlyWhileItIsOpen)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon"};
+    const std::string plain =
+        runHotkeys("overlay_plain", nprgl, {"--size", kOverlaySize, "--frames", "7"}, "2,4,5,7");
+    const std::string keyed = runHotkeys(
+        "overlay_keyed", nprgl,
+        {"--size", kOverlaySize, "--frames", "7", "--press", "3", "Shift_R+F8", "--press", "6",
+         "Shift_R+F8"},
+        "2,4,5,7");
+    EXPECT_EQ(differing(shot(keyed, 2), shot(plain, 2)), 0);
+    for (int f : {4, 5}) {
+        // Its window's top left corner (title bar) is drawn; the far corner is the program's.
+        EXPECT_GT(differingIn(shot(keyed, f), shot(plain, f), 8, 8, 200, 40), 4000) << f;
+        EXPECT_EQ(differingIn(shot(keyed, f), shot(plain, f), 400, 400, 600, 600), 0) << f;
+    }
+    EXPECT_EQ(differing(shot(keyed, 7), shot(plain, 7)), 0) << "still drawn when closed";
+    const std::string log = stderrOf(keyed);
+    EXPECT_NE(log.find("nprgl: overlay open"), std::string::npos) << log;
+    EXPECT_NE(log.find("nprgl: overlay closed"), std::string::npos) << log;
+}
+
+// Dragging toon.diffuse_threshold's slider (XTEST pointer and button) restyles the running
+// program; "save" writes the look to the program's file, and the next start runs it.
+TEST(Overlay, ASliderDragRestylesTheProgramAndSaveKeepsIt)
+{
+    // Where the items are: the layout is the same in every run of the same window size.
+    const std::string layout = runHotkeys(
+        "overlay_layout", {nprglCommand(), "--style", "toon", "--log-level", "debug"},
+        {"--size", kOverlaySize, "--frames", "3"}, "3", {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect slider = itemAt(stderrOf(layout), "toon.diffuse_threshold");
+    const ItemRect save = itemAt(stderrOf(layout), "save");
+    ASSERT_GT(slider.w, 0) << stderrOf(layout);
+    ASSERT_GT(save.w, 0) << stderrOf(layout);
+
+    const std::string home = freshDir("overlay_drag_home");
+    const int y = slider.y + slider.h / 2;
+    const std::string dragged = runHotkeys(
+        "overlay_drag", {nprglCommand(), "--style", "toon"},
+        {"--size", kOverlaySize, "--frames", "12",
+         "--pointer", "3", std::to_string(slider.x + 4), std::to_string(y),
+         "--button", "4", "down",
+         "--pointer", "5", std::to_string(slider.x + 120), std::to_string(y),
+         "--button", "6", "up",
+         "--pointer", "7", std::to_string(save.x + save.w / 2),
+         std::to_string(save.y + save.h / 2),
+         "--button", "8", "down", "--button", "9", "up",
+         // Off the overlay, so that no tooltip covers the program's pixels compared below.
+         "--pointer", "10", "590", "590"},
+        "11", {{"NPRGL_OVERLAY", "open"}, {"XDG_CONFIG_HOME", home}});
+    const std::string log = stderrOf(dragged);
+    const size_t said = log.find("overlay: toon.diffuse_threshold=");
+    ASSERT_NE(said, std::string::npos) << log;
+    const double value = std::atof(log.c_str() + said + 32);
+    EXPECT_GT(value, 0.4) << log;
+    EXPECT_LT(value, 1.0) << log;
+
+    std::ifstream file(home + "/nprgl/probe_hotkeys.conf");
+    const std::string saved{std::istreambuf_iterator<char>(file), {}};
+    EXPECT_NE(saved.find("style=toon\n"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("toon.diffuse_threshold="), std::string::npos) << saved;
+
+    // Right of the overlay's window the cube is the program's, drawn with the new value: not
+    // as a run without the drag, but as the next start that reads the saved file.
+    const int right = 8 + 360 + 4;
+    const std::string before = runHotkeys("overlay_before", {nprglCommand(), "--style", "toon"},
+                                          {"--size", kOverlaySize, "--frames", "12"}, "11");
+    const std::string next = runHotkeys("overlay_next", {nprglCommand()},
+                                        {"--size", kOverlaySize, "--frames", "12"}, "11",
+                                        {{"XDG_CONFIG_HOME", home}});
+    EXPECT_GT(differingIn(shot(dragged, 11), shot(before, 11), right, 0, 600, 600), 100);
+    EXPECT_EQ(differingIn(shot(dragged, 11), shot(next, 11), right, 0, 600, 600), 0);
+    EXPECT_NE(stderrOf(next).find("probe_hotkeys: style toon, config toon.diffuse_threshold="),
+              std::string::npos)
+        << stderrOf(next);
 }

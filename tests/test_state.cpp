@@ -134,6 +134,25 @@ TEST_P(StateUnderNprgl, EveryQueryAnswersWhatWasSet)
     }
 }
 
+// The overlay draws just before the swap, after the program's last query of the frame and
+// before its first of the next: every piece of state and every GL error must survive it.
+TEST(StateUnderNprglOverlay, EveryQueryAnswersWhatWasSetWithTheOverlayOpen)
+{
+    ASSERT_TRUE(haveDisplay()) << "no DISPLAY: run the tests through scripts/test.sh";
+    ProcessResult native = runProcess(stateArgs(false));
+    ASSERT_EQ(native.exitCode, 0) << native.err;
+    std::vector<std::string> args = {binDir() + "/nprgl", "--style", "toon+edges", "--"};
+    std::vector<std::string> app = stateArgs(false);
+    args.insert(args.end(), app.begin(), app.end());
+    ProcessResult r = runProcess(args, {{"NPRGL_OVERLAY", "open"},
+                                        {"XDG_CONFIG_HOME", freshDir("overlay_state_home")},
+                                        {"NPRGL_CONFIG_FILE", ""}});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("nprgl: overlay open"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err;
+    EXPECT_EQ(reportedItems(r.out, 5), reportedItems(native.out, 5)) << r.out;
+}
+
 INSTANTIATE_TEST_SUITE_P(Styles, StateUnderNprgl,
                          ::testing::Combine(::testing::ValuesIn(kStyles), ::testing::Bool()),
                          stateCaseName);

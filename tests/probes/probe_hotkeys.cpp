@@ -1,6 +1,8 @@
 // A GLX window drawing the lit, turning cube for a number of frames, pressing key
 // combinations with XTEST at given frames (--press K Shift_R+F9: down at the start of frame K,
-// up at the start of frame K+1), as a user would: the hotkey tests, counted in frames.
+// up at the start of frame K+1), moving the pointer (--pointer K X Y, window pixels) and
+// pressing or letting go of the left button (--button K down|up) at the start of frame K,
+// as a user would: the hotkey and overlay tests, counted in frames.
 #include "tests/probes/ProbeCube.h"
 
 #include <GL/glx.h>
@@ -11,11 +13,11 @@
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
 
-constexpr int kSize = 128;
 
 std::vector<KeyCode> keycodes(Display* dpy, const std::string& combination)
 {
@@ -43,13 +45,24 @@ void setKeys(Display* dpy, const std::vector<KeyCode>& codes, bool down)
 int main(int argc, char** argv)
 {
     int frames = 4;
+    int size = 128;
     std::map<int, std::string> presses;
+    std::map<int, std::pair<int, int>> pointer;
+    std::map<int, bool> buttons;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string option = argv[i];
         if (option == "--frames") {
             frames = std::atoi(argv[i + 1]);
+        } else if (option == "--size") {
+            size = std::atoi(argv[i + 1]);
         } else if (option == "--press" && i + 2 < argc) {
             presses[std::atoi(argv[i + 1])] = argv[i + 2];
+            ++i;
+        } else if (option == "--pointer" && i + 3 < argc) {
+            pointer[std::atoi(argv[i + 1])] = {std::atoi(argv[i + 2]), std::atoi(argv[i + 3])};
+            i += 2;
+        } else if (option == "--button" && i + 2 < argc) {
+            buttons[std::atoi(argv[i + 1])] = std::string(argv[i + 2]) == "down";
             ++i;
         } else {
             std::fprintf(stderr, "probe_hotkeys: unknown option %s\n", argv[i]);
@@ -71,12 +84,13 @@ int main(int argc, char** argv)
     XSetWindowAttributes wa{};
     const Window root = RootWindow(dpy, visual->screen);
     wa.colormap = XCreateColormap(dpy, root, visual->visual, AllocNone);
-    const Window window = XCreateWindow(dpy, root, 0, 0, kSize, kSize, 0, visual->depth,
+    const Window window = XCreateWindow(dpy, root, 0, 0, size, size, 0, visual->depth,
                                         InputOutput, visual->visual, CWColormap, &wa);
     XMapWindow(dpy, window);
     GLXContext context = glXCreateContext(dpy, visual, nullptr, True);
     glXMakeCurrent(dpy, window, context);
-    glViewport(0, 0, kSize, kSize);
+    glViewport(0, 0, size, size);
+    XSync(dpy, False);
     std::vector<KeyCode> held;
     for (int frame = 1; frame <= frames; ++frame) {
         if (!held.empty()) {
@@ -86,6 +100,19 @@ int main(int argc, char** argv)
         if (auto p = presses.find(frame); p != presses.end()) {
             held = keycodes(dpy, p->second);
             setKeys(dpy, held, true);
+        }
+        if (auto p = pointer.find(frame); p != pointer.end()) {
+            // Window pixels to the screen's: there is no window manager to move it, but ask.
+            int x = 0, y = 0;
+            Window child = 0;
+            XTranslateCoordinates(dpy, window, root, p->second.first, p->second.second, &x, &y,
+                                  &child);
+            XTestFakeMotionEvent(dpy, visual->screen, x, y, CurrentTime);
+            XSync(dpy, False);
+        }
+        if (auto b = buttons.find(frame); b != buttons.end()) {
+            XTestFakeButtonEvent(dpy, 1, b->second ? True : False, CurrentTime);
+            XSync(dpy, False);
         }
         nprgl::probes::drawCube(frame);
         glXSwapBuffers(dpy, window);

@@ -1,0 +1,324 @@
+#include "shim/OverlayPanel.h"
+
+#include "common/KeyValue.h"
+#include "common/Log.h"
+#include "shim/ConfigFile.h"
+#include "styles/Presets.h"
+#include "styles/StyleRegistry.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace nprgl {
+
+namespace {
+
+// The list getter ImGui::Combo takes, over a vector of names.
+bool nameAt(void* data, int index, const char** out)
+{
+    const auto& names = *static_cast<const std::vector<std::string>*>(data);
+    if (index < 0 || size_t(index) >= names.size()) return false;
+    *out = names[size_t(index)].c_str();
+    return true;
+}
+
+std::string hexColour(const float rgb[3])
+{
+    char text[8];
+    std::snprintf(text, sizeof text, "%02x%02x%02x", int(std::lround(rgb[0] * 255.0f)),
+                  int(std::lround(rgb[1] * 255.0f)), int(std::lround(rgb[2] * 255.0f)));
+    return text;
+}
+
+std::string numberText(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    return text;
+}
+
+} // namespace
+
+OverlayPanel::OverlayPanel(std::string programName, std::string programFile)
+    : mProgramName(std::move(programName)), mProgramFile(std::move(programFile))
+{
+}
+
+void OverlayPanel::follow(const StyleSettings& running)
+{
+    // The look changed under the panel (a reload, the cycle key, a preset): take it in.
+    const std::string seen = running.chainName() + "|" + running.configText();
+    if (seen == mFollowed) return;
+    mFollowed = seen;
+    mChain.clear();
+    for (const StyleInfo* s : running.chain()) {
+        if (s->create) mChain.push_back(s->name);
+    }
+    mValues.clear();
+    KeyValueList pairs;
+    std::string error;
+    if (parseKeyValues(running.configText(), ',', pairs, error)) {
+        for (auto& [key, value] : pairs) mValues[key] = value;
+    }
+    mError.clear();
+}
+
+std::string OverlayPanel::chainText() const
+{
+    std::string chain;
+    for (const std::string& s : mChain) chain += (chain.empty() ? "" : "+") + s;
+    return chain.empty() ? "none" : chain;
+}
+
+std::string OverlayPanel::configText() const
+{
+    // Only the values of styles in the chain: the registry refuses no other, but a value of a
+    // removed style would come back with it unasked.
+    std::string config;
+    for (const auto& [key, value] : mValues) {
+        const std::string style = key.substr(0, key.find('.'));
+        if (std::find(mChain.begin(), mChain.end(), style) == mChain.end()) continue;
+        config += (config.empty() ? "" : ",") + key + "=" + value;
+    }
+    return config;
+}
+
+OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool styled,
+                                          const OverlayFigures& figures)
+{
+    follow(running);
+    Changes changes;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::min(360.0f, display.x - 16.0f),
+                                    std::min(600.0f, display.y - 16.0f)),
+                             ImGuiCond_FirstUseEver);
+    ImGui::Begin("nprgl", nullptr, ImGuiWindowFlags_NoSavedSettings);
+    ImGui::Text("%s: %s", mProgramName.c_str(), chainText().c_str());
+    bool on = styled;
+    if (ImGui::Checkbox("styled", &on)) changes.toggle = true;
+    noteItem("styled");
+    ImGui::SameLine();
+    ImGui::Text("frame %.1f ms, nprgl %.1f ms", figures.frameMs, figures.composeMs);
+    if (figures.counts) {
+        ImGui::TextWrapped("3D draws: %s", figures.counts->describe().c_str());
+    }
+    bool edited = presetRow();
+    ImGui::SameLine();
+    saveButton();
+    if (!mSaved.empty()) ImGui::TextWrapped("%s", mSaved.c_str());
+    ImGui::Separator();
+    edited = chainRows() || edited;
+    for (const std::string& name : mChain) {
+        const StyleInfo* style = StyleRegistry::instance().find(name);
+        if (style && !style->params.empty()) edited = paramRows(*style) || edited;
+    }
+    if (!mError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", mError.c_str());
+    ImGui::End();
+    mNoteItems = false;
+
+    if (edited) {
+        std::string error;
+        StyleSettings settings;
+        if (StyleSettings::parse(chainText(), configText(), settings, error)) {
+            mError.clear();
+            mFollowed = settings.chainName() + "|" + settings.configText();
+            changes.restyle = true;
+            changes.settings = std::move(settings);
+        } else {
+            mError = error;
+        }
+    }
+    return changes;
+}
+
+bool OverlayPanel::presetRow()
+{
+    static std::vector<std::string> names = [] {
+        std::vector<std::string> n;
+        for (const Preset& p : Presets::shipped()) n.emplace_back(p.name);
+        return n;
+    }();
+    if (names.empty()) return false;
+    ImGui::SetNextItemWidth(120.0f);
+    ImGui::Combo("##preset", &mPreset, &nameAt, &names, int(names.size()));
+    ImGui::SameLine();
+    if (!ImGui::Button("apply")) return false;
+    std::string chain, config, error;
+    if (!Presets::load(names[size_t(mPreset)], chain, config, error)) {
+        mError = error;
+        return false;
+    }
+    StyleSettings settings;
+    if (!StyleSettings::parse(chain, config, settings, error)) {
+        mError = error;
+        return false;
+    }
+    mFollowed.clear();
+    follow(settings);
+    NPRGL_INFO("overlay: preset %s", names[size_t(mPreset)].c_str());
+    return true;
+}
+
+bool OverlayPanel::chainRows()
+{
+    bool edited = false;
+    ImGui::TextUnformatted("chain");
+    for (size_t i = 0; i < mChain.size(); ++i) {
+        ImGui::PushID(int(i));
+        ImGui::BulletText("%s", mChain[i].c_str());
+        ImGui::SameLine(150.0f);
+        if (ImGui::SmallButton("up") && i > 0) {
+            std::swap(mChain[i], mChain[i - 1]);
+            edited = true;
+        }
+        ImGui::SameLine();
+        if (ImGui::SmallButton("down") && i + 1 < mChain.size()) {
+            std::swap(mChain[i], mChain[i + 1]);
+            edited = true;
+        }
+        ImGui::SameLine();
+        if (ImGui::SmallButton("remove")) {
+            NPRGL_INFO("overlay: removed %s", mChain[i].c_str());
+            mChain.erase(mChain.begin() + long(i));
+            edited = true;
+            ImGui::PopID();
+            break;
+        }
+        ImGui::PopID();
+    }
+    std::vector<std::string> addable;
+    for (const StyleInfo& s : StyleRegistry::instance().styles()) {
+        if (s.create && std::find(mChain.begin(), mChain.end(), s.name) == mChain.end()) {
+            addable.push_back(s.name);
+        }
+    }
+    if (addable.empty()) return edited;
+    mAdd = std::clamp(mAdd, 0, int(addable.size()) - 1);
+    ImGui::SetNextItemWidth(140.0f);
+    ImGui::Combo("##add", &mAdd, &nameAt, &addable, int(addable.size()));
+    ImGui::SameLine();
+    if (ImGui::Button("add style")) {
+        NPRGL_INFO("overlay: added %s", addable[size_t(mAdd)].c_str());
+        mChain.push_back(addable[size_t(mAdd)]);
+        edited = true;
+    }
+    return edited;
+}
+
+bool OverlayPanel::paramRows(const StyleInfo& style)
+{
+    bool edited = false;
+    if (!ImGui::CollapsingHeader(style.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+        return false;
+    }
+    ImGui::PushID(style.name.c_str());
+    for (const ParamInfo& param : style.params) {
+        edited = paramRow(style.name + "." + param.name, param) || edited;
+    }
+    ImGui::PopID();
+    return edited;
+}
+
+bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param)
+{
+    auto it = mValues.find(key);
+    const bool configured = it != mValues.end();
+    const std::string text = configured ? it->second : param.defaultString();
+    // The value as the registry reads it (a choice's index, a flag's 0/1).
+    double value = param.defaultValue;
+    if (configured && param.kind != ParamKind::Text && param.kind != ParamKind::Colour) {
+        const ParamInfo* checked = nullptr;
+        std::string error;
+        if (!StyleSettings::check(key, text, checked, value, error)) value = param.defaultValue;
+    }
+    std::string next;
+    ImGui::SetNextItemWidth(160.0f);
+    const char* label = param.name.c_str();
+    switch (param.kind) {
+    case ParamKind::Number:
+        if (param.isFlag) {
+            bool on = value != 0.0;
+            if (ImGui::Checkbox(label, &on)) next = on ? "on" : "off";
+        } else {
+            float v = float(value);
+            const bool wide = param.minValue > 0.0 && param.maxValue / param.minValue >= 100.0;
+            if (ImGui::SliderFloat(label, &v, float(param.minValue), float(param.maxValue),
+                                   "%.3g", wide ? ImGuiSliderFlags_Logarithmic : 0)) {
+                next = numberText(std::clamp(double(v), param.minValue, param.maxValue));
+            }
+        }
+        break;
+    case ParamKind::Choice: {
+        int index = int(value);
+        auto& choices = const_cast<std::vector<std::string>&>(param.choices);
+        if (ImGui::Combo(label, &index, &nameAt, &choices, int(choices.size()))) {
+            next = choices[size_t(index)];
+        }
+        break;
+    }
+    case ParamKind::Colour: {
+        glm::vec3 c(1.0f);
+        const bool derived = !ParamInfo::parseColour(text, c);
+        float rgb[3] = {c.r, c.g, c.b};
+        if (ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_NoInputs)) next = hexColour(rgb);
+        if (derived) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("(derived)");
+        }
+        break;
+    }
+    case ParamKind::Text:
+        ImGui::Text("%s: %s", label, text.c_str());
+        break;
+    }
+    if (ImGui::IsItemHovered() && !param.help.empty()) ImGui::SetTooltip("%s", param.help.c_str());
+    noteItem(key);
+    const bool changed = !next.empty() && next != text;
+    if (changed) mValues[key] = next;
+    // One line per edit: a slider says its value when let go, not at every frame of the drag.
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+        NPRGL_INFO("overlay: %s=%s", key.c_str(), mValues.count(key) ? mValues[key].c_str() : "");
+    }
+    return changed;
+}
+
+void OverlayPanel::saveButton()
+{
+    if (mProgramFile.empty()) {
+        ImGui::TextDisabled("(no config folder)");
+        return;
+    }
+    const bool clicked = ImGui::Button("save");
+    noteItem("save");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("write this look to %s", mProgramFile.c_str());
+    if (!clicked) return;
+    std::string error;
+    if (ConfigFile::writeLook(mProgramFile, chainText(), configText(), error)) {
+        mSaved = "saved to " + mProgramFile;
+        NPRGL_INFO("overlay: %s: style=%s %s", mSaved.c_str(), chainText().c_str(),
+                   configText().c_str());
+    } else {
+        mSaved = error;
+        NPRGL_ERROR("overlay: %s", error.c_str());
+    }
+}
+
+void OverlayPanel::noteItem(const std::string& id) const
+{
+    if (!mNoteItems) return;
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    NPRGL_DEBUG("overlay: item %s at %.0f %.0f %.0f %.0f", id.c_str(), lo.x, lo.y, hi.x - lo.x,
+                hi.y - lo.y);
+}
+
+void OverlayPanel::noteLayout()
+{
+    mNoteItems = true;
+}
+
+} // namespace nprgl

@@ -1,0 +1,63 @@
+#pragma once
+
+// OverlayPanel: the overlay's window: chain, parameters, presets, coverage and frame times.
+
+#include "frame/DrawCounts.h"
+#include "styles/StyleSettings.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace nprgl {
+
+// What the panel shows of the running program.
+struct OverlayFigures {
+    const DrawCounts* counts = nullptr; // the last frame's 3D draws, styled and left
+    double frameMs = 0.0;               // from swap to swap
+    double composeMs = 0.0;             // of which nprgl's compositor (reconstruction, styles)
+};
+
+// Builds the ImGui widgets of one frame (an ImGui frame must be open) from the look the
+// compositor runs, and says what the user changed. Parameters are edited within their
+// registered ranges, so what the panel asks for always parses; a chain the registry refuses
+// (an order it does not allow) is shown with the registry's message and not applied.
+class OverlayPanel {
+public:
+    // `programFile`: where "save" writes (the per-program configuration file).
+    OverlayPanel(std::string programName, std::string programFile);
+
+    struct Changes {
+        bool restyle = false; // run `settings` from the next frame
+        StyleSettings settings;
+        bool toggle = false;  // styling on/off
+    };
+    Changes build(const StyleSettings& running, bool styled, const OverlayFigures& figures);
+    // The next build() logs its items' rectangles (at debug level).
+    void noteLayout();
+
+private:
+    void follow(const StyleSettings& running);
+    bool chainRows();
+    bool presetRow();
+    bool paramRows(const StyleInfo& style);
+    bool paramRow(const std::string& key, const ParamInfo& param);
+    void saveButton();
+    // With noteLayout(): logs (debug) where an item is, for tests that click it with XTEST.
+    void noteItem(const std::string& id) const;
+    std::string chainText() const;
+    std::string configText() const;
+
+    std::string mProgramName;
+    std::string mProgramFile;
+    std::vector<std::string> mChain;           // style names, in order
+    std::map<std::string, std::string> mValues; // "style.param" -> text, defaults left out
+    std::string mFollowed;                     // the running look last taken in
+    std::string mError;                        // the registry's answer to the last edit
+    std::string mSaved;                        // the last save's outcome
+    int mAdd = 0;                              // the style chosen to add
+    int mPreset = 0;                           // the preset chosen to apply
+    bool mNoteItems = false;
+};
+
+} // namespace nprgl
