@@ -59,5 +59,32 @@ TEST_P(Toolkit, RunsStyledToItsOwnEnd)
               coveredCount(native.out) * 3 / 4);
 }
 
+// The overlay opens over a toolkit's window as over a bare GLX one (overlay=open from the
+// start): the same run with and without it differs over most of the small window.
+TEST_P(Toolkit, ShowsTheOverlay)
+{
+    if (!fs::exists(probe(GetParam())[0])) {
+        GTEST_SKIP() << "probe_" << GetParam() << " was not built (toolkit not installed)";
+    }
+    std::string dirs[2];
+    for (int open = 0; open < 2; ++open) {
+        dirs[open] = freshDir("toolkit-overlay-" + GetParam());
+        ProcessResult r = runProcess(
+            under({nprglCommand(), "--screenshot", "frames=4;dir=" + dirs[open]},
+                  probe(GetParam())),
+            {{"NPRGL_OVERLAY", open ? "open" : "closed"},
+             {"XDG_CONFIG_HOME", freshDir("toolkit-overlay-home")}, {"NPRGL_CONFIG_FILE", ""}});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(r.err.find("nprgl: overlay open") != std::string::npos, open == 1) << r.err;
+    }
+    // SDL2 draws with its second context: the picture is named after it (..._ctx2_4.png).
+    std::string shot;
+    for (const auto& entry : fs::directory_iterator(dirs[0])) shot = entry.path().filename();
+    ASSERT_FALSE(shot.empty()) << "no screenshot in " << dirs[0];
+    ImageDiff diff = compareImages(dirs[0] + "/" + shot, dirs[1] + "/" + shot, 6);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_GT(diff.differingPixels, 200u * 150u / 3);
+}
+
 INSTANTIATE_TEST_SUITE_P(Probe, Toolkit, ::testing::Values("glut", "sdl2", "glfw"),
                          [](const auto& param) { return param.param; });
