@@ -5,6 +5,7 @@
 #include "frame/FrameExport.h"
 #include "frame/StateTracker.h"
 #include "replay/Replayer.h"
+#include "shim/ConfigFile.h"
 #include "stream/CallPrinter.h"
 #include "stream/OpcodeMap.h"
 #include "styles/Presets.h"
@@ -50,6 +51,15 @@ int replayCommand(const ReplayCommandOptions& options)
     replay.config.emplace();
     replay.config->style = std::move(style);
     replay.config->programName = "nprgl";
+    if (!options.rules.empty()) {
+        const ConfigFile rules = ConfigFile::read(options.rules);
+        if (!rules.found) return fail("--rules: cannot read " + options.rules);
+        for (const std::string& e : rules.errors) {
+            std::fprintf(stderr, "nprgl: %s; line skipped\n", e.c_str());
+        }
+        replay.config->leftTextures = rules.leftTextures;
+        std::sort(replay.config->leftTextures.begin(), replay.config->leftTextures.end());
+    }
     if (!parseFrames(options.frames, replay.frames, error)) return fail("--frames: " + error);
     if (!options.size.empty() &&
         std::sscanf(options.size.c_str(), "%dx%d", &replay.width, &replay.height) != 2) {

@@ -16,6 +16,7 @@ struct ReplayCommandOptions {
     std::string outDir;
     unsigned context = 0;
     bool stats = false;
+    std::string rules; // a configuration file whose leave_texture rules apply
 };
 
 int replayCommand(const ReplayCommandOptions& options);

@@ -83,6 +83,9 @@ int replayMain(int argc, char** argv)
     app.add_option("--frames", o.frames, "frames to write, e.g. 1-10");
     app.add_option("--size", o.size, "render size WxH (default: the recorded size)");
     app.add_option("--context", o.context, "which context's stream (default: the longest)");
+    app.add_option("--rules", o.rules,
+                   "a configuration file (the program's, ~/.config/nprgl/PROGRAM.conf) whose "
+                   "leave_texture rules apply");
     CLI11_PARSE(app, argc, argv);
     return nprgl::cli::replayCommand(o);
 }

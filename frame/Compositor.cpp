@@ -354,6 +354,21 @@ void Compositor::restyle(const StyleSettings& settings, bool announce)
                mSettings.chainName().c_str());
 }
 
+PickResult Compositor::pick(int x, int y, int windowHeight, uint64_t& textureHash) const
+{
+    const PickResult hit =
+        pickScene(mScene, float(x) + 0.5f, float(windowHeight - 1 - y) + 0.5f);
+    textureHash = hit.texture ? mTracker.textureHash(hit.texture) : 0;
+    return hit;
+}
+
+void Compositor::setLeftTextures(std::vector<uint64_t> hashes)
+{
+    std::sort(hashes.begin(), hashes.end());
+    hashes.erase(std::unique(hashes.begin(), hashes.end()), hashes.end());
+    mTracker.setLeftTextures(std::move(hashes));
+}
+
 void Compositor::endFrameCounts()
 {
     mLastFrameCounts = mFrameCounts;

@@ -2,6 +2,7 @@
 
 #include "frame/DrawCounts.h"
 #include "frame/SavedGlState.h"
+#include "frame/ScenePick.h"
 #include "frame/StateTracker.h"
 #include "reconstruct/Reconstructor.h"
 #include "shim/Api.h"
@@ -65,6 +66,12 @@ public:
     void endFrameCounts();
     const DrawCounts& lastFrameCounts() const { return mLastFrameCounts; }
     const DrawCounts& runCounts() const { return mRunCounts; }
+    // The object of the last flush under window pixel (x, y), y from the window's top: for
+    // the overlay's pick. PickResult::texture's content hash in `textureHash`.
+    PickResult pick(int x, int y, int windowHeight, uint64_t& textureHash) const;
+    // Rules (leave_texture): draws with a texture of these contents are left from now on.
+    void setLeftTextures(std::vector<uint64_t> hashes);
+    const std::vector<uint64_t>& leftTextures() const { return mTracker.leftTextures(); }
     // The last frame's time in the compositor (reconstruction and styles), in ms.
     double lastFrameComposeMs() const { return mLastFrameComposeMs; }
     // A GL error of the program's that nprgl took while drawing its own things (the

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <xxhash.h>
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +135,11 @@ void APIENTRY tCallList(GLuint list) { T().callList(list); }
 void APIENTRY tListBase(GLuint base) { T().listBase(base); }
 void APIENTRY tDeleteLists(GLuint list, GLsizei range) { T().deleteLists(list, range); }
 void APIENTRY tBindTexture(GLenum target, GLuint texture) { T().bindTexture(target, texture); }
+void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsizei height, GLint,
+                          GLenum format, GLenum type, const void* pixels)
+{
+    T().texImage2D(target, level, width, height, format, type, pixels);
+}
 void APIENTRY tActiveTexture(GLenum unit) { T().activeTexture(unit); }
 void APIENTRY tEnableClientState(GLenum cap) { T().enableArray(cap, true); }
 void APIENTRY tDisableClientState(GLenum cap) { T().enableArray(cap, false); }
@@ -334,6 +340,7 @@ StateTracker::StateTracker()
     d.glListBase = tListBase;
     d.glDeleteLists = tDeleteLists;
     d.glBindTexture = tBindTexture;
+    d.glTexImage2D = tTexImage2D;
     d.glActiveTexture = tActiveTexture;
     d.glEnableClientState = tEnableClientState;
     d.glDisableClientState = tDisableClientState;
@@ -457,6 +464,11 @@ const char* StateTracker::unstylableState() const
     const AttribState& a = mAttrib;
     // Drawn now and kept in the list: the list's later calls are styled, this first one not.
     if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
+    if (!mLeftTextures.empty() && a.texture2D &&
+        std::binary_search(mLeftTextures.begin(), mLeftTextures.end(),
+                           textureHash(mBoundTexture))) {
+        return "a rule of the program's configuration (leave_texture)";
+    }
     // The program's shaders decide colour and position; a style would draw something else.
     if (mProgram != 0 || a.vertexProgram || a.fragmentProgram) return "the program's own shaders";
     if (a.blend && !translucent()) {
@@ -1074,6 +1086,32 @@ void StateTracker::activeTexture(GLenum unit)
 void StateTracker::bindTexture(GLenum target, GLuint texture)
 {
     if (target == GL_TEXTURE_2D && mActiveUnit == 0) mBoundTexture = texture;
+    if (target == GL_TEXTURE_2D && size_t(mActiveUnit) < mUnitTextures.size()) {
+        mUnitTextures[size_t(mActiveUnit)] = texture;
+    }
+}
+
+void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
+                              GLenum format, GLenum type, const void* pixels)
+{
+    if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
+        return;
+    }
+    const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
+    // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
+    if (!pixels || mImageBytes == 0) {
+        mTextureHashes.erase(texture);
+        return;
+    }
+    const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
+    uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
+    mTextureHashes[texture] = hash == 0 ? 1 : hash;
+}
+
+uint64_t StateTracker::textureHash(GLuint texture) const
+{
+    auto it = mTextureHashes.find(texture);
+    return it == mTextureHashes.end() ? 0 : it->second;
 }
 
 void StateTracker::enableArray(GLenum cap, bool on)

@@ -149,6 +149,24 @@ public:
     GLuint listBaseValue() const { return mListBase; }
     void deleteLists(GLuint list, GLsizei range);
     void bindTexture(GLenum target, GLuint texture);
+    // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed).
+    void texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
+                    GLenum type, const void* pixels);
+    // The decoder's check of an image argument (format, type, sizes follow): how many bytes
+    // the call carries.
+    template <typename... Shape>
+    bool checkImage(uint16_t, const CallReader::Image& image, Shape...)
+    {
+        mImageBytes = image.mode == CallReader::Image::kBytes ? image.size : 0;
+        return true;
+    }
+    // XXH3 of a texture's level-0 image with its size and format (0: never uploaded here):
+    // what names a texture across runs, where its GL name may differ.
+    uint64_t textureHash(GLuint texture) const;
+    // Rules: draws on unit 0 with a texture of these contents are left as the program draws
+    // them (counted with their reason). Sorted.
+    void setLeftTextures(std::vector<uint64_t> hashes) { mLeftTextures = std::move(hashes); }
+    const std::vector<uint64_t>& leftTextures() const { return mLeftTextures; }
     void activeTexture(GLenum unit);
     void enableArray(GLenum cap, bool on);
     void clientActiveTexture(GLenum unit);
@@ -256,6 +274,10 @@ private:
     AttribStack mAttribs;
     AttribState& mAttrib = mAttribs.current(); // the state the calls change
     GLuint mBoundTexture = 0; // unit 0's GL_TEXTURE_2D
+    std::array<GLuint, 8> mUnitTextures{}; // every unit's GL_TEXTURE_2D, for uploads
+    std::map<GLuint, uint64_t> mTextureHashes;
+    std::vector<uint64_t> mLeftTextures;
+    size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;
     // While a list compiles: which current attributes the list sets itself (the others come
     // from the state when the list is called).

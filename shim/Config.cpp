@@ -6,6 +6,7 @@
 #include "shim/ConfigWatcher.h"
 #include "styles/Presets.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -111,6 +112,8 @@ Config Config::fromEnvironment(bool reloading)
         for (const auto& [action, key] : file.keys) s.keys[action] = key;
         if (!file.cycle.empty()) s.cycle = file.cycle;
         if (!file.overlay.empty()) s.overlayOpen = file.overlay == "open";
+        s.leftTextures.insert(s.leftTextures.end(), file.leftTextures.begin(),
+                              file.leftTextures.end());
     }
     if (!s.tried.empty()) {
         std::string read;
@@ -119,6 +122,13 @@ Config Config::fromEnvironment(bool reloading)
                   read.empty() ? "none found" : read.c_str(),
                   missing.empty() ? "" : " (not found: ", missing.c_str(),
                   missing.empty() ? "" : ")");
+    }
+    std::sort(s.leftTextures.begin(), s.leftTextures.end());
+    s.leftTextures.erase(std::unique(s.leftTextures.begin(), s.leftTextures.end()),
+                         s.leftTextures.end());
+    if (!s.leftTextures.empty()) {
+        NPRGL_LOG(said, "rules: %zu texture(s) left as the program draws them",
+                  s.leftTextures.size());
     }
     // The environment (and so the command line) over the files.
     std::string error;

@@ -6,6 +6,7 @@
 #include "styles/StyleRegistry.h"
 #include "styles/StyleSettings.h"
 
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -92,6 +93,14 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
             } else {
                 out.overlay = value;
             }
+        } else if (key == "leave_texture") {
+            uint64_t hash = 0;
+            auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), hash, 16);
+            if (ec != std::errc() || end != value.data() + value.size() || hash == 0) {
+                skip("leave_texture: '" + value + "' is not a texture hash (16 hex digits)");
+            } else {
+                out.leftTextures.push_back(hash);
+            }
         } else if (key == "screenshot_dir") {
             out.screenshotDir = value;
         } else if (key == "log_level") {
@@ -147,8 +156,16 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
     return out;
 }
 
+std::string ConfigFile::hashText(uint64_t hash)
+{
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
 bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
-                           const std::string& config, std::string& error)
+                           const std::string& config, const std::vector<uint64_t>& leftTextures,
+                           std::string& error)
 {
     // Keep every line that is not the look (comments, keys, screenshot folder...).
     std::string kept;
@@ -160,7 +177,7 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
             const std::string key =
                 eq == std::string::npos ? std::string() : std::string(trimBlanks(
                                                               std::string_view(line).substr(0, eq)));
-            const bool look = key == "style" || key == "preset" ||
+            const bool look = key == "style" || key == "preset" || key == "leave_texture" ||
                               StyleRegistry::instance().findParam(key) != nullptr;
             if (!look) kept += raw + "\n";
         }
@@ -169,6 +186,7 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
     KeyValueList pairs;
     if (!parseKeyValues(config, ',', pairs, error)) return false;
     for (const auto& [key, value] : pairs) text += key + "=" + value + "\n";
+    for (uint64_t hash : leftTextures) text += "leave_texture=" + hashText(hash) + "\n";
 
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);

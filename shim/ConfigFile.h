@@ -2,6 +2,7 @@
 
 // ConfigFile: what one configuration file (nprgl.conf, <program>.conf) says, line by line.
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -15,6 +16,8 @@ namespace nprgl {
 //   toggle_key= cycle_key= screenshot_key= overlay_key= reload_key=  (e.g. Shift_R+F9)
 //   cycle=CHAIN|preset:NAME, ...   (what cycle_key steps through)
 //   overlay=open|closed            (the overlay at start-up)
+//   leave_texture=HASH             (a rule: draws with this texture stay the program's; one
+//                                   line per texture, as the overlay's pick gives them)
 // A bad line is reported as file:line and skipped; the other lines apply.
 struct ConfigFile {
     std::string path;
@@ -26,6 +29,7 @@ struct ConfigFile {
     std::map<std::string, std::string> keys; // "toggle", "cycle", ... -> key combination
     std::vector<std::string> cycle;
     std::string overlay; // overlay=open|closed: the overlay's state at start-up (empty: closed)
+    std::vector<uint64_t> leftTextures; // leave_texture=HASH lines (16 hex digits), in order
     std::vector<std::string> errors; // "file:line: message", one per skipped line
 
     // Reads the file at `path`; a file that does not exist is not an error (found = false).
@@ -33,11 +37,14 @@ struct ConfigFile {
     // Parses text; `origin` names it in messages.
     static ConfigFile parse(const std::string& text, const std::string& origin);
 
-    // Replaces the look (style=, preset= and every STYLE.PARAM line) in the file at `path`
-    // with `chain` and `config` ("key=value,..."), keeping its other lines; creates the file
-    // (and its folder) when missing.
+    // Replaces the look (style=, preset=, every STYLE.PARAM and leave_texture line) in the
+    // file at `path` with `chain`, `config` ("key=value,...") and the rules, keeping its other
+    // lines; creates the file (and its folder) when missing.
     static bool writeLook(const std::string& path, const std::string& chain,
-                          const std::string& config, std::string& error);
+                          const std::string& config, const std::vector<uint64_t>& leftTextures,
+                          std::string& error);
+    // A texture rule's hash as the files write it: 16 hex digits.
+    static std::string hashText(uint64_t hash);
 
     // The actions a key may be bound to, in the order the overlay lists them.
     static const std::vector<std::string>& actions();

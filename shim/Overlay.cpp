@@ -180,14 +180,21 @@ void Overlay::draw(Compositor& compositor, _XDisplay* display, Window window, in
     figures.counts = &compositor.lastFrameCounts();
     figures.frameMs = mFrameMs;
     figures.composeMs = compositor.lastFrameComposeMs();
-    OverlayPanel::Changes changes =
-        mPanel.build(compositor.settings(), compositor.enabled(), figures);
+    // A click off the panel in pick mode picks the program's object under the pointer.
+    if (mPanel.picking() && ImGui::IsMouseClicked(0) && !io.WantCaptureMouse) {
+        uint64_t hash = 0;
+        const PickResult hit = compositor.pick(int(pointer.x), int(pointer.y), height, hash);
+        mPanel.picked(hit.hit ? hit.object : 0, hit.faces, hit.texture, hash);
+    }
+    OverlayPanel::Changes changes = mPanel.build(compositor.settings(), compositor.enabled(),
+                                                 compositor.leftTextures(), figures);
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
     endGl(compositor);
 
     if (changes.toggle) compositor.setEnabled(!compositor.enabled());
     if (changes.restyle) compositor.restyle(changes.settings, false);
+    if (changes.rules) compositor.setLeftTextures(std::move(changes.leftTextures));
 }
 
 bool Overlay::beginGl(bool doubleBuffered)

@@ -88,6 +88,7 @@ std::string OverlayPanel::configText() const
 }
 
 OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool styled,
+                                          const std::vector<uint64_t>& leftTextures,
                                           const OverlayFigures& figures)
 {
     follow(running);
@@ -104,13 +105,15 @@ OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool sty
     noteItem("styled");
     ImGui::SameLine();
     ImGui::Text("frame %.1f ms, nprgl %.1f ms", figures.frameMs, figures.composeMs);
+    // The controls first, at places that do not move with the figures below them.
+    changes.rules = pickRows(leftTextures, changes.leftTextures);
+    bool edited = presetRow();
+    ImGui::SameLine();
+    saveButton(changes.rules ? changes.leftTextures : leftTextures);
+    if (!mSaved.empty()) ImGui::TextWrapped("%s", mSaved.c_str());
     if (figures.counts) {
         ImGui::TextWrapped("3D draws: %s", figures.counts->describe().c_str());
     }
-    bool edited = presetRow();
-    ImGui::SameLine();
-    saveButton();
-    if (!mSaved.empty()) ImGui::TextWrapped("%s", mSaved.c_str());
     ImGui::Separator();
     edited = chainRows() || edited;
     for (const std::string& name : mChain) {
@@ -287,7 +290,65 @@ bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param)
     return changed;
 }
 
-void OverlayPanel::saveButton()
+void OverlayPanel::picked(uint32_t object, uint32_t faces, GLuint texture, uint64_t textureHash)
+{
+    mPickedHash = textureHash;
+    char text[160];
+    if (object == 0) {
+        std::snprintf(text, sizeof text, "nothing nprgl styles there");
+    } else if (texture == 0) {
+        std::snprintf(text, sizeof text, "object %u (%u faces), untextured: rules go by texture",
+                      object, faces);
+    } else if (textureHash == 0) {
+        std::snprintf(text, sizeof text,
+                      "object %u (%u faces), texture %u: its content was not seen uploaded",
+                      object, faces, texture);
+    } else {
+        std::snprintf(text, sizeof text, "object %u (%u faces), texture %u = %s", object, faces,
+                      texture, ConfigFile::hashText(textureHash).c_str());
+    }
+    mPick = text;
+    NPRGL_INFO("overlay: picked %s", text);
+}
+
+bool OverlayPanel::pickRows(const std::vector<uint64_t>& leftTextures,
+                            std::vector<uint64_t>& next)
+{
+    ImGui::Checkbox("pick", &mPicking);
+    noteItem("pick");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("then click an object of the program");
+    const bool left = mPickedHash != 0 && std::binary_search(leftTextures.begin(),
+                                                             leftTextures.end(), mPickedHash);
+    bool changed = false;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(mPickedHash == 0 || left);
+    if (ImGui::Button("leave texture")) {
+        next = leftTextures;
+        next.insert(std::upper_bound(next.begin(), next.end(), mPickedHash), mPickedHash);
+        changed = true;
+        NPRGL_INFO("overlay: rule: leave texture %s", ConfigFile::hashText(mPickedHash).c_str());
+    }
+    noteItem("leave texture");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!left);
+    if (ImGui::Button("style texture")) {
+        next = leftTextures;
+        next.erase(std::remove(next.begin(), next.end(), mPickedHash), next.end());
+        changed = true;
+        NPRGL_INFO("overlay: rule: style texture %s", ConfigFile::hashText(mPickedHash).c_str());
+    }
+    noteItem("style texture");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu rule%s", leftTextures.size(), leftTextures.size() == 1 ? "" : "s");
+    // One line, always there: the rows below keep their places (the tests click them).
+    ImGui::TextDisabled("%s", mPick.empty() ? "pick, then click an object: rules by texture"
+                                            : mPick.c_str());
+    return changed;
+}
+
+void OverlayPanel::saveButton(const std::vector<uint64_t>& leftTextures)
 {
     if (mProgramFile.empty()) {
         ImGui::TextDisabled("(no config folder)");
@@ -298,7 +359,7 @@ void OverlayPanel::saveButton()
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("write this look to %s", mProgramFile.c_str());
     if (!clicked) return;
     std::string error;
-    if (ConfigFile::writeLook(mProgramFile, chainText(), configText(), error)) {
+    if (ConfigFile::writeLook(mProgramFile, chainText(), configText(), leftTextures, error)) {
         mSaved = "saved to " + mProgramFile;
         NPRGL_INFO("overlay: %s: style=%s %s", mSaved.c_str(), chainText().c_str(),
                    configText().c_str());

@@ -5,6 +5,9 @@
 #include "frame/DrawCounts.h"
 #include "styles/StyleSettings.h"
 
+#include <GL/gl.h>
+
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,8 +34,16 @@ public:
         bool restyle = false; // run `settings` from the next frame
         StyleSettings settings;
         bool toggle = false;  // styling on/off
+        bool rules = false;   // leave `leftTextures` from the next frame
+        std::vector<uint64_t> leftTextures;
     };
-    Changes build(const StyleSettings& running, bool styled, const OverlayFigures& figures);
+    // `leftTextures`: the rules the compositor runs (sorted).
+    Changes build(const StyleSettings& running, bool styled,
+                  const std::vector<uint64_t>& leftTextures, const OverlayFigures& figures);
+    // Pick mode is on: the next click off the panel picks the object under it.
+    bool picking() const { return mPicking; }
+    // What the click picked: an object (0: none) and its face's texture's content hash.
+    void picked(uint32_t object, uint32_t faces, GLuint texture, uint64_t textureHash);
     // The next build() logs its items' rectangles (at debug level).
     void noteLayout();
 
@@ -42,7 +53,8 @@ private:
     bool presetRow();
     bool paramRows(const StyleInfo& style);
     bool paramRow(const std::string& key, const ParamInfo& param);
-    void saveButton();
+    void saveButton(const std::vector<uint64_t>& leftTextures);
+    bool pickRows(const std::vector<uint64_t>& leftTextures, std::vector<uint64_t>& next);
     // With noteLayout(): logs (debug) where an item is, for tests that click it with XTEST.
     void noteItem(const std::string& id) const;
     std::string chainText() const;
@@ -58,6 +70,9 @@ private:
     int mAdd = 0;                              // the style chosen to add
     int mPreset = 0;                           // the preset chosen to apply
     bool mNoteItems = false;
+    bool mPicking = false;
+    std::string mPick;          // what the last pick found, as shown
+    uint64_t mPickedHash = 0;   // its texture's content hash (0: untextured or unknown)
 };
 
 } // namespace nprgl

@@ -396,3 +396,90 @@ TEST(Overlay, ASliderDragRestylesTheProgramAndSaveKeepsIt)
               std::string::npos)
         << stderrOf(next);
 }
+
+// Pick (a click on the program's textured poster with the overlay's pick on), "leave texture",
+// "save": the poster is drawn as the program draws it from then on, the cube still styled,
+// and the rule (leave_texture=HASH, by the texture's content) holds at the next start.
+TEST(Overlay, APickedTextureIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
+{
+    const std::vector<std::string> toon = {nprglCommand(), "--style", "toon"};
+    const std::string layout = runHotkeys(
+        "rule_layout", {nprglCommand(), "--style", "toon", "--log-level", "debug"},
+        {"--size", kOverlaySize, "--frames", "3", "--textured"}, "3", {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect pick = itemAt(stderrOf(layout), "pick");
+    const ItemRect leave = itemAt(stderrOf(layout), "leave texture");
+    const ItemRect save = itemAt(stderrOf(layout), "save");
+    ASSERT_GT(pick.w * leave.w * save.w, 0) << stderrOf(layout);
+    auto centre = [](const ItemRect& r) {
+        return std::vector<std::string>{std::to_string(r.x + r.w / 2),
+                                        std::to_string(r.y + r.h / 2)};
+    };
+    auto at = [](int frame, const std::vector<std::string>& xy) {
+        return std::vector<std::string>{"--pointer", std::to_string(frame), xy[0], xy[1]};
+    };
+    std::vector<std::string> args = {"--size", kOverlaySize, "--frames", "16", "--textured"};
+    for (const auto& step : {at(3, centre(pick)), at(6, {"525", "525"}),
+                             at(9, centre(leave)), at(12, centre(save)), at(15, {"590", "10"})}) {
+        args.insert(args.end(), step.begin(), step.end());
+    }
+    for (int down : {4, 7, 10, 13}) {
+        args.insert(args.end(), {"--button", std::to_string(down), "down", "--button",
+                                 std::to_string(down + 1), "up"});
+    }
+    const std::string home = freshDir("rule_home");
+    const std::string ruled = runHotkeys("rule_run", toon, args, "15",
+                                         {{"NPRGL_OVERLAY", "open"}, {"XDG_CONFIG_HOME", home}});
+    const std::string log = stderrOf(ruled);
+    EXPECT_NE(log.find("overlay: picked object"), std::string::npos) << log;
+    const size_t rule = log.find("overlay: rule: leave texture ");
+    ASSERT_NE(rule, std::string::npos) << log;
+    const std::string hash = log.substr(rule + 29, 16);
+    std::ifstream file(home + "/nprgl/probe_hotkeys.conf");
+    const std::string saved{std::istreambuf_iterator<char>(file), {}};
+    EXPECT_NE(saved.find("leave_texture=" + hash + "\n"), std::string::npos) << saved << log;
+
+    const std::vector<std::string> plain = {"--size", kOverlaySize, "--frames", "16",
+                                            "--textured"};
+    const std::string native =
+        runHotkeys("rule_native", {nprglCommand(), "--style", "none"}, plain, "15");
+    const std::string styled = runHotkeys("rule_styled", toon, plain, "15");
+    const std::string next = runHotkeys("rule_next", toon, plain, "15",
+                                        {{"XDG_CONFIG_HOME", home}});
+    // The poster (lower right): styled unless the rule leaves it.
+    const int p0 = 470, p1 = 580;
+    EXPECT_GT(differingIn(shot(styled, 15), shot(native, 15), p0, p0, p1, p1), 500)
+        << "the style does not change the poster: the test cannot tell";
+    EXPECT_EQ(differingIn(shot(ruled, 15), shot(native, 15), p0, p0, p1, p1), 0);
+    EXPECT_EQ(differingIn(shot(next, 15), shot(native, 15), p0, p0, p1, p1), 0);
+    // The cube, right of the overlay and above the poster: still styled.
+    EXPECT_EQ(differingIn(shot(ruled, 15), shot(styled, 15), 372, 0, 600, 460), 0);
+    EXPECT_EQ(differingIn(shot(next, 15), shot(styled, 15), 372, 0, 600, 460), 0);
+    EXPECT_NE(stderrOf(next).find("leave_texture"), std::string::npos) << stderrOf(next);
+
+    // And in a replay of a recording, given the program's file (nprgl replay --rules).
+    const std::string dir = freshDir("rule_replay");
+    ProcessResult recorded = runProcess(
+        under({nprglCommand(), "record", "--style", "none", "-o", dir + "/poster.nprgl"},
+              {hotkeyProbe(), "--size", kOverlaySize, "--frames", "4", "--textured"}),
+        {{"XDG_CONFIG_HOME", freshDir("rule_replay_home")}, {"NPRGL_CONFIG_FILE", ""}});
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err;
+    auto replay = [&](const std::string& name, std::vector<std::string> extra) {
+        std::vector<std::string> cmd = {nprglCommand(), "replay", dir + "/poster.nprgl", "-o",
+                                        dir + "/" + name, "--frames", "3"};
+        cmd.insert(cmd.end(), extra.begin(), extra.end());
+        ProcessResult r = runProcess(cmd);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/" + name + "/frame_0000000003.png", image, error))
+            << error;
+        return image;
+    };
+    const PngImage none = replay("none", {"--style", "none"});
+    const PngImage toonReplay = replay("toon", {"--style", "toon"});
+    const PngImage ruledReplay =
+        replay("ruled", {"--style", "toon", "--rules", home + "/nprgl/probe_hotkeys.conf"});
+    EXPECT_GT(differingIn(toonReplay, none, p0, p0, p1, p1), 500);
+    EXPECT_EQ(differingIn(ruledReplay, none, p0, p0, p1, p1), 0);
+    EXPECT_EQ(differingIn(ruledReplay, toonReplay, 0, 0, 600, 460), 0);
+}

@@ -2,7 +2,8 @@
 // combinations with XTEST at given frames (--press K Shift_R+F9: down at the start of frame K,
 // up at the start of frame K+1), moving the pointer (--pointer K X Y, window pixels) and
 // pressing or letting go of the left button (--button K down|up) at the start of frame K,
-// as a user would: the hotkey and overlay tests, counted in frames.
+// as a user would: the hotkey and overlay tests, counted in frames. --textured adds a
+// textured poster in front of the cube, in the window's lower right corner.
 #include "tests/probes/ProbeCube.h"
 
 #include <GL/glx.h>
@@ -40,18 +41,70 @@ void setKeys(Display* dpy, const std::vector<KeyCode>& codes, bool down)
     XSync(dpy, False);
 }
 
+// A 64x64 checkerboard of two blues, generated.
+GLuint makePosterTexture()
+{
+    std::vector<unsigned char> texels(64 * 64 * 3);
+    for (int y = 0; y < 64; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const bool dark = ((x / 8) + (y / 8)) % 2 != 0;
+            unsigned char* t = &texels[size_t(y * 64 + x) * 3];
+            t[0] = dark ? 30 : 120;
+            t[1] = dark ? 60 : 170;
+            t[2] = dark ? 140 : 240;
+        }
+    }
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 64, 64, 0, GL_RGB, GL_UNSIGNED_BYTE, texels.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return texture;
+}
+
+// In front of the cube (z = -2.2; the cube's nearest corner is at -2.27), unlit, textured.
+void drawPoster(GLuint texture)
+{
+    glDisable(GL_LIGHTING);
+    glEnable(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glLoadIdentity();
+    glColor3f(1, 1, 1);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0);
+    glVertex3f(0.8f, -1.4f, -2.2f);
+    glTexCoord2f(1, 0);
+    glVertex3f(1.4f, -1.4f, -2.2f);
+    glTexCoord2f(1, 1);
+    glVertex3f(1.4f, -0.8f, -2.2f);
+    glTexCoord2f(0, 1);
+    glVertex3f(0.8f, -0.8f, -2.2f);
+    glEnd();
+    glDisable(GL_TEXTURE_2D);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     int frames = 4;
     int size = 128;
+    bool textured = false;
     std::map<int, std::string> presses;
     std::map<int, std::pair<int, int>> pointer;
     std::map<int, bool> buttons;
-    for (int i = 1; i + 1 < argc; i += 2) {
+    for (int i = 1; i < argc; i += 2) {
         const std::string option = argv[i];
-        if (option == "--frames") {
+        if (option == "--textured") {
+            textured = true;
+            --i;
+        } else if (i + 1 >= argc) {
+            std::fprintf(stderr, "probe_hotkeys: %s needs a value\n", argv[i]);
+            return 2;
+        } else if (option == "--frames") {
             frames = std::atoi(argv[i + 1]);
         } else if (option == "--size") {
             size = std::atoi(argv[i + 1]);
@@ -91,6 +144,7 @@ int main(int argc, char** argv)
     glXMakeCurrent(dpy, window, context);
     glViewport(0, 0, size, size);
     XSync(dpy, False);
+    const GLuint poster = textured ? makePosterTexture() : 0;
     std::vector<KeyCode> held;
     for (int frame = 1; frame <= frames; ++frame) {
         if (!held.empty()) {
@@ -115,6 +169,7 @@ int main(int argc, char** argv)
             XSync(dpy, False);
         }
         nprgl::probes::drawCube(frame);
+        if (textured) drawPoster(poster);
         glXSwapBuffers(dpy, window);
     }
     if (!held.empty()) setKeys(dpy, held, false);
