@@ -337,6 +337,38 @@ TEST(Edges, FollowsAnOffsetViewport)
     EXPECT_EQ(s.outsideInk, 0);
 }
 
+// Geometry drawn in pieces (two boxes side by side, one colour, each its own object as the
+// program drew it with its own modelview) is one surface where they meet: no ink along the
+// seam unless edges.object_seams asks for it; the outer outline is there either way.
+TEST(Edges, SeamsBetweenPiecesOfOneSurfaceAreNotInked)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto box = [](float x) {
+        return boxBatch(glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.0f, -kDistance)),
+                        glm::vec3(0.5f), kPale);
+    };
+    auto scene = harness.makeScene({box(-0.5f), box(0.5f)}, perspective());
+    ASSERT_EQ(scene.objects.size(), 2u);
+    // The seam is the middle column; the boxes' front faces span about +-35 pixels around it.
+    auto seamInk = [](const PngImage& image) {
+        int n = 0;
+        for (int y = kSize / 2 - 20; y < kSize / 2 + 20; ++y) {
+            for (int x = kSize / 2 - 2; x <= kSize / 2 + 2; ++x) n += isInk(image, x, y);
+        }
+        return n;
+    };
+    const PngImage joined = render(harness, scene, "toon+edges", "", "edges_seam_off");
+    const PngImage seams =
+        render(harness, scene, "toon+edges", "edges.object_seams=on", "edges_seam_on");
+    EXPECT_EQ(seamInk(joined), 0);
+    EXPECT_GT(seamInk(seams), 40);
+    // The outer outline: ink on the left and right borders in both.
+    for (const PngImage* image : {&joined, &seams}) {
+        EXPECT_GT(countInk(*image), 200);
+    }
+}
+
 // One chain kept across flushes whose viewport changes size: the off-screen buffers follow.
 TEST(Edges, RecreatesBuffersWhenTheViewportChanges)
 {

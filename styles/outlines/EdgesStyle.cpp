@@ -87,6 +87,7 @@ uniform ivec4 rect;          // lowest and highest pixel of the scissored rectan
 uniform float depthStep;     // log2(1 + threshold) in the depth's fixed point
 uniform float creaseCosine;
 uniform float colourThreshold; // in 1/255 steps
+uniform bool objectSeams;
 out vec4 fragColor;
 
 float windowDepth(uint y) { return float(y & 0xffffffu) * (1.0 / 16777215.0); }
@@ -103,10 +104,17 @@ void compare(uvec4 c, vec3 n, vec3 colour, uvec4 s, inout vec3 found, inout floa
     if (c.x == 0u || s.x == 0u || float(max(s.x, c.x) - min(s.x, c.x)) > depthStep) {
         found.r = 1.0;
         nearest = min(nearest, windowDepth(s.y));
-    } else if ((((s.y ^ c.y) | (s.z ^ c.z)) >> 24) != 0u ||
-               any(greaterThan(abs(unpackColour(s.z) - colour), vec3(colourThreshold)))) {
+        return;
+    }
+    // Another object continuing the same surface in the same colour (a tube drawn in
+    // segments, a floor in tiles) is no edge unless seams are asked for; where it turns or
+    // changes colour it is a material edge.
+    bool otherObject = (((s.y ^ c.y) | (s.z ^ c.z)) >> 24) != 0u;
+    bool otherColour = any(greaterThan(abs(unpackColour(s.z) - colour), vec3(colourThreshold)));
+    bool turns = dot(n, unpackNormal(s.w)) < creaseCosine;
+    if (otherColour || (otherObject && (objectSeams || turns))) {
         found.b = 1.0;
-    } else if (dot(n, unpackNormal(s.w)) < creaseCosine) {
+    } else if (turns) {
         found.g = 1.0;
     }
 }
@@ -264,6 +272,11 @@ StyleInfo edgesStyleInfo()
         "change of a colour channel (0-1) between neighbouring pixels that makes a material "
         "edge",
         0.15, 0.01, 1.0));
+    p.push_back(ParamInfo::flag(
+        "object_seams",
+        "lines where one object meets another on a smooth surface of the same colour (the "
+        "seams of geometry drawn in pieces: tube segments, floor tiles)",
+        false));
     addInkParams(p);
     for (const char* c : {"silhouette", "crease", "material"}) addLightnessParam(p, c, 0.0);
     return info;
@@ -287,7 +300,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     for (auto [program, op] : {std::pair{&mDetect, &mDet}, std::pair{&mDirect, &mDir}}) {
         *op = {program->uniform(gl, "attributes"), program->uniform(gl, "rect"),
                program->uniform(gl, "depthStep"), program->uniform(gl, "creaseCosine"),
-               program->uniform(gl, "colourThreshold")};
+               program->uniform(gl, "colourThreshold"), program->uniform(gl, "objectSeams")};
     }
     mDirU = {mDirect.uniform(gl, "origin"), mDirect.uniform(gl, "cover"),
              mDirect.uniform(gl, "colours"), mDirect.uniform(gl, "depthBias")};
@@ -307,6 +320,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mDepthThreshold = float(ctx.param(kStyle, "depth_threshold"));
     mCreaseCosine = float(std::cos(glm::radians(ctx.param(kStyle, "crease_angle"))));
     mColourThreshold = float(ctx.param(kStyle, "colour_threshold"));
+    mObjectSeams = ctx.param(kStyle, "object_seams") >= 0.5;
     // Far enough for the widest class (see the composite's coverage).
     const float widest = std::max({mWidths.x, mWidths.y, mWidths.z});
     mRadius = int(std::ceil(0.5f * widest));
@@ -457,6 +471,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform1f(op.depthStep, std::log2(1.0f + mDepthThreshold) * 16777216.0f);
         gl.Uniform1f(op.creaseCosine, mCreaseCosine);
         gl.Uniform1f(op.colourThreshold, mColourThreshold * 255.0f);
+        gl.Uniform1i(op.objectSeams, mObjectSeams ? 1 : 0);
     };
     GLint depthBits = 0;
     const bool direct = mRadius <= 1;

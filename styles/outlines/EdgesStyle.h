@@ -63,9 +63,10 @@ private:
     // The edge operator's uniforms, in both programs that run it.
     struct Operator {
         GLint attributes = -1, rect = -1, depthStep = -1, creaseCosine = -1,
-              colourThreshold = -1;
+              colourThreshold = -1, objectSeams = -1;
     };
     Operator mDet, mDir;
+    bool mObjectSeams = false;
     struct {
         GLint edges = -1, rect = -1, radius = -1;
     } mDil;
