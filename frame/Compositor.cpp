@@ -387,8 +387,24 @@ void Compositor::setEnabled(bool enabled)
 
 void Compositor::tintBegin()
 {
-    if (!mTintLeft || !mLeftNow) return;
+    if (!mLeftNow) return;
     mLeftNow = false;
+    bool textured = false, sourceAlpha = false, material = false;
+    if (!mTintLeft && mEnabled && mHasStyles && mChain.inksGlows() &&
+        mTracker.additiveGlow(textured, sourceAlpha, material)) {
+        // On the chain's page a glow is drawn as ink of its colour (GlowInk); the attribute
+        // stack gives the program's blending back, glowEnd its program binding (none).
+        gRealGl.glPushAttrib(GL_COLOR_BUFFER_BIT);
+        mChain.glowBegin(textured, sourceAlpha, material);
+        mGlowing = true;
+        if (!mGlowSaid) {
+            NPRGL_INFO("context %u: additive glows are drawn as ink of their colour on the page",
+                       mContext.serial());
+            mGlowSaid = true;
+        }
+        return;
+    }
+    if (!mTintLeft) return;
     // Fog at an overwhelming density turns every fragment of the fixed-function pipeline into
     // the fog colour, whatever its colours, lighting and textures; the attribute stack gives
     // the program's fog back. A program's own shaders ignore it (their draws stay as drawn).
@@ -403,6 +419,11 @@ void Compositor::tintBegin()
 
 void Compositor::tintEnd()
 {
+    if (mGlowing) {
+        mChain.glowEnd();
+        gRealGl.glPopAttrib();
+        mGlowing = false;
+    }
     if (!mTinting) return;
     gRealGl.glPopAttrib();
     mTinting = false;

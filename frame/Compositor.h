@@ -137,6 +137,8 @@ private:
     bool mTintLeft = false; // the chain has the coverage style
     bool mLeftNow = false;  // the draw being forwarded was counted as left
     bool mTinting = false;
+    bool mGlowing = false; // a left glow is being drawn as ink on the chain's page
+    bool mGlowSaid = false;
     GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only
     GlDispatch mHeldTable{}; // the context's table while a held glBegin..glEnd is open
 

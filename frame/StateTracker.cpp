@@ -578,6 +578,19 @@ glm::vec3 StateTracker::lightTint() const
     return top > 1e-6f ? sum / top : glm::vec3(1.0f);
 }
 
+bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha, bool& materialColour) const
+{
+    const AttribState& a = mAttrib;
+    if (!a.blend || a.blendDst != GL_ONE || (a.blendSrc != GL_ONE && a.blendSrc != GL_SRC_ALPHA) ||
+        mProgram != 0 || a.vertexProgram || a.fragmentProgram) {
+        return false;
+    }
+    textured = a.texture2D && mBoundTexture != 0;
+    sourceAlpha = a.blendSrc == GL_SRC_ALPHA;
+    materialColour = a.lighting && !a.colorMaterial;
+    return true;
+}
+
 bool StateTracker::translucent() const
 {
     // Blending over what is behind by the fragment's alpha: a translucent surface, which the

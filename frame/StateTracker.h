@@ -94,6 +94,9 @@ public:
     // A 3D polygon draw issued now would not be held because of this state (for the log), or
     // null. 2D drawing (no depth test, no perspective) is not held and needs no reason.
     const char* unstylableState() const;
+    // A draw issued now adds light (GL_ONE or GL_SRC_ALPHA onto GL_ONE) through the
+    // fixed-function pipeline: a glow, a flare, a particle. With what it is drawn from.
+    bool additiveGlow(bool& textured, bool& sourceAlpha, bool& materialColour) const;
     bool is3D() const;
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
     // The driver's attribute stack depths (GL_MAX_ATTRIB_STACK_DEPTH, ..._CLIENT_...).

@@ -38,6 +38,14 @@ bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getPro
         }
         mHasShading = mHasShading || info->role == StyleRole::Shading;
         mStyles.push_back(std::move(style));
+        if (info->role == StyleRole::Background && !mGlowInkReady) {
+            std::string inkError;
+            mGlowInkReady = mGlowInk.init(gl, inkError);
+            if (!mGlowInkReady) {
+                NPRGL_WARN("additive glows cannot be inked on the page here (%s): they may wash "
+                           "out", inkError.c_str());
+            }
+        }
     }
     // Whatever the styles' set-up left in the error flag is theirs, not the program's.
     while (gl.GetError() != GL_NO_ERROR) {
@@ -166,6 +174,8 @@ void StyleChain::shutdown()
 {
     for (const std::unique_ptr<Style>& style : mStyles) style->shutdown(mContext);
     mStyles.clear();
+    if (mGlowInkReady) mGlowInk.shutdown(mContext.gl);
+    mGlowInkReady = false;
     if (mContext.gl.DeleteVertexArrays) {
         mContext.meshes.destroy(mContext.gl);
         mContext.gl.DeleteVertexArrays(1, &mContext.vao);

@@ -2,6 +2,7 @@
 
 #include "styles/Style.h"
 #include "styles/StyleSettings.h"
+#include "styles/background/GlowInk.h"
 
 #include <memory>
 #include <string>
@@ -22,6 +23,14 @@ public:
     void shutdown();
 
     bool hasShading() const { return mHasShading; }
+    // The chain draws a page (a background style): additive glows of the program's would
+    // wash out on it, so they are drawn as ink around their draws (GlowInk).
+    bool inksGlows() const { return mGlowInkReady; }
+    void glowBegin(bool textured, bool sourceAlpha, bool materialColour)
+    {
+        mGlowInk.begin(mContext.gl, textured, sourceAlpha, materialColour);
+    }
+    void glowEnd() { mGlowInk.end(mContext.gl); }
     StyleContext& context() { return mContext; }
 
     // Sets the baseline state of Style.h: the shading pass's, or the one of the passes after.
@@ -32,6 +41,8 @@ private:
     StyleContext mContext;
     std::vector<std::unique_ptr<Style>> mStyles;
     bool mHasShading = false;
+    GlowInk mGlowInk;
+    bool mGlowInkReady = false;
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
 };
 

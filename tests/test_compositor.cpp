@@ -625,6 +625,41 @@ TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
     EXPECT_LT(redIn(20, 200, 300, 235), 0.01f) << "the styled floor is red";
 }
 
+// An additive glow (the demo's sphere, GL_ONE, GL_ONE) on a paper page is drawn as ink of its
+// colour: not washed out to the page's white, as it is added natively and over a chain
+// without a page; still counted as left (its geometry is the program's drawing).
+TEST(Compositor, AdditiveGlowsReadOverPaper)
+{
+    auto whiteInSphere = [](const std::string& style) {
+        const std::string dir = freshDir("glow");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style},
+                                           {demo("textured"), "--additive", "--offscreen",
+                                            "--size", "320x240", "--frames", "3", "--save-frames",
+                                            "3", "--save-dir", dir}));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.err.find("left as the program drew them (blending other than"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_EQ(r.err.find("drawn as ink") != std::string::npos,
+                  style.find("paper") != std::string::npos)
+            << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+        int white = 0, all = 0;
+        for (int y = 110; y < 145; ++y) {
+            for (int x = 190; x < 225; ++x) {
+                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                white += std::min({p[0], p[1], p[2]}) >= 225;
+                ++all;
+            }
+        }
+        return float(white) / float(all);
+    };
+    EXPECT_GT(whiteInSphere("toon"), 0.3f) << "the glow does not wash out here: no test";
+    EXPECT_LT(whiteInSphere("toon+paper"), 0.05f) << "the glow washed out on the page";
+}
+
 // A translucent surface (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, depth writes off) is styled and
 // drawn over the styled scene with the program's blending: what is behind it shows through.
 TEST(Compositor, TranslucentSurfacesAreStyledAndBlendedOverTheScene)

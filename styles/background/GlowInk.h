@@ -1,0 +1,29 @@
+#pragma once
+
+// GlowInk: additive glows (fire, flares, particles) drawn as coloured ink on a light page.
+
+#include "styles/ShaderProgram.h"
+
+namespace nprgl::styles {
+
+// Added to a page of paper, a glow saturates to white and vanishes. Around such a draw of
+// the program's (left as it draws it: GL_ONE or GL_SRC_ALPHA onto GL_ONE), this program and
+// a multiplying blend turn what it would add, c, into the page darkened towards c's hue by
+// c's strength: page * (1 - max(c) + c). Black adds nothing and changes nothing; a bright
+// orange flame becomes orange ink. Fixed-function draws only (it reads gl_Color,
+// gl_MultiTexCoord0 and unit 0's texture as GL_MODULATE would).
+class GlowInk {
+public:
+    bool init(const GlFunctions& gl, std::string& error);
+    // The caller has pushed GL_COLOR_BUFFER_BIT and checked that no program of the program's
+    // is bound; end() unbinds ours.
+    void begin(const GlFunctions& gl, bool textured, bool sourceAlpha, bool materialColour);
+    void end(const GlFunctions& gl);
+    void shutdown(const GlFunctions& gl);
+
+private:
+    ShaderProgram mProgram;
+    GLint mTextured = -1, mSourceAlpha = -1, mMaterial = -1;
+};
+
+} // namespace nprgl::styles
