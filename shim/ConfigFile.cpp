@@ -174,9 +174,9 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
         while (std::getline(in, raw)) {
             const std::string line(trimBlanks(raw));
             const size_t eq = line.find('=');
-            const std::string key =
-                eq == std::string::npos ? std::string() : std::string(trimBlanks(
-                                                              std::string_view(line).substr(0, eq)));
+            const std::string_view name =
+                eq == std::string::npos ? std::string_view() : std::string_view(line).substr(0, eq);
+            const std::string key(trimBlanks(name));
             const bool look = key == "style" || key == "preset" || key == "leave_texture" ||
                               StyleRegistry::instance().findParam(key) != nullptr;
             if (!look) kept += raw + "\n";

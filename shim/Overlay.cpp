@@ -8,7 +8,10 @@
 #include <imgui.h>
 #include <backends/imgui_impl_opengl2.h>
 
+#include <X11/keysym.h>
+
 #include <mutex>
+#include <utility>
 
 namespace nprgl {
 
@@ -52,27 +55,29 @@ void Overlay::neutralState(bool doubleBuffered)
     for (GLint unit = units - 1; unit >= 0; --unit) {
         gl.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
         gl.glClientActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
-                              GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
-                              GL_TEXTURE_GEN_Q}) {
+        for (GLenum target :
+             {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_GEN_S,
+              GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q}) {
             off(Switch::Cap, unit, target);
         }
         off(Switch::ClientArray, unit, GL_TEXTURE_COORD_ARRAY);
     }
-    for (GLenum cap : {GL_FOG, GL_ALPHA_TEST, GL_STENCIL_TEST, GL_COLOR_LOGIC_OP,
-                       GL_POLYGON_STIPPLE, GL_COLOR_SUM, GL_RASTERIZER_DISCARD,
-                       GL_PRIMITIVE_RESTART, GL_FRAMEBUFFER_SRGB, GL_VERTEX_PROGRAM_ARB,
-                       GL_FRAGMENT_PROGRAM_ARB, GL_SAMPLE_ALPHA_TO_COVERAGE}) {
+    for (GLenum cap :
+         {GL_FOG, GL_ALPHA_TEST, GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_POLYGON_STIPPLE,
+          GL_COLOR_SUM, GL_RASTERIZER_DISCARD, GL_PRIMITIVE_RESTART, GL_FRAMEBUFFER_SRGB,
+          GL_VERTEX_PROGRAM_ARB, GL_FRAGMENT_PROGRAM_ARB, GL_SAMPLE_ALPHA_TO_COVERAGE}) {
         off(Switch::Cap, 0, cap);
     }
-    for (int plane = 0; plane < 6; ++plane) off(Switch::Cap, 0, GLenum(GL_CLIP_PLANE0 + plane));
-    for (GLenum array : {GL_SECONDARY_COLOR_ARRAY, GL_FOG_COORD_ARRAY, GL_INDEX_ARRAY,
-                         GL_EDGE_FLAG_ARRAY}) {
+    for (int plane = 0; plane < 6; ++plane)
+        off(Switch::Cap, 0, GLenum(GL_CLIP_PLANE0 + plane));
+    for (GLenum array :
+         {GL_SECONDARY_COLOR_ARRAY, GL_FOG_COORD_ARRAY, GL_INDEX_ARRAY, GL_EDGE_FLAG_ARRAY}) {
         off(Switch::ClientArray, 0, array);
     }
     GLint attribs = 0;
     gl.glGetIntegerv(GL_MAX_VERTEX_ATTRIBS, &attribs);
-    for (GLint i = 0; i < attribs; ++i) off(Switch::Attrib, 0, GLenum(i));
+    for (GLint i = 0; i < attribs; ++i)
+        off(Switch::Attrib, 0, GLenum(i));
     gl.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.glDrawBuffer(doubleBuffered ? GL_BACK : GL_FRONT);
     gl.glMatrixMode(GL_TEXTURE);
@@ -96,7 +101,9 @@ void Overlay::switchBackOn()
             gl.glClientActiveTexture(GLenum(GL_TEXTURE0 + s.unit));
             if (!gl.glIsEnabled(s.what)) gl.glEnableClientState(s.what);
             break;
-        case Switch::Attrib: gl.glEnableVertexAttribArray(s.what); break;
+        case Switch::Attrib:
+            gl.glEnableVertexAttribArray(s.what);
+            break;
         }
     }
     gl.glActiveTexture(GLenum(active));
@@ -129,8 +136,8 @@ void Overlay::setOpen(bool open)
     NPRGL_INFO("overlay %s", open ? "open" : "closed");
 }
 
-void Overlay::draw(Compositor& compositor, _XDisplay* display, Window window, int width,
-                   int height, bool doubleBuffered)
+void Overlay::draw(Compositor& compositor, _XDisplay* display, Window window, int width, int height,
+                   bool doubleBuffered)
 {
     const auto now = std::chrono::steady_clock::now();
     if (mLastFrame != std::chrono::steady_clock::time_point{}) {
@@ -141,10 +148,10 @@ void Overlay::draw(Compositor& compositor, _XDisplay* display, Window window, in
 
     std::lock_guard lock(imguiMutex());
     if (!mImGui) {
-        mBindVertexArray = reinterpret_cast<PFNGLBINDVERTEXARRAYPROC>(
-            realProcAddress("glBindVertexArray"));
-        mBindFramebuffer = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(
-            realProcAddress("glBindFramebuffer"));
+        mBindVertexArray =
+            reinterpret_cast<PFNGLBINDVERTEXARRAYPROC>(realProcAddress("glBindVertexArray"));
+        mBindFramebuffer =
+            reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(realProcAddress("glBindFramebuffer"));
         if (!mSaved.resolve() || !mBindVertexArray || !mBindFramebuffer) {
             NPRGL_WARN("overlay: the driver lacks framebuffer objects; no overlay here");
             mBroken = true;
@@ -166,7 +173,9 @@ void Overlay::draw(Compositor& compositor, _XDisplay* display, Window window, in
     io.DeltaTime = mFrameMs > 0.0 ? float(mFrameMs / 1000.0) : 1.0f / 60.0f;
     const PointerState pointer = mInput.poll(display, window, width, height);
     io.MousePos = pointer.inside ? ImVec2(pointer.x, pointer.y) : ImVec2(-FLT_MAX, -FLT_MAX);
-    for (int b = 0; b < 3; ++b) io.MouseDown[b] = pointer.buttons[b];
+    for (int b = 0; b < 3; ++b)
+        io.MouseDown[b] = pointer.buttons[b];
+    pollKeyboard(display);
 
     // Whatever the thunks reach from here on (ImGui's backend calls gl* by name) goes
     // straight to the driver: not recorded, followed or held.
@@ -195,6 +204,64 @@ void Overlay::draw(Compositor& compositor, _XDisplay* display, Window window, in
     if (changes.toggle) compositor.setEnabled(!compositor.enabled());
     if (changes.restyle) compositor.restyle(changes.settings, false);
     if (changes.rules) compositor.setLeftTextures(std::move(changes.leftTextures));
+}
+
+void Overlay::pollKeyboard(_XDisplay* display)
+{
+    ImGuiIO& io = ImGui::GetIO();
+    char keymap[32] = {};
+    if (!mInput.pollKeys(display, keymap)) return;
+    auto down = [&](unsigned code) {
+        return code < 256 && (keymap[code >> 3] & (1 << (code & 7)));
+    };
+    if (display != mKeysOf) {
+        // ImGui's keys by X key code on this display.
+        mKeysOf = display;
+        const std::pair<ImGuiKey, unsigned long> keys[] = {{ImGuiKey_Tab, XK_Tab},
+                                                           {ImGuiKey_LeftArrow, XK_Left},
+                                                           {ImGuiKey_RightArrow, XK_Right},
+                                                           {ImGuiKey_UpArrow, XK_Up},
+                                                           {ImGuiKey_DownArrow, XK_Down},
+                                                           {ImGuiKey_Home, XK_Home},
+                                                           {ImGuiKey_End, XK_End},
+                                                           {ImGuiKey_Delete, XK_Delete},
+                                                           {ImGuiKey_Backspace, XK_BackSpace},
+                                                           {ImGuiKey_Enter, XK_Return},
+                                                           {ImGuiKey_Escape, XK_Escape},
+                                                           {ImGuiKey_KeyPadEnter, XK_KP_Enter},
+                                                           {ImGuiKey_A, XK_a},
+                                                           {ImGuiKey_C, XK_c},
+                                                           {ImGuiKey_V, XK_v},
+                                                           {ImGuiKey_X, XK_x},
+                                                           {ImGuiKey_Z, XK_z}};
+        for (const auto& [key, sym] : keys)
+            io.KeyMap[key] = int(mInput.keycode(display, sym));
+        for (unsigned long sym : {XK_Shift_L, XK_Shift_R})
+            mShift.push_back(mInput.keycode(display, sym));
+        for (unsigned long sym : {XK_Control_L, XK_Control_R})
+            mCtrl.push_back(mInput.keycode(display, sym));
+        for (unsigned long sym : {XK_Alt_L, XK_Alt_R})
+            mAlt.push_back(mInput.keycode(display, sym));
+    }
+    auto any = [&](const std::vector<unsigned>& codes) {
+        bool on = false;
+        for (unsigned code : codes)
+            on = on || (code && down(code));
+        return on;
+    };
+    io.KeyShift = any(mShift);
+    io.KeyCtrl = any(mCtrl);
+    io.KeyAlt = any(mAlt);
+    for (unsigned code = 8; code < 256; ++code) {
+        const bool now = down(code);
+        const bool pressed = now && !io.KeysDown[code];
+        io.KeysDown[code] = now;
+        // A key that went down since the last frame types its character (the field that
+        // has the focus takes it; there is no auto-repeat between frames).
+        if (!pressed || io.KeyCtrl || io.KeyAlt) continue;
+        const unsigned long sym = mInput.keysym(display, code, io.KeyShift);
+        if (sym >= 0x20 && sym <= 0x7e) io.AddInputCharacter(unsigned(sym));
+    }
 }
 
 bool Overlay::beginGl(bool doubleBuffered)

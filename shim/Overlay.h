@@ -40,6 +40,8 @@ public:
 private:
     // Saves the program's state and sets what ImGui's backend expects; false: not drawable.
     bool beginGl(bool doubleBuffered);
+    // Keys from XQueryKeymap into ImGui (text fields, Ctrl+click typing into a slider).
+    void pollKeyboard(_XDisplay* display);
     void endGl(Compositor& compositor);
     void neutralState(bool doubleBuffered);
     // Switches on again what neutralState() switched off and the stacks did not restore.
@@ -54,6 +56,8 @@ private:
     std::chrono::steady_clock::time_point mLastFrame{};
     double mFrameMs = 0.0;
     int mFramesOpen = 0;
+    _XDisplay* mKeysOf = nullptr; // the display ImGui's key map is for
+    std::vector<unsigned> mShift, mCtrl, mAlt;
     GLenum mProgramError = GL_NO_ERROR; // taken from the driver before drawing, given back
     GLint mElements = 0;
     enum class Switch : uint8_t { Cap, ClientArray, Attrib };

@@ -7,6 +7,7 @@
 #include "styles/StyleRegistry.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,10 +60,12 @@ void OverlayPanel::follow(const StyleSettings& running)
         if (s->create) mChain.push_back(s->name);
     }
     mValues.clear();
+    mTyped.clear();
     KeyValueList pairs;
     std::string error;
     if (parseKeyValues(running.configText(), ',', pairs, error)) {
-        for (auto& [key, value] : pairs) mValues[key] = value;
+        for (auto& [key, value] : pairs)
+            mValues[key] = value;
     }
     mError.clear();
 }
@@ -70,7 +73,8 @@ void OverlayPanel::follow(const StyleSettings& running)
 std::string OverlayPanel::chainText() const
 {
     std::string chain;
-    for (const std::string& s : mChain) chain += (chain.empty() ? "" : "+") + s;
+    for (const std::string& s : mChain)
+        chain += (chain.empty() ? "" : "+") + s;
     return chain.empty() ? "none" : chain;
 }
 
@@ -95,9 +99,9 @@ OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool sty
     Changes changes;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(std::min(360.0f, display.x - 16.0f),
-                                    std::min(600.0f, display.y - 16.0f)),
-                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(
+        ImVec2(std::min(360.0f, display.x - 16.0f), std::min(600.0f, display.y - 16.0f)),
+        ImGuiCond_FirstUseEver);
     ImGui::Begin("nprgl", nullptr, ImGuiWindowFlags_NoSavedSettings);
     ImGui::Text("%s: %s", mProgramName.c_str(), chainText().c_str());
     bool on = styled;
@@ -143,7 +147,8 @@ bool OverlayPanel::presetRow()
 {
     static std::vector<std::string> names = [] {
         std::vector<std::string> n;
-        for (const Preset& p : Presets::shipped()) n.emplace_back(p.name);
+        for (const Preset& p : Presets::shipped())
+            n.emplace_back(p.name);
         return n;
     }();
     if (names.empty()) return false;
@@ -250,8 +255,8 @@ bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param)
         } else {
             float v = float(value);
             const bool wide = param.minValue > 0.0 && param.maxValue / param.minValue >= 100.0;
-            if (ImGui::SliderFloat(label, &v, float(param.minValue), float(param.maxValue),
-                                   "%.3g", wide ? ImGuiSliderFlags_Logarithmic : 0)) {
+            if (ImGui::SliderFloat(label, &v, float(param.minValue), float(param.maxValue), "%.3g",
+                                   wide ? ImGuiSliderFlags_Logarithmic : 0)) {
                 next = numberText(std::clamp(double(v), param.minValue, param.maxValue));
             }
         }
@@ -275,9 +280,20 @@ bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param)
         }
         break;
     }
-    case ParamKind::Text:
-        ImGui::Text("%s: %s", label, text.c_str());
+    case ParamKind::Text: {
+        // A file name, typed; applied with Enter (a half-typed name would be refused).
+        std::string& typed = mTyped.try_emplace(key, configured ? text : param.defaultText)
+                                 .first->second;
+        if (ImGui::InputText(label, &typed, ImGuiInputTextFlags_EnterReturnsTrue)) {
+            next = typed;
+            if (next.empty()) {
+                mValues.erase(key); // back to the default
+                mTyped.erase(key);
+                return true;
+            }
+        }
         break;
+    }
     }
     if (ImGui::IsItemHovered() && !param.help.empty()) ImGui::SetTooltip("%s", param.help.c_str());
     noteItem(key);
@@ -301,8 +317,8 @@ void OverlayPanel::picked(uint32_t object, uint32_t faces, GLuint texture, uint6
                       object, faces);
     } else if (textureHash == 0) {
         std::snprintf(text, sizeof text,
-                      "object %u (%u faces), texture %u: its content was not seen uploaded",
-                      object, faces, texture);
+                      "object %u (%u faces), texture %u: its content was not seen uploaded", object,
+                      faces, texture);
     } else {
         std::snprintf(text, sizeof text, "object %u (%u faces), texture %u = %s", object, faces,
                       texture, ConfigFile::hashText(textureHash).c_str());
@@ -311,14 +327,13 @@ void OverlayPanel::picked(uint32_t object, uint32_t faces, GLuint texture, uint6
     NPRGL_INFO("overlay: picked %s", text);
 }
 
-bool OverlayPanel::pickRows(const std::vector<uint64_t>& leftTextures,
-                            std::vector<uint64_t>& next)
+bool OverlayPanel::pickRows(const std::vector<uint64_t>& leftTextures, std::vector<uint64_t>& next)
 {
     ImGui::Checkbox("pick", &mPicking);
     noteItem("pick");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("then click an object of the program");
-    const bool left = mPickedHash != 0 && std::binary_search(leftTextures.begin(),
-                                                             leftTextures.end(), mPickedHash);
+    const bool left = mPickedHash != 0 &&
+                      std::binary_search(leftTextures.begin(), leftTextures.end(), mPickedHash);
     bool changed = false;
     ImGui::SameLine();
     ImGui::BeginDisabled(mPickedHash == 0 || left);
@@ -377,9 +392,6 @@ void OverlayPanel::noteItem(const std::string& id) const
                 hi.y - lo.y);
 }
 
-void OverlayPanel::noteLayout()
-{
-    mNoteItems = true;
-}
+void OverlayPanel::noteLayout() { mNoteItems = true; }
 
 } // namespace nprgl

@@ -33,8 +33,8 @@ public:
     struct Changes {
         bool restyle = false; // run `settings` from the next frame
         StyleSettings settings;
-        bool toggle = false;  // styling on/off
-        bool rules = false;   // leave `leftTextures` from the next frame
+        bool toggle = false; // styling on/off
+        bool rules = false;  // leave `leftTextures` from the next frame
         std::vector<uint64_t> leftTextures;
     };
     // `leftTextures`: the rules the compositor runs (sorted).
@@ -62,17 +62,18 @@ private:
 
     std::string mProgramName;
     std::string mProgramFile;
-    std::vector<std::string> mChain;           // style names, in order
+    std::vector<std::string> mChain;            // style names, in order
     std::map<std::string, std::string> mValues; // "style.param" -> text, defaults left out
-    std::string mFollowed;                     // the running look last taken in
-    std::string mError;                        // the registry's answer to the last edit
-    std::string mSaved;                        // the last save's outcome
-    int mAdd = 0;                              // the style chosen to add
-    int mPreset = 0;                           // the preset chosen to apply
+    std::map<std::string, std::string> mTyped;  // text parameters as typed so far
+    std::string mFollowed;                      // the running look last taken in
+    std::string mError;                         // the registry's answer to the last edit
+    std::string mSaved;                         // the last save's outcome
+    int mAdd = 0;                               // the style chosen to add
+    int mPreset = 0;                            // the preset chosen to apply
     bool mNoteItems = false;
     bool mPicking = false;
-    std::string mPick;          // what the last pick found, as shown
-    uint64_t mPickedHash = 0;   // its texture's content hash (0: untextured or unknown)
+    std::string mPick;        // what the last pick found, as shown
+    uint64_t mPickedHash = 0; // its texture's content hash (0: untextured or unknown)
 };
 
 } // namespace nprgl

@@ -483,3 +483,24 @@ TEST(Overlay, APickedTextureIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
     EXPECT_EQ(differingIn(ruledReplay, none, p0, p0, p1, p1), 0);
     EXPECT_EQ(differingIn(ruledReplay, toonReplay, 0, 0, 600, 460), 0);
 }
+
+// The keyboard reaches the overlay too (polled, as the pointer): Ctrl+click on a slider and
+// typing "0.75", Enter, sets the value exactly.
+TEST(Overlay, KeysTypeAValueIntoASlider)
+{
+    const std::string layout = runHotkeys(
+        "keys_layout", {nprglCommand(), "--style", "toon", "--log-level", "debug"},
+        {"--size", kOverlaySize, "--frames", "3"}, "3", {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect slider = itemAt(stderrOf(layout), "toon.diffuse_threshold");
+    ASSERT_GT(slider.w, 0) << stderrOf(layout);
+    const std::string typed = runHotkeys(
+        "keys_typed", {nprglCommand(), "--style", "toon"},
+        {"--size", kOverlaySize, "--frames", "12",
+         "--pointer", "3", std::to_string(slider.x + 60), std::to_string(slider.y + slider.h / 2),
+         "--press", "4", "Control_L", "--button", "4", "down", "--button", "5", "up",
+         "--press", "6", "0", "--press", "7", "period", "--press", "8", "7",
+         "--press", "9", "5", "--press", "10", "Return"},
+        "12", {{"NPRGL_OVERLAY", "open"}});
+    EXPECT_NE(stderrOf(typed).find("overlay: toon.diffuse_threshold=0.75\n"), std::string::npos)
+        << stderrOf(typed);
+}

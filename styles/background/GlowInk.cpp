@@ -57,14 +57,8 @@ void GlowInk::begin(const GlFunctions& gl, bool textured, bool sourceAlpha, bool
     gl.BlendFunc(GL_DST_COLOR, GL_ZERO);
 }
 
-void GlowInk::end(const GlFunctions& gl)
-{
-    gl.UseProgram(0);
-}
+void GlowInk::end(const GlFunctions& gl) { gl.UseProgram(0); }
 
-void GlowInk::shutdown(const GlFunctions& gl)
-{
-    mProgram.destroy(gl);
-}
+void GlowInk::shutdown(const GlFunctions& gl) { mProgram.destroy(gl); }
 
 } // namespace nprgl::styles
