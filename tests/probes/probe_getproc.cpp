@@ -15,6 +15,8 @@
 //   --save FILE  writes the last frame's RGBA bytes (bottom row first), read before the swap
 // Prints "getproc checksum C covered N cells a b c d e f" (pixels not of the clear colour,
 // whole frame and per cell, cell 0 top left, row by row).
+#include "tests/probes/ProbeTexture.h"
+
 #include <GL/gl.h>
 #include <GL/glext.h>
 #if defined(PROBE_OSMESA)
@@ -166,14 +168,7 @@ GLuint texture(int size, bool lightmap)
             }
         }
     }
-    GLuint name = 0;
-    glGenTextures(1, &name);
-    glBindTexture(GL_TEXTURE_2D, name);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, size, size, 0, GL_RGB, GL_UNSIGNED_BYTE,
-                 texels.data());
-    return name;
+    return nprgl::probes::uploadRgbTexture(texels, size, GL_LINEAR);
 }
 
 GLhandleARB shaderProgram(const Ext& e)

@@ -5,6 +5,7 @@
 // as a user would: the hotkey and overlay tests, counted in frames. --textured adds a
 // textured poster in front of the cube, in the window's lower right corner.
 #include "tests/probes/ProbeCube.h"
+#include "tests/probes/ProbeTexture.h"
 
 #include <GL/glx.h>
 #include <X11/Xlib.h>
@@ -44,25 +45,17 @@ void setKeys(Display* dpy, const std::vector<KeyCode>& codes, bool down)
 // A 64x64 checkerboard of two blues, generated.
 GLuint makePosterTexture()
 {
-    std::vector<unsigned char> texels(64 * 64 * 3);
+    std::vector<uint8_t> texels(64 * 64 * 3);
     for (int y = 0; y < 64; ++y) {
         for (int x = 0; x < 64; ++x) {
             const bool dark = ((x / 8) + (y / 8)) % 2 != 0;
-            unsigned char* t = &texels[size_t(y * 64 + x) * 3];
+            uint8_t* t = &texels[size_t(y * 64 + x) * 3];
             t[0] = dark ? 30 : 120;
             t[1] = dark ? 60 : 170;
             t[2] = dark ? 140 : 240;
         }
     }
-    GLuint texture = 0;
-    glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 64, 64, 0, GL_RGB, GL_UNSIGNED_BYTE, texels.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
-    return texture;
+    return nprgl::probes::uploadRgbTexture(texels, 64, GL_NEAREST);
 }
 
 // In front of the cube (z = -2.2; the cube's nearest corner is at -2.27), unlit, textured.
