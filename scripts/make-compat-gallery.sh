@@ -6,6 +6,8 @@
 # pictures before committing them.   scripts/make-compat-gallery.sh [BUILD_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=scripts/gallery-lib.sh
+source "$root/scripts/gallery-lib.sh"
 build=${1:-$root/build}
 hacks=(engine molecule superquadrics glknots)
 styles=(none toon+paper+edges preset:pencil halftone+paper+edges)
@@ -13,9 +15,6 @@ out="$root/docs/gallery"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
-fileName() { case "$1" in preset:*) echo "preset-${1#preset:}" ;; *) echo "$1" | tr '+' '-' ;; esac; }
-label() { case "$1" in preset:*) echo "--preset ${1#preset:}" ;; *) echo "$1" ;; esac; }
-styleArgs() { case "$1" in preset:*) echo "--preset ${1#preset:}" ;; *) echo "--style $1" ;; esac; }
 
 shoot() { # hack style -> $tmp/<hack>_40.png, run until frame 40 is written
     local hack=$1 style=$2 dir="$tmp/$1-$(fileName "$2")"
@@ -49,14 +48,4 @@ table="$tmp/table.md"
         printf '\n'
     done
 } > "$table"
-python3 - "$root/README.md" "$table" <<'PY'
-import sys
-readme, table = sys.argv[1], open(sys.argv[2]).read()
-text = open(readme).read()
-start, end = "<!-- compat-gallery:start -->", "<!-- compat-gallery:end -->"
-if start not in text:
-    sys.exit("README.md has no compat-gallery markers")
-head, rest = text.split(start, 1)
-tail = rest.split(end, 1)[1]
-open(readme, "w").write(head + start + "\n" + table + end + tail)
-PY
+replaceReadmeSection "$root/README.md" compat-gallery "$table"

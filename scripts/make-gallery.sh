@@ -6,6 +6,8 @@
 #   scripts/make-gallery.sh [BUILD_DIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=scripts/gallery-lib.sh
+source "$root/scripts/gallery-lib.sh"
 build=${1:-$root/build}
 nprgl="$build/bin/nprgl"
 out="$root/docs/gallery"
@@ -19,8 +21,6 @@ styles=(none toon+paper+edges toon textured halftone toon+edges toon+wireframe
         preset:technical preset:blueprint preset:pencil xtoon+paper+edges toon+depthcue
         preset:motion)
 # An entry "preset:NAME" renders with --preset NAME.
-fileName() { case "$1" in preset:*) echo "preset-${1#preset:}" ;; *) echo "$1" | tr '+' '-' ;; esac; }
-label() { case "$1" in preset:*) echo "--preset ${1#preset:}" ;; *) echo "$1" ;; esac; }
 replayArgs() { case "$1" in preset:*) echo "--preset ${1#preset:}" ;; *) echo "--style $1" ;; esac; }
 
 record() { # name frames command...
@@ -70,15 +70,5 @@ table="$tmp/table.md"
         printf '\n'
     done
 } > "$table"
-python3 - "$root/README.md" "$table" <<'PY'
-import sys
-readme, table = sys.argv[1], open(sys.argv[2]).read()
-text = open(readme).read()
-start, end = "<!-- gallery:start -->", "<!-- gallery:end -->"
-if start not in text:
-    sys.exit("README.md has no gallery markers")
-head, rest = text.split(start, 1)
-tail = rest.split(end, 1)[1]
-open(readme, "w").write(head + start + "\n" + table + end + tail)
-PY
+replaceReadmeSection "$root/README.md" gallery "$table"
 ls "$out" | wc -l

@@ -27,7 +27,7 @@ cd "$root/build-asan"
 export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --output-on-failure -j 2 -L unit
 "$root/scripts/with-display.sh" ctest --output-on-failure -j 2 -L e2e \
-    -R 'DefaultStyle|Golden|StateUnderNprgl/(none|toon_paper_edges|strokes)_|Record|Replay|Config|Hotkeys|Compositor\.'
+    -R 'DefaultStyle|Golden|StateUnderNprgl/(none|toon_paper_edges|strokes)_|Record|Replay|Config|Hotkeys|Overlay|StateUnderNprglOverlay|Compositor\.'
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
 # The libFuzzer targets (clang, ASan + UBSan) on generated seeds: the capture reader, and
