@@ -456,8 +456,25 @@ bool Compositor::holdDraw(GLenum mode)
         if (mHeld) flush();
         return false;
     }
+    noteLayers();
     noteHeld();
     return true;
+}
+
+void Compositor::noteLayers()
+{
+    // Styled from the surface's texture alone: say once per set of units what is not drawn.
+    const uint32_t layers = mTracker.droppedLayers();
+    if (!layers || (mLayersSaid & layers) == layers) return;
+    mLayersSaid |= layers;
+    std::string units;
+    for (int u = 0; u < 8; ++u) {
+        if (layers & (1u << u)) units += (units.empty() ? "" : "+") + std::to_string(u);
+    }
+    NPRGL_INFO("context %u: multitextured 3D polygons are styled with their surface's texture; "
+               "the layers over it on unit(s) %s (lightmaps, shadows, environment maps) are not "
+               "drawn",
+               mContext.serial(), units.c_str());
 }
 
 bool Compositor::holdList(GLuint list)
@@ -597,7 +614,9 @@ void Compositor::buildScene()
         b.materialId = t.materialId;
         // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render).
         const bool offset = t.offsetFactor != 0.0f || t.offsetUnits != 0.0f;
-        b.pass = t.depthOnly       ? 3
+        b.pass = !t.depthTest      ? 5
+                 : t.depthOnly     ? 3
+                 : !t.depthWrite && !t.translucent ? 6
                  : t.translucent   ? 1
                  : t.alphaFunc != GL_ALWAYS ? 2
                  : offset          ? 4
@@ -631,6 +650,7 @@ void Compositor::buildScene()
         s.texture = t.texture;
         s.translucent = t.translucent;
         s.depthWrite = t.depthWrite;
+        s.depthTest = t.depthTest;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
         s.depthOnly = t.depthOnly;

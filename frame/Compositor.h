@@ -108,6 +108,7 @@ private:
     // state and pending GL error kept; false with a message when it cannot start.
     bool startChain(bool restart, std::string& error);
     void noteHeld();
+    void noteLayers();
     void noteUnstyled(bool polygonal);
     void noteLeft(const char* why);
     void buildScene();
@@ -139,6 +140,7 @@ private:
     bool mTinting = false;
     bool mGlowing = false; // a left glow is being drawn as ink on the chain's page
     bool mGlowSaid = false;
+    uint32_t mLayersSaid = 0; // texture units whose dropped layers were said
     GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only
     GlDispatch mHeldTable{}; // the context's table while a held glBegin..glEnd is open
 

@@ -8,6 +8,7 @@
 #include <xxhash.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -135,6 +136,23 @@ void APIENTRY tCallList(GLuint list) { T().callList(list); }
 void APIENTRY tListBase(GLuint base) { T().listBase(base); }
 void APIENTRY tDeleteLists(GLuint list, GLsizei range) { T().deleteLists(list, range); }
 void APIENTRY tBindTexture(GLenum target, GLuint texture) { T().bindTexture(target, texture); }
+void APIENTRY tTexEnvi(GLenum target, GLenum pname, GLint param)
+{
+    T().texEnv(target, pname, GLenum(param));
+}
+void APIENTRY tTexEnvf(GLenum target, GLenum pname, GLfloat param)
+{
+    T().texEnv(target, pname, GLenum(param));
+}
+void APIENTRY tTexEnviv(GLenum target, GLenum pname, const GLint* params)
+{
+    if (params) T().texEnv(target, pname, GLenum(params[0]));
+}
+void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* params)
+{
+    // GL_TEXTURE_ENV_COLOR is four floats; the mode is one.
+    if (params && pname == GL_TEXTURE_ENV_MODE) T().texEnv(target, pname, GLenum(params[0]));
+}
 void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsizei height, GLint,
                           GLenum format, GLenum type, const void* pixels)
 {
@@ -341,6 +359,10 @@ StateTracker::StateTracker()
     d.glDeleteLists = tDeleteLists;
     d.glBindTexture = tBindTexture;
     d.glTexImage2D = tTexImage2D;
+    d.glTexEnvi = tTexEnvi;
+    d.glTexEnvf = tTexEnvf;
+    d.glTexEnviv = tTexEnviv;
+    d.glTexEnvfv = tTexEnvfv;
     d.glActiveTexture = tActiveTexture;
     d.glEnableClientState = tEnableClientState;
     d.glDisableClientState = tDisableClientState;
@@ -464,9 +486,9 @@ const char* StateTracker::unstylableState() const
     const AttribState& a = mAttrib;
     // Drawn now and kept in the list: the list's later calls are styled, this first one not.
     if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
-    if (!mLeftTextures.empty() && a.texture2D &&
+    if (!mLeftTextures.empty() && detailTexture() != 0 &&
         std::binary_search(mLeftTextures.begin(), mLeftTextures.end(),
-                           textureHash(mBoundTexture))) {
+                           textureHash(detailTexture()))) {
         return "a rule of the program's configuration (leave_texture)";
     }
     // The program's shaders decide colour and position; a style would draw something else.
@@ -485,10 +507,75 @@ const char* StateTracker::unstylableState() const
     }
     // Generated coordinates on unit 0 (sphere maps, reflections) are styled, the generated
     // texture dropped; on other units they belong to multitexturing.
-    if (a.textureUnits != 0 || (a.texGen >> 4) != 0 || multitexturedArrays()) {
-        return "multitexturing";
-    }
+    if (surfaceUnit() < 0) return multitexturing();
     return nullptr;
+}
+
+const char* StateTracker::multitexturing() const
+{
+    uint32_t layers = 0;
+    if (texturedUnits(layers) == 0) {
+        return "texture combiners or additions with no plain texture (GL_COMBINE, GL_ADD)";
+    }
+    return "a 1D, 3D or cube-map texture on the surface (the styles draw 2D textures)";
+}
+
+uint32_t StateTracker::texturedUnits(uint32_t& layers) const
+{
+    const AttribState& a = mAttrib;
+    const uint32_t textured = (a.textureUnits | (a.texture2D ? 1u : 0u)) & 0xFFu;
+    // The surface's texture is on the lowest unit that applies a texture of its own, on
+    // coordinates of its own, the plain way (GL_MODULATE, GL_REPLACE, GL_DECAL). The other
+    // units layer light or effects over it: lightmaps and shadows through combiners or
+    // additions, environment maps on generated coordinates.
+    uint32_t plain = 0;
+    for (int u = 0; u < 8; ++u) {
+        const GLenum mode = a.envMode[size_t(u)];
+        const bool ownCoordinates = ((a.texGen >> (4 * u)) & 0x3u) != 0x3u;
+        const bool applies = mode == GL_MODULATE || mode == GL_REPLACE || mode == GL_DECAL;
+        if ((textured & (1u << u)) && ownCoordinates && applies) plain |= 1u << u;
+    }
+    // Only the first textured unit may be a generated or combined one on its own (a sphere
+    // map alone is styled without it; a combiner alone is not the surface's texture).
+    const uint32_t base = plain ? plain & (~plain + 1u) : 0u;
+    layers = textured & ~base;
+    return base;
+}
+
+int StateTracker::surfaceUnit() const
+{
+    const AttribState& a = mAttrib;
+    uint32_t layers = 0;
+    const uint32_t base = texturedUnits(layers);
+    if (base == 0) {
+        // No plain texture: untextured, or one unit on generated coordinates (styled without
+        // its texture); anything else is combiners the styles cannot follow.
+        const uint32_t textured = (a.textureUnits | (a.texture2D ? 1u : 0u)) & 0xFFu;
+        if (textured == 0) return 0;
+        const int u = std::countr_zero(textured);
+        const bool generated = ((a.texGen >> (4 * u)) & 0x3u) == 0x3u;
+        return (textured & (textured - 1)) == 0 && generated && u == 0 ? 0 : -1;
+    }
+    const int u = std::countr_zero(base);
+    // The surface's texture must be a 2D one (the styles draw 2D textures).
+    if (u == 0) return (a.textureUnits & 1u) == 0 ? 0 : -1;
+    return u < 8 && (a.texture2DUnits & base) != 0 ? u : -1;
+}
+
+uint32_t StateTracker::droppedLayers() const
+{
+    uint32_t layers = 0;
+    texturedUnits(layers);
+    return surfaceUnit() < 0 ? 0 : layers;
+}
+
+void StateTracker::followSurfaceUnit()
+{
+    const int u = std::max(surfaceUnit(), 0);
+    if (u == mSurfaceUnit) return;
+    mUnitTexcoords[size_t(mSurfaceUnit)] = mCurrent.texcoord;
+    mSurfaceUnit = u;
+    mCurrent.texcoord = mUnitTexcoords[size_t(u)];
 }
 
 GLuint StateTracker::detailTexture() const
@@ -496,15 +583,10 @@ GLuint StateTracker::detailTexture() const
     // A texture on generated coordinates (an environment or reflection map) is not the
     // surface's own: the styles draw the surface without it.
     const AttribState& a = mAttrib;
-    return a.texture2D && (a.texGen & 0xFu) == 0 ? mBoundTexture : 0;
-}
-
-bool StateTracker::multitexturedArrays() const
-{
-    for (int unit = 1; unit < 8; ++unit) {
-        if (mArrayState[kTexCoordArray0 + unit].array.enabled) return true;
-    }
-    return false;
+    const int u = surfaceUnit();
+    if (u < 0 || ((a.texGen >> (4 * u)) & 0xFu) != 0) return 0;
+    if (u == 0) return a.texture2D ? mBoundTexture : 0;
+    return mUnitTextures[size_t(u)];
 }
 
 bool StateTracker::wouldHoldList(GLuint list) const
@@ -798,7 +880,9 @@ void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
         mListSetsColor = mListSetsColor || mCompiling;
         break;
     case Attrib::TexCoord:
-        mCurrent.texcoord = {x, y};
+        // glTexCoord is unit 0's: mCurrent holds the surface unit's.
+        if (mSurfaceUnit == 0) mCurrent.texcoord = {x, y};
+        else mUnitTexcoords[0] = {x, y};
         mListSetsTexCoord = mListSetsTexCoord || mCompiling;
         break;
     case Attrib::Vertex: {
@@ -811,8 +895,19 @@ void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
     }
 }
 
+void StateTracker::unitTexCoord(GLenum target, float x, float y, float z, float w)
+{
+    if (target < GL_TEXTURE0 || target >= GL_TEXTURE0 + mUnitTexcoords.size()) return;
+    const int u = int(target - GL_TEXTURE0);
+    if (u == 0) return attrib(Attrib::TexCoord, x, y, z, w);
+    if (u == mSurfaceUnit) mCurrent.texcoord = {x, y};
+    else mUnitTexcoords[size_t(u)] = {x, y};
+    mListSetsTexCoord = mListSetsTexCoord || mCompiling;
+}
+
 void StateTracker::begin(GLenum mode)
 {
+    followSurfaceUnit();
     recycle(std::move(mBatch.vertices)); // a glBegin without glEnd before it
     mInBegin = true;
     mBatch = TrackedBatch();
@@ -906,6 +1001,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.texture = detailTexture();
     batch.translucent = translucent();
     batch.depthWrite = a.depthMask;
+    batch.depthTest = a.depthTest;
     // The styles test their alpha (the program's, its texture modulating) as it would.
     batch.alphaFunc = a.alphaTest ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
@@ -941,10 +1037,14 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     case GL_TEXTURE_1D:
     case GL_TEXTURE_3D:
     case GL_TEXTURE_CUBE_MAP:
-        // Multitexturing: the styles take unit 0's 2D texture only, so such draws stay the
-        // program's.
+        // Another unit, or another target: a draw textured by one unit's 2D texture alone is
+        // styled with it (surfaceUnit); several units are multitexturing.
         if (on) a.textureUnits |= 1u << std::min(mActiveUnit, 31);
         else a.textureUnits &= ~(1u << std::min(mActiveUnit, 31));
+        if (cap == GL_TEXTURE_2D) {
+            if (on) a.texture2DUnits |= 1u << std::min(mActiveUnit, 31);
+            else a.texture2DUnits &= ~(1u << std::min(mActiveUnit, 31));
+        }
         break;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
@@ -1104,6 +1204,13 @@ void StateTracker::bindTexture(GLenum target, GLuint texture)
     }
 }
 
+void StateTracker::texEnv(GLenum target, GLenum pname, GLenum mode)
+{
+    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE && mActiveUnit < 8) {
+        mAttrib.envMode[size_t(mActiveUnit)] = mode;
+    }
+}
+
 void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
                               GLenum format, GLenum type, const void* pixels)
 {
@@ -1231,10 +1338,11 @@ StateTracker::ArraySource StateTracker::source(int slot) const
     return s;
 }
 
-StateTracker::DrawSources StateTracker::drawSources() const
+StateTracker::DrawSources StateTracker::drawSources()
 {
+    followSurfaceUnit();
     return {source(kVertexArray), source(kNormalArray), source(kColorArray),
-            source(kTexCoordArray0)};
+            source(kTexCoordArray0 + mSurfaceUnit)};
 }
 
 bool StateTracker::fetch(const ArraySource& from, size_t index, float out[4])

@@ -42,6 +42,7 @@ struct TrackedBatch {
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     bool translucent = false; // blended by its alpha over what is behind (StateTracker::translucent)
     bool depthWrite = true;
+    bool depthTest = true; // off: a sky or backdrop drawn first, or a 3D mark drawn on top
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
     bool depthOnly = false; // drawn with no colour channel: it only supplies depth
@@ -94,6 +95,9 @@ public:
     // A 3D polygon draw issued now would not be held because of this state (for the log), or
     // null. 2D drawing (no depth test, no perspective) is not held and needs no reason.
     const char* unstylableState() const;
+    // Texture units (bits) a draw issued now layers over its surface's texture, which the
+    // styles do not draw (see surfaceUnit).
+    uint32_t droppedLayers() const;
     // A draw issued now adds light (GL_ONE or GL_SRC_ALPHA onto GL_ONE) through the
     // fixed-function pipeline: a glow, a flare, a particle. With what it is drawn from.
     bool additiveGlow(bool& textured, bool& sourceAlpha, bool& materialColour) const;
@@ -117,6 +121,9 @@ public:
 
     // Called by the generated per-vertex attribute functions.
     void attrib(Attrib kind, float x, float y, float z, float w);
+    // glMultiTexCoord: unit 0's is glTexCoord's; the others' are kept for the draws that
+    // texture from that unit alone.
+    void unitTexCoord(GLenum target, float x, float y, float z, float w);
 
     // decodeCall sink.
     const GlDispatch& gl() const { return mSkipping ? mCompileOnly : mDispatch; }
@@ -152,6 +159,8 @@ public:
     GLuint listBaseValue() const { return mListBase; }
     void deleteLists(GLuint list, GLsizei range);
     void bindTexture(GLenum target, GLuint texture);
+    // glTexEnv: the active unit's GL_TEXTURE_ENV_MODE.
+    void texEnv(GLenum target, GLenum pname, GLenum mode);
     // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed).
     void texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
                     GLenum type, const void* pixels);
@@ -244,10 +253,21 @@ private:
     };
 
     void callListBody(GLuint list);
-    // Unit 0's 2D texture as the styles use it: 0 when off or on generated coordinates.
+    // The texture unit a draw issued now takes the surface's texture from: the lowest
+    // textured unit with coordinates of its own (0 also when nothing is textured), or -1 when
+    // its texture is not a 2D one. Units above it layer light or effects over it
+    // (lightmaps, shadows, environment maps): droppedLayers(), not drawn by the styles.
+    int surfaceUnit() const;
+    // Why surfaceUnit() is -1.
+    const char* multitexturing() const;
+    // The surface's unit (a bit) and the layers above it (bits).
+    uint32_t texturedUnits(uint32_t& layers) const;
+    // Makes mCurrent's texture coordinates the surface unit's (at each draw).
+    void followSurfaceUnit();
+    // The surface unit's 2D texture as the styles use it: 0 when off or on generated
+    // coordinates.
     GLuint detailTexture() const;
     void noteListArrays();
-    bool multitexturedArrays() const; // texcoord arrays on units other than 0
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
     bool isVertexCall(uint16_t opcode) const;
     static bool runsWhileCompiling(uint16_t opcode);
@@ -255,7 +275,7 @@ private:
     bool keep(TrackedBatch& batch);
     std::vector<TrackedVertex> takeVertices();
     void recycle(std::vector<TrackedVertex>&& vertices);
-    DrawSources drawSources() const;
+    DrawSources drawSources();
     ArraySource source(int slot) const;
     TrackedVertex arrayVertex(const DrawSources& from, size_t index, bool hasNormal) const;
     static bool fetch(const ArraySource& from, size_t index, float out[4]);
@@ -278,6 +298,8 @@ private:
     AttribState& mAttrib = mAttribs.current(); // the state the calls change
     GLuint mBoundTexture = 0; // unit 0's GL_TEXTURE_2D
     std::array<GLuint, 8> mUnitTextures{}; // every unit's GL_TEXTURE_2D, for uploads
+    std::array<glm::vec2, 8> mUnitTexcoords{}; // every unit's current coordinates
+    int mSurfaceUnit = 0; // mCurrent.texcoord is this unit's
     std::map<GLuint, uint64_t> mTextureHashes;
     std::vector<uint64_t> mLeftTextures;
     size_t mImageBytes = 0; // of the call being decoded

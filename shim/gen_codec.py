@@ -340,10 +340,13 @@ def emitTrack(cmds):
         comps = comps + default[len(comps):]
         plist = ", ".join(f"{p.ctype} {p.name}" if not p.ctype.endswith("*")
                           else f"{p.ctype}{p.name}" for p in params)
-        akind = "TexCoord" if multi else kind
-        guard = f"if ({params[0].name} != GL_TEXTURE0) return; " if multi else ""
-        out.append(f"void {name}({plist}) {{ {guard}currentTracker().attrib("
-                   f"Attrib::{akind}, {', '.join(comps)}); }}")
+        if multi:
+            # Every unit's coordinates: the unit a draw textures from may be any one.
+            out.append(f"void {name}({plist}) {{ currentTracker().unitTexCoord("
+                       f"{params[0].name}, {', '.join(comps)}); }}")
+        else:
+            out.append(f"void {name}({plist}) {{ currentTracker().attrib("
+                       f"Attrib::{kind}, {', '.join(comps)}); }}")
         attribs.append(name)
     out.append("} // namespace trk")
     out.append("inline void fillTrackingDispatch(GlDispatch& d)\n{")

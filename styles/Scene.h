@@ -37,6 +37,10 @@ struct SceneObject {
     // had them (StyleChain::render).
     bool translucent = false;
     bool depthWrite = true;
+    // Drawn by the program without the depth test (or, opaque, without depth writes): a sky
+    // or scenery behind the scene (before its other objects) or a mark over it (after them).
+    // The shading style draws it so, in that place; outline styles leave it out.
+    bool depthTest = true;
     // The program's alpha test (GL_ALWAYS: none): the shading style's alpha is tested as the
     // program's would be, so cut-outs keep their shape; outlines leave such objects out.
     GLenum alphaFunc = GL_ALWAYS;

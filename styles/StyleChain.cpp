@@ -95,7 +95,19 @@ void StyleChain::render(const Scene& scene)
     mTranslucent.objects.clear();
     mCutOut.objects.clear();
     mDepthOnly.objects.clear();
+    mBackdrop.objects.clear();
+    mOnTop.objects.clear();
+    bool depthTested = false; // an object drawn with the depth test came before
     for (const SceneObject& o : scene.objects) {
+        // Drawn without the depth test or, opaque, without depth writes: skies, clouds and
+        // scenery behind the scene (before its first object), marks over it (after): drawn as
+        // the program drew them, so they neither hide nor cover what they should not. Without
+        // the shading style the program draws them itself; they get no lines.
+        if (!o.depthTest || (!o.depthWrite && !o.translucent && !o.depthOnly)) {
+            if (mHasShading) (depthTested ? mOnTop : mBackdrop).objects.push_back(o);
+            continue;
+        }
+        depthTested = true;
         if (o.depthOnly) {
             // Its colours come from the program's colour pass over the same geometry; drawn
             // first, its depth would hide that pass's styled surfaces (equal depth).
@@ -108,12 +120,14 @@ void StyleChain::render(const Scene& scene)
             (o.special() ? mCutOut : mOpaque).objects.push_back(o);
         }
     }
-    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mDepthOnly, &mRun}) {
+    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mDepthOnly, &mRun, &mBackdrop,
+                        &mOnTop}) {
         part->viewport = scene.viewport;
         part->clearColor = scene.clearColor;
         part->frame = scene.frame;
     }
     const GlFunctions& gl = mContext.gl;
+    renderAsDrawn(mBackdrop);
     for (size_t i = 0; i < mStyles.size(); ++i) {
         const bool shading = mHasShading && i == 0; // the shading style is ordered first
         if (!mOpaque.objects.empty()) {
@@ -146,6 +160,7 @@ void StyleChain::render(const Scene& scene)
             k = end;
         }
     }
+    renderAsDrawn(mOnTop);
     if (!mDepthOnly.objects.empty()) {
         setBaseline(mDepthOnly, true);
         gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -168,6 +183,27 @@ void StyleChain::render(const Scene& scene)
         i = end;
     }
     mContext.meshes.endFlush(mContext.gl);
+}
+
+void StyleChain::renderAsDrawn(const Scene& part)
+{
+    // The program's depth test and writes, in runs of equal ones.
+    const GlFunctions& gl = mContext.gl;
+    for (size_t i = 0; i < part.objects.size();) {
+        const SceneObject& first = part.objects[i];
+        size_t end = i + 1;
+        while (end < part.objects.size() && part.objects[end].depthTest == first.depthTest &&
+               part.objects[end].depthWrite == first.depthWrite) {
+            ++end;
+        }
+        mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
+        setBaseline(mRun, true);
+        if (first.depthTest) gl.DepthFunc(GL_LEQUAL);
+        else gl.Disable(GL_DEPTH_TEST);
+        gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
+        mStyles.front()->render(mRun, mContext);
+        i = end;
+    }
 }
 
 void StyleChain::shutdown()

@@ -43,7 +43,12 @@ private:
     bool mHasShading = false;
     GlowInk mGlowInk;
     bool mGlowInkReady = false;
+    // The shading style alone draws `part`'s objects with the program's depth test and
+    // depth writes.
+    void renderAsDrawn(const Scene& part);
+
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
+    Scene mBackdrop, mOnTop; // drawn as the program did, before or after the scene
 };
 
 } // namespace nprgl::styles

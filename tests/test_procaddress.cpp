@@ -162,16 +162,18 @@ TEST_P(ProcAddress, DrawsWithTheProgramsOwnShadersAreLeftAsTheyAre)
     ASSERT_EQ(toon.exitCode, 0) << toon.err;
     EXPECT_NE(toon.err.find("drawn with the program's own shaders are left"), std::string::npos)
         << toon.err;
-    // And counted at exit: one such draw per frame, and one multitextured quad per frame.
-    EXPECT_NE(toon.err.find("multitexturing " +
-                            std::to_string(kFrames) + ", the program's own shaders " +
+    // And counted at exit: one such draw per frame, the only one left. The lightmapped quad
+    // of cell 1 is styled with its detail texture, and the log says its lightmap is not drawn.
+    EXPECT_NE(toon.err.find("left as the program drew them (the program's own shaders " +
                             std::to_string(kFrames) + ")"),
               std::string::npos)
         << toon.err;
+    EXPECT_NE(toon.err.find("the layers over it on unit(s) 1"), std::string::npos) << toon.err;
     const std::array<int, 6> differing =
         differingPerCell(readRgba(dir + "/toon.rgba"), readRgba(dir + "/native.rgba"));
     EXPECT_EQ(differing[4], 0);
     EXPECT_GT(differing[0], 100); // while the cube of cell 0 is styled
+    EXPECT_GT(differing[1], 100); // and the lightmapped quad of cell 1
 }
 
 INSTANTIATE_TEST_SUITE_P(Context, ProcAddress, ::testing::Values("osmesa", "glx", "egl"),

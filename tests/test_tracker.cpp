@@ -249,7 +249,7 @@ struct Feed {
 
 // Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
 // the generation off again gives the plain texture back (a program that sphere-maps one
-// object must not leave every later draw unstyled). Generation on unit 1 is multitexturing.
+// object must not leave every later draw unstyled). A texture on unit 1 layers over unit 0's.
 TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
 {
     StateTracker tracker;
@@ -286,12 +286,94 @@ TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
         w.op(op::glActiveTexture);
         w.put<GLenum>(GL_TEXTURE1);
     });
+    // Generation on a unit that textures nothing changes nothing; with its texture on, unit 1
+    // layers over the surface's texture (unit 0): styled with unit 0's, the layer said.
     enable(GL_TEXTURE_GEN_S, true);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    EXPECT_EQ(tracker.droppedLayers(), 0u);
+    enable(GL_TEXTURE_2D, true);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    EXPECT_EQ(tracker.droppedLayers(), 2u);
+    // A cube map as the surface's texture: not what the styles draw.
+    run([](CallWriter& w) {
+        w.op(op::glActiveTexture);
+        w.put<GLenum>(GL_TEXTURE0);
+    });
+    enable(GL_TEXTURE_2D, false);
+    enable(GL_TEXTURE_CUBE_MAP, true);
     EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
     ASSERT_NE(tracker.unstylableState(), nullptr);
-    EXPECT_STREQ(tracker.unstylableState(), "multitexturing");
-    enable(GL_TEXTURE_GEN_S, false);
-    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+    EXPECT_NE(std::string(tracker.unstylableState()).find("cube-map"), std::string::npos);
+    enable(GL_TEXTURE_CUBE_MAP, false);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+}
+
+// A draw textured by one unit other than 0 alone (units 0 and 1 off, 2 on: neverball draws
+// its backgrounds so) is styled with that unit's texture and coordinates (glMultiTexCoord of
+// that unit; array draws take its coordinate array, seen on neverball).
+TEST(StateTracker, ADrawTexturedByAnotherUnitAloneTakesThatUnitsTextureAndCoordinates)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    auto unit = [&](GLenum u) {
+        run([u](CallWriter& w) {
+            w.op(op::glActiveTexture);
+            w.put<GLenum>(u);
+            w.op(op::glClientActiveTexture);
+            w.put<GLenum>(u);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    unit(GL_TEXTURE2);
+    feed.enable(GL_TEXTURE_2D, true);
+    run([](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLuint>(9);
+    });
+    unit(GL_TEXTURE0);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    // Immediate mode: unit 2's coordinates, not unit 0's.
+    run([](CallWriter& w) {
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        for (float x : {0.0f, 1.0f, 0.0f}) {
+            w.op(op::glTexCoord2f); // unit 0's: not what the draw textures with
+            w.put<float>(0.9f);
+            w.put<float>(0.9f);
+            w.op(op::glMultiTexCoord2f);
+            w.put<GLenum>(GL_TEXTURE2);
+            w.put<float>(x);
+            w.put<float>(0.25f);
+            w.op(op::glVertex3f);
+            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+    });
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, 9u);
+    ASSERT_EQ(batches[0].vertices.size(), 3u);
+    EXPECT_FLOAT_EQ(batches[0].vertices[1].texcoord.x, 1.0f);
+    EXPECT_FLOAT_EQ(batches[0].vertices[1].texcoord.y, 0.25f);
+
+    // Unit 0's texture on as well: the surface's is unit 0's, unit 2 a layer over it (as a
+    // lightmap or a shadow is) that the styles do not draw.
+    feed.enable(GL_TEXTURE_2D, true);
+    run([](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLuint>(4);
+    });
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    EXPECT_EQ(tracker.droppedLayers(), 4u);
+    feed.triangle();
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, 4u);
 }
 
 // Lights other than GL_LIGHT0: the brightest enabled one gives the direction, and the lights'
