@@ -999,7 +999,9 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.lightOn = a.lightsOn != 0;
     batch.keyLight = a.lightPosition[keyLight()];
     batch.texture = detailTexture();
-    batch.translucent = translucent();
+    // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
+    // drawing (neverball does), and such surfaces are opaque ones (with outlines).
+    batch.translucent = translucent() && !opaqueAlpha(batch);
     batch.depthWrite = a.depthMask;
     batch.depthTest = a.depthTest;
     // The styles test their alpha (the program's, its texture modulating) as it would.
@@ -1204,6 +1206,22 @@ void StateTracker::bindTexture(GLenum target, GLuint texture)
     }
 }
 
+bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
+{
+    const AttribState& a = mAttrib;
+    const int u = surfaceUnit();
+    const GLenum mode = u >= 0 ? a.envMode[size_t(u)] : GL_MODULATE;
+    // The texture's alpha counts unless GL_DECAL (the fragment keeps the colour's alpha).
+    if (batch.texture != 0 && mode != GL_DECAL && !mOpaqueTextures.contains(batch.texture)) {
+        return false;
+    }
+    if (mode == GL_REPLACE && batch.texture != 0) return true;
+    for (const TrackedVertex& v : batch.vertices) {
+        if (v.color.a < 1.0f) return false;
+    }
+    return true;
+}
+
 void StateTracker::texEnv(GLenum target, GLenum pname, GLenum mode)
 {
     if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE && mActiveUnit < 8) {
@@ -1218,11 +1236,25 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
         return;
     }
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
+    mOpaqueTextures.erase(texture);
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
     if (!pixels || mImageBytes == 0) {
         mTextureHashes.erase(texture);
         return;
     }
+    // Whether its alpha is 1 everywhere: formats without alpha, or bytes of 255 (one pass,
+    // at upload, not per draw).
+    bool opaque = format == GL_RGB || format == GL_BGR || format == GL_LUMINANCE ||
+                  format == GL_RED;
+    if (!opaque && (format == GL_RGBA || format == GL_BGRA) && type == GL_UNSIGNED_BYTE &&
+        mImageBytes >= size_t(width) * size_t(height) * 4) {
+        const uint8_t* p = static_cast<const uint8_t*>(pixels);
+        opaque = true;
+        for (size_t i = 3; i < size_t(width) * size_t(height) * 4 && opaque; i += 4) {
+            opaque = p[i] == 255;
+        }
+    }
+    if (opaque) mOpaqueTextures.insert(texture);
     const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
     uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
     mTextureHashes[texture] = hash == 0 ? 1 : hash;

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -258,6 +259,8 @@ private:
     // its texture is not a 2D one. Units above it layer light or effects over it
     // (lightmaps, shadows, environment maps): droppedLayers(), not drawn by the styles.
     int surfaceUnit() const;
+    // A batch blended by alpha whose alpha is 1 everywhere (its colours', its texture's).
+    bool opaqueAlpha(const TrackedBatch& batch) const;
     // Why surfaceUnit() is -1.
     const char* multitexturing() const;
     // The surface's unit (a bit) and the layers above it (bits).
@@ -301,6 +304,7 @@ private:
     std::array<glm::vec2, 8> mUnitTexcoords{}; // every unit's current coordinates
     int mSurfaceUnit = 0; // mCurrent.texcoord is this unit's
     std::map<GLuint, uint64_t> mTextureHashes;
+    std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
     std::vector<uint64_t> mLeftTextures;
     size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;
