@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace nprgl;
 using namespace nprgl::test;
@@ -29,6 +31,23 @@ struct CompatCase {
     // Empty: at least 90% of the drawn pixels styled. Else the reason the log must give for
     // what is left (and the share is only recorded).
     std::string leftBecause;
+    // Games: where the program is, its arguments into its 3D scene, the frame looked at and
+    // the context that draws it (SDL programs draw with their second).
+    std::string path = kHacks;
+    std::vector<std::string> args = {"-window"};
+    int frame = 40;
+    std::string context;
+
+    CompatCase(std::string name, std::string left)
+        : program(std::move(name)), leftBecause(std::move(left))
+    {
+    }
+    CompatCase(std::string name, std::string left, std::string where, std::vector<std::string> with,
+               int at, std::string drawnBy)
+        : program(std::move(name)), leftBecause(std::move(left)), path(std::move(where)),
+          args(std::move(with)), frame(at), context(std::move(drawnBy))
+    {
+    }
 };
 
 std::ostream& operator<<(std::ostream& os, const CompatCase& c) { return os << c.program; }
@@ -58,20 +77,24 @@ class Compat : public ::testing::TestWithParam<CompatCase> {};
 TEST_P(Compat, RunsStyledAndSaysWhatIsLeft)
 {
     const CompatCase& c = GetParam();
-    const std::string program = kHacks + c.program;
+    const std::string program = c.path + c.program;
     if (!std::filesystem::exists(program)) {
-        GTEST_SKIP() << program << " is not installed (scripts/install-deps.sh installs "
-                     << "xscreensaver-gl)";
+        GTEST_SKIP() << program << " is not installed (scripts/install-deps.sh installs it)";
     }
     const std::string dir = freshDir("compat_" + c.program);
-    const std::string shot = dir + "/" + c.program + "_40.png";
-    // The hacks run until told to stop; the run lasts 40 frames however fast the machine is.
-    ProcessResult r = runUntilFile(under({nprglCommand(), "--style", "coverage"},
-                                         {program, "-window"}),
-                                   {{"NPRGL_SCREENSHOT", "frames=40;dir=" + dir}}, shot, SIGTERM);
-    ASSERT_TRUE(r.stopped) << "no frame 40: " << r.err.substr(0, 2000);
-    EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 128 + SIGTERM)
-        << "exit " << r.exitCode << "\n" << r.err.substr(0, 2000);
+    const std::string frame = std::to_string(c.frame);
+    const std::string shot = dir + "/" + c.program + c.context + "_" + frame + ".png";
+    std::vector<std::string> command = {program};
+    command.insert(command.end(), c.args.begin(), c.args.end());
+    // They run until told to stop; the run lasts its frames however fast the machine is. A
+    // home of their own: no settings or scores of an earlier run.
+    ProcessResult r = runUntilFile(under({nprglCommand(), "--style", "coverage"}, command),
+                                   {{"NPRGL_SCREENSHOT", "frames=" + frame + ";dir=" + dir},
+                                    {"HOME", freshDir("compat_home_" + c.program)}},
+                                   shot, SIGTERM);
+    ASSERT_TRUE(r.stopped) << "no frame " << frame << ": " << r.err.substr(0, 2000);
+    EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 128 + SIGTERM) << "exit " << r.exitCode << "\n"
+                                                                << r.err.substr(0, 2000);
     EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err.substr(0, 2000);
     PngImage image;
     std::string error;
@@ -95,13 +118,21 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         CompatCase{"antinspect", ""}, CompatCase{"cubestorm", ""}, CompatCase{"engine", ""},
         CompatCase{"gears", ""}, CompatCase{"geodesic", ""}, CompatCase{"glknots", ""},
-        CompatCase{"glsnake", ""},
-        CompatCase{"molecule", ""}, CompatCase{"morph3d", ""}, CompatCase{"pipes", ""},
-        CompatCase{"polyhedra", ""}, CompatCase{"sierpinski3d", ""},
+        CompatCase{"glsnake", ""}, CompatCase{"molecule", ""}, CompatCase{"morph3d", ""},
+        CompatCase{"pipes", ""}, CompatCase{"polyhedra", ""}, CompatCase{"sierpinski3d", ""},
         CompatCase{"superquadrics", ""}, CompatCase{"topblock", ""},
         // Its own shaders ignore the coverage tint: its pixels cannot tell, the log does.
         CompatCase{"hypertorus", "the program's own shaders"},
         CompatCase{"blinkbox", "blending other than GL_SRC_ALPHA"},
         CompatCase{"stonerview", "blending other than GL_SRC_ALPHA"},
         CompatCase{"moebius", "glPolygonMode lines or points"}),
+    [](const auto& param) { return param.param.program; });
+
+// Games from Debian, brought into their 3D scene by their own arguments.
+INSTANTIATE_TEST_SUITE_P(
+    Games, Compat,
+    ::testing::Values(
+        // A level: its floor, coins, ball and backdrop styled (the rails, drawn through
+        // texture combiners only, are left and said).
+        CompatCase{"neverball", "", "/usr/games/", {"-l", "map-easy/coins.sol"}, 100, "_ctx2"}),
     [](const auto& param) { return param.param.program; });
