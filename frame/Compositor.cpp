@@ -463,7 +463,13 @@ bool Compositor::holdDraw(GLenum mode)
 
 void Compositor::noteLayers()
 {
-    // Styled from the surface's texture alone: say once per set of units what is not drawn.
+    // A lightmap giving the light, and layers not drawn: each said once.
+    const int light = mTracker.lightmapUnit();
+    if (light >= 0 && !(mLightmapsSaid & (1u << light))) {
+        mLightmapsSaid |= 1u << light;
+        NPRGL_INFO("context %u: lightmaps on unit %d give the shading styles their light",
+                   mContext.serial(), light);
+    }
     const uint32_t layers = mTracker.droppedLayers();
     if (!layers || (mLayersSaid & layers) == layers) return;
     mLayersSaid |= layers;
@@ -648,6 +654,7 @@ void Compositor::buildScene()
         s.projection = t.projection;
         s.lightDir = lightDirection(t);
         s.texture = t.texture;
+        s.lightmap = t.lightmap;
         s.translucent = t.translucent;
         s.depthWrite = t.depthWrite;
         s.depthTest = t.depthTest;
@@ -671,18 +678,21 @@ void Compositor::textureRuns(const reconstruct::FrameObject& o, styles::SceneObj
     const std::vector<uint32_t>& ends = o.mesh->updateState.batchFaceEnd;
     bool mixed = false;
     for (uint32_t b = 1; b < o.batchCount; ++b) {
-        mixed = mixed || mTracked[o.firstBatch + b].texture != s.texture;
+        const TrackedBatch& t = mTracked[o.firstBatch + b];
+        mixed = mixed || t.texture != s.texture || t.lightmap != s.lightmap;
     }
     if (!mixed || ends.size() != o.batchCount) return;
     uint32_t first = 0;
     for (uint32_t b = 0; b < o.batchCount; ++b) {
         const GLuint texture = mTracked[o.firstBatch + b].texture;
+        const GLuint lightmap = mTracked[o.firstBatch + b].lightmap;
         const uint32_t end = ends[b];
         if (end <= first) continue; // a batch whose faces all fell out (degenerate)
-        if (!s.textureRuns.empty() && s.textureRuns.back().texture == texture) {
+        if (!s.textureRuns.empty() && s.textureRuns.back().texture == texture &&
+            s.textureRuns.back().lightmap == lightmap) {
             s.textureRuns.back().faceCount = end - s.textureRuns.back().firstFace;
         } else {
-            s.textureRuns.push_back({first, end - first, texture});
+            s.textureRuns.push_back({first, end - first, texture, lightmap});
         }
         first = end;
     }

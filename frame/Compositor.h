@@ -140,7 +140,8 @@ private:
     bool mTinting = false;
     bool mGlowing = false; // a left glow is being drawn as ink on the chain's page
     bool mGlowSaid = false;
-    uint32_t mLayersSaid = 0; // texture units whose dropped layers were said
+    uint32_t mLayersSaid = 0;    // texture units whose dropped layers were said
+    uint32_t mLightmapsSaid = 0; // texture units whose lightmaps were said
     GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only
     GlDispatch mHeldTable{}; // the context's table while a held glBegin..glEnd is open
 

@@ -566,16 +566,37 @@ uint32_t StateTracker::droppedLayers() const
 {
     uint32_t layers = 0;
     texturedUnits(layers);
-    return surfaceUnit() < 0 ? 0 : layers;
+    if (surfaceUnit() < 0) return 0;
+    const int light = mAttrib.lighting ? -1 : lightUnit();
+    return light < 0 ? layers : layers & ~(1u << light);
+}
+
+int StateTracker::lightUnit() const
+{
+    const AttribState& a = mAttrib;
+    uint32_t layers = 0;
+    if (texturedUnits(layers) == 0) return -1;
+    for (int u = 0; u < 8; ++u) {
+        if (!(layers & (1u << u)) || a.envMode[size_t(u)] != GL_MODULATE) continue;
+        if (((a.texGen >> (4 * u)) & 0x3u) == 0x3u) continue;
+        const bool twoD = u == 0 ? a.texture2D : (a.texture2DUnits & (1u << u)) != 0;
+        return twoD ? u : -1;
+    }
+    return -1;
 }
 
 void StateTracker::followSurfaceUnit()
 {
     const int u = std::max(surfaceUnit(), 0);
-    if (u == mSurfaceUnit) return;
-    mUnitTexcoords[size_t(mSurfaceUnit)] = mCurrent.texcoord;
-    mSurfaceUnit = u;
-    mCurrent.texcoord = mUnitTexcoords[size_t(u)];
+    if (u != mSurfaceUnit) {
+        mUnitTexcoords[size_t(mSurfaceUnit)] = mCurrent.texcoord;
+        mSurfaceUnit = u;
+        mCurrent.texcoord = mUnitTexcoords[size_t(u)];
+    }
+    // The lightmap's coordinates are a copy: every unit's own are in mUnitTexcoords (or, for
+    // the surface's unit, mCurrent.texcoord).
+    mLightUnit = lightUnit();
+    if (mLightUnit >= 0) mCurrent.lightcoord = mUnitTexcoords[size_t(mLightUnit)];
 }
 
 GLuint StateTracker::detailTexture() const
@@ -883,6 +904,7 @@ void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
         // glTexCoord is unit 0's: mCurrent holds the surface unit's.
         if (mSurfaceUnit == 0) mCurrent.texcoord = {x, y};
         else mUnitTexcoords[0] = {x, y};
+        if (mLightUnit == 0) mCurrent.lightcoord = {x, y};
         mListSetsTexCoord = mListSetsTexCoord || mCompiling;
         break;
     case Attrib::Vertex: {
@@ -902,6 +924,7 @@ void StateTracker::unitTexCoord(GLenum target, float x, float y, float z, float 
     if (u == 0) return attrib(Attrib::TexCoord, x, y, z, w);
     if (u == mSurfaceUnit) mCurrent.texcoord = {x, y};
     else mUnitTexcoords[size_t(u)] = {x, y};
+    if (u == mLightUnit) mCurrent.lightcoord = {x, y};
     mListSetsTexCoord = mListSetsTexCoord || mCompiling;
 }
 
@@ -999,6 +1022,8 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.lightOn = a.lightsOn != 0;
     batch.keyLight = a.lightPosition[keyLight()];
     batch.texture = detailTexture();
+    // Without GL lighting a lightmap is the surface's light (the styles' L·n).
+    batch.lightmap = mLightUnit >= 0 && !a.lighting ? mUnitTextures[size_t(mLightUnit)] : 0;
     // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
     // drawing (neverball does), and such surfaces are opaque ones (with outlines).
     batch.translucent = translucent() && !opaqueAlpha(batch);
@@ -1374,7 +1399,8 @@ StateTracker::DrawSources StateTracker::drawSources()
 {
     followSurfaceUnit();
     return {source(kVertexArray), source(kNormalArray), source(kColorArray),
-            source(kTexCoordArray0 + mSurfaceUnit)};
+            source(kTexCoordArray0 + mSurfaceUnit),
+            mLightUnit >= 0 ? source(kTexCoordArray0 + mLightUnit) : ArraySource{}};
 }
 
 bool StateTracker::fetch(const ArraySource& from, size_t index, float out[4])
@@ -1423,6 +1449,8 @@ TrackedVertex StateTracker::arrayVertex(const DrawSources& from, size_t index,
     if (fetch(from.color, index, c)) v.color = {c[0], c[1], c[2], c[3]};
     float t[4] = {0, 0, 0, 1};
     if (fetch(from.texcoord, index, t)) v.texcoord = {t[0], t[1]};
+    float l[4] = {0, 0, 0, 1};
+    if (fetch(from.lightcoord, index, l)) v.lightcoord = {l[0], l[1]};
     return v;
 }
 

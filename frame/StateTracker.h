@@ -41,6 +41,7 @@ struct TrackedBatch {
     glm::vec4 keyLight{0.0f, 0.0f, 1.0f, 0.0f}; // the brightest enabled light, eye space
     bool lightOn = false;                       // any light enabled
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
+    GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none
     bool translucent = false; // blended by its alpha over what is behind (StateTracker::translucent)
     bool depthWrite = true;
     bool depthTest = true; // off: a sky or backdrop drawn first, or a 3D mark drawn on top
@@ -99,6 +100,8 @@ public:
     // Texture units (bits) a draw issued now layers over its surface's texture, which the
     // styles do not draw (see surfaceUnit).
     uint32_t droppedLayers() const;
+    // The unit whose lightmap gives a draw issued now its light (no GL lighting), or -1.
+    int lightmapUnit() const { return mAttrib.lighting ? -1 : lightUnit(); }
     // A draw issued now adds light (GL_ONE or GL_SRC_ALPHA onto GL_ONE) through the
     // fixed-function pipeline: a glow, a flare, a particle. With what it is drawn from.
     bool additiveGlow(bool& textured, bool& sourceAlpha, bool& materialColour) const;
@@ -250,7 +253,7 @@ private:
         bool normalize = false, bgra = false;
     };
     struct DrawSources {
-        ArraySource vertex, normal, color, texcoord;
+        ArraySource vertex, normal, color, texcoord, lightcoord;
     };
 
     void callListBody(GLuint list);
@@ -259,6 +262,9 @@ private:
     // its texture is not a 2D one. Units above it layer light or effects over it
     // (lightmaps, shadows, environment maps): droppedLayers(), not drawn by the styles.
     int surfaceUnit() const;
+    // The unit of a lightmap over the surface's texture: the first layer that modulates it
+    // (GL_MODULATE) with a 2D texture on coordinates of its own; -1 when there is none.
+    int lightUnit() const;
     // A batch blended by alpha whose alpha is 1 everywhere (its colours', its texture's).
     bool opaqueAlpha(const TrackedBatch& batch) const;
     // Why surfaceUnit() is -1.
@@ -295,7 +301,7 @@ private:
     uint16_t mOpcode = 0;
 
     MatrixStacks mMatrices;
-    TrackedVertex mCurrent{{0, 0, 0}, {0, 0, 1}, {1, 1, 1, 1}, {0, 0}};
+    TrackedVertex mCurrent{{0, 0, 0}, {0, 0, 1}, {1, 1, 1, 1}, {0, 0}, {0, 0}};
     bool mNormalSet = false;
     AttribStack mAttribs;
     AttribState& mAttrib = mAttribs.current(); // the state the calls change
@@ -303,6 +309,7 @@ private:
     std::array<GLuint, 8> mUnitTextures{}; // every unit's GL_TEXTURE_2D, for uploads
     std::array<glm::vec2, 8> mUnitTexcoords{}; // every unit's current coordinates
     int mSurfaceUnit = 0; // mCurrent.texcoord is this unit's
+    int mLightUnit = -1;  // mCurrent.lightcoord is this unit's (-1: no lightmap)
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
     std::vector<uint64_t> mLeftTextures;

@@ -13,11 +13,12 @@ struct Vertex {
     glm::vec3 position;       // object space (already divided by w if w != 1)
     glm::vec3 normal;         // the current normal at that vertex
     glm::vec4 color;          // current colour, or the material's diffuse when lighting
-    glm::vec2 texcoord;       // unit 0
+    glm::vec2 texcoord;       // the surface's texture unit
+    glm::vec2 lightcoord;     // the lightmap's unit (a layer modulating the surface), if any
     bool hasNormal = false;   // the program ever set a normal for this batch
     uint8_t padding[3] = {};  // explicit and zero, so a vertex array hashes deterministically
 };
-static_assert(sizeof(Vertex) == 52, "Vertex must have no hidden padding");
+static_assert(sizeof(Vertex) == 60, "Vertex must have no hidden padding");
 
 // One glBegin/glEnd or one draw call.
 struct Batch {

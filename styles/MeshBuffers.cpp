@@ -20,7 +20,8 @@ void fill(const reconstruct::ObjectMesh& mesh, std::vector<SourceVertex>& vertic
         vertices[i] = {{c.position.x, c.position.y, c.position.z},
                        {c.normal.x, c.normal.y, c.normal.z},
                        {c.color.r, c.color.g, c.color.b, c.color.a},
-                       {c.texcoord.x, c.texcoord.y}};
+                       {c.texcoord.x, c.texcoord.y},
+                       {c.lightcoord.x, c.lightcoord.y}};
     }
     // Where the program gave no normal, the welded vertex's.
     for (uint32_t f = 0; f < mesh.faceCount(); ++f) {
@@ -67,9 +68,11 @@ GLsizei MeshBuffers::bind(const GlFunctions& gl, const reconstruct::ObjectMesh& 
     gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(SourceVertex, normal)));
     gl.VertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, at(offsetof(SourceVertex, color)));
     gl.VertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, at(offsetof(SourceVertex, texcoord)));
-    for (GLuint i = 0; i < 4; ++i) gl.EnableVertexAttribArray(i);
+    gl.VertexAttribPointer(4, 2, GL_FLOAT, GL_FALSE, stride,
+                           at(offsetof(SourceVertex, lightcoord)));
+    for (GLuint i = 0; i < 5; ++i) gl.EnableVertexAttribArray(i);
     // Arrays another style left enabled in the shared VAO would be read past their end.
-    for (GLuint i = 4; i < 8; ++i) gl.DisableVertexAttribArray(i);
+    for (GLuint i = 5; i < 8; ++i) gl.DisableVertexAttribArray(i);
     return e.indices;
 }
 
@@ -77,6 +80,9 @@ void MeshBuffers::draw(const GlFunctions& gl, const reconstruct::ObjectMesh& mes
 {
     const GLsizei count = bind(gl, mesh);
     if (count > 0) gl.DrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr);
+    // Attribute 4 (lightmap coordinates) is the meshes' alone: styles drawing their own
+    // arrays through attributes 0-3 must not read it past their end.
+    gl.DisableVertexAttribArray(4);
 }
 
 void MeshBuffers::drawFaces(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh,
@@ -85,9 +91,11 @@ void MeshBuffers::drawFaces(const GlFunctions& gl, const reconstruct::ObjectMesh
     const size_t total = size_t(std::max<GLsizei>(bind(gl, mesh), 0));
     const size_t first = std::min(3 * size_t(firstFace), total);
     const size_t n = std::min(3 * size_t(faceCount), total - first);
-    if (n == 0) return;
-    gl.DrawElements(GL_TRIANGLES, GLsizei(n), GL_UNSIGNED_INT,
-                    reinterpret_cast<const void*>(first * sizeof(uint32_t)));
+    if (n > 0) {
+        gl.DrawElements(GL_TRIANGLES, GLsizei(n), GL_UNSIGNED_INT,
+                        reinterpret_cast<const void*>(first * sizeof(uint32_t)));
+    }
+    gl.DisableVertexAttribArray(4);
 }
 
 void MeshBuffers::endFlush(const GlFunctions& gl)

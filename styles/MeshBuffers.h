@@ -21,6 +21,7 @@ public:
         float normal[3];
         float color[4];
         float texcoord[2];
+        float lightcoord[2]; // attribute 4, enabled only while a mesh draws
     };
 
     // Binds the mesh's vertex and index buffers and points attributes 0-3 at them (the

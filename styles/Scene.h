@@ -22,6 +22,9 @@ struct SceneObject {
     // direction) when the program lit the object, else a head-light from the upper left.
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
+    // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
+    // GL lighting, the shading styles take their light from it instead of L·n. 0: none.
+    GLuint lightmap = 0;
     // Faces drawn with another texture than `texture` (a cube with a texture per face is one
     // object): runs of consecutive faces, in the mesh's face order, covering all of them.
     // Empty when every face has `texture`.
@@ -29,6 +32,7 @@ struct SceneObject {
         uint32_t firstFace = 0;
         uint32_t faceCount = 0;
         GLuint texture = 0;
+        GLuint lightmap = 0;
     };
     std::vector<TextureRun> textureRuns;
     uint32_t id = 0;               // 1, 2, ... in drawing order: for ID buffers
@@ -73,6 +77,15 @@ struct SceneObject {
         return false;
     }
 
+    // Whether any face has a lightmap.
+    bool lightmapped() const
+    {
+        if (lightmap != 0) return true;
+        for (const TextureRun& run : textureRuns) {
+            if (run.lightmap != 0) return true;
+        }
+        return false;
+    }
     // A projection without a perspective row looks along -z everywhere.
     bool orthographic() const
     {

@@ -44,6 +44,7 @@ bool ShaderProgram::build(const GlFunctions& gl, const char* vertexSource,
     gl.BindAttribLocation(program, 1, "normal");
     gl.BindAttribLocation(program, 2, "color");
     gl.BindAttribLocation(program, 3, "texcoord");
+    gl.BindAttribLocation(program, 4, "lightcoord");
     gl.BindFragDataLocation(program, 0, "fragColor");
     gl.LinkProgram(program);
     gl.DeleteShader(vs);

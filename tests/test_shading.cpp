@@ -850,3 +850,64 @@ TEST_F(Shading, GoochTakesItsPureTonesFromTheRamp)
         render("gooch", bare + ",gooch.texture=/nonexistent/ramp.png", "gooch_fallback", kWhite);
     EXPECT_EQ(fallback.rgba, generated.rgba);
 }
+
+// A lightmapped surface of a program without GL lighting (Quake-style worlds): the shading
+// styles take its light from the lightmap's luminance, not from L·n. A flat quad whose
+// lightmap is dark on the left and bright on the right gets the shadow band on the left and a
+// lit band on the right in toon; without the lightmap both halves are alike (one plane, one
+// light direction), and so are they in halftone's density.
+TEST_F(Shading, LightmapsGiveTheLightOfUnlitSurfaces)
+{
+    ASSERT_TRUE(harness.ok());
+    const styles::GlFunctions& gl = harness.gl();
+    const uint8_t texels[2 * 3] = {30, 30, 30, 240, 240, 240};
+    GLuint lightmap = 0;
+    gl.GenTextures(1, &lightmap);
+    gl.BindTexture(GL_TEXTURE_2D, lightmap);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, 2, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+
+    reconstruct::Batch quad;
+    quad.mode = GL_TRIANGLES;
+    quad.modelview = glm::translate(glm::mat4(1.0f), kCentre);
+    quad.materialId = 1;
+    const glm::vec2 corners[6] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+    for (const glm::vec2& c : corners) {
+        reconstruct::Vertex v{};
+        v.position = {c.x, c.y, 0.0f};
+        v.normal = {0.0f, 0.0f, 1.0f};
+        v.hasNormal = true;
+        v.color = {0.8f, 0.8f, 0.8f, 1.0f};
+        v.lightcoord = {0.5f * (c.x + 1.0f), 0.5f};
+        quad.vertices.push_back(v);
+    }
+    auto halves = [&](const std::string& chain, bool withLightmap, const std::string& name) {
+        auto scene = harness.makeScene({quad}, perspective(), kLight);
+        for (auto& o : scene.objects) o.lightmap = withLightmap ? lightmap : 0;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, chain, "", image, error)) << error;
+        save(image, name);
+        // Mean luminance of a patch left and right of the middle, inside the quad.
+        auto patch = [&](int x0) {
+            float sum = 0.0f;
+            int n = 0;
+            for (int y = kSize / 2 - 6; y < kSize / 2 + 6; ++y) {
+                for (int x = x0; x < x0 + 12; ++x, ++n) sum += luminance(pixel(image, x, y));
+            }
+            return sum / float(n);
+        };
+        return std::pair{patch(kSize / 2 - 20), patch(kSize / 2 + 8)};
+    };
+    for (const std::string chain : {"toon", "halftone"}) {
+        const auto [left, right] = halves(chain, true, chain + "_lightmap");
+        const auto [plainLeft, plainRight] = halves(chain, false, chain + "_no_lightmap");
+        EXPECT_GT(right - left, 0.2f) << chain << ": the lightmap's dark side is not darker";
+        EXPECT_LT(std::abs(plainRight - plainLeft), 0.05f) << chain;
+    }
+    gl.DeleteTextures(1, &lightmap);
+}

@@ -287,13 +287,19 @@ TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
         w.put<GLenum>(GL_TEXTURE1);
     });
     // Generation on a unit that textures nothing changes nothing; with its texture on, unit 1
-    // layers over the surface's texture (unit 0): styled with unit 0's, the layer said.
+    // modulates the surface's texture (unit 0) on its own T: a lightmap, the light. With S and
+    // T generated it is an effect layer, not drawn.
     enable(GL_TEXTURE_GEN_S, true);
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
     EXPECT_EQ(tracker.droppedLayers(), 0u);
     enable(GL_TEXTURE_2D, true);
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    EXPECT_EQ(tracker.lightmapUnit(), 1);
+    EXPECT_EQ(tracker.droppedLayers(), 0u);
+    enable(GL_TEXTURE_GEN_T, true);
+    EXPECT_EQ(tracker.lightmapUnit(), -1);
     EXPECT_EQ(tracker.droppedLayers(), 2u);
+    enable(GL_TEXTURE_GEN_T, false);
     // A cube map as the surface's texture: not what the styles draw.
     run([](CallWriter& w) {
         w.op(op::glActiveTexture);
@@ -360,8 +366,8 @@ TEST(StateTracker, ADrawTexturedByAnotherUnitAloneTakesThatUnitsTextureAndCoordi
     EXPECT_FLOAT_EQ(batches[0].vertices[1].texcoord.x, 1.0f);
     EXPECT_FLOAT_EQ(batches[0].vertices[1].texcoord.y, 0.25f);
 
-    // Unit 0's texture on as well: the surface's is unit 0's, unit 2 a layer over it (as a
-    // lightmap or a shadow is) that the styles do not draw.
+    // Unit 0's texture on as well: the surface's is unit 0's, unit 2 modulates it with its own
+    // coordinates: the lightmap that gives the styles their light.
     feed.enable(GL_TEXTURE_2D, true);
     run([](CallWriter& w) {
         w.op(op::glBindTexture);
@@ -369,11 +375,28 @@ TEST(StateTracker, ADrawTexturedByAnotherUnitAloneTakesThatUnitsTextureAndCoordi
         w.put<GLuint>(4);
     });
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
-    EXPECT_EQ(tracker.droppedLayers(), 4u);
-    feed.triangle();
+    EXPECT_EQ(tracker.droppedLayers(), 0u);
+    EXPECT_EQ(tracker.lightmapUnit(), 2);
+    run([](CallWriter& w) {
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        for (float x : {0.0f, 1.0f, 0.0f}) {
+            w.op(op::glMultiTexCoord2f);
+            w.put<GLenum>(GL_TEXTURE2);
+            w.put<float>(0.5f);
+            w.put<float>(x);
+            w.op(op::glVertex3f);
+            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+    });
     tracker.takeBatches(batches);
     ASSERT_EQ(batches.size(), 1u);
     EXPECT_EQ(batches[0].texture, 4u);
+    EXPECT_EQ(batches[0].lightmap, 9u);
+    ASSERT_EQ(batches[0].vertices.size(), 3u);
+    EXPECT_FLOAT_EQ(batches[0].vertices[1].lightcoord.x, 0.5f);
+    EXPECT_FLOAT_EQ(batches[0].vertices[1].lightcoord.y, 1.0f);
 }
 
 // Lights other than GL_LIGHT0: the brightest enabled one gives the direction, and the lights'

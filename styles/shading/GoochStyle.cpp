@@ -24,7 +24,7 @@ out vec4 fragColor;
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    float d = dot(n, lightDir);
+    float d = litDot(n, lightDir);
     vec3 k = baseColor.rgb;
     float a = baseColor.a; // the program's, for its alpha test and blending
 #if DETAIL
@@ -161,11 +161,7 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
         variant.u.set(gl, object, frontIsCcw);
         // The program's textures keep their own filtering and wrapping; both sides are
         // drawn in one pass (shadingNormal).
-        if (textured) {
-            ShadingCommon::drawTextured(ctx, object);
-        } else {
-            ctx.meshes.draw(gl, *object.mesh);
-        }
+        ShadingCommon::draw(ctx, object, variant.u, textured);
     }
 }
 

@@ -28,7 +28,7 @@ out vec4 fragColor;
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    float x = clamp((dot(n, lightDir) + 1.0) * 0.5, 0.0, 1.0);
+    float x = clamp((litDot(n, lightDir) + 1.0) * 0.5, 0.0, 1.0);
 #if GAMMA_ONE
     float I = ambient + x * diffuse;
 #else
@@ -238,11 +238,7 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         // The program's textures keep their own filtering and wrapping; both sides are
         // drawn in one pass (shadingNormal).
-        if (textured) {
-            ShadingCommon::drawTextured(ctx, object);
-        } else {
-            ctx.meshes.draw(gl, *object.mesh);
-        }
+        ShadingCommon::draw(ctx, object, variant.u, textured);
     }
 }
 

@@ -19,15 +19,18 @@ in vec3 position;
 in vec3 normal;
 in vec4 color;
 in vec2 texcoord;
+in vec2 lightcoord;
 out vec3 eyeNormal;
 out vec4 baseColor;
 out vec2 uv;
+out vec2 lightUv;
 out vec3 eyePosition;
 void main()
 {
     eyeNormal = normalMatrix * normal;
     baseColor = color;
     uv = texcoord;
+    lightUv = lightcoord;
     vec4 eye = modelview * vec4(position, 1.0);
     eyePosition = eye.xyz / eye.w;
     gl_Position = projection * eye;
@@ -47,6 +50,18 @@ vec3 shadingNormal(vec3 eyeNormal)
     // mirroring modelview and which winding the mesh's normals follow (legacy programs often
     // wind backwards while their normals are right). The other side is lit flipped.
     return gl_FrontFacing == (faceSign > 0.0) ? n : -n;
+}
+
+// The light a surface gets, as L·n in [-1, 1]: from the program's lightmap where it has one
+// and no GL lighting (its baked light's luminance), else from the light direction.
+uniform sampler2D lightmap;
+uniform float lightmapped;
+in vec2 lightUv;
+float litDot(vec3 n, vec3 towardsLight)
+{
+    if (lightmapped < 0.5) return dot(n, towardsLight);
+    vec3 baked = texture(lightmap, lightUv).rgb;
+    return 2.0 * dot(baked, vec3(0.299, 0.587, 0.114)) - 1.0;
 }
 )";
 }
@@ -84,6 +99,8 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     normalMatrix = gl.GetUniformLocation(program, "normalMatrix");
     faceSign = gl.GetUniformLocation(program, "faceSign");
     lightDir = gl.GetUniformLocation(program, "lightDir");
+    lightmapped = gl.GetUniformLocation(program, "lightmapped");
+    lightmapSampler = gl.GetUniformLocation(program, "lightmap");
 }
 
 bool ShadingCommon::normalsFollowCcw(const reconstruct::ObjectMesh& mesh)
@@ -115,6 +132,8 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     const bool flip = !frontIsCcw ^ mirrored ^ !normalsFollowCcw(*object.mesh);
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
+    gl.Uniform1i(lightmapSampler, 3);
+    gl.Uniform1f(lightmapped, 0.0f); // drawTextured says where a lightmap is bound
     if (fogMode >= 0) {
         const SceneObject::Fog& f = object.fog;
         const float mode = f.mode == GL_LINEAR ? 1.0f
@@ -140,10 +159,20 @@ glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)
     return glm::transpose(glm::inverse(glm::mat3(modelview)));
 }
 
-void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object)
+void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
+                                 const ObjectUniforms& u)
 {
     const GlFunctions& gl = ctx.gl;
+    // The lightmap on unit 3 (0 holds the surface's texture, 1 and 2 the styles' own).
+    auto useLightmap = [&](GLuint lightmap) {
+        gl.Uniform1f(u.lightmapped, lightmap != 0 ? 1.0f : 0.0f);
+        if (lightmap == 0) return;
+        gl.ActiveTexture(GL_TEXTURE3);
+        gl.BindTexture(GL_TEXTURE_2D, lightmap);
+        gl.ActiveTexture(GL_TEXTURE0);
+    };
     if (object.textureRuns.empty()) {
+        useLightmap(object.lightmap);
         gl.BindTexture(GL_TEXTURE_2D, object.texture);
         ctx.meshes.draw(gl, *object.mesh);
         return;
@@ -164,8 +193,19 @@ void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object)
             }
             texture = ctx.blankTexture;
         }
+        useLightmap(run.lightmap);
         gl.BindTexture(GL_TEXTURE_2D, texture);
         ctx.meshes.drawFaces(gl, *object.mesh, run.firstFace, run.faceCount);
+    }
+}
+
+void ShadingCommon::draw(StyleContext& ctx, const SceneObject& object, const ObjectUniforms& u,
+                         bool textured)
+{
+    if (textured || object.lightmapped()) {
+        drawTextured(ctx, object, u);
+    } else {
+        ctx.meshes.draw(ctx.gl, *object.mesh);
     }
 }
 

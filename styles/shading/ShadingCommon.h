@@ -31,6 +31,7 @@ public:
     struct ObjectUniforms {
         GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
         GLint fogMode = -1, fogRange = -1, fogColour = -1;
+        GLint lightmapped = -1, lightmapSampler = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;
@@ -38,7 +39,14 @@ public:
     // Draws the object's faces with the program's textures bound on the active unit, run by
     // run (SceneObject::textureRuns); faces without one get a white texture, so that one
     // textured shader serves the whole object.
-    static void drawTextured(StyleContext& ctx, const SceneObject& object);
+    // With a lightmap (SceneObject::lightmap, per run), it is bound on unit 3 and the shader's
+    // litDot() takes the light from it.
+    static void drawTextured(StyleContext& ctx, const SceneObject& object,
+                             const ObjectUniforms& u);
+    // The object's faces: through drawTextured when the style's variant samples textures or
+    // the object has lightmaps, else in one draw.
+    static void draw(StyleContext& ctx, const SceneObject& object, const ObjectUniforms& u,
+                     bool textured);
     // Returns whether the program's front faces are counter-clockwise (once per render()).
     static bool beginTwoSided(const GlFunctions& gl);
     // Whether the program's normals point out of the counter-clockwise side of its faces.

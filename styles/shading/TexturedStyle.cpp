@@ -26,7 +26,7 @@ float ramp(float x, float lo, float hi)
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    float d = dot(n, lightDir);
+    float d = litDot(n, lightDir);
     float pixel = max(fwidth(d), 1e-5);
     // The shading colours (the 1D shading texture's colour channels), antialiased bands.
 #if TINT
@@ -342,11 +342,7 @@ void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         // The program's textures keep their own filtering and wrapping; both sides are
         // drawn in one pass (shadingNormal).
-        if (textured) {
-            ShadingCommon::drawTextured(ctx, object);
-        } else {
-            ctx.meshes.draw(gl, *object.mesh);
-        }
+        ShadingCommon::draw(ctx, object, variant.u, textured);
     }
 }
 

@@ -43,7 +43,7 @@ float boundaryInk(float d, float t, float pixel)
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    float d = dot(n, lightDir);
+    float d = litDot(n, lightDir);
 #if SMOOTH || BAND_LINES
     float pixel = max(fwidth(d), 1e-5);
 #else
@@ -202,11 +202,7 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
         variant.u.set(gl, object, frontIsCcw);
         // The program's textures keep their own filtering and wrapping; both sides are
         // drawn in one pass (shadingNormal).
-        if (textured) {
-            ShadingCommon::drawTextured(ctx, object);
-        } else {
-            ctx.meshes.draw(gl, *object.mesh);
-        }
+        ShadingCommon::draw(ctx, object, variant.u, textured);
     }
 }
 

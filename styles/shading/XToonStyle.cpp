@@ -30,7 +30,7 @@ out vec4 fragColor;
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    float u = clamp(0.5 * dot(n, lightDir) + 0.5, 0.0, 1.0);
+    float u = clamp(0.5 * litDot(n, lightDir) + 0.5, 0.0, 1.0);
 #if ORIENTATION
     vec3 toEye = perspectiveView > 0.5 ? normalize(-eyePosition) : vec3(0.0, 0.0, 1.0);
     float v = 1.0 - pow(abs(dot(n, toEye)), exponent);
@@ -196,11 +196,7 @@ void XToonStyle::render(const Scene& scene, StyleContext& ctx)
         }
         variant.u.set(gl, object, frontIsCcw);
         gl.Uniform1f(variant.perspectiveView, object.orthographic() ? 0.0f : 1.0f);
-        if (textured) {
-            ShadingCommon::drawTextured(ctx, object);
-        } else {
-            ctx.meshes.draw(gl, *object.mesh);
-        }
+        ShadingCommon::draw(ctx, object, variant.u, textured);
     }
     gl.ActiveTexture(GL_TEXTURE1);
     gl.BindTexture(GL_TEXTURE_2D, 0);
