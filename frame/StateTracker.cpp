@@ -478,7 +478,10 @@ bool StateTracker::wouldHold(GLenum mode) const
 
 bool StateTracker::is3D() const
 {
-    return mAttrib.depthTest || mMatrices.projection()[3][3] == 0.0f;
+    // A perspective view, or a depth-tested one that writes depth. Orthographic drawing
+    // that writes no depth is 2D even with the depth test on (ioquake3 draws its HUD so).
+    const AttribState& a = mAttrib;
+    return mMatrices.projection()[3][3] == 0.0f || (a.depthTest && a.depthMask);
 }
 
 const char* StateTracker::unstylableState() const
@@ -1011,7 +1014,7 @@ bool StateTracker::keep(TrackedBatch& batch)
             for (TrackedVertex& v : batch.vertices) v.color *= tint;
         }
     }
-    batch.is3D = a.depthTest || batch.projection[3][3] == 0.0f;
+    batch.is3D = batch.projection[3][3] == 0.0f || (a.depthTest && a.depthMask);
     if (mHolding) {
         // Inside a list the driver draws itself (not masked by the compositor) nothing is
         // held: the style would draw it a second time over the program's own.

@@ -577,3 +577,32 @@ TEST(MatrixStacks, EachModeHasItsStack)
     for (int i = 0; i < 100; ++i) m.pop();
     EXPECT_EQ(m.modelview(), glm::mat4(2.0f));
 }
+
+// A HUD drawn with an orthographic projection and the depth test on but no depth writes
+// (ioquake3 draws its status bar so) is 2D: not held, not styled. Writing depth, the same
+// orthographic drawing is a 3D scene (CAD views are orthographic).
+TEST(StateTracker, OrthographicDrawingWithoutDepthWritesIsTwoDimensional)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.run([](CallWriter& w) {
+        w.op(op::glMatrixMode);
+        w.put<GLenum>(GL_PROJECTION);
+        w.op(op::glOrtho);
+        for (double v : {0.0, 640.0, 480.0, 0.0, 0.0, 1.0}) w.put<double>(v);
+        w.op(op::glMatrixMode);
+        w.put<GLenum>(GL_MODELVIEW);
+        w.op(op::glDepthMask);
+        w.put<GLboolean>(GL_FALSE);
+    });
+    feed.enable(GL_DEPTH_TEST, true);
+    EXPECT_FALSE(tracker.is3D());
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
+    feed.run([](CallWriter& w) {
+        w.op(op::glDepthMask);
+        w.put<GLboolean>(GL_TRUE);
+    });
+    EXPECT_TRUE(tracker.is3D());
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+}
