@@ -7,6 +7,7 @@
 // depend on a coin toss.
 
 #include "common/PngImage.h"
+#include "tests/support/ImageCompare.h"
 #include "tests/support/Process.h"
 
 #include <gtest/gtest.h>
@@ -140,10 +141,10 @@ INSTANTIATE_TEST_SUITE_P(
 CompatCase openArena()
 {
     CompatCase c("openarena", "blending other than GL_SRC_ALPHA", "/usr/games/",
-                 {"+set", "r_mode", "-1", "+set", "r_customwidth", "640", "+set",
-                  "r_customheight", "480", "+set", "r_fullscreen", "0", "+set", "cl_renderer",
-                  "opengl1", "+set", "s_initsound", "0", "+devmap", "oa_dm1", "+wait", "800",
-                  "+quit"},
+                 {"+set",    "r_mode",         "-1",      "+set", "r_customwidth", "640",
+                  "+set",    "r_customheight", "480",     "+set", "r_fullscreen",  "0",
+                  "+set",    "cl_renderer",    "opengl1", "+set", "s_initsound",   "0",
+                  "+devmap", "oa_dm1",         "+wait",   "800",  "+quit"},
                  250, "_ctx2");
     c.executable = "ioquake3";
     c.quits = true; // "wait" counts the engine's frames: 800 of them draw more than 250
@@ -162,3 +163,38 @@ INSTANTIATE_TEST_SUITE_P(
         // layers (additive) are left, and said. Spawn points vary: the view does too.
         openArena()),
     [](const auto& param) { return param.param.program; });
+
+// A game's apitrace trace replayed by glretrace under nprgl with style none draws what it
+// draws natively: the same pixels at the same frames (a replay is deterministic, a live game
+// is not). openarena into its map, traced once here (no trace file is kept in the repository).
+TEST(Traces, StyleNoneReplaysAGameAsNative)
+{
+    const CompatCase game = openArena();
+    const std::string program = game.path + game.program;
+    if (!std::filesystem::exists(program) || !std::filesystem::exists("/usr/bin/apitrace") ||
+        !std::filesystem::exists("/usr/bin/glretrace")) {
+        GTEST_SKIP() << "needs openarena and apitrace (scripts/install-deps.sh installs both)";
+    }
+    const std::string dir = freshDir("trace_openarena");
+    std::vector<std::string> trace = {"apitrace",          "trace", "--api", "gl", "-o",
+                                      dir + "/game.trace", program};
+    trace.insert(trace.end(), game.args.begin(), game.args.end());
+    ProcessResult traced = runProcess(trace, {{"HOME", freshDir("trace_home")}});
+    ASSERT_EQ(traced.exitCode, 0) << traced.err.substr(0, 2000);
+    auto replay = [&](const std::string& name, bool underNprgl) {
+        std::filesystem::create_directories(dir + "/" + name);
+        const std::vector<std::string> retrace = {"glretrace", "--snapshot=150,250",
+                                                  "--snapshot-prefix=" + dir + "/" + name + "/",
+                                                  dir + "/game.trace"};
+        ProcessResult r =
+            runProcess(underNprgl ? under({nprglCommand(), "--style", "none"}, retrace) : retrace);
+        EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err.substr(0, 2000);
+    };
+    replay("native", false);
+    replay("none", true);
+    for (const char* frame : {"0000000150.png", "0000000250.png"}) {
+        const ImageDiff diff = compareImages(dir + "/native/" + frame, dir + "/none/" + frame);
+        ASSERT_TRUE(diff.comparable) << diff.error;
+        EXPECT_EQ(diff.differingPixels, 0u) << frame;
+    }
+}
