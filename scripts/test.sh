@@ -26,8 +26,12 @@ cd "$root/build-asan"
 # Mesa's llvmpipe leaks at exit by design; leaks are not what this run looks for.
 export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --output-on-failure -j 2 -L unit
+# Not the trace replay test: the ASan runtime that nprgl brings into glretrace changes the
+# replay's own pixels (it fills fresh allocations; the trace reads some unset memory), so its
+# native side would have to run under ASan too.
 "$root/scripts/with-display.sh" ctest --output-on-failure -j 2 -L e2e \
-    -R 'DefaultStyle|Golden|StateUnderNprgl/(none|toon_paper_edges|strokes)_|Record|Replay|Config|Hotkeys|Overlay|StateUnderNprglOverlay|Compositor\.'
+    -R 'DefaultStyle|Golden|StateUnderNprgl/(none|toon_paper_edges|strokes)_|Record|Replay|Config|Hotkeys|Overlay|StateUnderNprglOverlay|Compositor\.' \
+    -E 'Traces\.'
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
 # The libFuzzer targets (clang, ASan + UBSan) on generated seeds: the capture reader, and
