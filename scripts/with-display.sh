@@ -8,10 +8,12 @@ if ! command -v Xvfb >/dev/null; then
     echo "with-display: no DISPLAY and no Xvfb (run scripts/install-deps.sh)" >&2
     exit 1
 fi
+# -noreset: by default Xvfb resets itself whenever its last client leaves, and a program that
+# connects during the reset is refused (glxgears then exits 255 with no message on stderr).
 # -displayfd: Xvfb picks a free display itself and writes its number once it accepts
 # clients, so two runs side by side never race for one number.
 numfile=$(mktemp)
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$numfile" >/dev/null 2>&1 &
+Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$numfile" >/dev/null 2>&1 &
 xvfb=$!
 trap 'kill $xvfb 2>/dev/null || true; rm -f "$numfile"' EXIT
 until [ -s "$numfile" ]; do
