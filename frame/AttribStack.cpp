@@ -30,6 +30,7 @@ void AttribStack::pop()
         a.fog = saved.fog;
         a.vertexProgram = saved.vertexProgram;
         a.fragmentProgram = saved.fragmentProgram;
+        a.scissorTest = saved.scissorTest;
     }
     if (mask & GL_LIGHTING_BIT) {
         a.lighting = saved.lighting;
@@ -63,6 +64,10 @@ void AttribStack::pop()
         a.texGen = saved.texGen;
     }
     if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
+    if (mask & GL_SCISSOR_BIT) {
+        a.scissorTest = saved.scissorTest;
+        a.scissor = saved.scissor;
+    }
     if (mask & GL_FOG_BIT) {
         a.fog = saved.fog;
         a.fogMode = saved.fogMode;

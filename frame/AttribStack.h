@@ -1,7 +1,7 @@
 #pragma once
 
 // AttribStack: the server state that decides holding and shading (enables, lighting, colour
-// mask, polygon mode, viewport) and glPushAttrib/glPopAttrib over it, group by group.
+// mask, polygon mode, viewport, scissor) and glPushAttrib/glPopAttrib over it, group by group.
 
 #include <GL/gl.h>
 #include <glm/glm.hpp>
@@ -56,6 +56,9 @@ struct AttribState {
         return d;
     }
     glm::ivec4 viewport{0, 0, 0, 0};
+    // The scissor box (window pixels) and whether the test confines the drawing to it.
+    bool scissorTest = false;
+    glm::ivec4 scissor{0, 0, 0, 0};
 };
 
 class AttribStack {

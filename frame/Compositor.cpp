@@ -86,7 +86,32 @@ NPRGL_HELD_DRAW(glRects, holdDraw(GL_POLYGON), (GLshort a, GLshort b, GLshort x,
         C().barrier();                                                                          \
         return C().next().name args;                                                            \
     }
-NPRGL_BARRIER(void, glClear, (GLbitfield mask), (mask))
+// Clears: barriers that also tell the page (paper) where the program's background is new.
+void APIENTRY c_glClear(GLbitfield mask)
+{
+    C().clear((mask & GL_COLOR_BUFFER_BIT) != 0);
+    C().next().glClear(mask);
+}
+void APIENTRY c_glClearBufferiv(GLenum buffer, GLint drawbuffer, const GLint* value)
+{
+    C().clear(buffer == GL_COLOR);
+    C().next().glClearBufferiv(buffer, drawbuffer, value);
+}
+void APIENTRY c_glClearBufferuiv(GLenum buffer, GLint drawbuffer, const GLuint* value)
+{
+    C().clear(buffer == GL_COLOR);
+    C().next().glClearBufferuiv(buffer, drawbuffer, value);
+}
+void APIENTRY c_glClearBufferfv(GLenum buffer, GLint drawbuffer, const GLfloat* value)
+{
+    C().clear(buffer == GL_COLOR);
+    C().next().glClearBufferfv(buffer, drawbuffer, value);
+}
+void APIENTRY c_glClearBufferfi(GLenum buffer, GLint drawbuffer, GLfloat depth, GLint stencil)
+{
+    C().clear(false);
+    C().next().glClearBufferfi(buffer, drawbuffer, depth, stencil);
+}
 NPRGL_BARRIER(void, glAccum, (GLenum op, GLfloat value), (op, value))
 NPRGL_BARRIER(void, glReadPixels,
               (GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* p),
@@ -191,6 +216,10 @@ void Compositor::install(GlDispatch& d)
     d.glRects = c_glRects;
     d.glCallLists = c_glCallLists;
     d.glClear = c_glClear;
+    d.glClearBufferiv = c_glClearBufferiv;
+    d.glClearBufferuiv = c_glClearBufferuiv;
+    d.glClearBufferfv = c_glClearBufferfv;
+    d.glClearBufferfi = c_glClearBufferfi;
     d.glAccum = c_glAccum;
     d.glReadPixels = c_glReadPixels;
     d.glCopyPixels = c_glCopyPixels;
@@ -274,12 +303,16 @@ bool Compositor::ready()
         mPhase = Phase::Off;
         return false;
     }
-    GLint viewport[4] = {}, maxAttrib = 16, maxClient = 16;
+    GLint viewport[4] = {}, scissor[4] = {}, maxAttrib = 16, maxClient = 16;
     gRealGl.glGetIntegerv(GL_VIEWPORT, viewport);
+    gRealGl.glGetIntegerv(GL_SCISSOR_BOX, scissor);
+    const bool scissorTest = gRealGl.glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
     gRealGl.glGetIntegerv(GL_MAX_ATTRIB_STACK_DEPTH, &maxAttrib);
     gRealGl.glGetIntegerv(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, &maxClient);
     syncStream();
     mTracker.setViewport({viewport[0], viewport[1], viewport[2], viewport[3]});
+    mTracker.setScissor({scissor[0], scissor[1], scissor[2], scissor[3]});
+    mTracker.setScissorTest(scissorTest);
     mTracker.setStackLimits(maxAttrib, maxClient);
     // Off or without styles, the tracker must not take the program's draws for held ones.
     mTracker.setHolding(mEnabled && mHasStyles);
@@ -514,8 +547,16 @@ void Compositor::noteHeld()
     mFrameCounts.noteStyled();
     GLint framebuffer = 0;
     gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    if (mHeld && framebuffer != mHeldFramebuffer) flush(); // one scene per framebuffer
+    // One scene per framebuffer and per scissor rectangle (the styles draw it confined so).
+    const bool scissorTest = mTracker.scissorTest();
+    const glm::ivec4 scissor = scissorTest ? mTracker.scissor() : glm::ivec4(0);
+    if (mHeld && (framebuffer != mHeldFramebuffer || scissorTest != mHeldScissorTest ||
+                  scissor != mHeldScissor)) {
+        flush();
+    }
     mHeldFramebuffer = framebuffer;
+    mHeldScissorTest = scissorTest;
+    mHeldScissor = scissor;
     mHeld = true;
 }
 
@@ -560,6 +601,12 @@ void Compositor::end()
 void Compositor::barrier()
 {
     if (mHeld && !mHoldingBegin) flush();
+}
+
+void Compositor::clear(bool colour)
+{
+    barrier();
+    if (colour) ++mColourClears;
 }
 
 GLenum Compositor::getError()
@@ -670,6 +717,10 @@ void Compositor::buildScene()
     }
     if (!mTracked.empty()) mScene.viewport = mTracked.back().viewport;
     mScene.frame = mContext.frame();
+    mScene.framebuffer = uint32_t(mHeldFramebuffer);
+    mScene.scissored = mHeldScissorTest;
+    mScene.scissor = mHeldScissor;
+    mScene.colourClears = mColourClears;
 }
 
 void Compositor::textureRuns(const reconstruct::FrameObject& o, styles::SceneObject& s) const

@@ -94,6 +94,8 @@ public:
     bool shading() const { return mShading; }
     const GlDispatch& heldNext() const { return mHeldNext; }
     void barrier();
+    // A clear of the colour buffer (colour) or of others: a barrier, counted.
+    void clear(bool colour);
     // Around a draw left as the program draws it: with the coverage style, paints it red.
     void tintBegin();
     void tintEnd();
@@ -150,6 +152,8 @@ private:
     GLboolean mSavedDiscard = GL_FALSE;
     bool mStackWarned = false;
     GLint mHeldFramebuffer = 0;
+    bool mHeldScissorTest = false; // the held scene's scissor test and box
+    glm::ivec4 mHeldScissor{0};
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
     // 3D polygon draws (a glBegin/glEnd, an array draw, a held glCallList) over the run and
@@ -164,6 +168,7 @@ private:
     reconstruct::Reconstructor mReconstructor;
     styles::Scene mScene;
     uint64_t mFlushes = 0;
+    uint64_t mColourClears = 0; // glClear / glClearBuffer calls that reached colour
 
     SavedGlState mSaved; // the program's state while the chain starts or renders
     PFNGLBINDFRAMEBUFFERPROC mBindFramebuffer = nullptr;

@@ -235,6 +235,10 @@ void APIENTRY tViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 {
     if (w >= 0 && h >= 0) T().setViewport({x, y, w, h});
 }
+void APIENTRY tScissor(GLint x, GLint y, GLsizei w, GLsizei h)
+{
+    if (w >= 0 && h >= 0) T().setScissor({x, y, w, h});
+}
 void APIENTRY tBlendFunc(GLenum src, GLenum dst) { T().blendFunc(src, dst); }
 void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
 {
@@ -397,6 +401,7 @@ StateTracker::StateTracker()
     d.glFogfv = tFogfv;
     d.glFogiv = tFogiv;
     d.glViewport = tViewport;
+    d.glScissor = tScissor;
     d.glPushAttrib = tPushAttrib;
     d.glPopAttrib = tPopAttrib;
     d.glPushClientAttrib = tPushClientAttrib;
@@ -1045,6 +1050,8 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.fogDensity = a.fogDensity;
     batch.fogColour = a.fogColour;
     batch.viewport = a.viewport;
+    batch.scissorTest = a.scissorTest;
+    batch.scissor = a.scissor;
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
         reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);
@@ -1058,6 +1065,7 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     case GL_LIGHTING: a.lighting = on; break;
     case GL_COLOR_MATERIAL: a.colorMaterial = on; break;
     case GL_DEPTH_TEST: a.depthTest = on; break;
+    case GL_SCISSOR_TEST: a.scissorTest = on; break;
     case GL_TEXTURE_2D:
         if (mActiveUnit == 0) {
             a.texture2D = on;

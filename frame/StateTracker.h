@@ -53,7 +53,9 @@ struct TrackedBatch {
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
     glm::vec3 fogColour{0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};
-    uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
+    bool scissorTest = false;
+    glm::ivec4 scissor{0, 0, 0, 0}; // x, y, width, height in window pixels
+    uint64_t contentHash = 0;       // reconstruct::hashVertices of the kept batch (0: not computed)
 };
 
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix
@@ -114,6 +116,11 @@ public:
         mMaxClientDepth = client;
     }
     void setViewport(const glm::ivec4& v) { mAttrib.viewport = v; }
+    void setScissor(const glm::ivec4& box) { mAttrib.scissor = box; }
+    void setScissorTest(bool on) { mAttrib.scissorTest = on; }
+    // The scissor test's state now: on, and its box.
+    bool scissorTest() const { return mAttrib.scissorTest; }
+    const glm::ivec4& scissor() const { return mAttrib.scissor; }
     const glm::ivec4& viewport() const { return mAttrib.viewport; }
     // Moves the held batches out (the frame's batch list starts empty again). The batches
     // `out` held before give their vertex vectors back to the pool first.

@@ -99,6 +99,12 @@ struct Scene {
     glm::ivec4 viewport{0, 0, 0, 0}; // the program's viewport at the draws
     glm::vec4 clearColor{0.0f, 0.0f, 0.0f, 1.0f};
     uint64_t frame = 0;              // frames since the context started (0-based)
+    uint32_t framebuffer = 0;        // the draw framebuffer the scene was drawn into
+    uint64_t colourClears = 0;       // the program's colour clears so far (a running count)
+    // The program drew the scene confined to the scissor box (x, y, width, height, window
+    // pixels); the styles draw it so too.
+    bool scissored = false;
+    glm::ivec4 scissor{0, 0, 0, 0};
 };
 
 } // namespace nprgl::styles

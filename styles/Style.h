@@ -27,6 +27,11 @@ struct StyleContext {
     // A colour parameter: configured, else `fallback` ("rrggbb"), with a message when the
     // configured text is empty or not a colour.
     glm::vec3 colour(const char* style, const char* name, const char* fallback) const;
+
+    // A style's own scissor rectangle (x, y, width, height, window pixels), confined to the
+    // scene's scissor box; and back to the baseline (the scene's box, or no test).
+    void scissorTo(const Scene& scene, glm::ivec4 rect) const;
+    void endScissor(const Scene& scene) const;
 };
 
 // Shading styles draw the held-back surfaces; background styles then restyle the page around
@@ -40,7 +45,8 @@ enum class StyleRole { Shading, Background, Outline };
 //
 // When render() starts, the compositor has saved all of the program's state and set:
 // the program's framebuffer and viewport (scene.viewport); ctx.vao bound with attributes 0-3
-// free; program 0; blending, culling, stencil, scissor off; fill mode; colour mask on;
+// free; program 0; blending, culling, stencil off; the scissor test as the program drew the
+// scene (scene.scissored, scene.scissor; off for most); fill mode; colour mask on;
 // texture unit 0 active. The depth buffer holds what the program drew before, but not the
 // held-back scene: the held draws reached the driver with neither colour nor depth (when the
 // chain has a shading style) or as the program made them (when it has none).

@@ -72,8 +72,9 @@ void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
     gl.DepthFunc(shadingPass ? GL_LESS : GL_LEQUAL);
     if (shadingPass) gl.Disable(GL_POLYGON_OFFSET_FILL);
     else gl.Enable(GL_POLYGON_OFFSET_FILL);
-    for (GLenum cap : {GL_BLEND, GL_CULL_FACE, GL_STENCIL_TEST, GL_SCISSOR_TEST, GL_ALPHA_TEST,
-                       GL_LIGHTING, GL_TEXTURE_2D, GL_FOG, GL_LINE_SMOOTH, GL_POLYGON_SMOOTH,
+    mContext.endScissor(scene);
+    for (GLenum cap : {GL_BLEND, GL_CULL_FACE, GL_STENCIL_TEST, GL_ALPHA_TEST, GL_LIGHTING,
+                       GL_TEXTURE_2D, GL_FOG, GL_LINE_SMOOTH, GL_POLYGON_SMOOTH,
                        GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_COLOR_LOGIC_OP}) {
         gl.Disable(cap);
     }
@@ -125,6 +126,10 @@ void StyleChain::render(const Scene& scene)
         part->viewport = scene.viewport;
         part->clearColor = scene.clearColor;
         part->frame = scene.frame;
+        part->framebuffer = scene.framebuffer;
+        part->colourClears = scene.colourClears;
+        part->scissored = scene.scissored;
+        part->scissor = scene.scissor;
     }
     const GlFunctions& gl = mContext.gl;
     renderAsDrawn(mBackdrop);

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -658,6 +659,47 @@ TEST(Compositor, AdditiveGlowsReadOverPaper)
     };
     EXPECT_GT(whiteInSphere("toon"), 0.3f) << "the glow does not wash out here: no test";
     EXPECT_LT(whiteInSphere("toon+paper"), 0.05f) << "the glow washed out on the page";
+}
+
+// A scene drawn again under a scissor after a scissored clear (a rear-view mirror, a 3D pane
+// in a tool's window): the styled redraw stays inside the scissor box, so everything outside
+// it is the picture without the inset, and the page is laid again where the program cleared
+// (a clear counts even when the page was already laid this frame).
+TEST(Compositor, AScissoredInsetStaysInItsBoxAndGetsItsOwnPage)
+{
+    auto run = [](bool inset) {
+        const std::string dir = freshDir("inset");
+        std::vector<std::string> args = {demo("textured"), "--offscreen", "--size", "320x240",
+                                         "--frames",       "3",           "--save-frames",
+                                         "3",              "--save-dir",  dir};
+        if (inset) args.push_back("--inset");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper+edges"}, args));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+        return image;
+    };
+    const PngImage plain = run(false);
+    const PngImage inset = run(true);
+    ASSERT_EQ(plain.width, 320);
+    ASSERT_EQ(inset.width, 320);
+    // Rows top first: the inset is x >= 160, y < 120.
+    int outsideDiffer = 0, insideDiffer = 0;
+    for (int y = 0; y < 240; ++y) {
+        for (int x = 0; x < 320; ++x) {
+            const size_t i = (size_t(y) * 320 + x) * 4;
+            const bool differs = std::memcmp(&plain.rgba[i], &inset.rgba[i], 3) != 0;
+            (x >= 160 && y < 120 ? insideDiffer : outsideDiffer) += differs;
+        }
+    }
+    EXPECT_EQ(outsideDiffer, 0) << "the inset's styled scene spilled out of its scissor box";
+    EXPECT_GT(insideDiffer, 1000) << "the inset was not drawn";
+    // Its top right corner is background: paper (f4efe1), not the clear colour (26, 26, 31).
+    const uint8_t* corner = &inset.rgba[(size_t(2) * 320 + 317) * 4];
+    EXPECT_NEAR(corner[0], 0xf4, 8);
+    EXPECT_NEAR(corner[1], 0xef, 8);
+    EXPECT_NEAR(corner[2], 0xe1, 8);
 }
 
 // A translucent surface (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, depth writes off) is styled and

@@ -369,6 +369,29 @@ TEST(Edges, SeamsBetweenPiecesOfOneSurfaceAreNotInked)
     }
 }
 
+// A beam reaching from behind the eye into the distance (a corridor wall, a rail) is outlined
+// all along its visible part: the passes cover the box as GL clips it at the near plane, not
+// just its corners in front. It enters the view at the left border and runs to the middle.
+TEST(Edges, AnObjectReachingBehindTheEyeIsOutlinedAllAlongIt)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, -0.6f, -5.0f));
+    auto scene =
+        harness.makeScene({boxBatch(mv, glm::vec3(0.3f, 0.3f, 8.0f), kPale)}, perspective());
+    const PngImage image = render(harness, scene, "toon+edges", "", "edges_behind_eye");
+    // Its far end lies within 0.35 of the width from the left border; the lines must reach
+    // the border, so ink in every column of the leftmost tenth.
+    int inkedColumns = 0;
+    for (int x = 0; x < kSize / 10; ++x) {
+        bool inked = false;
+        for (int y = 0; y < kSize && !inked; ++y)
+            inked = isInk(image, x, y);
+        inkedColumns += inked;
+    }
+    EXPECT_EQ(inkedColumns, kSize / 10);
+}
+
 // One chain kept across flushes whose viewport changes size: the off-screen buffers follow.
 TEST(Edges, RecreatesBuffersWhenTheViewportChanges)
 {

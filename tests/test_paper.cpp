@@ -275,6 +275,67 @@ TEST(Paper, KeepsWhatTheProgramDrewWithoutDepth)
     EXPECT_TRUE(near(pixel(image, 70, 10), kPaper));
 }
 
+// The page is laid at a frame's first flush; later flushes of the frame find the background
+// paper already, and what the program drew between them in its clear colour (a 2D panel with
+// no depth) stays its own. After the program clears colour, the background is new and gets
+// paper again, as at the next frame.
+TEST(Paper, IsLaidOncePerFrameAndAgainAfterTheProgramClearsColour)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    styles::Scene scene = sphereScene(harness); // not drawn (no shading), but not empty
+    scene.clearColor = kBlack;
+    StyleSettings settings;
+    std::string error;
+    ASSERT_TRUE(StyleSettings::parse("paper", "paper.grain=0", settings, error)) << error;
+    styles::StyleChain chain;
+    auto getProc = [](const char* name) {
+        return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+    };
+    ASSERT_TRUE(chain.init(settings, getProc, error)) << error;
+    const styles::GlFunctions& gl = harness.gl();
+    auto flush = [&](const styles::Scene& s) {
+        chain.render(s);
+        gl.Finish();
+        PngImage image;
+        image.width = image.height = kSize;
+        image.rgba.resize(size_t(kSize) * kSize * 4);
+        gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+        gl.ReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        image.flipRows();
+        return image;
+    };
+    gl.Viewport(0, 0, kSize, kSize);
+    gl.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const PngImage first = flush(scene);
+    EXPECT_TRUE(near(pixel(first, 10, 10), kPaper));
+    EXPECT_TRUE(near(pixel(first, 100, 100), kPaper));
+
+    // The program's panel in its clear colour over the left half, then another flush.
+    fillRect(gl, {0, 0, kSize / 2, kSize}, &kBlack, nullptr);
+    const PngImage second = flush(scene);
+    EXPECT_EQ(pixel(second, 10, 10), (Rgb{0, 0, 0}));
+    EXPECT_TRUE(near(pixel(second, 100, 100), kPaper));
+
+    // A colour clear (here of the right half): the background is new everywhere it is the
+    // clear colour at the far plane.
+    fillRect(gl, {kSize / 2, 0, kSize / 2, kSize}, &kBlack, nullptr);
+    styles::Scene cleared = scene;
+    cleared.colourClears = scene.colourClears + 1;
+    const PngImage third = flush(cleared);
+    EXPECT_TRUE(near(pixel(third, 10, 10), kPaper));
+    EXPECT_TRUE(near(pixel(third, 100, 100), kPaper));
+
+    // The next frame starts a page of its own.
+    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    styles::Scene next = scene;
+    next.frame = scene.frame + 1;
+    const PngImage fourth = flush(next);
+    EXPECT_TRUE(near(pixel(fourth, 10, 10), kPaper));
+    chain.shutdown();
+}
+
 TEST(Paper, StaysInsideTheViewport)
 {
     StyleHarness harness(kSize, kSize);

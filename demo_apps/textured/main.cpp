@@ -7,7 +7,8 @@
 // its texture's alpha and the alpha test (GL_GREATER 0.5); --fog fades the scene into a pale
 // linear fog between eye distances 6 and 11; --depth-prepass draws the scene twice, depth
 // only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
-// floor with glPolygonOffset.
+// floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
+// depth) and draws the scene again there, turned, like a rear-view mirror.
 
 #include "Demo.h"
 
@@ -150,7 +151,9 @@ public:
                 {"depth-prepass", demo::ExtraOption::Kind::Flag,
                  "draw the scene's depth first with the colour mask off, then its colours"},
                 {"decal", demo::ExtraOption::Kind::Flag,
-                 "a yellow square on the floor, coplanar, drawn with glPolygonOffset"}};
+                 "a yellow square on the floor, coplanar, drawn with glPolygonOffset"},
+                {"inset", demo::ExtraOption::Kind::Flag,
+                 "the scene again, turned, in the top right quarter (scissor and clear)"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
@@ -160,6 +163,9 @@ public:
         additive_ = options.has("additive");
         depthPrepass_ = options.has("depth-prepass");
         decal_ = options.has("decal");
+        inset_ = options.has("inset");
+        width_ = options.width;
+        height_ = options.height;
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -215,6 +221,13 @@ public:
             return;
         }
         drawScene(frame);
+        if (inset_) {
+            glScissor(width_ / 2, height_ / 2, width_ - width_ / 2, height_ - height_ / 2);
+            glEnable(GL_SCISSOR_TEST);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            drawScene(frame + 240);
+            glDisable(GL_SCISSOR_TEST);
+        }
     }
 
     void drawScene(int frame)
@@ -325,6 +338,8 @@ private:
     bool additive_ = false;
     bool depthPrepass_ = false;
     bool decal_ = false;
+    bool inset_ = false;
+    int width_ = 0, height_ = 0;
     GLuint cutoutTexture_ = 0;
     static constexpr uint8_t white_[3] = {235, 235, 235};
 };

@@ -149,6 +149,20 @@ bool PaperStyle::grainedThisFrame(const Scene& scene)
     return false;
 }
 
+bool PaperStyle::filledAlready(const Scene& scene)
+{
+    // A flush after the page was laid adds objects that wrote depth over it; the pixels
+    // still untouched are paper already. A colour clear since makes new background.
+    if (scene.frame != mFillFrame) {
+        mFillFrame = scene.frame;
+        mFilled.clear();
+    }
+    const Filled key{scene.framebuffer, scene.viewport, scene.colourClears};
+    if (std::find(mFilled.begin(), mFilled.end(), key) != mFilled.end()) return true;
+    mFilled.push_back(key);
+    return false;
+}
+
 void PaperStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
@@ -156,7 +170,7 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     // An empty flush drew nothing; its page is whatever the program left.
     if (scene.objects.empty() || vp.z <= 0 || vp.w <= 0) return;
     const bool grainScene = mGrainScene && mGrain > 0.0f && !grainedThisFrame(scene);
-    bool fill = mFill;
+    bool fill = mFill && !filledAlready(scene);
     if (fill && !mCopy.capture(gl, vp)) {
         if (!mWarnedCopy) {
             NPRGL_WARN("paper: cannot copy a multisampled (or undrawn) framebuffer; the "
@@ -198,8 +212,7 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     }
 
     // Only the viewport; the scene's depth stays for the outline styles.
-    gl.Enable(GL_SCISSOR_TEST);
-    gl.Scissor(vp.x, vp.y, vp.z, vp.w);
+    ctx.scissorTo(scene, vp);
     gl.DepthMask(GL_FALSE);
     gl.BindBuffer(GL_ARRAY_BUFFER, mTriangle);
     gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -242,7 +255,7 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     // Back to the baseline masks: a clear that follows (before anyone restores the state)
     // must reach the whole depth and colour buffers.
     gl.Disable(GL_BLEND);
-    gl.Disable(GL_SCISSOR_TEST);
+    ctx.endScissor(scene);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthMask(GL_TRUE);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

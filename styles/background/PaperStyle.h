@@ -33,6 +33,9 @@ private:
     // Whether this frame's grain already lies over the viewport (a second flush in one
     // frame must not darken the page twice).
     bool grainedThisFrame(const Scene& scene);
+    // True when this frame's page is already under the scene's viewport of its framebuffer
+    // and the program cleared no colour since: the background left is paper already.
+    bool filledAlready(const Scene& scene);
 
     ShaderProgram mProgram;
     Uniforms mU;
@@ -43,6 +46,14 @@ private:
     bool mWarnedCopy = false;
     uint64_t mGrainFrame = UINT64_MAX;
     std::vector<glm::ivec4> mGrainedViewports;
+    struct Filled {
+        uint32_t framebuffer;
+        glm::ivec4 viewport;
+        uint64_t colourClears;
+        bool operator==(const Filled&) const = default;
+    };
+    uint64_t mFillFrame = UINT64_MAX;
+    std::vector<Filled> mFilled;
     // Parameters, fixed for the chain's life.
     glm::vec3 mPaperColour{0.957f, 0.937f, 0.882f};
     bool mFill = true;

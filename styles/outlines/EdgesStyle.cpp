@@ -369,6 +369,40 @@ const EdgesStyle::Bounds& EdgesStyle::bounds(const reconstruct::ObjectMesh& mesh
     return b;
 }
 
+bool EdgesStyle::boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi)
+{
+    // The box as GL clips it: corners in front of the near plane (z + w >= 0 in clip space)
+    // and the points where its edges cross that plane. A wall reaching behind the eye then
+    // covers what it covers on screen, not the whole window.
+    glm::vec4 clip[8];
+    float side[8];
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 p((k & 1) ? b.hi.x : b.lo.x, (k & 2) ? b.hi.y : b.lo.y,
+                          (k & 4) ? b.hi.z : b.lo.z);
+        clip[k] = m * glm::vec4(p, 1.0f);
+        side[k] = clip[k].z + clip[k].w;
+    }
+    auto add = [&](const glm::vec4& c) {
+        // On or in front of the near plane w is positive for any projection GL can draw
+        // with; a degenerate one (near plane at the eye) projects nowhere useful.
+        if (!(c.w > 1e-6f)) return false;
+        const glm::vec2 ndc = glm::vec2(c) / c.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+        return true;
+    };
+    for (int k = 0; k < 8; ++k) {
+        if (side[k] >= 0.0f && !add(clip[k])) return false;
+        for (int axis = 1; axis < 8; axis <<= 1) {
+            const int j = k | axis;
+            if (j == k || (side[k] >= 0.0f) == (side[j] >= 0.0f)) continue;
+            const float t = side[k] / (side[k] - side[j]);
+            if (!add(clip[k] + (clip[j] - clip[k]) * t)) return false;
+        }
+    }
+    return true;
+}
+
 bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect)
 {
     ++mFlush;
@@ -378,21 +412,10 @@ bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ive
         if (!o.mesh) continue;
         const Bounds& b = bounds(*o.mesh);
         if (b.empty) continue;
-        const glm::mat4 m = o.projection * o.modelview;
-        for (int k = 0; k < 8 && !whole; ++k) {
-            const glm::vec3 p((k & 1) ? b.hi.x : b.lo.x, (k & 2) ? b.hi.y : b.lo.y,
-                              (k & 4) ? b.hi.z : b.lo.z);
-            const glm::vec4 clip = m * glm::vec4(p, 1.0f);
-            // A corner at or behind the eye projects nowhere useful: take the viewport.
-            if (!(clip.w > 1e-6f)) {
-                whole = true;
-                break;
-            }
-            const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-            lo = glm::min(lo, ndc);
-            hi = glm::max(hi, ndc);
+        if (!boxOnScreen(o.projection * o.modelview, b, lo, hi)) {
+            whole = true;
+            break;
         }
-        if (whole) break;
     }
     // Forget meshes no longer drawn.
     if (mBounds.size() > 2 * scene.objects.size() + 64) {
@@ -421,6 +444,13 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     if (scene.objects.empty() || width <= 0 || height <= 0) return;
     glm::ivec4 rect; // [x0, y0, x1, y1) in the targets' pixels
     if (!coveredRect(scene, width, height, rect)) return;
+    if (scene.scissored) {
+        // The program's scissor box, in the targets' pixels.
+        const glm::ivec2 lo = glm::ivec2(scene.scissor) - glm::ivec2(scene.viewport);
+        const glm::ivec2 hi = lo + glm::ivec2(scene.scissor.z, scene.scissor.w);
+        rect = glm::ivec4(glm::max(glm::ivec2(rect), lo), glm::min(glm::ivec2(rect.z, rect.w), hi));
+        if (rect.x >= rect.z || rect.y >= rect.w) return;
+    }
     GLint drawFbo = 0, readFbo = 0;
     gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);
     gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFbo);
@@ -535,7 +565,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     }
     drawFullscreen(gl);
 
-    gl.Disable(GL_SCISSOR_TEST);
+    ctx.endScissor(scene);
     for (GLenum unit : {GL_TEXTURE1, GL_TEXTURE0}) {
         gl.ActiveTexture(unit);
         gl.BindTexture(GL_TEXTURE_2D, 0);

@@ -42,6 +42,8 @@ private:
     // The pixels [lo, hi) of the width x height target the scene (grown by the lines) can
     // touch; false when none.
     bool coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect);
+    // Widens [lo, hi] (NDC) by the box's visible part; false if it cannot say.
+    static bool boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi);
     const Bounds& bounds(const reconstruct::ObjectMesh& mesh);
 
     ShaderProgram mGeometry, mDetect, mDilate, mComposite, mDirect;

@@ -247,12 +247,11 @@ void WireframeStyle::render(const Scene& scene, StyleContext& ctx)
     if (mStencil) gl.GetIntegerv(GL_STENCIL_BITS, &stencilBits);
     const bool useStencil = stencilBits > 0;
     if (useStencil) {
-        gl.Enable(GL_SCISSOR_TEST);
-        gl.Scissor(scene.viewport.x, scene.viewport.y, scene.viewport.z, scene.viewport.w);
+        ctx.scissorTo(scene, scene.viewport);
         gl.StencilMask(0xff);
         gl.ClearStencil(0);
         gl.Clear(GL_STENCIL_BUFFER_BIT);
-        gl.Disable(GL_SCISSOR_TEST);
+        ctx.endScissor(scene);
         gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         gl.Enable(GL_CULL_FACE);
         gl.CullFace(GL_BACK);
