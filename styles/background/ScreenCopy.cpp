@@ -2,11 +2,16 @@
 
 #include "styles/textures/GlTexture.h"
 
+#include <algorithm>
+
 namespace nprgl::styles {
 
 void ScreenCopy::ensure(const GlFunctions& gl, int width, int height)
 {
-    if (mColour && width == mWidth && height == mHeight) return;
+    // Grown, never shrunk (see EdgeTargets::ensure).
+    if (mColour && width <= mWidth && height <= mHeight) return;
+    width = std::max(width, mWidth);
+    height = std::max(height, mHeight);
     destroy(gl);
     mWidth = width;
     mHeight = height;

@@ -2,11 +2,18 @@
 
 #include "styles/textures/GlTexture.h"
 
+#include <algorithm>
+
 namespace nprgl::styles {
 
 bool EdgeTargets::ensure(const GlFunctions& gl, int width, int height)
 {
-    if (mFbo[0] && width == mWidth && height == mHeight) return mComplete;
+    // Grown, never shrunk: a program that alternates viewports (a game's view, then its
+    // status bar's 3D icons) would otherwise reallocate at every flush, and the driver frees
+    // the old storage only once the queued drawing that used it is done.
+    if (mFbo[0] && width <= mWidth && height <= mHeight) return mComplete;
+    width = std::max(width, mWidth);
+    height = std::max(height, mHeight);
     destroy(gl);
     mWidth = width;
     mHeight = height;
