@@ -46,6 +46,10 @@ struct GlFunctions {
     NPRGL_STYLE_GL_FUNCTIONS(NPRGL_STYLE_GL_MEMBER)
 #undef NPRGL_STYLE_GL_MEMBER
 
+    // Optional (GL 3.3, ARB_blend_func_extended): null where the driver lacks dual-source
+    // blending.
+    PFNGLBINDFRAGDATALOCATIONINDEXEDPROC BindFragDataLocationIndexed = nullptr;
+
     using GetProc = void* (*)(const char* name);
     // Resolves every entry; false with the missing names when the driver lacks some.
     bool load(GetProc getProc, std::string& missing);

@@ -27,7 +27,8 @@ GLuint compile(const GlFunctions& gl, GLenum type, const char* source, std::stri
 } // namespace
 
 bool ShaderProgram::build(const GlFunctions& gl, const char* vertexSource,
-                          const char* fragmentSource, std::string& error)
+                          const char* fragmentSource, std::string& error,
+                          const char* secondColour)
 {
     destroy(gl);
     GLuint vs = compile(gl, GL_VERTEX_SHADER, vertexSource, error);
@@ -46,6 +47,9 @@ bool ShaderProgram::build(const GlFunctions& gl, const char* vertexSource,
     gl.BindAttribLocation(program, 3, "texcoord");
     gl.BindAttribLocation(program, 4, "lightcoord");
     gl.BindFragDataLocation(program, 0, "fragColor");
+    if (secondColour && gl.BindFragDataLocationIndexed) {
+        gl.BindFragDataLocationIndexed(program, 0, 1, secondColour);
+    }
     gl.LinkProgram(program);
     gl.DeleteShader(vs);
     gl.DeleteShader(fs);

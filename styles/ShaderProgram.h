@@ -15,8 +15,10 @@ public:
     ShaderProgram& operator=(const ShaderProgram&) = delete;
 
     // Compiles and links; on failure returns false with the driver's log in error.
+    // secondColour: the name of a second output blended as GL_SRC1_COLOR (dual-source
+    // blending; the caller checked gl.BindFragDataLocationIndexed).
     bool build(const GlFunctions& gl, const char* vertexSource, const char* fragmentSource,
-               std::string& error);
+               std::string& error, const char* secondColour = nullptr);
     void destroy(const GlFunctions& gl);
     GLuint id() const { return mProgram; }
     GLint uniform(const GlFunctions& gl, const char* name) const

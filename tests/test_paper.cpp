@@ -336,6 +336,69 @@ TEST(Paper, IsLaidOncePerFrameAndAgainAfterTheProgramClearsColour)
     chain.shutdown();
 }
 
+// An additive glow (an orange flame, GL_ONE onto GL_ONE) around which the chain's glow ink is
+// on: over the light page it is orange ink, not white; over a dark surface of the scene it
+// still lights the surface up, as the program's addition would.
+TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    StyleSettings settings;
+    std::string error;
+    ASSERT_TRUE(StyleSettings::parse("toon+paper", "paper.grain=0", settings, error)) << error;
+    styles::StyleChain chain;
+    auto getProc = [](const char* name) {
+        return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+    };
+    ASSERT_TRUE(chain.init(settings, getProc, error)) << error;
+    ASSERT_TRUE(chain.inksGlows());
+    const styles::GlFunctions& gl = harness.gl();
+    gl.Viewport(0, 0, kSize, kSize);
+    const glm::vec4 dark(0.1f, 0.1f, 0.1f, 1.0f), page(0.95f, 0.95f, 0.95f, 1.0f);
+    fillRect(gl, {0, 0, kSize / 2, kSize}, &dark, nullptr);
+    fillRect(gl, {kSize / 2, 0, kSize / 2, kSize}, &page, nullptr);
+
+    // The program's own fixed-function drawing: a quad over both halves.
+    using Begin = void (*)(GLenum);
+    using Vertex2f = void (*)(GLfloat, GLfloat);
+    using Color3f = void (*)(GLfloat, GLfloat, GLfloat);
+    using NoArgs = void (*)();
+    auto begin = reinterpret_cast<Begin>(getProc("glBegin"));
+    auto vertex = reinterpret_cast<Vertex2f>(getProc("glVertex2f"));
+    auto colour = reinterpret_cast<Color3f>(getProc("glColor3f"));
+    auto end = reinterpret_cast<NoArgs>(getProc("glEnd"));
+    gl.Disable(GL_DEPTH_TEST);
+    chain.glowBegin(false, false, false);
+    colour(1.0f, 0.5f, 0.0f);
+    begin(GL_QUADS);
+    vertex(-0.9f, -0.5f);
+    vertex(0.9f, -0.5f);
+    vertex(0.9f, 0.5f);
+    vertex(-0.9f, 0.5f);
+    end();
+    chain.glowEnd();
+    gl.Disable(GL_BLEND);
+    gl.Finish();
+    PngImage image;
+    image.width = image.height = kSize;
+    image.rgba.resize(size_t(kSize) * kSize * 4);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.ReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    image.flipRows();
+    save(image, "glow");
+    chain.shutdown();
+    // Left, over the dark surface: lit up orange (ink alone would leave it near black).
+    const Rgb onDark = pixel(image, kSize / 4, kSize / 2);
+    EXPECT_GT(onDark.r, 200) << onDark.r << " " << onDark.g << " " << onDark.b;
+    EXPECT_GT(onDark.r, onDark.b + 150);
+    // Right, over the page: orange ink (the addition would give near white).
+    const Rgb onPage = pixel(image, 3 * kSize / 4, kSize / 2);
+    EXPECT_GT(onPage.r, 200) << onPage.r << " " << onPage.g << " " << onPage.b;
+    EXPECT_LT(onPage.b, 60) << onPage.r << " " << onPage.g << " " << onPage.b;
+    // Outside the quad both halves are as they were.
+    EXPECT_EQ(pixel(image, kSize / 4, 5), (Rgb{26, 26, 26}));
+}
+
 TEST(Paper, StaysInsideTheViewport)
 {
     StyleHarness harness(kSize, kSize);

@@ -10,8 +10,11 @@ namespace nprgl::styles {
 // the program's (left as it draws it: GL_ONE or GL_SRC_ALPHA onto GL_ONE), this program and
 // a multiplying blend turn what it would add, c, into the page darkened towards c's hue by
 // c's strength: page * (1 - max(c) + c). Black adds nothing and changes nothing; a bright
-// orange flame becomes orange ink. Fixed-function draws only (it reads gl_Color,
-// gl_MultiTexCoord0 and unit 0's texture as GL_MODULATE would).
+// orange flame becomes orange ink. Where the driver blends two source colours (GL 3.3's
+// dual-source blending), the pixel's own lightness weighs ink against addition, so over the
+// dark parts of a scene a glow still lights up; without it, ink everywhere. Fixed-function
+// draws only (it reads gl_Color, gl_MultiTexCoord0 and unit 0's texture as GL_MODULATE
+// would).
 class GlowInk {
 public:
     bool init(const GlFunctions& gl, std::string& error);
@@ -24,6 +27,7 @@ public:
 private:
     ShaderProgram mProgram;
     GLint mTextured = -1, mSourceAlpha = -1, mMaterial = -1;
+    bool mDual = false; // dual-source blending: ink on light pixels, light on dark ones
 };
 
 } // namespace nprgl::styles
