@@ -165,6 +165,44 @@ INSTANTIATE_TEST_SUITE_P(
         openArena()),
     [](const auto& param) { return param.param.program; });
 
+// extremetuxracer reaches its race through its menus: five Returns (the player, the main
+// menu's practice, the course, the race settings, go), each sent once nprgl has written the
+// frame before it, on a 640x480 display of its own (etr takes the whole screen). Its sound
+// goes to OpenAL's null device: without a sound card etr floods stderr with OpenAL errors
+// (gigabytes in a minute) and now and then crashes on its own, with or without nprgl.
+TEST(GamesDriven, ExtremeTuxRacerRacesStyled)
+{
+    const std::string program = "/usr/games/etr";
+    if (!std::filesystem::exists(program) || !std::filesystem::exists("/usr/bin/xdotool")) {
+        GTEST_SKIP() << "needs extremetuxracer and xdotool (scripts/install-deps.sh)";
+    }
+    const std::string dir = freshDir("compat_etr");
+    const std::string source = NPRGL_TEST_SOURCE_DIR;
+    const std::map<std::string, std::string> env = {
+        {"NPRGL_SCREENSHOT", "frames=50,100,150,200,250,600;dir=" + dir},
+        {"HOME", freshDir("compat_home_etr")},
+        {"ALSOFT_DRIVERS", "null"},
+        {"WITH_DISPLAY_SIZE", "640x480"}};
+    const std::vector<std::string> argv = {
+        source + "/../scripts/with-display.sh", source + "/compat/drive-keys.sh", dir, "etr_ctx2",
+        "600", "50:Return 100:Return 150:Return 200:Return 250:Return", "--", nprglCommand(),
+        "--style", "coverage", "--", program};
+    ProcessResult r = runProcess(argv, env);
+    ASSERT_EQ(r.exitCode, 0) << r.err.substr(0, 3000);
+    EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err.substr(0, 2000);
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(dir + "/etr_ctx2_600.png", image, error)) << error;
+    int drawn = 0;
+    const double share = styledShare(image, drawn);
+    ASSERT_GT(drawn, 500) << "the program drew (almost) nothing";
+    RecordProperty("styled_share", std::to_string(share));
+    std::printf("compat: %-14s %6d drawn pixels, %5.1f%% styled\n", "etr", drawn, 100.0 * share);
+    EXPECT_GE(share, 0.9) << r.err.substr(0, 2000);
+    // In the race: its slope, trees and Tux (the menus are 2D and would be all background).
+    EXPECT_NE(r.err.find("3D polygons drawn with"), std::string::npos) << r.err.substr(0, 2000);
+}
+
 // A game's apitrace trace replayed by glretrace under nprgl with style none draws what it
 // draws natively: the same pixels at the same frames (a replay is deterministic, a live game
 // is not). openarena into its map, traced once here (no trace file is kept in the repository).
