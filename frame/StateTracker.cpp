@@ -16,6 +16,21 @@ namespace nprgl {
 
 namespace {
 
+// Whether the alpha test passes a fragment of alpha 1.
+bool passesAlphaOne(GLenum func, float ref)
+{
+    switch (func) {
+    case GL_ALWAYS: return true;
+    case GL_GREATER: return ref < 1.0f;
+    case GL_GEQUAL: return ref <= 1.0f;
+    case GL_NOTEQUAL: return ref != 1.0f;
+    case GL_EQUAL: return ref == 1.0f;
+    case GL_LEQUAL: return ref >= 1.0f;
+    case GL_LESS: return ref > 1.0f;
+    default: return false;
+    }
+}
+
 // Initial-exec like tThread: read per vertex, no __tls_get_addr call.
 constinit thread_local StateTracker* tTracker __attribute__((tls_model("initial-exec"))) =
     nullptr;
@@ -157,6 +172,11 @@ void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsi
                           GLenum format, GLenum type, const void* pixels)
 {
     T().texImage2D(target, level, width, height, format, type, pixels);
+}
+void APIENTRY tTexSubImage2D(GLenum target, GLint level, GLint, GLint, GLsizei width,
+                             GLsizei height, GLenum format, GLenum type, const void* pixels)
+{
+    T().texSubImage2D(target, level, width, height, format, type, pixels);
 }
 void APIENTRY tActiveTexture(GLenum unit) { T().activeTexture(unit); }
 void APIENTRY tEnableClientState(GLenum cap) { T().enableArray(cap, true); }
@@ -363,6 +383,7 @@ StateTracker::StateTracker()
     d.glDeleteLists = tDeleteLists;
     d.glBindTexture = tBindTexture;
     d.glTexImage2D = tTexImage2D;
+    d.glTexSubImage2D = tTexSubImage2D;
     d.glTexEnvi = tTexEnvi;
     d.glTexEnvf = tTexEnvf;
     d.glTexEnviv = tTexEnviv;
@@ -1034,11 +1055,16 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.lightmap = mLightUnit >= 0 && !a.lighting ? mUnitTextures[size_t(mLightUnit)] : 0;
     // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
     // drawing (neverball does), and such surfaces are opaque ones (with outlines).
-    batch.translucent = translucent() && !opaqueAlpha(batch);
+    const bool blends = translucent();
+    const bool opaque = (blends || a.alphaTest) && opaqueAlpha(batch);
+    batch.translucent = blends && !opaque;
     batch.depthWrite = a.depthMask;
     batch.depthTest = a.depthTest;
-    // The styles test their alpha (the program's, its texture modulating) as it would.
-    batch.alphaFunc = a.alphaTest ? a.alphaFunc : GL_ALWAYS;
+    // The styles test their alpha (the program's, its texture modulating) as it would. A test
+    // that no alpha of the draw can fail cuts nothing out: some programs leave it on for all
+    // their drawing (extremetuxracer does), and such surfaces are opaque ones (with outlines).
+    const bool cuts = a.alphaTest && !(opaque && passesAlphaOne(a.alphaFunc, a.alphaRef));
+    batch.alphaFunc = cuts ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
     batch.depthOnly = a.colorMaskNone;
     // Decals: the styles pull the surface towards the eye by the program's offset.
@@ -1252,8 +1278,11 @@ bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
         return false;
     }
     if (mode == GL_REPLACE && batch.texture != 0) return true;
+    // Within half a step of 8 bits of 1 blends no pixel differently (programs' computed
+    // alphas are 0.99999994 as often as 1).
+    constexpr float kOpaque = 1.0f - 0.5f / 255.0f;
     for (const TrackedVertex& v : batch.vertices) {
-        if (v.color.a < 1.0f) return false;
+        if (!(v.color.a >= kOpaque)) return false;
     }
     return true;
 }
@@ -1273,27 +1302,57 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     }
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
     mOpaqueTextures.erase(texture);
+    mFilledLater.erase(texture);
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
+    // Storage alone is filled by glTexSubImage2D next (SFML's way): those decide.
     if (!pixels || mImageBytes == 0) {
         mTextureHashes.erase(texture);
+        if (!pixels) mFilledLater.insert(texture);
         return;
     }
-    // Whether its alpha is 1 everywhere: formats without alpha, or bytes of 255 (one pass,
-    // at upload, not per draw).
-    bool opaque = format == GL_RGB || format == GL_BGR || format == GL_LUMINANCE ||
-                  format == GL_RED;
-    if (!opaque && (format == GL_RGBA || format == GL_BGRA) && type == GL_UNSIGNED_BYTE &&
-        mImageBytes >= size_t(width) * size_t(height) * 4) {
-        const uint8_t* p = static_cast<const uint8_t*>(pixels);
-        opaque = true;
-        for (size_t i = 3; i < size_t(width) * size_t(height) * 4 && opaque; i += 4) {
-            opaque = p[i] == 255;
-        }
-    }
-    if (opaque) mOpaqueTextures.insert(texture);
+    if (opaqueImage(width, height, format, type, pixels)) mOpaqueTextures.insert(texture);
     const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
     uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
     mTextureHashes[texture] = hash == 0 ? 1 : hash;
+}
+
+void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
+                                 GLenum format, GLenum type, const void* pixels)
+{
+    if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
+        return;
+    }
+    // Into storage made without pixels: opaque while every part filled so far is (parts never
+    // filled are undefined in GL). Into an image of known pixels: a part with alpha below 1
+    // makes it not opaque; an opaque part changes nothing.
+    const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
+    const bool opaque = pixels && mImageBytes != 0 &&
+                        opaqueImage(width, height, format, type, pixels);
+    mTextureHashes.erase(texture); // its content is no longer the hashed upload
+    if (!opaque) {
+        mOpaqueTextures.erase(texture);
+        mFilledLater.erase(texture);
+    } else if (mFilledLater.contains(texture)) {
+        mOpaqueTextures.insert(texture);
+    }
+}
+
+bool StateTracker::opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                               const void* pixels) const
+{
+    // Formats without alpha, or bytes of 255 (one pass, at upload, not per draw).
+    if (format == GL_RGB || format == GL_BGR || format == GL_LUMINANCE || format == GL_RED) {
+        return true;
+    }
+    if ((format != GL_RGBA && format != GL_BGRA) || type != GL_UNSIGNED_BYTE ||
+        mImageBytes < size_t(width) * size_t(height) * 4) {
+        return false;
+    }
+    const uint8_t* p = static_cast<const uint8_t*>(pixels);
+    for (size_t i = 3; i < size_t(width) * size_t(height) * 4; i += 4) {
+        if (p[i] != 255) return false;
+    }
+    return true;
 }
 
 uint64_t StateTracker::textureHash(GLuint texture) const

@@ -175,6 +175,9 @@ public:
     // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed).
     void texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
                     GLenum type, const void* pixels);
+    // glTexSubImage2D: what it does to level 0's opacity.
+    void texSubImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
+                       GLenum type, const void* pixels);
     // The decoder's check of an image argument (format, type, sizes follow): how many bytes
     // the call carries.
     template <typename... Shape>
@@ -274,6 +277,9 @@ private:
     int lightUnit() const;
     // A batch blended by alpha whose alpha is 1 everywhere (its colours', its texture's).
     bool opaqueAlpha(const TrackedBatch& batch) const;
+    // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.
+    bool opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                     const void* pixels) const;
     // Why surfaceUnit() is -1.
     const char* multitexturing() const;
     // The surface's unit (a bit) and the layers above it (bits).
@@ -319,6 +325,7 @@ private:
     int mLightUnit = -1;  // mCurrent.lightcoord is this unit's (-1: no lightmap)
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
+    std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
     std::vector<uint64_t> mLeftTextures;
     size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;

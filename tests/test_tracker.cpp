@@ -606,3 +606,70 @@ TEST(StateTracker, OrthographicDrawingWithoutDepthWritesIsTwoDimensional)
     EXPECT_TRUE(tracker.is3D());
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
 }
+
+// Blending by alpha and the alpha test where no alpha of the draw can be below 1 change no
+// pixel: such draws are opaque ones (extremetuxracer blends and alpha-tests all its drawing,
+// with material alphas of 0.99999994 and textures made by glTexImage2D without pixels and
+// filled by glTexSubImage2D, SFML's way). A texture with a transparent part stays a cut-out.
+TEST(StateTracker, AlphaThatCannotBeBelowOneIsOpaque)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_BLEND, true);
+    feed.enable(GL_ALPHA_TEST, true);
+    feed.run([](CallWriter& w) {
+        w.op(op::glBlendFunc);
+        w.put<GLenum>(GL_SRC_ALPHA);
+        w.put<GLenum>(GL_ONE_MINUS_SRC_ALPHA);
+        w.op(op::glAlphaFunc);
+        w.put<GLenum>(GL_GEQUAL);
+        w.put<float>(0.5f);
+        w.op(op::glColor4f);
+        for (float c : {1.0f, 1.0f, 1.0f, 0.99999994f}) w.put<float>(c);
+    });
+    feed.triangle(); // untextured, alpha within rounding of 1
+    // Two textures made without pixels and filled by a part: one opaque, one with a hole.
+    auto upload = [&](GLuint name, uint8_t alpha) {
+        std::vector<uint8_t> pixels(4 * 4 * 4, 200);
+        for (size_t i = 3; i < pixels.size(); i += 4) pixels[i] = 255;
+        pixels[7] = alpha; // one texel's alpha
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(name);
+            w.op(op::glTexImage2D);
+            size_t mark = w.beginPayload();
+            for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 4, 4, 0}) w.put<GLint>(v);
+            w.put<GLenum>(GL_RGBA);
+            w.put<GLenum>(GL_UNSIGNED_BYTE);
+            w.put<uint8_t>(0); // no pixels: storage only
+            w.endPayload(mark);
+            w.op(op::glTexSubImage2D);
+            mark = w.beginPayload();
+            for (GLint v : {GLint(GL_TEXTURE_2D), 0, 0, 0, 4, 4}) w.put<GLint>(v);
+            w.put<GLenum>(GL_RGBA);
+            w.put<GLenum>(GL_UNSIGNED_BYTE);
+            w.put<uint8_t>(1);
+            w.putBytes(pixels.data(), pixels.size());
+            w.endPayload(mark);
+        });
+    };
+    feed.enable(GL_TEXTURE_2D, true);
+    upload(5, 255);
+    feed.triangle();
+    upload(6, 0);
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    for (int i = 0; i < 2; ++i) {
+        EXPECT_FALSE(batches[i].translucent) << i;
+        EXPECT_EQ(batches[i].alphaFunc, GLenum(GL_ALWAYS)) << i;
+    }
+    EXPECT_EQ(batches[1].texture, 5u);
+    EXPECT_EQ(batches[2].texture, 6u);
+    EXPECT_TRUE(batches[2].translucent);
+    EXPECT_EQ(batches[2].alphaFunc, GLenum(GL_GEQUAL));
+}
