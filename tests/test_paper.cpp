@@ -92,6 +92,32 @@ PngImage render(StyleHarness& harness, const styles::Scene& scene, const std::st
     return image;
 }
 
+// Starts `chain` with `config` in the harness's (current) OSMesa context.
+void startChain(styles::StyleChain& chain, const std::string& name, const std::string& config)
+{
+    StyleSettings settings;
+    std::string error;
+    ASSERT_TRUE(StyleSettings::parse(name, config, settings, error)) << error;
+    auto getProc = [](const char* entry) {
+        return reinterpret_cast<void*>(OSMesaGetProcAddress(entry));
+    };
+    ASSERT_TRUE(chain.init(settings, getProc, error)) << error;
+}
+
+// The window's pixels, top row first.
+PngImage readBack(const styles::GlFunctions& gl)
+{
+    gl.Finish();
+    PngImage image;
+    image.width = image.height = kSize;
+    image.rgba.resize(size_t(kSize) * kSize * 4);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.ReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    image.flipRows();
+    return image;
+}
+
 // Runs a chain over whatever `paint` put into the colour and depth buffers, like a flush
 // after the program's own drawing (a 2D backdrop, say). The held-back scene draws nothing
 // here, so the chain should be free of shading styles.
@@ -99,15 +125,8 @@ PngImage renderOver(StyleHarness& harness, const styles::Scene& scene, const std
                     const std::string& config,
                     const std::function<void(const styles::GlFunctions&)>& paint)
 {
-    PngImage image;
-    StyleSettings settings;
-    std::string error;
-    EXPECT_TRUE(StyleSettings::parse(chain, config, settings, error)) << error;
     styles::StyleChain styleChain;
-    auto getProc = [](const char* name) {
-        return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
-    };
-    EXPECT_TRUE(styleChain.init(settings, getProc, error)) << error;
+    startChain(styleChain, chain, config);
     const styles::GlFunctions& gl = harness.gl();
     gl.Viewport(0, 0, kSize, kSize);
     gl.ClearColor(scene.clearColor.r, scene.clearColor.g, scene.clearColor.b, 1.0f);
@@ -115,13 +134,7 @@ PngImage renderOver(StyleHarness& harness, const styles::Scene& scene, const std
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     paint(gl);
     styleChain.render(scene);
-    gl.Finish();
-    image.width = image.height = kSize;
-    image.rgba.resize(size_t(kSize) * kSize * 4);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl.ReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-    image.flipRows();
+    PngImage image = readBack(gl);
     styleChain.shutdown();
     return image;
 }
@@ -285,25 +298,12 @@ TEST(Paper, IsLaidOncePerFrameAndAgainAfterTheProgramClearsColour)
     ASSERT_TRUE(harness.ok());
     styles::Scene scene = sphereScene(harness); // not drawn (no shading), but not empty
     scene.clearColor = kBlack;
-    StyleSettings settings;
-    std::string error;
-    ASSERT_TRUE(StyleSettings::parse("paper", "paper.grain=0", settings, error)) << error;
     styles::StyleChain chain;
-    auto getProc = [](const char* name) {
-        return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
-    };
-    ASSERT_TRUE(chain.init(settings, getProc, error)) << error;
+    startChain(chain, "paper", "paper.grain=0");
     const styles::GlFunctions& gl = harness.gl();
     auto flush = [&](const styles::Scene& s) {
         chain.render(s);
-        gl.Finish();
-        PngImage image;
-        image.width = image.height = kSize;
-        image.rgba.resize(size_t(kSize) * kSize * 4);
-        gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-        gl.ReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-        image.flipRows();
-        return image;
+        return readBack(gl);
     };
     gl.Viewport(0, 0, kSize, kSize);
     gl.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
@@ -343,15 +343,12 @@ TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
 {
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
-    StyleSettings settings;
-    std::string error;
-    ASSERT_TRUE(StyleSettings::parse("toon+paper", "paper.grain=0", settings, error)) << error;
     styles::StyleChain chain;
+    startChain(chain, "toon+paper", "paper.grain=0");
+    ASSERT_TRUE(chain.inksGlows());
     auto getProc = [](const char* name) {
         return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
     };
-    ASSERT_TRUE(chain.init(settings, getProc, error)) << error;
-    ASSERT_TRUE(chain.inksGlows());
     const styles::GlFunctions& gl = harness.gl();
     gl.Viewport(0, 0, kSize, kSize);
     const glm::vec4 dark(0.1f, 0.1f, 0.1f, 1.0f), page(0.95f, 0.95f, 0.95f, 1.0f);
@@ -378,13 +375,7 @@ TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
     end();
     chain.glowEnd();
     gl.Disable(GL_BLEND);
-    gl.Finish();
-    PngImage image;
-    image.width = image.height = kSize;
-    image.rgba.resize(size_t(kSize) * kSize * 4);
-    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl.ReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-    image.flipRows();
+    const PngImage image = readBack(gl);
     save(image, "glow");
     chain.shutdown();
     // Left, over the dark surface: lit up orange (ink alone would leave it near black).
