@@ -11,10 +11,14 @@ namespace {
 
 glm::vec3 edgeNormal(const reconstruct::ObjectMesh& mesh, uint32_t edge)
 {
+    // Checked: extremetuxracer under the pencil preset crashed here on an edge index outside
+    // the mesh (where the stroke got it is not found yet); such a point gets no normal.
+    if (edge >= mesh.edges.size()) return glm::vec3(0.0f);
     const reconstruct::EdgeInfo& info = mesh.edges[edge];
     glm::vec3 n(0.0f);
-    if (info.f0 != reconstruct::kNoIndex) n += mesh.faceNormal(info.f0);
-    if (info.f1 != reconstruct::kNoIndex) n += mesh.faceNormal(info.f1);
+    const uint32_t faces = mesh.faceCount();
+    if (info.f0 < faces) n += mesh.faceNormal(info.f0);
+    if (info.f1 < faces) n += mesh.faceNormal(info.f1);
     const float len = glm::length(n);
     return len > 0.0f ? n / len : glm::vec3(0.0f);
 }
