@@ -87,31 +87,22 @@ NPRGL_HELD_DRAW(glRects, holdDraw(GL_POLYGON), (GLshort a, GLshort b, GLshort x,
         return C().next().name args;                                                            \
     }
 // Clears: barriers that also tell the page (paper) where the program's background is new.
-void APIENTRY c_glClear(GLbitfield mask)
-{
-    C().clear((mask & GL_COLOR_BUFFER_BIT) != 0);
-    C().next().glClear(mask);
-}
-void APIENTRY c_glClearBufferiv(GLenum buffer, GLint drawbuffer, const GLint* value)
-{
-    C().clear(buffer == GL_COLOR);
-    C().next().glClearBufferiv(buffer, drawbuffer, value);
-}
-void APIENTRY c_glClearBufferuiv(GLenum buffer, GLint drawbuffer, const GLuint* value)
-{
-    C().clear(buffer == GL_COLOR);
-    C().next().glClearBufferuiv(buffer, drawbuffer, value);
-}
-void APIENTRY c_glClearBufferfv(GLenum buffer, GLint drawbuffer, const GLfloat* value)
-{
-    C().clear(buffer == GL_COLOR);
-    C().next().glClearBufferfv(buffer, drawbuffer, value);
-}
-void APIENTRY c_glClearBufferfi(GLenum buffer, GLint drawbuffer, GLfloat depth, GLint stencil)
-{
-    C().clear(false);
-    C().next().glClearBufferfi(buffer, drawbuffer, depth, stencil);
-}
+#define NPRGL_CLEAR(name, colour, params, args)                                                 \
+    void APIENTRY c_##name params                                                               \
+    {                                                                                           \
+        C().clear(colour);                                                                      \
+        C().next().name args;                                                                   \
+    }
+NPRGL_CLEAR(glClear, (mask & GL_COLOR_BUFFER_BIT) != 0, (GLbitfield mask), (mask))
+NPRGL_CLEAR(glClearBufferiv, buffer == GL_COLOR, (GLenum buffer, GLint i, const GLint* v),
+            (buffer, i, v))
+NPRGL_CLEAR(glClearBufferuiv, buffer == GL_COLOR, (GLenum buffer, GLint i, const GLuint* v),
+            (buffer, i, v))
+NPRGL_CLEAR(glClearBufferfv, buffer == GL_COLOR, (GLenum buffer, GLint i, const GLfloat* v),
+            (buffer, i, v))
+NPRGL_CLEAR(glClearBufferfi, false, (GLenum buffer, GLint i, GLfloat depth, GLint stencil),
+            (buffer, i, depth, stencil))
+#undef NPRGL_CLEAR
 NPRGL_BARRIER(void, glAccum, (GLenum op, GLfloat value), (op, value))
 NPRGL_BARRIER(void, glReadPixels,
               (GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* p),

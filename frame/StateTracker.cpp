@@ -1076,8 +1076,6 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.fogDensity = a.fogDensity;
     batch.fogColour = a.fogColour;
     batch.viewport = a.viewport;
-    batch.scissorTest = a.scissorTest;
-    batch.scissor = a.scissor;
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
         reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);

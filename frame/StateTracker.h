@@ -53,9 +53,7 @@ struct TrackedBatch {
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
     glm::vec3 fogColour{0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};
-    bool scissorTest = false;
-    glm::ivec4 scissor{0, 0, 0, 0}; // x, y, width, height in window pixels
-    uint64_t contentHash = 0;       // reconstruct::hashVertices of the kept batch (0: not computed)
+    uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
 };
 
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix

@@ -105,6 +105,27 @@ struct Scene {
     // pixels); the styles draw it so too.
     bool scissored = false;
     glm::ivec4 scissor{0, 0, 0, 0};
+
+    // Everything but the objects, from `whole` (for a part of it drawn on its own).
+    void takeFrameOf(const Scene& whole)
+    {
+        viewport = whole.viewport;
+        clearColor = whole.clearColor;
+        frame = whole.frame;
+        framebuffer = whole.framebuffer;
+        colourClears = whole.colourClears;
+        scissored = whole.scissored;
+        scissor = whole.scissor;
+    }
+    // `rect` (x, y, width, height, window pixels) within the scissor box, when scissored.
+    glm::ivec4 confined(glm::ivec4 rect) const
+    {
+        if (!scissored) return rect;
+        const glm::ivec2 lo = glm::max(glm::ivec2(rect), glm::ivec2(scissor));
+        const glm::ivec2 hi = glm::min(glm::ivec2(rect) + glm::ivec2(rect.z, rect.w),
+                                       glm::ivec2(scissor) + glm::ivec2(scissor.z, scissor.w));
+        return glm::ivec4(lo, glm::max(hi - lo, glm::ivec2(0)));
+    }
 };
 
 } // namespace nprgl::styles

@@ -123,13 +123,7 @@ void StyleChain::render(const Scene& scene)
     }
     for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mDepthOnly, &mRun, &mBackdrop,
                         &mOnTop}) {
-        part->viewport = scene.viewport;
-        part->clearColor = scene.clearColor;
-        part->frame = scene.frame;
-        part->framebuffer = scene.framebuffer;
-        part->colourClears = scene.colourClears;
-        part->scissored = scene.scissored;
-        part->scissor = scene.scissor;
+        part->takeFrameOf(scene);
     }
     const GlFunctions& gl = mContext.gl;
     renderAsDrawn(mBackdrop);

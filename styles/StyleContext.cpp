@@ -29,13 +29,7 @@ glm::vec3 StyleContext::colour(const char* style, const char* name, const char* 
 
 void StyleContext::scissorTo(const Scene& scene, glm::ivec4 rect) const
 {
-    if (scene.scissored) {
-        const glm::ivec2 lo = glm::max(glm::ivec2(rect), glm::ivec2(scene.scissor));
-        const glm::ivec2 hi = glm::min(
-            glm::ivec2(rect.x + rect.z, rect.y + rect.w),
-            glm::ivec2(scene.scissor.x + scene.scissor.z, scene.scissor.y + scene.scissor.w));
-        rect = glm::ivec4(lo, glm::max(hi - lo, glm::ivec2(0)));
-    }
+    rect = scene.confined(rect);
     gl.Enable(GL_SCISSOR_TEST);
     gl.Scissor(rect.x, rect.y, rect.z, rect.w);
 }

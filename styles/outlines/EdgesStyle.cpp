@@ -444,12 +444,14 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     if (scene.objects.empty() || width <= 0 || height <= 0) return;
     glm::ivec4 rect; // [x0, y0, x1, y1) in the targets' pixels
     if (!coveredRect(scene, width, height, rect)) return;
-    if (scene.scissored) {
-        // The program's scissor box, in the targets' pixels.
-        const glm::ivec2 lo = glm::ivec2(scene.scissor) - glm::ivec2(scene.viewport);
-        const glm::ivec2 hi = lo + glm::ivec2(scene.scissor.z, scene.scissor.w);
-        rect = glm::ivec4(glm::max(glm::ivec2(rect), lo), glm::min(glm::ivec2(rect.z, rect.w), hi));
-        if (rect.x >= rect.z || rect.y >= rect.w) return;
+    {
+        // Within the program's scissor box (window pixels; the targets' start at the viewport).
+        const glm::ivec2 origin(scene.viewport);
+        const glm::ivec4 box = scene.confined(
+            glm::ivec4(origin + glm::ivec2(rect), rect.z - rect.x, rect.w - rect.y));
+        if (box.z <= 0 || box.w <= 0) return;
+        const glm::ivec2 lo = glm::ivec2(box) - origin;
+        rect = glm::ivec4(lo, lo + glm::ivec2(box.z, box.w));
     }
     GLint drawFbo = 0, readFbo = 0;
     gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);

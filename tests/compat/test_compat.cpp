@@ -74,6 +74,21 @@ double styledShare(const PngImage& image, int& drawn)
     return drawn ? 1.0 - double(left) / drawn : 0.0;
 }
 
+// Reads a run's screenshot and measures the styled share of its drawn pixels (recorded as a
+// test property and printed).
+void measureStyledShare(const std::string& shot, const std::string& name, double& share)
+{
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(shot, image, error)) << error;
+    int drawn = 0;
+    share = styledShare(image, drawn);
+    ASSERT_GT(drawn, 500) << name << " drew (almost) nothing";
+    ::testing::Test::RecordProperty("styled_share", std::to_string(share));
+    std::printf("compat: %-14s %6d drawn pixels, %5.1f%% styled\n", name.c_str(), drawn,
+                100.0 * share);
+}
+
 class Compat : public ::testing::TestWithParam<CompatCase> {};
 
 } // namespace
@@ -107,15 +122,8 @@ TEST_P(Compat, RunsStyledAndSaysWhatIsLeft)
                                                                     << r.err.substr(0, 2000);
     }
     EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err.substr(0, 2000);
-    PngImage image;
-    std::string error;
-    ASSERT_TRUE(PngImage::read(shot, image, error)) << error;
-    int drawn = 0;
-    const double share = styledShare(image, drawn);
-    ASSERT_GT(drawn, 500) << "the program drew (almost) nothing";
-    RecordProperty("styled_share", std::to_string(share));
-    std::printf("compat: %-14s %6d drawn pixels, %5.1f%% styled\n", c.program.c_str(), drawn,
-                100.0 * share);
+    double share = 0.0;
+    ASSERT_NO_FATAL_FAILURE(measureStyledShare(shot, c.program, share));
     if (c.leftBecause.empty()) {
         EXPECT_GE(share, 0.9) << c.program << ": " << r.err.substr(0, 2000);
     } else {
@@ -190,14 +198,8 @@ TEST(GamesDriven, ExtremeTuxRacerRacesStyled)
     ProcessResult r = runProcess(argv, env);
     ASSERT_EQ(r.exitCode, 0) << r.err.substr(0, 3000);
     EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err.substr(0, 2000);
-    PngImage image;
-    std::string error;
-    ASSERT_TRUE(PngImage::read(dir + "/etr_ctx2_600.png", image, error)) << error;
-    int drawn = 0;
-    const double share = styledShare(image, drawn);
-    ASSERT_GT(drawn, 500) << "the program drew (almost) nothing";
-    RecordProperty("styled_share", std::to_string(share));
-    std::printf("compat: %-14s %6d drawn pixels, %5.1f%% styled\n", "etr", drawn, 100.0 * share);
+    double share = 0.0;
+    ASSERT_NO_FATAL_FAILURE(measureStyledShare(dir + "/etr_ctx2_600.png", "etr", share));
     EXPECT_GE(share, 0.9) << r.err.substr(0, 2000);
     // In the race: its slope, trees and Tux (the menus are 2D and would be all background).
     EXPECT_NE(r.err.find("3D polygons drawn with"), std::string::npos) << r.err.substr(0, 2000);
