@@ -1,5 +1,7 @@
 #include "styles/background/GlowInk.h"
 
+#include "common/Log.h"
+
 #include <string>
 
 namespace nprgl::styles {
@@ -68,7 +70,13 @@ bool GlowInk::init(const GlFunctions& gl, std::string& error)
     std::string dualError;
     mDual = gl.BindFragDataLocationIndexed &&
             mProgram.build(gl, v130.c_str(), f130.c_str(), dualError, "inkColour");
-    if (!mDual && !mProgram.build(gl, v120.c_str(), f120.c_str(), error)) return false;
+    if (!mDual) {
+        // Ink everywhere then: glows over the scene's dark parts darken instead of lighting.
+        NPRGL_INFO("glow ink: %s; glows are ink everywhere, also over dark surfaces",
+                   gl.BindFragDataLocationIndexed ? ("no dual-source program: " + dualError).c_str()
+                                                  : "the driver has no dual-source blending");
+        if (!mProgram.build(gl, v120.c_str(), f120.c_str(), error)) return false;
+    }
     mTextured = mProgram.uniform(gl, "textured");
     mSourceAlpha = mProgram.uniform(gl, "sourceAlpha");
     mMaterial = mProgram.uniform(gl, "material");
