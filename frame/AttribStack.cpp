@@ -51,12 +51,17 @@ void AttribStack::pop()
         a.colorMaskNone = saved.colorMaskNone;
     }
     if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
-    if (mask & (GL_POLYGON_BIT | GL_ENABLE_BIT)) a.polygonOffsetFill = saved.polygonOffsetFill;
+    if (mask & (GL_POLYGON_BIT | GL_ENABLE_BIT)) {
+        a.polygonOffsetFill = saved.polygonOffsetFill;
+        a.cullFace = saved.cullFace;
+    }
     if (mask & GL_POLYGON_BIT) {
         a.offsetFactor = saved.offsetFactor;
         a.offsetUnits = saved.offsetUnits;
         a.fillFront = saved.fillFront;
         a.fillBack = saved.fillBack;
+        a.cullMode = saved.cullMode;
+        a.frontFace = saved.frontFace;
     }
     if (mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
         a.texture2D = saved.texture2D;

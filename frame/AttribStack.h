@@ -30,6 +30,10 @@ struct AttribState {
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
     bool polygonOffsetFill = false;
+    // Face culling: which faces of a draw reach the picture (two passes over one mesh that
+    // cull opposite faces draw different triangles).
+    bool cullFace = false;
+    GLenum cullMode = GL_BACK, frontFace = GL_CCW;
     float offsetFactor = 0.0f, offsetUnits = 0.0f;
     bool fog = false;
     GLenum fogMode = GL_EXP;

@@ -47,36 +47,47 @@ void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
 
 // A draw that may be held back. With a shading style in the chain a held draw is only
 // recorded (the style draws it); without one it goes to the driver as it is (the outline
-// styles draw over the program's own picture).
-#define NPRGL_HELD_DRAW(name, hold, params, args)                                               \
+// styles draw over the program's own picture). A possible layer (a blended pass over held
+// geometry) is recorded only, then merged into its object or drawn as the program's.
+#define NPRGL_HELD_DRAW(name, place, params, args)                                              \
     void APIENTRY c_##name params                                                              \
     {                                                                                           \
         Compositor& c = C();                                                                    \
-        if (c.hold && c.shading()) return c.heldNext().name args;                              \
+        const Compositor::Placement placed = c.place;                                           \
+        if (placed == Compositor::Placement::Layer) {                                           \
+            const size_t mark = c.streamSize();                                                 \
+            c.heldNext().name args;                                                             \
+            if (c.settleLayer(mark)) return;                                                    \
+            c.tintBegin();                                                                      \
+            gRealGl.name args; /* recorded already */                                           \
+            c.tintEnd();                                                                        \
+            return;                                                                             \
+        }                                                                                       \
+        if (placed == Compositor::Placement::Held && c.shading()) return c.heldNext().name args; \
         c.tintBegin();                                                                          \
         c.next().name args;                                                                     \
         c.tintEnd();                                                                            \
     }
-NPRGL_HELD_DRAW(glDrawArrays, holdDraw(mode), (GLenum mode, GLint first, GLsizei count),
+NPRGL_HELD_DRAW(glDrawArrays, placeDraw(mode, true), (GLenum mode, GLint first, GLsizei count),
                 (mode, first, count))
-NPRGL_HELD_DRAW(glDrawElements, holdDraw(mode),
+NPRGL_HELD_DRAW(glDrawElements, placeDraw(mode, true),
                 (GLenum mode, GLsizei count, GLenum type, const void* indices),
                 (mode, count, type, indices))
-NPRGL_HELD_DRAW(glDrawRangeElements, holdDraw(mode),
+NPRGL_HELD_DRAW(glDrawRangeElements, placeDraw(mode, true),
                 (GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
                  const void* indices),
                 (mode, start, end, count, type, indices))
-NPRGL_HELD_DRAW(glMultiDrawArrays, holdDraw(mode),
+NPRGL_HELD_DRAW(glMultiDrawArrays, placeDraw(mode, true),
                 (GLenum mode, const GLint* first, const GLsizei* count, GLsizei n),
                 (mode, first, count, n))
-NPRGL_HELD_DRAW(glRectf, holdDraw(GL_POLYGON), (GLfloat a, GLfloat b, GLfloat x, GLfloat y),
+NPRGL_HELD_DRAW(glRectf, placeDraw(GL_POLYGON, false),
+                (GLfloat a, GLfloat b, GLfloat x, GLfloat y), (a, b, x, y))
+NPRGL_HELD_DRAW(glRectd, placeDraw(GL_POLYGON, false),
+                (GLdouble a, GLdouble b, GLdouble x, GLdouble y), (a, b, x, y))
+NPRGL_HELD_DRAW(glRecti, placeDraw(GL_POLYGON, false), (GLint a, GLint b, GLint x, GLint y),
                 (a, b, x, y))
-NPRGL_HELD_DRAW(glRectd, holdDraw(GL_POLYGON), (GLdouble a, GLdouble b, GLdouble x, GLdouble y),
-                (a, b, x, y))
-NPRGL_HELD_DRAW(glRecti, holdDraw(GL_POLYGON), (GLint a, GLint b, GLint x, GLint y),
-                (a, b, x, y))
-NPRGL_HELD_DRAW(glRects, holdDraw(GL_POLYGON), (GLshort a, GLshort b, GLshort x, GLshort y),
-                (a, b, x, y))
+NPRGL_HELD_DRAW(glRects, placeDraw(GL_POLYGON, false),
+                (GLshort a, GLshort b, GLshort x, GLshort y), (a, b, x, y))
 #undef NPRGL_HELD_DRAW
 
 // Barriers: what is held is drawn first, so these see (or draw over) the finished scene.
@@ -255,6 +266,18 @@ void Compositor::syncStream()
         mTracker.setHolding(false);
     }
     mSynced = w.size();
+    // Passes the tracker merged into their objects (held or asked about by settleLayer).
+    const uint64_t merged = mTracker.mergedPasses();
+    if (merged == mMergedSeen) return;
+    mRunCounts.noteMerged(merged - mMergedSeen);
+    mFrameCounts.noteMerged(merged - mMergedSeen);
+    mMergedSeen = merged;
+    if (mMergeSaid) return;
+    mMergeSaid = true;
+    NPRGL_INFO("context %u: blended passes over geometry it styles (multi-pass surfaces: "
+               "detail, light, shine or fog layers) are merged into their object, not drawn "
+               "again",
+               mContext.serial());
 }
 
 void Compositor::keepBlob(uint64_t hash, const void* data, size_t size)
@@ -471,18 +494,43 @@ void Compositor::noteLeft(const char* why)
                mContext.serial(), why);
 }
 
-bool Compositor::holdDraw(GLenum mode)
+Compositor::Placement Compositor::placeDraw(GLenum mode, bool layers)
 {
-    if (!ready()) return false;
+    if (!ready()) return Placement::Left;
     syncStream();
     if (!mTracker.wouldHold(mode)) {
+        // Decided once the tracker has its vertices (settleLayer), before it reaches the
+        // driver.
+        if (layers && mHeld && mShading && mTracker.mayLayer(mode)) return Placement::Layer;
         noteUnstyled(mode >= GL_TRIANGLES && mode <= GL_POLYGON);
         if (mHeld) flush();
-        return false;
+        return Placement::Left;
     }
     noteLayers();
     noteHeld();
-    return true;
+    return Placement::Held;
+}
+
+size_t Compositor::streamSize() const { return mRecorder.writer().size(); }
+
+bool Compositor::settleLayer(size_t mark)
+{
+    // The recorder could not follow the draw's arrays: the driver drew it as it is.
+    if (streamSize() == mark) {
+        noteUnstyled(true);
+        mLeftNow = false;
+        return true;
+    }
+    mTracker.clearRepeat();
+    syncStream();
+    if (mTracker.repeatedHeld()) {
+        mRunCounts.noteStyled();
+        mFrameCounts.noteStyled();
+        return true;
+    }
+    noteUnstyled(true);
+    flush(); // what it draws goes over the finished scene
+    return false;
 }
 
 void Compositor::noteLayers()
@@ -566,7 +614,7 @@ void Compositor::unmask()
 
 void Compositor::begin(GLenum mode)
 {
-    if (holdDraw(mode) && mShading) {
+    if (placeDraw(mode, false) == Placement::Held && mShading) {
         // Vertices go to the Stream only until glEnd (attribute calls still reach the driver).
         mHoldingBegin = true;
         mHeldNext.glBegin(mode);

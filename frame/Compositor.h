@@ -84,7 +84,16 @@ public:
     // Dispatch entry points (through the current context's compositor).
     void begin(GLenum mode);
     void end();
-    bool holdDraw(GLenum mode);
+    // Where a draw issued now goes: held for the styles, a possible layer over held geometry
+    // (array draws only, `layers`), or left to the driver (counted, with a flush first when
+    // a scene is held).
+    enum class Placement { Held, Layer, Left };
+    Placement placeDraw(GLenum mode, bool layers);
+    // After a Layer draw was recorded only (the stream was `mark` bytes long before it):
+    // true when nothing more is to be drawn (merged into its object, counted styled); false
+    // when it is left (counted, the scene flushed): the caller draws it in the driver.
+    bool settleLayer(size_t mark);
+    size_t streamSize() const;
     bool holdList(GLuint list);
     bool holdLists(GLsizei n, GLenum type, const void* lists);
     // Rasteriser discard around a held display list (its state changes must still run).
@@ -160,6 +169,8 @@ private:
     // in this frame: styled, and left as the program draws them by reason (each reason said
     // at its first).
     DrawCounts mRunCounts, mFrameCounts, mLastFrameCounts;
+    uint64_t mMergedSeen = 0; // the tracker's merged passes already counted
+    bool mMergeSaid = false;
     double mFrameComposeMs = 0.0, mLastFrameComposeMs = 0.0;
 
     std::vector<TrackedBatch> mTracked;

@@ -19,6 +19,7 @@ bool DrawCounts::noteLeft(const char* why)
 void DrawCounts::clear()
 {
     mStyled = 0;
+    mMerged = 0;
     for (auto& entry : mLeft) entry.second = 0; // keeps the reasons: no allocation per frame
 }
 
@@ -26,6 +27,7 @@ DrawCounts DrawCounts::since(const DrawCounts& earlier) const
 {
     DrawCounts d = *this;
     d.mStyled -= std::min(earlier.mStyled, mStyled);
+    d.mMerged -= std::min(earlier.mMerged, mMerged);
     for (auto& [why, n] : d.mLeft) {
         for (const auto& [was, m] : earlier.mLeft) {
             if (was == why) n -= std::min(m, n);
@@ -49,8 +51,9 @@ std::string DrawCounts::describe() const
         reasons += (reasons.empty() ? "" : ", ") + std::string(why) + " " + std::to_string(n);
     }
     const uint64_t leftDraws = left();
-    std::string s = std::to_string(mStyled) + " styled, " + std::to_string(leftDraws) +
-                    " left as the program drew them";
+    std::string s = std::to_string(mStyled) + " styled";
+    if (mMerged) s += " (" + std::to_string(mMerged) + " of them passes merged into their object)";
+    s += ", " + std::to_string(leftDraws) + " left as the program drew them";
     if (leftDraws) s += " (" + reasons + ")";
     return s;
 }

@@ -14,6 +14,9 @@ namespace nprgl {
 class DrawCounts {
 public:
     void noteStyled() { ++mStyled; }
+    // Blended passes over geometry styled already (multi-pass surfaces), merged into their
+    // object: counted among the styled draws by whoever noted them.
+    void noteMerged(uint64_t n) { mMerged += n; }
     // True the first time this reason is counted.
     bool noteLeft(const char* why);
     void clear();
@@ -21,13 +24,16 @@ public:
     DrawCounts since(const DrawCounts& earlier) const;
 
     uint64_t styled() const { return mStyled; }
+    uint64_t merged() const { return mMerged; }
     uint64_t left() const;
     const std::vector<std::pair<const char*, uint64_t>>& leftByReason() const { return mLeft; }
-    // "12 styled, 3 left as the program drew them (blending 3)".
+    // "12 styled (2 of them passes merged into their object), 3 left as the program drew
+    // them (blending 3)".
     std::string describe() const;
 
 private:
     uint64_t mStyled = 0;
+    uint64_t mMerged = 0;
     std::vector<std::pair<const char*, uint64_t>> mLeft;
 };
 

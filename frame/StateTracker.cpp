@@ -267,6 +267,14 @@ void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
 void APIENTRY tDepthMask(GLboolean flag) { T().depthMask(flag == GL_TRUE); }
 void APIENTRY tAlphaFunc(GLenum func, GLfloat ref) { T().alphaFunc(func, ref); }
 void APIENTRY tPolygonOffset(GLfloat factor, GLfloat units) { T().polygonOffset(factor, units); }
+void APIENTRY tCullFace(GLenum mode)
+{
+    if (mode == GL_FRONT || mode == GL_BACK || mode == GL_FRONT_AND_BACK) T().cullMode(mode);
+}
+void APIENTRY tFrontFace(GLenum mode)
+{
+    if (mode == GL_CW || mode == GL_CCW) T().frontFace(mode);
+}
 void APIENTRY tFogf(GLenum pname, GLfloat v) { T().fog(pname, &v, 1); }
 void APIENTRY tFogi(GLenum pname, GLint v)
 {
@@ -417,6 +425,8 @@ StateTracker::StateTracker()
     d.glDepthMask = tDepthMask;
     d.glAlphaFunc = tAlphaFunc;
     d.glPolygonOffset = tPolygonOffset;
+    d.glCullFace = tCullFace;
+    d.glFrontFace = tFrontFace;
     d.glFogf = tFogf;
     d.glFogi = tFogi;
     d.glFogfv = tFogfv;
@@ -515,11 +525,7 @@ const char* StateTracker::unstylableState() const
     const AttribState& a = mAttrib;
     // Drawn now and kept in the list: the list's later calls are styled, this first one not.
     if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
-    if (!mLeftTextures.empty() && detailTexture() != 0 &&
-        std::binary_search(mLeftTextures.begin(), mLeftTextures.end(),
-                           textureHash(detailTexture()))) {
-        return "a rule of the program's configuration (leave_texture)";
-    }
+    if (leftByRule()) return "a rule of the program's configuration (leave_texture)";
     // The program's shaders decide colour and position; a style would draw something else.
     if (mProgram != 0 || a.vertexProgram || a.fragmentProgram) return "the program's own shaders";
     if (a.blend && !translucent()) {
@@ -538,6 +544,67 @@ const char* StateTracker::unstylableState() const
     // texture dropped; on other units they belong to multitexturing.
     if (surfaceUnit() < 0) return multitexturing();
     return nullptr;
+}
+
+bool StateTracker::mayLayer(GLenum mode) const
+{
+    // Left for its blending (or its texture layers) only: the other reasons to leave a draw
+    // (shaders, stencil, lines, masks, rules, a full stack) keep it the program's whatever
+    // it draws over.
+    const AttribState& a = mAttrib;
+    if (!mHolding || !isPolygonMode(mode) || mCompiling || mRenderMode != GL_RENDER ||
+        !is3D() || !a.blend) {
+        return false;
+    }
+    if (mProgram != 0 || a.vertexProgram || a.fragmentProgram || a.stencilTest) return false;
+    if (!a.fillFront || !a.fillBack || !a.colorMaskAll) return false;
+    if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
+        return false;
+    }
+    return !leftByRule() && unstylableState() != nullptr;
+}
+
+bool StateTracker::leftByRule() const
+{
+    return !mLeftTextures.empty() && detailTexture() != 0 &&
+           std::binary_search(mLeftTextures.begin(), mLeftTextures.end(),
+                              textureHash(detailTexture()));
+}
+
+GLenum StateTracker::culledWinding() const
+{
+    const AttribState& a = mAttrib;
+    if (!a.cullFace) return 0;
+    if (a.cullMode == GL_FRONT_AND_BACK) return GL_FRONT_AND_BACK;
+    const GLenum back = a.frontFace == GL_CCW ? GL_CW : GL_CCW;
+    return a.cullMode == GL_FRONT ? a.frontFace : back;
+}
+
+bool StateTracker::repeatsHeld(const TrackedBatch& batch) const
+{
+    // A multi-pass surface draws its passes one after another (ioquake3 draws a shader's
+    // stages so): the last few held batches are enough, and keep the search short.
+    constexpr size_t kReach = 16;
+    const size_t n = mFrameBatches.size();
+    for (size_t i = n; i > 0 && n - i < kReach; --i) {
+        const TrackedBatch& base = mFrameBatches[i - 1];
+        // A depth-only pass shows nothing a layer could merge into.
+        if (base.mode != batch.mode || base.vertices.size() != batch.vertices.size() ||
+            base.depthOnly || base.culled != batch.culled) {
+            continue;
+        }
+        if (std::memcmp(&base.modelview, &batch.modelview, sizeof(glm::mat4)) != 0 ||
+            std::memcmp(&base.projection, &batch.projection, sizeof(glm::mat4)) != 0) {
+            continue;
+        }
+        bool same = true;
+        for (size_t v = 0; v < batch.vertices.size() && same; ++v) {
+            same = std::memcmp(&base.vertices[v].position, &batch.vertices[v].position,
+                               sizeof(glm::vec3)) == 0;
+        }
+        if (same) return true;
+    }
+    return false;
 }
 
 const char* StateTracker::multitexturing() const
@@ -1041,11 +1108,20 @@ bool StateTracker::keep(TrackedBatch& batch)
         }
     }
     batch.is3D = batch.projection[3][3] == 0.0f || (a.depthTest && a.depthMask);
+    batch.culled = culledWinding();
     if (mHolding) {
         // Inside a list the driver draws itself (not masked by the compositor) nothing is
         // held: the style would draw it a second time over the program's own.
         batch.held = mHoldingList > 0 || (mPassingList == 0 && wouldHold(batch.mode));
-        if (!batch.held) return false; // the compositor keeps only what it re-draws
+        if (!batch.held) {
+            // The compositor keeps only what it re-draws; a blended pass over held geometry
+            // it asked about (mayLayer) is merged into that object instead of drawn.
+            if (a.blend && repeatsHeld(batch)) {
+                mRepeated = true;
+                ++mMergedPasses;
+            }
+            return false;
+        }
     }
     batch.lit = a.lighting;
     batch.lightOn = a.lightsOn != 0;
@@ -1076,6 +1152,13 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.fogDensity = a.fogDensity;
     batch.fogColour = a.fogColour;
     batch.viewport = a.viewport;
+    // A translucent pass over geometry already held (a fog or detail layer blended by its
+    // alpha) is that object's layer: styled once, with the object.
+    if (mHolding && a.blend && repeatsHeld(batch)) {
+        mRepeated = true;
+        ++mMergedPasses;
+        return false;
+    }
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
         reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);
@@ -1122,6 +1205,7 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     case GL_BLEND: a.blend = on; break;
     case GL_FOG: a.fog = on; break;
     case GL_POLYGON_OFFSET_FILL: a.polygonOffsetFill = on; break;
+    case GL_CULL_FACE: a.cullFace = on; break;
     case GL_ALPHA_TEST: a.alphaTest = on; break;
     case GL_STENCIL_TEST: a.stencilTest = on; break;
     case GL_LIGHT0:

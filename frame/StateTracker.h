@@ -54,6 +54,9 @@ struct TrackedBatch {
     glm::vec3 fogColour{0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
+    // The winding culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0): two passes over
+    // one mesh that cull opposite faces draw different triangles.
+    GLenum culled = 0;
 };
 
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix
@@ -97,6 +100,16 @@ public:
     // A 3D polygon draw issued now would not be held because of this state (for the log), or
     // null. 2D drawing (no depth test, no perspective) is not held and needs no reason.
     const char* unstylableState() const;
+    // Could a draw of `mode` issued now, left only for its blending, be a further pass over
+    // geometry held for the scene (a detail, light, shine or fog layer of a multi-pass
+    // surface)? Feed it, then ask repeatedHeld().
+    bool mayLayer(GLenum mode) const;
+    // Whether a blended draw fed since clearRepeat() repeated held geometry (same mode,
+    // positions, matrices and culling as one of the last held batches): a pass over that
+    // object, merged into it and not kept. mergedPasses() counts them over the run.
+    void clearRepeat() { mRepeated = false; }
+    bool repeatedHeld() const { return mRepeated; }
+    uint64_t mergedPasses() const { return mMergedPasses; }
     // Texture units (bits) a draw issued now layers over its surface's texture, which the
     // styles do not draw (see surfaceUnit).
     uint32_t droppedLayers() const;
@@ -213,6 +226,8 @@ public:
         mAttrib.offsetFactor = factor;
         mAttrib.offsetUnits = units;
     }
+    void cullMode(GLenum mode) { mAttrib.cullMode = mode; }
+    void frontFace(GLenum mode) { mAttrib.frontFace = mode; }
     void fog(GLenum pname, const float* v, size_t count);
     // Blending on with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.
     bool translucent() const;
@@ -275,6 +290,12 @@ private:
     int lightUnit() const;
     // A batch blended by alpha whose alpha is 1 everywhere (its colours', its texture's).
     bool opaqueAlpha(const TrackedBatch& batch) const;
+    // A rule (leave_texture) leaves a draw issued now.
+    bool leftByRule() const;
+    // The winding the current culling removes (TrackedBatch::culled).
+    GLenum culledWinding() const;
+    // Does a batch draw the same triangles as one of the last held ones (repeatedHeld)?
+    bool repeatsHeld(const TrackedBatch& batch) const;
     // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.
     bool opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
                      const void* pixels) const;
@@ -362,6 +383,8 @@ private:
     std::map<GLuint, std::vector<uint8_t>> mBuffers;
 
     std::vector<TrackedBatch> mFrameBatches;
+    bool mRepeated = false;
+    uint64_t mMergedPasses = 0;
     // Vertex vectors of earlier batches, last frame's first batch at the back.
     std::vector<std::vector<TrackedVertex>> mVertexPool;
     size_t mPoolBytes = 0;

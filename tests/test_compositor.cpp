@@ -866,3 +866,39 @@ TEST(Compositor, DecalsStayOnTheirSurface)
     EXPECT_GT(yellowShare("decal_native", "none"), 0.95f) << "the decal is not where we look";
     EXPECT_GT(yellowShare("decal_toon", "toon+edges"), 0.95f) << "the floor fights the decal";
 }
+
+// A multi-pass surface: demo_arrays --shine draws its column a second time over the same
+// vertices, adding light (GL_ONE, GL_ONE), as ioquake3 draws a shader's stages. The pass is
+// merged into the styled column: the styled picture is the one without the pass (nothing
+// drawn twice), the coverage style paints none of it red, and the counts say so. Natively
+// the pass does add light (else the test would prove nothing).
+TEST(Compositor, ABlendedSecondPassIsMergedIntoItsObject)
+{
+    auto run = [](const std::string& style, bool shine, std::string* log = nullptr) {
+        const std::string dir = freshDir("shine_" + style + (shine ? "_on" : "_off"));
+        std::vector<std::string> app = {demo("arrays"), "--offscreen", "--size", "320x240",
+                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
+        if (shine) app.push_back("--shine");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        if (log) *log = r.err;
+        return dir + "/arrays_3.png";
+    };
+    const ImageDiff native = compareImages(run("none", false), run("none", true), 24);
+    ASSERT_TRUE(native.comparable) << native.error;
+    EXPECT_GT(native.differingPixels, 1000u) << "the pass adds no light natively";
+
+    std::string log;
+    const ImageDiff styled =
+        compareImages(run("toon+paper+edges", false), run("toon+paper+edges", true, &log), 24);
+    ASSERT_TRUE(styled.comparable) << styled.error;
+    EXPECT_EQ(styled.differingPixels, 0u) << "the pass was drawn over the styled column";
+    EXPECT_NE(log.find("passes merged into their object), 0 left"), std::string::npos) << log;
+
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(run("coverage", true, &log), image, error)) << error;
+    int red = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) red += image.rgba[i] >= 250;
+    EXPECT_EQ(red, 0) << "the pass was left as the program draws it";
+}

@@ -656,10 +656,19 @@ TEST(StateTracker, AlphaThatCannotBeBelowOneIsOpaque)
             w.endPayload(mark);
         });
     };
+    // Each triangle somewhere else: the same triangle again would be a pass over the first.
+    auto moveOn = [&] {
+        feed.run([](CallWriter& w) {
+            w.op(op::glTranslatef);
+            for (float c : {2.0f, 0.0f, 0.0f}) w.put<float>(c);
+        });
+    };
     feed.enable(GL_TEXTURE_2D, true);
     upload(5, 255);
+    moveOn();
     feed.triangle();
     upload(6, 0);
+    moveOn();
     feed.triangle();
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
@@ -672,4 +681,82 @@ TEST(StateTracker, AlphaThatCannotBeBelowOneIsOpaque)
     EXPECT_EQ(batches[2].texture, 6u);
     EXPECT_TRUE(batches[2].translucent);
     EXPECT_EQ(batches[2].alphaFunc, GLenum(GL_GEQUAL));
+}
+
+// Multi-pass surfaces (ioquake3 draws each stage of a shader over the same vertices): a
+// blended pass over geometry held just before is merged into that object, not drawn again
+// nor styled twice. Other geometry, other culling, or nothing held: not a pass over it.
+TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto triangle = [&](float dx) {
+        feed.run([dx](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (float x : {0.0f, 1.0f, 0.0f}) {
+                w.op(op::glVertex3f);
+                for (float c : {x + dx, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    auto blend = [&](GLenum src, GLenum dst) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBlendFunc);
+            w.put<GLenum>(src);
+            w.put<GLenum>(dst);
+        });
+    };
+    // Asks as the compositor does before the driver sees the draw.
+    auto pass = [&](float dx) {
+        EXPECT_TRUE(tracker.mayLayer(GL_TRIANGLES));
+        tracker.clearRepeat();
+        triangle(dx);
+        return tracker.repeatedHeld();
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    triangle(0.0f); // the surface, held
+    feed.enable(GL_BLEND, true);
+    blend(GL_ONE, GL_ONE);
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
+    EXPECT_TRUE(pass(0.0f)) << "an additive stage over the surface";
+    EXPECT_FALSE(pass(0.5f)) << "another triangle";
+    feed.enable(GL_CULL_FACE, true);
+    EXPECT_FALSE(pass(0.0f)) << "culled: it draws other triangles than the surface";
+    feed.enable(GL_CULL_FACE, false);
+    // A translucent layer is held by itself: merged, it is not kept a second time.
+    blend(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    feed.run([](CallWriter& w) {
+        w.op(op::glColor4f);
+        for (float c : {1.0f, 1.0f, 1.0f, 0.5f}) w.put<float>(c);
+    });
+    ASSERT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+    tracker.clearRepeat();
+    triangle(0.0f);
+    EXPECT_TRUE(tracker.repeatedHeld());
+    EXPECT_EQ(tracker.mergedPasses(), 2u);
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    EXPECT_EQ(batches.size(), 1u) << "the surface alone";
+    // A scene drawn (the batches taken): the same pass has nothing held to merge into.
+    blend(GL_ONE, GL_ONE);
+    EXPECT_FALSE(pass(0.0f));
+    // Two translucent passes over one mesh culling opposite faces are both kept.
+    blend(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    feed.enable(GL_CULL_FACE, true);
+    auto cull = [&](GLenum face) {
+        feed.run([face](CallWriter& w) {
+            w.op(op::glCullFace);
+            w.put<GLenum>(face);
+        });
+    };
+    cull(GL_FRONT);
+    triangle(0.0f);
+    cull(GL_BACK);
+    triangle(0.0f);
+    tracker.takeBatches(batches);
+    EXPECT_EQ(batches.size(), 2u);
+    EXPECT_EQ(tracker.mergedPasses(), 2u);
 }

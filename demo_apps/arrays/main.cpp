@@ -37,13 +37,17 @@ public:
         return {{"vbo", demo::ExtraOption::Kind::Flag, "draw from buffer objects"},
                 {"list", demo::ExtraOption::Kind::Flag,
                  "compile the first frame's array draws (and their client state) into a "
-                 "display list and call it"}};
+                 "display list and call it"},
+                {"shine", demo::ExtraOption::Kind::Flag,
+                 "draw the column a second time, adding light (GL_ONE, GL_ONE) over the same "
+                 "vertices, as multi-pass engines draw a surface's layers"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
     {
         useVbo_ = options.has("vbo");
         useList_ = options.has("list");
+        shine_ = options.has("shine");
         vertices_.resize(gridVertices + columnVertices);
         buildIndices();
 
@@ -143,6 +147,7 @@ public:
                            stripBase + row * stripLength * sizeof(uint16_t));
         }
         glDrawArrays(GL_TRIANGLES, gridVertices, columnVertices);
+        if (shine_ && !useList_) drawShine();
         if (useList_) {
             glEndList();
             glCallList(list_);
@@ -160,6 +165,22 @@ public:
     }
 
 private:
+    // The column's second pass: unlit added light, no depth writes, the same vertices.
+    void drawShine()
+    {
+        glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
+        glDisable(GL_LIGHTING);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glDisableClientState(GL_COLOR_ARRAY);
+        glColor3f(0.35f, 0.2f, 0.05f);
+        glDrawArrays(GL_TRIANGLES, gridVertices, columnVertices);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glPopAttrib();
+    }
+
     static int gridIndex(int i, int j) { return j * (gridSize + 1) + i; }
 
     void buildIndices()
@@ -266,6 +287,7 @@ private:
     }
 
     bool useList_ = false;
+    bool shine_ = false;
     GLuint list_ = 0;
     bool useVbo_ = false;
     GLuint buffers_[2] = {0, 0};
