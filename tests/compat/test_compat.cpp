@@ -149,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 CompatCase openArena()
 {
-    CompatCase c("openarena", "blending other than GL_SRC_ALPHA", "/usr/games/",
+    CompatCase c("openarena", "", "/usr/games/",
                  {"+set",    "r_mode",         "-1",      "+set", "r_customwidth", "640",
                   "+set",    "r_customheight", "480",     "+set", "r_fullscreen",  "0",
                   "+set",    "cl_renderer",    "opengl1", "+set", "s_initsound",   "0",
@@ -168,8 +168,9 @@ INSTANTIATE_TEST_SUITE_P(
         // texture combiners only, are left and said).
         CompatCase{"neverball", "", "/usr/games/", {"-l", "map-easy/coins.sol"}, 100, "_ctx2"},
         // A map (+devmap) in a window, with its first renderer (fixed function; the second is
-        // GLSL); the world's lightmaps are layers the styles do not draw; the gun's effect
-        // layers (additive) are left, and said. Spawn points vary: the view does too.
+        // GLSL); the world's lightmaps give the styles their light; the gun's shine layers
+        // (additive passes over its own vertices) merge into it. Spawn points vary: the
+        // view does too.
         openArena()),
     [](const auto& param) { return param.param.program; });
 
