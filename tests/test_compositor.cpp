@@ -782,6 +782,26 @@ TEST(Compositor, AlphaTestedCutOutsKeepTheirHoles)
     EXPECT_NEAR(styled, native, native / 5);
 }
 
+// The pencil preset draws no fills of its own colour, only hatching on paper over the
+// surfaces and strokes along them: a cut-out is hatched where the program's texture and alpha
+// test keep it, and its holes show the floor's drawing behind, not the faces' hatching (it
+// hatched whole quads, as if solid, and stroked their edges).
+TEST(Compositor, PencilHatchesCutOutsInTheirShape)
+{
+    auto run = [](const std::string& name, bool cutout) {
+        const std::string dir = freshDir(name);
+        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
+                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
+        if (cutout) app.push_back("--cutout");
+        ProcessResult r = runProcess(under({nprglCommand(), "--preset", "pencil"}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return dir + "/textured_3.png";
+    };
+    const ImageDiff diff = compareImages(run("pencil_solid", false), run("pencil_cutout", true), 24);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_GT(diff.differingPixels, 1000u) << "the cut-out cube is drawn as a solid one";
+}
+
 // The program's fog (linear, 6 to 11 units, pale) is applied to the styled colours: the far
 // floor fades into the fog colour as it does natively, and does not without fog.
 TEST(Compositor, TheProgramsFogFadesTheStyledScene)

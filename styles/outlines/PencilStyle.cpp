@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace nprgl::styles {
 
@@ -23,6 +24,9 @@ in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
 out vec4 fragColor;
+#if CUT
+uniform sampler2D detail; // the program's texture (unit 0): its alpha cuts the drawing out
+#endif
 
 float lineHash(float k) { return fract(sin(k * 12.9898 + 78.233) * 43758.5453); }
 
@@ -68,7 +72,12 @@ void main()
     // Graphite skips the sheet's pits; the paper keeps its grain.
     float ink = (1.0 - keep) * mix(0.55, 1.0, g);
     vec3 sheet = paper * (1.0 - grain * (1.0 - g));
+#if CUT
+    // The program's alpha, its texture modulating: what its alpha test and blending see.
+    fragColor = vec4(mix(sheet, graphite, ink), baseColor.a * texture(detail, uv).a);
+#else
     fragColor = vec4(mix(sheet, graphite, ink), 1.0);
+#endif
 }
 )";
 
@@ -124,11 +133,12 @@ StyleInfo pencilStyleInfo()
     return info;
 }
 
-std::string PencilStyle::fragmentSource() const
+std::string PencilStyle::fragmentSource(bool cut) const
 {
     auto f = [](float v) { return ShadingCommon::glslFloat(v); };
     const float a = glm::radians(mAngle);
     std::string s = "#version 130\n";
+    s += cut ? "#define CUT 1\n" : "#define CUT 0\n";
     s += "#define LAYERS " + std::to_string(mLayers) + "\n";
     // The second layer crosses the first; the third runs between them.
     s += "const float angles[3] = float[3](" + f(a) + ", " + f(a - 1.5707964f) + ", " +
@@ -171,12 +181,15 @@ bool PencilStyle::init(StyleContext& ctx, std::string& error)
     mPressure = param("pressure");
     mGrainImage = PaperGrain::make(PaperGrain::Options{});
     if (mFill) {
-        const std::string fragment = fragmentSource();
-        if (!mProgram.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error))
-            return false;
-        mU.find(gl, mProgram.id());
-        mAnchor = mProgram.uniform(gl, "anchor");
-        mGrainTex = mProgram.uniform(gl, "grainTex");
+        for (bool cut : {false, true}) {
+            Variant& v = mVariants[cut];
+            const std::string fragment = fragmentSource(cut);
+            if (!v.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error))
+                return false;
+            v.u.find(gl, v.program.id());
+            v.anchor = v.program.uniform(gl, "anchor");
+            v.grainTex = v.program.uniform(gl, "grainTex");
+        }
     }
     if (mOutlines && !mStrokes.init(gl, error)) return false;
 
@@ -217,20 +230,39 @@ void PencilStyle::drawSurfaces(const Scene& scene, StyleContext& ctx)
         gl.ActiveTexture(GL_TEXTURE0);
     }
     const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
-    gl.UseProgram(mProgram.id());
-    gl.Uniform1i(mGrainTex, 1);
     gl.ActiveTexture(GL_TEXTURE1);
     gl.BindTexture(GL_TEXTURE_2D, mGrainTexture.id());
     gl.ActiveTexture(GL_TEXTURE0);
     // Onto the surfaces' own depth (the baseline's LEQUAL and offset); the depth stays the
     // scene's for the strokes' visibility.
     gl.DepthMask(GL_FALSE);
+    int bound = -1;
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;
-        mU.set(gl, object, frontIsCcw);
+        // Cut-outs and translucent surfaces are drawn where the program's texture and alpha
+        // test let them be, blended by its alpha: a tree's quad is hatched as the tree.
+        const bool cut = object.alphaFunc != GL_ALWAYS || object.translucent;
+        const Variant& v = mVariants[cut];
+        if (bound != int(cut)) {
+            gl.UseProgram(v.program.id());
+            gl.Uniform1i(v.grainTex, 1);
+            bound = int(cut);
+        }
+        if (object.alphaFunc != GL_ALWAYS) {
+            gl.Enable(GL_ALPHA_TEST);
+            gl.AlphaFunc(object.alphaFunc, object.alphaRef);
+        }
+        if (object.translucent) {
+            gl.Enable(GL_BLEND);
+            gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        }
+        v.u.set(gl, object, frontIsCcw);
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
-        gl.Uniform2f(mAnchor, anchor.x, anchor.y);
-        ctx.meshes.draw(gl, *object.mesh);
+        gl.Uniform2f(v.anchor, anchor.x, anchor.y);
+        if (cut) ShadingCommon::drawTextured(ctx, object, v.u);
+        else ctx.meshes.draw(gl, *object.mesh);
+        gl.Disable(GL_ALPHA_TEST);
+        gl.Disable(GL_BLEND);
     }
     gl.DepthMask(GL_TRUE);
     gl.ActiveTexture(GL_TEXTURE1);
@@ -248,12 +280,24 @@ void PencilStyle::render(const Scene& scene, StyleContext& ctx)
         mTextureSent = true;
     }
     ctx.gl.UseProgram(0);
-    mStrokes.render(scene, ctx.gl, mStrokeOptions);
+    // A cut-out's or translucent surface's polygons are not its shape (a tree's quad):
+    // strokes follow the solid objects only.
+    auto solid = [](const SceneObject& o) { return o.alphaFunc == GL_ALWAYS && !o.translucent; };
+    if (std::all_of(scene.objects.begin(), scene.objects.end(), solid)) {
+        mStrokes.render(scene, ctx.gl, mStrokeOptions);
+        return;
+    }
+    mSolid.objects.clear();
+    std::copy_if(scene.objects.begin(), scene.objects.end(), std::back_inserter(mSolid.objects),
+                 solid);
+    if (mSolid.objects.empty()) return;
+    mSolid.takeFrameOf(scene);
+    mStrokes.render(mSolid, ctx.gl, mStrokeOptions);
 }
 
 void PencilStyle::shutdown(StyleContext& ctx)
 {
-    mProgram.destroy(ctx.gl);
+    for (Variant& v : mVariants) v.program.destroy(ctx.gl);
     mGrainTexture.destroy(ctx.gl);
     mStrokes.destroy(ctx.gl);
     mTextureSent = false;

@@ -27,12 +27,17 @@ public:
     void shutdown(StyleContext& ctx) override;
 
 private:
-    std::string fragmentSource() const;
+    // cut: the variant that takes the program's texture alpha (cut-outs, translucent).
+    std::string fragmentSource(bool cut) const;
     void drawSurfaces(const Scene& scene, StyleContext& ctx);
 
-    ShaderProgram mProgram;
-    ShadingCommon::ObjectUniforms mU;
-    GLint mAnchor = -1, mGrainTex = -1;
+    struct Variant {
+        ShaderProgram program;
+        ShadingCommon::ObjectUniforms u;
+        GLint anchor = -1, grainTex = -1;
+    };
+    Variant mVariants[2]; // plain, cut
+    Scene mSolid;         // the objects the strokes outline
     GlTexture mGrainTexture;
     TextureImage mGrainImage;
     strokes::StrokeRenderer mStrokes;
