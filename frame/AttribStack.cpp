@@ -68,7 +68,10 @@ void AttribStack::pop()
         a.textureUnits = saved.textureUnits;
         a.texGen = saved.texGen;
     }
-    if (mask & GL_VIEWPORT_BIT) a.viewport = saved.viewport;
+    if (mask & GL_VIEWPORT_BIT) {
+        a.viewport = saved.viewport;
+        a.depthRange = saved.depthRange;
+    }
     if (mask & GL_SCISSOR_BIT) {
         a.scissorTest = saved.scissorTest;
         a.scissor = saved.scissor;

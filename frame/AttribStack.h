@@ -60,6 +60,9 @@ struct AttribState {
         return d;
     }
     glm::ivec4 viewport{0, 0, 0, 0};
+    // glDepthRange (near, far): engines draw their first-person weapon in a range of its own
+    // so that walls never cut into it.
+    glm::vec2 depthRange{0.0f, 1.0f};
     // The scissor box (window pixels) and whether the test confines the drawing to it.
     bool scissorTest = false;
     glm::ivec4 scissor{0, 0, 0, 0};

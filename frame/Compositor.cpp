@@ -57,7 +57,7 @@ void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
         if (placed == Compositor::Placement::Layer) {                                           \
             const size_t mark = c.streamSize();                                                 \
             c.heldNext().name args;                                                             \
-            if (c.settleLayer(mark)) return;                                                    \
+            if (!c.settleLayer(mark)) return;                                                   \
             c.tintBegin();                                                                      \
             gRealGl.name args; /* recorded already */                                           \
             c.tintEnd();                                                                        \
@@ -327,6 +327,9 @@ bool Compositor::ready()
     mTracker.setViewport({viewport[0], viewport[1], viewport[2], viewport[3]});
     mTracker.setScissor({scissor[0], scissor[1], scissor[2], scissor[3]});
     mTracker.setScissorTest(scissorTest);
+    GLfloat depthRange[2] = {0.0f, 1.0f};
+    gRealGl.glGetFloatv(GL_DEPTH_RANGE, depthRange);
+    mTracker.setDepthRange(depthRange[0], depthRange[1]);
     mTracker.setStackLimits(maxAttrib, maxClient);
     // Off or without styles, the tracker must not take the program's draws for held ones.
     mTracker.setHolding(mEnabled && mHasStyles);
@@ -501,7 +504,7 @@ Compositor::Placement Compositor::placeDraw(GLenum mode, bool layers)
     if (!mTracker.wouldHold(mode)) {
         // Decided once the tracker has its vertices (settleLayer), before it reaches the
         // driver.
-        if (layers && mHeld && mShading && mTracker.mayLayer(mode)) return Placement::Layer;
+        if (layers && mHeld && mTracker.mayLayer(mode)) return Placement::Layer;
         noteUnstyled(mode >= GL_TRIANGLES && mode <= GL_POLYGON);
         if (mHeld) flush();
         return Placement::Left;
@@ -519,18 +522,20 @@ bool Compositor::settleLayer(size_t mark)
     if (streamSize() == mark) {
         noteUnstyled(true);
         mLeftNow = false;
-        return true;
+        return false;
     }
     mTracker.clearRepeat();
     syncStream();
     if (mTracker.repeatedHeld()) {
         mRunCounts.noteStyled();
         mFrameCounts.noteStyled();
-        return true;
+        // Without a shading style the program draws its objects itself, layers and all, and
+        // the outline styles draw over the whole (a pencil's page covers the shine too).
+        return !mShading;
     }
     noteUnstyled(true);
     flush(); // what it draws goes over the finished scene
-    return false;
+    return true;
 }
 
 void Compositor::noteLayers()
@@ -589,10 +594,13 @@ void Compositor::noteHeld()
     // One scene per framebuffer and per scissor rectangle (the styles draw it confined so).
     const bool scissorTest = mTracker.scissorTest();
     const glm::ivec4 scissor = scissorTest ? mTracker.scissor() : glm::ivec4(0);
+    // And per depth range (a first-person weapon drawn in a range of its own).
+    const glm::vec2 depthRange = mTracker.depthRange();
     if (mHeld && (framebuffer != mHeldFramebuffer || scissorTest != mHeldScissorTest ||
-                  scissor != mHeldScissor)) {
+                  scissor != mHeldScissor || depthRange != mHeldDepthRange)) {
         flush();
     }
+    mHeldDepthRange = depthRange;
     mHeldFramebuffer = framebuffer;
     mHeldScissorTest = scissorTest;
     mHeldScissor = scissor;
@@ -759,6 +767,7 @@ void Compositor::buildScene()
     mScene.framebuffer = uint32_t(mHeldFramebuffer);
     mScene.scissored = mHeldScissorTest;
     mScene.scissor = mHeldScissor;
+    mScene.depthRange = mHeldDepthRange;
     mScene.colourClears = mColourClears;
 }
 

@@ -90,8 +90,9 @@ public:
     enum class Placement { Held, Layer, Left };
     Placement placeDraw(GLenum mode, bool layers);
     // After a Layer draw was recorded only (the stream was `mark` bytes long before it):
-    // true when nothing more is to be drawn (merged into its object, counted styled); false
-    // when it is left (counted, the scene flushed): the caller draws it in the driver.
+    // whether the caller is to draw it in the driver now. Merged into its object (counted
+    // styled): only when the chain has no shading style (the program draws its objects). Left
+    // (counted, the scene flushed first): always, tinted by the coverage style.
     bool settleLayer(size_t mark);
     size_t streamSize() const;
     bool holdList(GLuint list);
@@ -163,6 +164,7 @@ private:
     GLint mHeldFramebuffer = 0;
     bool mHeldScissorTest = false; // the held scene's scissor test and box
     glm::ivec4 mHeldScissor{0};
+    glm::vec2 mHeldDepthRange{0.0f, 1.0f};
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
     // 3D polygon draws (a glBegin/glEnd, an array draw, a held glCallList) over the run and

@@ -255,6 +255,8 @@ void APIENTRY tViewport(GLint x, GLint y, GLsizei w, GLsizei h)
 {
     if (w >= 0 && h >= 0) T().setViewport({x, y, w, h});
 }
+void APIENTRY tDepthRange(GLdouble n, GLdouble f) { T().setDepthRange(float(n), float(f)); }
+void APIENTRY tDepthRangef(GLfloat n, GLfloat f) { T().setDepthRange(n, f); }
 void APIENTRY tScissor(GLint x, GLint y, GLsizei w, GLsizei h)
 {
     if (w >= 0 && h >= 0) T().setScissor({x, y, w, h});
@@ -432,6 +434,8 @@ StateTracker::StateTracker()
     d.glFogfv = tFogfv;
     d.glFogiv = tFogiv;
     d.glViewport = tViewport;
+    d.glDepthRange = tDepthRange;
+    d.glDepthRangef = tDepthRangef;
     d.glScissor = tScissor;
     d.glPushAttrib = tPushAttrib;
     d.glPopAttrib = tPopAttrib;

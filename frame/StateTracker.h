@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -129,6 +130,12 @@ public:
     void setViewport(const glm::ivec4& v) { mAttrib.viewport = v; }
     void setScissor(const glm::ivec4& box) { mAttrib.scissor = box; }
     void setScissorTest(bool on) { mAttrib.scissorTest = on; }
+    // GL clamps both to [0, 1].
+    void setDepthRange(float n, float f)
+    {
+        mAttrib.depthRange = {std::clamp(n, 0.0f, 1.0f), std::clamp(f, 0.0f, 1.0f)};
+    }
+    const glm::vec2& depthRange() const { return mAttrib.depthRange; }
     // The scissor test's state now: on, and its box.
     bool scissorTest() const { return mAttrib.scissorTest; }
     const glm::ivec4& scissor() const { return mAttrib.scissor; }

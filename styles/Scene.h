@@ -105,6 +105,8 @@ struct Scene {
     // pixels); the styles draw it so too.
     bool scissored = false;
     glm::ivec4 scissor{0, 0, 0, 0};
+    // The program's glDepthRange for the scene (one per scene: a change flushes).
+    glm::vec2 depthRange{0.0f, 1.0f};
 
     // Everything but the objects, from `whole` (for a part of it drawn on its own).
     void takeFrameOf(const Scene& whole)
@@ -116,6 +118,7 @@ struct Scene {
         colourClears = whole.colourClears;
         scissored = whole.scissored;
         scissor = whole.scissor;
+        depthRange = whole.depthRange;
     }
     // `rect` (x, y, width, height, window pixels) within the scissor box, when scissored.
     glm::ivec4 confined(glm::ivec4 rect) const

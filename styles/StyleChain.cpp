@@ -66,7 +66,8 @@ void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
     gl.Viewport(scene.viewport.x, scene.viewport.y, scene.viewport.z, scene.viewport.w);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthMask(GL_TRUE);
-    gl.DepthRange(0.0, 1.0);
+    // The program's: the scene's depth is where its later drawing expects it.
+    gl.DepthRange(double(scene.depthRange.x), double(scene.depthRange.y));
     gl.PolygonOffset(-1.0f, -1.0f);
     // The shading pass lays down the scene's depth; the passes after it draw onto it.
     gl.DepthFunc(shadingPass ? GL_LESS : GL_LEQUAL);

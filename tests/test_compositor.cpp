@@ -802,6 +802,45 @@ TEST(Compositor, PencilHatchesCutOutsInTheirShape)
     EXPECT_GT(diff.differingPixels, 1000u) << "the cut-out cube is drawn as a solid one";
 }
 
+// A first-person weapon (demo_textured --weapon): a cube far behind the scene, drawn in a
+// depth range of its own (glDepthRange 0 to 0.1) so that it is in front of everything, as
+// ioquake3 draws its gun. The styles draw it in that range too: in the shading chain it
+// changes the styled picture about as much as the native one (drawn with the full range, the
+// scene's cube and sphere hid most of it); the pencil, which hatches over the program's own
+// depth, hatches it (missing that depth, it left the program's red checks).
+TEST(Compositor, AWeaponInADepthRangeOfItsOwnStaysInFront)
+{
+    auto run = [](const std::string& style, bool weapon) {
+        const std::string dir = freshDir("weapon_" + style + (weapon ? "_on" : "_off"));
+        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
+                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
+        if (weapon) app.push_back("--weapon");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return dir + "/textured_3.png";
+    };
+    auto changed = [&](const std::string& style) {
+        const ImageDiff diff = compareImages(run(style, false), run(style, true), 24);
+        EXPECT_TRUE(diff.comparable) << diff.error;
+        return diff.differingPixels;
+    };
+    const size_t native = changed("none");
+    EXPECT_GT(native, 3000u) << "the weapon is not in the picture";
+    EXPECT_GT(changed("toon+edges"), native * 8 / 10);
+    auto redPixels = [](const std::string& path) {
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(path, image, error)) << error;
+        int red = 0;
+        for (size_t i = 0; i < image.rgba.size(); i += 4) {
+            red += image.rgba[i] > 150 && image.rgba[i + 1] < 90 && image.rgba[i + 2] < 90;
+        }
+        return red;
+    };
+    EXPECT_GT(redPixels(run("none", true)), 1000) << "the weapon's checks are not red";
+    EXPECT_LT(redPixels(run("pencil+paper", true)), 50) << "the pencil left the weapon as drawn";
+}
+
 // The program's fog (linear, 6 to 11 units, pale) is applied to the styled colours: the far
 // floor fades into the fog colour as it does natively, and does not without fog.
 TEST(Compositor, TheProgramsFogFadesTheStyledScene)

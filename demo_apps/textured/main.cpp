@@ -152,6 +152,9 @@ public:
                  "draw the scene's depth first with the colour mask off, then its colours"},
                 {"decal", demo::ExtraOption::Kind::Flag,
                  "a yellow square on the floor, coplanar, drawn with glPolygonOffset"},
+                {"weapon", demo::ExtraOption::Kind::Flag,
+                 "a first-person weapon: a cube far behind the scene drawn in a depth range of "
+                 "its own (glDepthRange 0 to 0.1), so that it is in front of everything"},
                 {"inset", demo::ExtraOption::Kind::Flag,
                  "the scene again, turned, in the top right quarter (scissor and clear)"}};
     }
@@ -164,6 +167,7 @@ public:
         depthPrepass_ = options.has("depth-prepass");
         decal_ = options.has("decal");
         inset_ = options.has("inset");
+        weapon_ = options.has("weapon");
         width_ = options.width;
         height_ = options.height;
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
@@ -221,6 +225,17 @@ public:
             return;
         }
         drawScene(frame);
+        if (weapon_) {
+            // As engines draw their weapon: whatever its distance, in front of the world.
+            glDepthRange(0.0, 0.1);
+            glMatrixMode(GL_MODELVIEW);
+            glLoadIdentity();
+            glTranslatef(0.4f, -0.9f, -14.0f);
+            glRotatef(30.0f, 1.0f, 1.0f, 0.0f);
+            glBindTexture(GL_TEXTURE_2D, cubeTexture_);
+            drawCube(1.2f, nullptr);
+            glDepthRange(0.0, 1.0);
+        }
         if (inset_) {
             glScissor(width_ / 2, height_ / 2, width_ - width_ / 2, height_ - height_ / 2);
             glEnable(GL_SCISSOR_TEST);
@@ -339,6 +354,7 @@ private:
     bool depthPrepass_ = false;
     bool decal_ = false;
     bool inset_ = false;
+    bool weapon_ = false;
     int width_ = 0, height_ = 0;
     GLuint cutoutTexture_ = 0;
     static constexpr uint8_t white_[3] = {235, 235, 235};
