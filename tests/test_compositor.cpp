@@ -78,6 +78,26 @@ std::string renderGoldenCase(const GoldenCase& c, const std::string& dir)
     return r.exitCode == 0 ? framePng(dir, c.frame) : "";
 }
 
+// A demo app's third frame at 320x240, run under nprgl with `options` (a style or preset) and
+// the demo's `extra` options, written to a fresh directory named `name`; the run's log in
+// `log` when asked. Returns the PNG's path.
+std::string demoFrame(const std::string& app, const std::string& name,
+                      const std::vector<std::string>& options,
+                      const std::vector<std::string>& extra, std::string* log = nullptr)
+{
+    const std::string dir = freshDir(name);
+    std::vector<std::string> command = {demo(app),       "--offscreen",  "--size", "320x240",
+                                        "--frames",      "3",            "--save-frames", "3",
+                                        "--save-dir",    dir};
+    command.insert(command.end(), extra.begin(), extra.end());
+    std::vector<std::string> wrapper = {nprglCommand()};
+    wrapper.insert(wrapper.end(), options.begin(), options.end());
+    ProcessResult r = runProcess(under(wrapper, command));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    if (log) *log = r.err;
+    return dir + "/" + app + "_3.png";
+}
+
 } // namespace
 
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
@@ -789,13 +809,8 @@ TEST(Compositor, AlphaTestedCutOutsKeepTheirHoles)
 TEST(Compositor, PencilHatchesCutOutsInTheirShape)
 {
     auto run = [](const std::string& name, bool cutout) {
-        const std::string dir = freshDir(name);
-        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
-                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
-        if (cutout) app.push_back("--cutout");
-        ProcessResult r = runProcess(under({nprglCommand(), "--preset", "pencil"}, app));
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        return dir + "/textured_3.png";
+        return demoFrame("textured", name, {"--preset", "pencil"},
+                         cutout ? std::vector<std::string>{"--cutout"} : std::vector<std::string>{});
     };
     const ImageDiff diff = compareImages(run("pencil_solid", false), run("pencil_cutout", true), 24);
     ASSERT_TRUE(diff.comparable) << diff.error;
@@ -811,13 +826,9 @@ TEST(Compositor, PencilHatchesCutOutsInTheirShape)
 TEST(Compositor, AWeaponInADepthRangeOfItsOwnStaysInFront)
 {
     auto run = [](const std::string& style, bool weapon) {
-        const std::string dir = freshDir("weapon_" + style + (weapon ? "_on" : "_off"));
-        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
-                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
-        if (weapon) app.push_back("--weapon");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        return dir + "/textured_3.png";
+        return demoFrame("textured", "weapon_" + style + (weapon ? "_on" : "_off"),
+                         {"--style", style},
+                         weapon ? std::vector<std::string>{"--weapon"} : std::vector<std::string>{});
     };
     auto changed = [&](const std::string& style) {
         const ImageDiff diff = compareImages(run(style, false), run(style, true), 24);
@@ -883,15 +894,13 @@ TEST(Compositor, TheProgramsFogFadesTheStyledScene)
 TEST(Compositor, DepthOnlyPassesSupplyDepthAndNothingElse)
 {
     auto run = [](const std::string& name, bool prepass) {
-        const std::string dir = freshDir(name);
-        std::vector<std::string> app = {demo("textured"), "--offscreen", "--size", "320x240",
-                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
-        if (prepass) app.push_back("--depth-prepass");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+edges"}, app));
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        EXPECT_NE(r.err.find(" styled, 0 left as the program drew them"), std::string::npos)
-            << r.err;
-        return dir + "/textured_3.png";
+        std::string log;
+        const std::string frame = demoFrame(
+            "textured", name, {"--style", "toon+edges"},
+            prepass ? std::vector<std::string>{"--depth-prepass"} : std::vector<std::string>{},
+            &log);
+        EXPECT_NE(log.find(" styled, 0 left as the program drew them"), std::string::npos) << log;
+        return frame;
     };
     const ImageDiff diff = compareImages(run("prepass_off", false), run("prepass_on", true), 24);
     ASSERT_TRUE(diff.comparable) << diff.error;
@@ -934,14 +943,9 @@ TEST(Compositor, DecalsStayOnTheirSurface)
 TEST(Compositor, ABlendedSecondPassIsMergedIntoItsObject)
 {
     auto run = [](const std::string& style, bool shine, std::string* log = nullptr) {
-        const std::string dir = freshDir("shine_" + style + (shine ? "_on" : "_off"));
-        std::vector<std::string> app = {demo("arrays"), "--offscreen", "--size", "320x240",
-                                        "--frames", "3", "--save-frames", "3", "--save-dir", dir};
-        if (shine) app.push_back("--shine");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        if (log) *log = r.err;
-        return dir + "/arrays_3.png";
+        return demoFrame("arrays", "shine_" + style + (shine ? "_on" : "_off"), {"--style", style},
+                         shine ? std::vector<std::string>{"--shine"} : std::vector<std::string>{},
+                         log);
     };
     const ImageDiff native = compareImages(run("none", false), run("none", true), 24);
     ASSERT_TRUE(native.comparable) << native.error;
