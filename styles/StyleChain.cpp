@@ -146,14 +146,7 @@ void StyleChain::render(const Scene& scene)
             mRun.objects.assign(mCutOut.objects.begin() + long(k),
                                 mCutOut.objects.begin() + long(end));
             setBaseline(mRun, true);
-            if (first.alphaFunc != GL_ALWAYS) {
-                gl.Enable(GL_ALPHA_TEST);
-                gl.AlphaFunc(first.alphaFunc, first.alphaRef);
-            }
-            if (first.offsetFactor != 0.0f || first.offsetUnits != 0.0f) {
-                gl.Enable(GL_POLYGON_OFFSET_FILL);
-                gl.PolygonOffset(first.offsetFactor, first.offsetUnits);
-            }
+            applyTestAndOffset(first);
             mStyles[i]->render(mRun, mContext);
             gl.Disable(GL_ALPHA_TEST);
             gl.Disable(GL_POLYGON_OFFSET_FILL);
@@ -168,21 +161,42 @@ void StyleChain::render(const Scene& scene)
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     for (size_t i = 0; i < mTranslucent.objects.size();) {
-        // Runs of objects with the same depth writes.
+        // Runs of objects with the same depth writes, alpha test and offset: a translucent
+        // decal (a goal painted on the floor) keeps the offset that lifts it off its surface.
         size_t end = i + 1;
-        const bool writes = mTranslucent.objects[i].depthWrite;
-        while (end < mTranslucent.objects.size() && mTranslucent.objects[end].depthWrite == writes)
-            ++end;
+        const SceneObject& first = mTranslucent.objects[i];
+        auto same = [&first](const SceneObject& o) {
+            return o.depthWrite == first.depthWrite && o.alphaFunc == first.alphaFunc &&
+                   o.alphaRef == first.alphaRef && o.offsetFactor == first.offsetFactor &&
+                   o.offsetUnits == first.offsetUnits;
+        };
+        while (end < mTranslucent.objects.size() && same(mTranslucent.objects[end])) ++end;
         mRun.objects.assign(mTranslucent.objects.begin() + long(i),
                             mTranslucent.objects.begin() + long(end));
         setBaseline(mRun, true);
         gl.Enable(GL_BLEND);
         gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        gl.DepthMask(writes ? GL_TRUE : GL_FALSE);
+        gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
+        applyTestAndOffset(first);
         mStyles.front()->render(mRun, mContext);
+        gl.Disable(GL_ALPHA_TEST);
+        gl.Disable(GL_POLYGON_OFFSET_FILL);
         i = end;
     }
     mContext.meshes.endFlush(mContext.gl);
+}
+
+void StyleChain::applyTestAndOffset(const SceneObject& o)
+{
+    const GlFunctions& gl = mContext.gl;
+    if (o.alphaFunc != GL_ALWAYS) {
+        gl.Enable(GL_ALPHA_TEST);
+        gl.AlphaFunc(o.alphaFunc, o.alphaRef);
+    }
+    if (o.offsetFactor != 0.0f || o.offsetUnits != 0.0f) {
+        gl.Enable(GL_POLYGON_OFFSET_FILL);
+        gl.PolygonOffset(o.offsetFactor, o.offsetUnits);
+    }
 }
 
 void StyleChain::renderAsDrawn(const Scene& part)

@@ -45,6 +45,8 @@ private:
     bool mGlowInkReady = false;
     // The shading style alone draws `part`'s objects with the program's depth test and
     // depth writes.
+    // The object's alpha test and polygon offset, as the program drew it (a run's first).
+    void applyTestAndOffset(const SceneObject& o);
     void renderAsDrawn(const Scene& part);
 
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept

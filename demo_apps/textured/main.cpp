@@ -152,6 +152,9 @@ public:
                  "draw the scene's depth first with the colour mask off, then its colours"},
                 {"decal", demo::ExtraOption::Kind::Flag,
                  "a yellow square on the floor, coplanar, drawn with glPolygonOffset"},
+                {"translucent-decal", demo::ExtraOption::Kind::Flag,
+                 "the decal blended by its alpha (0.85) without depth writes, as games paint "
+                 "marks on their floors"},
                 {"weapon", demo::ExtraOption::Kind::Flag,
                  "a first-person weapon: a cube far behind the scene drawn in a depth range of "
                  "its own (glDepthRange 0 to 0.1), so that it is in front of everything"},
@@ -165,7 +168,8 @@ public:
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
         depthPrepass_ = options.has("depth-prepass");
-        decal_ = options.has("decal");
+        decal_ = options.has("decal") || options.has("translucent-decal");
+        translucentDecal_ = options.has("translucent-decal");
         inset_ = options.has("inset");
         weapon_ = options.has("weapon");
         width_ = options.width;
@@ -273,8 +277,13 @@ public:
             glDisable(GL_TEXTURE_2D);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-1.0f, -2.0f);
-            const float yellow[] = {1.0f, 0.85f, 0.1f, 1.0f};
+            const float yellow[] = {1.0f, 0.85f, 0.1f, translucentDecal_ ? 0.85f : 1.0f};
             glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, yellow);
+            if (translucentDecal_) {
+                glEnable(GL_BLEND);
+                glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                glDepthMask(GL_FALSE);
+            }
             glBegin(GL_QUADS);
             glVertex3f(-0.6f, -1.0f, 2.6f);
             glVertex3f(0.6f, -1.0f, 2.6f);
@@ -284,6 +293,8 @@ public:
             const float white[] = {1.0f, 1.0f, 1.0f, 1.0f};
             glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, white);
             glDisable(GL_POLYGON_OFFSET_FILL);
+            glDisable(GL_BLEND);
+            glDepthMask(GL_TRUE);
             glEnable(GL_TEXTURE_2D);
         }
 
@@ -355,6 +366,7 @@ private:
     bool decal_ = false;
     bool inset_ = false;
     bool weapon_ = false;
+    bool translucentDecal_ = false;
     int width_ = 0, height_ = 0;
     GLuint cutoutTexture_ = 0;
     static constexpr uint8_t white_[3] = {235, 235, 235};
