@@ -66,6 +66,11 @@ shoot() { # program style -> docs/gallery/compat_<program>_<style>.png, run unti
     local pid=$! i=0
     while [ ! -f "$shot" ] && [ $i -lt 1200 ]; do sleep 0.1; i=$((i + 1)); done
     kill -TERM "$pid" 2>/dev/null || true
+    # A game may hang in its own SIGTERM handler (seen once with ioquake3, inside the driver):
+    # ten seconds, then SIGKILL.
+    i=0
+    while kill -0 "$pid" 2>/dev/null && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+    kill -KILL "$pid" 2>/dev/null || true
     wait "$pid" 2>/dev/null || true
     [ -f "$shot" ] && cp "$shot" "$out/compat_${program}_$(fileName "$style").png"
 }
