@@ -58,6 +58,7 @@ int replayCommand(const ReplayCommandOptions& options)
             std::fprintf(stderr, "nprgl: %s; line skipped\n", e.c_str());
         }
         replay.config->leftTextures = rules.leftTextures;
+        replay.config->leftStates = rules.leftStates;
         std::sort(replay.config->leftTextures.begin(), replay.config->leftTextures.end());
     }
     if (!parseFrames(options.frames, replay.frames, error)) return fail("--frames: " + error);

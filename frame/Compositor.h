@@ -72,6 +72,8 @@ public:
     // Rules (leave_texture): draws with a texture of these contents are left from now on.
     void setLeftTextures(std::vector<uint64_t> hashes);
     const std::vector<uint64_t>& leftTextures() const { return mTracker.leftTextures(); }
+    // Rules (leave_state): draws in these states (LeftState bits) are left from now on.
+    void setLeftStates(uint32_t states) { mTracker.setLeftStates(states); }
     // The last frame's time in the compositor (reconstruction and styles), in ms.
     double lastFrameComposeMs() const { return mLastFrameComposeMs; }
     // A GL error of the program's that nprgl took while drawing its own things (the

@@ -529,7 +529,7 @@ const char* StateTracker::unstylableState() const
     const AttribState& a = mAttrib;
     // Drawn now and kept in the list: the list's later calls are styled, this first one not.
     if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
-    if (leftByRule()) return "a rule of the program's configuration (leave_texture)";
+    if (leftByRule()) return "a rule of the program's configuration (leave_texture, leave_state)";
     // The program's shaders decide colour and position; a style would draw something else.
     if (mProgram != 0 || a.vertexProgram || a.fragmentProgram) return "the program's own shaders";
     if (a.blend && !translucent()) {
@@ -570,6 +570,16 @@ bool StateTracker::mayLayer(GLenum mode) const
 
 bool StateTracker::leftByRule() const
 {
+    if (mLeftStates) {
+        const AttribState& a = mAttrib;
+        const bool backdrop = !a.depthTest && mMatrices.projection()[3][3] == 0.0f;
+        if (((mLeftStates & kLeaveTranslucent) && translucent()) ||
+            ((mLeftStates & kLeaveCutout) && a.alphaTest) ||
+            ((mLeftStates & kLeaveDecal) && a.polygonOffsetFill) ||
+            ((mLeftStates & kLeaveBackdrop) && backdrop)) {
+            return true;
+        }
+    }
     return !mLeftTextures.empty() && detailTexture() != 0 &&
            std::binary_search(mLeftTextures.begin(), mLeftTextures.end(),
                               textureHash(detailTexture()));

@@ -2,6 +2,7 @@
 
 #include "frame/AttribStack.h"
 #include "frame/ClientArrays.h"
+#include "frame/LeftState.h"
 #include "frame/MatrixStacks.h"
 #include "frame/ShadowArrays.h"
 #include "reconstruct/Batch.h"
@@ -211,6 +212,8 @@ public:
     // them (counted with their reason). Sorted.
     void setLeftTextures(std::vector<uint64_t> hashes) { mLeftTextures = std::move(hashes); }
     const std::vector<uint64_t>& leftTextures() const { return mLeftTextures; }
+    // Rules: draws in these states (LeftState bits) are left as the program draws them.
+    void setLeftStates(uint32_t states) { mLeftStates = states; }
     void activeTexture(GLenum unit);
     void enableArray(GLenum cap, bool on);
     void clientActiveTexture(GLenum unit);
@@ -297,7 +300,7 @@ private:
     int lightUnit() const;
     // A batch blended by alpha whose alpha is 1 everywhere (its colours', its texture's).
     bool opaqueAlpha(const TrackedBatch& batch) const;
-    // A rule (leave_texture) leaves a draw issued now.
+    // A rule (leave_texture or leave_state) leaves a draw issued now.
     bool leftByRule() const;
     // The winding the current culling removes (TrackedBatch::culled).
     GLenum culledWinding() const;
@@ -353,6 +356,7 @@ private:
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
     std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
     std::vector<uint64_t> mLeftTextures;
+    uint32_t mLeftStates = 0;
     size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;
     // While a list compiles: which current attributes the list sets itself (the others come

@@ -7,6 +7,7 @@
 #include "styles/Presets.h"
 
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -114,6 +115,7 @@ Config Config::fromEnvironment(bool reloading)
         if (!file.overlay.empty()) s.overlayOpen = file.overlay == "open";
         s.leftTextures.insert(s.leftTextures.end(), file.leftTextures.begin(),
                               file.leftTextures.end());
+        s.leftStates |= file.leftStates;
     }
     if (!s.tried.empty()) {
         std::string read;
@@ -129,6 +131,10 @@ Config Config::fromEnvironment(bool reloading)
     if (!s.leftTextures.empty()) {
         NPRGL_LOG(said, "rules: %zu texture(s) left as the program draws them",
                   s.leftTextures.size());
+    }
+    if (s.leftStates) {
+        NPRGL_LOG(said, "rules: draws in %d state(s) left as the program draws them",
+                  std::popcount(s.leftStates));
     }
     // The environment (and so the command line) over the files.
     std::string error;

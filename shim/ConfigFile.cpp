@@ -101,6 +101,14 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
             } else {
                 out.leftTextures.push_back(hash);
             }
+        } else if (key == "leave_state") {
+            const uint32_t bit = stateBit(value);
+            if (!bit) {
+                skip("leave_state: '" + value +
+                     "' is not a state (use translucent, cutout, decal or backdrop)");
+            } else {
+                out.leftStates |= bit;
+            }
         } else if (key == "screenshot_dir") {
             out.screenshotDir = value;
         } else if (key == "log_level") {
@@ -154,6 +162,15 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
     out.config = presetConfig;
     if (!ownConfig.empty()) out.config += (out.config.empty() ? "" : ",") + ownConfig;
     return out;
+}
+
+uint32_t ConfigFile::stateBit(const std::string& name)
+{
+    if (name == "translucent") return kLeaveTranslucent;
+    if (name == "cutout") return kLeaveCutout;
+    if (name == "decal") return kLeaveDecal;
+    if (name == "backdrop") return kLeaveBackdrop;
+    return 0;
 }
 
 std::string ConfigFile::hashText(uint64_t hash)

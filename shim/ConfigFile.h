@@ -2,6 +2,8 @@
 
 // ConfigFile: what one configuration file (nprgl.conf, <program>.conf) says, line by line.
 
+#include "frame/LeftState.h"
+
 #include <cstdint>
 #include <map>
 #include <string>
@@ -18,6 +20,9 @@ namespace nprgl {
 //   overlay=open|closed            (the overlay at start-up)
 //   leave_texture=HASH             (a rule: draws with this texture stay the program's; one
 //                                   line per texture, as the overlay's pick gives them)
+//   leave_state=STATE              (a rule: draws in this state stay the program's: translucent
+//                                   (blended by alpha), cutout (alpha test), decal (polygon
+//                                   offset), backdrop (3D without the depth test); one a line)
 // A bad line is reported as file:line and skipped; the other lines apply.
 struct ConfigFile {
     std::string path;
@@ -30,6 +35,7 @@ struct ConfigFile {
     std::vector<std::string> cycle;
     std::string overlay; // overlay=open|closed: the overlay's state at start-up (empty: closed)
     std::vector<uint64_t> leftTextures; // leave_texture=HASH lines (16 hex digits), in order
+    uint32_t leftStates = 0;            // leave_state= lines (LeftState bits)
     std::vector<std::string> errors; // "file:line: message", one per skipped line
 
     // Reads the file at `path`; a file that does not exist is not an error (found = false).
@@ -43,6 +49,8 @@ struct ConfigFile {
     static bool writeLook(const std::string& path, const std::string& chain,
                           const std::string& config, const std::vector<uint64_t>& leftTextures,
                           std::string& error);
+    // A leave_state name's LeftState bit (0: not a state name).
+    static uint32_t stateBit(const std::string& name);
     // A texture rule's hash as the files write it: 16 hex digits.
     static std::string hashText(uint64_t hash);
 

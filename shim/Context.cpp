@@ -62,6 +62,7 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Con
         mCompositor = std::make_unique<Compositor>(*this, *mRecorder);
         mCompositor->install(mDispatch);
         mCompositor->setLeftTextures(mConfig.leftTextures);
+        mCompositor->setLeftStates(mConfig.leftStates);
     }
     mFinish = mDispatch.glFinish;
     if (ws == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
@@ -264,6 +265,7 @@ void Context::followConfig()
     }
     mCompositor->restyle(current->style);
     mCompositor->setLeftTextures(current->leftTextures);
+    mCompositor->setLeftStates(current->leftStates);
 }
 
 void Context::writeScreenshot(int width, int height)

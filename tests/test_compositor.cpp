@@ -937,6 +937,59 @@ TEST(Compositor, DecalsStayOnTheirSurface)
         << "the translucent decal sank into the floor";
 }
 
+// A state rule (leave_state=translucent, from the program's configuration file, and given to
+// a replay with --rules): the demo's translucent sphere is left as the program draws it (the
+// coverage style paints it red, the log gives the rule as the reason); the opaque cube and
+// floor stay styled. Without the rule the sphere is styled (never red).
+TEST(Compositor, AStateRuleLeavesTheDrawsInThatState)
+{
+    const std::string rules = freshDir("state_rules") + "/rules.conf";
+    std::ofstream(rules) << "leave_state=translucent\n";
+    auto redShare = [](const std::string& path, int x0, int y0, int x1, int y1) {
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(path, image, error)) << error;
+        int red = 0, all = 0;
+        for (int y = y0; y < y1 && !image.rgba.empty(); ++y) {
+            for (int x = x0; x < x1; ++x) {
+                // A left translucent draw is fog-red blended by its alpha (0.6) over the page.
+                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                red += p[0] >= 200 && p[1] < 90 && p[2] < 90;
+                ++all;
+            }
+        }
+        return float(red) / float(std::max(all, 1));
+    };
+    const std::string dir = freshDir("state_rule_live");
+    ProcessResult r = runProcess(under({nprglCommand(), "--style", "coverage"},
+                                       {demo("textured"), "--translucent", "--offscreen",
+                                        "--size", "320x240", "--frames", "3", "--save-frames",
+                                        "3", "--save-dir", dir}),
+                                 {{"NPRGL_CONFIG_FILE", rules}});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("(leave_texture, leave_state)"), std::string::npos) << r.err;
+    const std::string plain = demoFrame("textured", "state_rule_none", {"--style", "coverage"},
+                                        {"--translucent"});
+    // The sphere (right of the middle), the cube (left) and the floor (bottom).
+    EXPECT_GT(redShare(dir + "/textured_3.png", 190, 110, 225, 145), 0.95f);
+    EXPECT_LT(redShare(plain, 190, 110, 225, 145), 0.01f) << "styled without the rule";
+    EXPECT_LT(redShare(dir + "/textured_3.png", 85, 110, 135, 160), 0.01f) << "the cube";
+    EXPECT_LT(redShare(dir + "/textured_3.png", 20, 200, 300, 235), 0.01f) << "the floor";
+
+    // A replay of a recording, given the file.
+    const std::string rec = freshDir("state_rule_rec");
+    ProcessResult recorded = runProcess(
+        under({nprglCommand(), "record", "--style", "none", "-o", rec + "/t.nprgl"},
+              {demo("textured"), "--translucent", "--offscreen", "--size", "320x240",
+               "--frames", "3"}));
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err;
+    ProcessResult replayed =
+        runProcess({nprglCommand(), "replay", rec + "/t.nprgl", "-o", rec + "/out", "--frames",
+                    "3", "--style", "coverage", "--rules", rules});
+    ASSERT_EQ(replayed.exitCode, 0) << replayed.err;
+    EXPECT_GT(redShare(framePng(rec + "/out", 3), 190, 110, 225, 145), 0.95f) << replayed.err;
+}
+
 // A multi-pass surface: demo_arrays --shine draws its column a second time over the same
 // vertices, adding light (GL_ONE, GL_ONE), as ioquake3 draws a shader's stages. The pass is
 // merged into the styled column: the styled picture is the one without the pass (nothing

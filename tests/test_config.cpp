@@ -85,6 +85,18 @@ TEST(ConfigFile, ABadLineIsNamedAndSkippedAndTheRestApplies)
     EXPECT_EQ(f.errors[4].rfind("my.conf:9: ", 0), 0u) << f.errors[4];
 }
 
+// State rules: one state a line; an unknown one is named and skipped.
+TEST(ConfigFile, StateRulesNameTheirStates)
+{
+    const ConfigFile f = ConfigFile::parse("leave_state=translucent\n"
+                                           "leave_state=glowing\n"
+                                           "leave_state=backdrop\n",
+                                           "rules.conf");
+    EXPECT_EQ(f.leftStates, uint32_t(kLeaveTranslucent | kLeaveBackdrop));
+    ASSERT_EQ(f.errors.size(), 1u);
+    EXPECT_EQ(f.errors[0].rfind("rules.conf:2: leave_state: 'glowing'", 0), 0u) << f.errors[0];
+}
+
 TEST(ConfigFile, APresetLineGivesItsChainAndValuesUnderTheFilesOwn)
 {
     const ConfigFile f = ConfigFile::parse("paper.grain=0.5\npreset=pencil\n", "p.conf");
