@@ -531,10 +531,26 @@ const char* StateTracker::unstylableState() const
     if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
     if (leftByRule()) return "a rule of the program's configuration (leave_texture, leave_state)";
     // The program's shaders decide colour and position; a style would draw something else.
-    if (mProgram != 0 || a.vertexProgram || a.fragmentProgram) return "the program's own shaders";
+    if (ownShaders()) return "the program's own shaders";
     if (a.blend && !translucent()) {
         return "blending other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA (additive, effects)";
     }
+    if (const char* why = pipelineLimit()) return why;
+    // Generated coordinates on unit 0 (sphere maps, reflections) are styled, the generated
+    // texture dropped; on other units they belong to multitexturing.
+    if (surfaceUnit() < 0) return multitexturing();
+    return nullptr;
+}
+
+bool StateTracker::ownShaders() const
+{
+    const AttribState& a = mAttrib;
+    return mProgram != 0 || a.vertexProgram || a.fragmentProgram;
+}
+
+const char* StateTracker::pipelineLimit() const
+{
+    const AttribState& a = mAttrib;
     if (a.stencilTest) return "the stencil test";
     if (!a.fillFront || !a.fillBack) return "glPolygonMode lines or points";
     // A depth-only pass (no colour channel) is held: the styles supply its depth.
@@ -544,9 +560,6 @@ const char* StateTracker::unstylableState() const
     if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
         return "a full attribute stack";
     }
-    // Generated coordinates on unit 0 (sphere maps, reflections) are styled, the generated
-    // texture dropped; on other units they belong to multitexturing.
-    if (surfaceUnit() < 0) return multitexturing();
     return nullptr;
 }
 
@@ -557,15 +570,11 @@ bool StateTracker::mayLayer(GLenum mode) const
     // it draws over.
     const AttribState& a = mAttrib;
     if (!mHolding || !isPolygonMode(mode) || mCompiling || mRenderMode != GL_RENDER ||
-        !is3D() || !a.blend) {
+        !is3D() || !a.blend || !a.colorMaskAll) {
         return false;
     }
-    if (mProgram != 0 || a.vertexProgram || a.fragmentProgram || a.stencilTest) return false;
-    if (!a.fillFront || !a.fillBack || !a.colorMaskAll) return false;
-    if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
-        return false;
-    }
-    return !leftByRule() && unstylableState() != nullptr;
+    if (ownShaders() || pipelineLimit() || leftByRule()) return false;
+    return unstylableState() != nullptr;
 }
 
 bool StateTracker::leftByRule() const
@@ -1127,15 +1136,15 @@ bool StateTracker::keep(TrackedBatch& batch)
         // Inside a list the driver draws itself (not masked by the compositor) nothing is
         // held: the style would draw it a second time over the program's own.
         batch.held = mHoldingList > 0 || (mPassingList == 0 && wouldHold(batch.mode));
-        if (!batch.held) {
-            // The compositor keeps only what it re-draws; a blended pass over held geometry
-            // it asked about (mayLayer) is merged into that object instead of drawn.
-            if (a.blend && repeatsHeld(batch)) {
-                mRepeated = true;
-                ++mMergedPasses;
-            }
+        // A blended pass over geometry already held (a shine, light or fog stage; left for
+        // its blending and asked about by the compositor, or translucent and held itself) is
+        // that object's: merged into it, not drawn or styled again.
+        if (a.blend && repeatsHeld(batch)) {
+            mRepeated = true;
+            ++mMergedPasses;
             return false;
         }
+        if (!batch.held) return false; // the compositor keeps only what it re-draws
     }
     batch.lit = a.lighting;
     batch.lightOn = a.lightsOn != 0;
@@ -1166,13 +1175,6 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.fogDensity = a.fogDensity;
     batch.fogColour = a.fogColour;
     batch.viewport = a.viewport;
-    // A translucent pass over geometry already held (a fog or detail layer blended by its
-    // alpha) is that object's layer: styled once, with the object.
-    if (mHolding && a.blend && repeatsHeld(batch)) {
-        mRepeated = true;
-        ++mMergedPasses;
-        return false;
-    }
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
         reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);

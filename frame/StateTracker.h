@@ -311,6 +311,11 @@ private:
                      const void* pixels) const;
     // Why surfaceUnit() is -1.
     const char* multitexturing() const;
+    // The program's shaders (GLSL or ARB programs) draw what is issued now.
+    bool ownShaders() const;
+    // What of the fixed pipeline's state the styles cannot follow (stencil, lines or points,
+    // a partial colour mask, a full attribute stack), or null.
+    const char* pipelineLimit() const;
     // The surface's unit (a bit) and the layers above it (bits).
     uint32_t texturedUnits(uint32_t& layers) const;
     // Makes mCurrent's texture coordinates the surface unit's (at each draw).
