@@ -57,9 +57,8 @@ int replayCommand(const ReplayCommandOptions& options)
         for (const std::string& e : rules.errors) {
             std::fprintf(stderr, "nprgl: %s; line skipped\n", e.c_str());
         }
-        replay.config->leftTextures = rules.leftTextures;
-        replay.config->leftStates = rules.leftStates;
-        std::sort(replay.config->leftTextures.begin(), replay.config->leftTextures.end());
+        replay.config->rules = rules.rules;
+        replay.config->rules.normalise();
     }
     if (!parseFrames(options.frames, replay.frames, error)) return fail("--frames: " + error);
     if (!options.size.empty() &&

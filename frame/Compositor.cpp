@@ -412,13 +412,6 @@ PickResult Compositor::pick(int x, int y, int windowHeight, uint64_t& textureHas
     return hit;
 }
 
-void Compositor::setLeftTextures(std::vector<uint64_t> hashes)
-{
-    std::sort(hashes.begin(), hashes.end());
-    hashes.erase(std::unique(hashes.begin(), hashes.end()), hashes.end());
-    mTracker.setLeftTextures(std::move(hashes));
-}
-
 void Compositor::endFrameCounts()
 {
     mLastFrameCounts = mFrameCounts;

@@ -69,11 +69,9 @@ public:
     // The object of the last flush under window pixel (x, y), y from the window's top: for
     // the overlay's pick. PickResult::texture's content hash in `textureHash`.
     PickResult pick(int x, int y, int windowHeight, uint64_t& textureHash) const;
-    // Rules (leave_texture): draws with a texture of these contents are left from now on.
-    void setLeftTextures(std::vector<uint64_t> hashes);
-    const std::vector<uint64_t>& leftTextures() const { return mTracker.leftTextures(); }
-    // Rules (leave_state): draws in these states (LeftState bits) are left from now on.
-    void setLeftStates(uint32_t states) { mTracker.setLeftStates(states); }
+    // Rules (leave_texture, leave_state): the draws they name are left from now on.
+    void setRules(LeaveRules rules) { mTracker.setRules(std::move(rules)); }
+    const LeaveRules& rules() const { return mTracker.rules(); }
     // The last frame's time in the compositor (reconstruction and styles), in ms.
     double lastFrameComposeMs() const { return mLastFrameComposeMs; }
     // A GL error of the program's that nprgl took while drawing its own things (the

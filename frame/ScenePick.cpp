@@ -1,5 +1,7 @@
 #include "frame/ScenePick.h"
 
+#include "frame/LeaveRules.h"
+
 #include <glm/glm.hpp>
 
 #include <cmath>
@@ -65,6 +67,7 @@ PickResult pickScene(const styles::Scene& scene, float x, float y)
             best.face = f;
             best.texture = faceTexture(o, f);
             best.faces = faces;
+            best.states = LeaveRules::statesOf(o);
         }
     }
     return best;

@@ -16,6 +16,7 @@ struct PickResult {
     uint32_t face = 0;    // in the object's mesh
     GLuint texture = 0;   // the face's texture (its run's, else the object's), 0: none
     uint32_t faces = 0;   // the object's face count
+    uint32_t states = 0;  // the draw states it was drawn in (LeftState bits)
 };
 
 // Projects every face of every object that draws colour (not depth-only ones) with its own

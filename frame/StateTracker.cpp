@@ -579,19 +579,18 @@ bool StateTracker::mayLayer(GLenum mode) const
 
 bool StateTracker::leftByRule() const
 {
-    if (mLeftStates) {
+    if (const uint32_t states = mRules.states) {
         const AttribState& a = mAttrib;
         const bool backdrop = !a.depthTest && mMatrices.projection()[3][3] == 0.0f;
-        if (((mLeftStates & kLeaveTranslucent) && translucent()) ||
-            ((mLeftStates & kLeaveCutout) && a.alphaTest) ||
-            ((mLeftStates & kLeaveDecal) && a.polygonOffsetFill) ||
-            ((mLeftStates & kLeaveBackdrop) && backdrop)) {
+        if (((states & kLeaveTranslucent) && translucent()) ||
+            ((states & kLeaveCutout) && a.alphaTest) ||
+            ((states & kLeaveDecal) && a.polygonOffsetFill) ||
+            ((states & kLeaveBackdrop) && backdrop)) {
             return true;
         }
     }
-    return !mLeftTextures.empty() && detailTexture() != 0 &&
-           std::binary_search(mLeftTextures.begin(), mLeftTextures.end(),
-                              textureHash(detailTexture()));
+    return !mRules.textures.empty() && detailTexture() != 0 &&
+           mRules.leavesTexture(textureHash(detailTexture()));
 }
 
 GLenum StateTracker::culledWinding() const

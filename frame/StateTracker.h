@@ -2,7 +2,7 @@
 
 #include "frame/AttribStack.h"
 #include "frame/ClientArrays.h"
-#include "frame/LeftState.h"
+#include "frame/LeaveRules.h"
 #include "frame/MatrixStacks.h"
 #include "frame/ShadowArrays.h"
 #include "reconstruct/Batch.h"
@@ -208,12 +208,14 @@ public:
     // XXH3 of a texture's level-0 image with its size and format (0: never uploaded here):
     // what names a texture across runs, where its GL name may differ.
     uint64_t textureHash(GLuint texture) const;
-    // Rules: draws on unit 0 with a texture of these contents are left as the program draws
-    // them (counted with their reason). Sorted.
-    void setLeftTextures(std::vector<uint64_t> hashes) { mLeftTextures = std::move(hashes); }
-    const std::vector<uint64_t>& leftTextures() const { return mLeftTextures; }
-    // Rules: draws in these states (LeftState bits) are left as the program draws them.
-    void setLeftStates(uint32_t states) { mLeftStates = states; }
+    // Rules: draws on unit 0 with a texture of these contents, and draws in these states, are
+    // left as the program draws them (counted with their reason).
+    void setRules(LeaveRules rules)
+    {
+        rules.normalise();
+        mRules = std::move(rules);
+    }
+    const LeaveRules& rules() const { return mRules; }
     void activeTexture(GLenum unit);
     void enableArray(GLenum cap, bool on);
     void clientActiveTexture(GLenum unit);
@@ -360,8 +362,7 @@ private:
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
     std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
-    std::vector<uint64_t> mLeftTextures;
-    uint32_t mLeftStates = 0;
+    LeaveRules mRules;
     size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;
     // While a list compiles: which current attributes the list sets itself (the others come

@@ -113,9 +113,9 @@ Config Config::fromEnvironment(bool reloading)
         for (const auto& [action, key] : file.keys) s.keys[action] = key;
         if (!file.cycle.empty()) s.cycle = file.cycle;
         if (!file.overlay.empty()) s.overlayOpen = file.overlay == "open";
-        s.leftTextures.insert(s.leftTextures.end(), file.leftTextures.begin(),
-                              file.leftTextures.end());
-        s.leftStates |= file.leftStates;
+        s.rules.textures.insert(s.rules.textures.end(), file.rules.textures.begin(),
+                                file.rules.textures.end());
+        s.rules.states |= file.rules.states;
     }
     if (!s.tried.empty()) {
         std::string read;
@@ -125,16 +125,14 @@ Config Config::fromEnvironment(bool reloading)
                   missing.empty() ? "" : " (not found: ", missing.c_str(),
                   missing.empty() ? "" : ")");
     }
-    std::sort(s.leftTextures.begin(), s.leftTextures.end());
-    s.leftTextures.erase(std::unique(s.leftTextures.begin(), s.leftTextures.end()),
-                         s.leftTextures.end());
-    if (!s.leftTextures.empty()) {
+    s.rules.normalise();
+    if (!s.rules.textures.empty()) {
         NPRGL_LOG(said, "rules: %zu texture(s) left as the program draws them",
-                  s.leftTextures.size());
+                  s.rules.textures.size());
     }
-    if (s.leftStates) {
-        NPRGL_LOG(said, "rules: draws in %d state(s) left as the program draws them",
-                  std::popcount(s.leftStates));
+    if (s.rules.states) {
+        NPRGL_LOG(said, "rules: draws %s left as the program draws them",
+                  LeaveRules::stateNames(s.rules.states, " or ").c_str());
     }
     // The environment (and so the command line) over the files.
     std::string error;

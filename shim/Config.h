@@ -4,6 +4,7 @@
 // screenshots, hotkeys), from the command line, the environment and the configuration files.
 
 #include "common/FrameSet.h"
+#include "frame/LeaveRules.h"
 #include "styles/StyleSettings.h"
 
 #include <cstdint>
@@ -24,8 +25,7 @@ struct Config {
     std::string hotkeyScreenshotDir;
     std::map<std::string, std::string> keys; // action -> key combination ("none": unbound)
     std::vector<std::string> cycle;           // chains and "preset:NAME"s the cycle key steps
-    std::vector<uint64_t> leftTextures; // leave_texture rules of the files read, sorted
-    uint32_t leftStates = 0;            // leave_state rules of the files read (LeftState bits)
+    LeaveRules rules;         // leave_texture and leave_state rules of the files read
     bool overlayOpen = false; // the overlay shows from the first frame (overlay=open, NPRGL_OVERLAY)
     std::vector<std::string> files;           // configuration files read, lowest first
     std::vector<std::string> tried;           // every path looked at (watched for changes)

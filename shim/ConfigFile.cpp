@@ -99,15 +99,15 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
             if (ec != std::errc() || end != value.data() + value.size() || hash == 0) {
                 skip("leave_texture: '" + value + "' is not a texture hash (16 hex digits)");
             } else {
-                out.leftTextures.push_back(hash);
+                out.rules.textures.push_back(hash);
             }
         } else if (key == "leave_state") {
-            const uint32_t bit = stateBit(value);
+            const uint32_t bit = LeaveRules::stateBit(value);
             if (!bit) {
                 skip("leave_state: '" + value +
                      "' is not a state (use translucent, cutout, decal or backdrop)");
             } else {
-                out.leftStates |= bit;
+                out.rules.states |= bit;
             }
         } else if (key == "screenshot_dir") {
             out.screenshotDir = value;
@@ -164,15 +164,6 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
     return out;
 }
 
-uint32_t ConfigFile::stateBit(const std::string& name)
-{
-    if (name == "translucent") return kLeaveTranslucent;
-    if (name == "cutout") return kLeaveCutout;
-    if (name == "decal") return kLeaveDecal;
-    if (name == "backdrop") return kLeaveBackdrop;
-    return 0;
-}
-
 std::string ConfigFile::hashText(uint64_t hash)
 {
     char text[17];
@@ -181,8 +172,7 @@ std::string ConfigFile::hashText(uint64_t hash)
 }
 
 bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
-                           const std::string& config, const std::vector<uint64_t>& leftTextures,
-                           std::string& error)
+                           const std::string& config, const LeaveRules& rules, std::string& error)
 {
     // Keep every line that is not the look (comments, keys, screenshot folder...).
     std::string kept;
@@ -195,6 +185,7 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
                 eq == std::string::npos ? std::string_view() : std::string_view(line).substr(0, eq);
             const std::string key(trimBlanks(name));
             const bool look = key == "style" || key == "preset" || key == "leave_texture" ||
+                              key == "leave_state" ||
                               StyleRegistry::instance().findParam(key) != nullptr;
             if (!look) kept += raw + "\n";
         }
@@ -203,7 +194,13 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
     KeyValueList pairs;
     if (!parseKeyValues(config, ',', pairs, error)) return false;
     for (const auto& [key, value] : pairs) text += key + "=" + value + "\n";
-    for (uint64_t hash : leftTextures) text += "leave_texture=" + hashText(hash) + "\n";
+    for (uint64_t hash : rules.textures)
+        text += "leave_texture=" + hashText(hash) + "\n";
+    for (uint32_t bit = 1; bit != 0 && bit <= rules.states; bit <<= 1) {
+        if (rules.states & bit) {
+            text += std::string("leave_state=") + LeaveRules::stateName(bit) + "\n";
+        }
+    }
 
     std::error_code ec;
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);

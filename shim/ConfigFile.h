@@ -2,7 +2,7 @@
 
 // ConfigFile: what one configuration file (nprgl.conf, <program>.conf) says, line by line.
 
-#include "frame/LeftState.h"
+#include "frame/LeaveRules.h"
 
 #include <cstdint>
 #include <map>
@@ -34,8 +34,7 @@ struct ConfigFile {
     std::map<std::string, std::string> keys; // "toggle", "cycle", ... -> key combination
     std::vector<std::string> cycle;
     std::string overlay; // overlay=open|closed: the overlay's state at start-up (empty: closed)
-    std::vector<uint64_t> leftTextures; // leave_texture=HASH lines (16 hex digits), in order
-    uint32_t leftStates = 0;            // leave_state= lines (LeftState bits)
+    LeaveRules rules;    // leave_texture=HASH (16 hex digits, in order) and leave_state= lines
     std::vector<std::string> errors; // "file:line: message", one per skipped line
 
     // Reads the file at `path`; a file that does not exist is not an error (found = false).
@@ -43,14 +42,11 @@ struct ConfigFile {
     // Parses text; `origin` names it in messages.
     static ConfigFile parse(const std::string& text, const std::string& origin);
 
-    // Replaces the look (style=, preset=, every STYLE.PARAM and leave_texture line) in the
-    // file at `path` with `chain`, `config` ("key=value,...") and the rules, keeping its other
-    // lines; creates the file (and its folder) when missing.
+    // Replaces the look (style=, preset=, every STYLE.PARAM, leave_texture and leave_state
+    // line) in the file at `path` with `chain`, `config` ("key=value,...") and the rules,
+    // keeping its other lines; creates the file (and its folder) when missing.
     static bool writeLook(const std::string& path, const std::string& chain,
-                          const std::string& config, const std::vector<uint64_t>& leftTextures,
-                          std::string& error);
-    // A leave_state name's LeftState bit (0: not a state name).
-    static uint32_t stateBit(const std::string& name);
+                          const std::string& config, const LeaveRules& rules, std::string& error);
     // A texture rule's hash as the files write it: 16 hex digits.
     static std::string hashText(uint64_t hash);
 

@@ -61,8 +61,7 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Con
     if (styled) {
         mCompositor = std::make_unique<Compositor>(*this, *mRecorder);
         mCompositor->install(mDispatch);
-        mCompositor->setLeftTextures(mConfig.leftTextures);
-        mCompositor->setLeftStates(mConfig.leftStates);
+        mCompositor->setRules(mConfig.rules);
     }
     mFinish = mDispatch.glFinish;
     if (ws == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
@@ -264,8 +263,7 @@ void Context::followConfig()
         return;
     }
     mCompositor->restyle(current->style);
-    mCompositor->setLeftTextures(current->leftTextures);
-    mCompositor->setLeftStates(current->leftStates);
+    mCompositor->setRules(current->rules);
 }
 
 void Context::writeScreenshot(int width, int height)

@@ -193,17 +193,17 @@ void Overlay::draw(Compositor& compositor, _XDisplay* display, Window window, in
     if (mPanel.picking() && ImGui::IsMouseClicked(0) && !io.WantCaptureMouse) {
         uint64_t hash = 0;
         const PickResult hit = compositor.pick(int(pointer.x), int(pointer.y), height, hash);
-        mPanel.picked(hit.hit ? hit.object : 0, hit.faces, hit.texture, hash);
+        mPanel.picked(hit, hash);
     }
-    OverlayPanel::Changes changes = mPanel.build(compositor.settings(), compositor.enabled(),
-                                                 compositor.leftTextures(), figures);
+    OverlayPanel::Changes changes =
+        mPanel.build(compositor.settings(), compositor.enabled(), compositor.rules(), figures);
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
     endGl(compositor);
 
     if (changes.toggle) compositor.setEnabled(!compositor.enabled());
     if (changes.restyle) compositor.restyle(changes.settings, false);
-    if (changes.rules) compositor.setLeftTextures(std::move(changes.leftTextures));
+    if (changes.rules) compositor.setRules(std::move(changes.leave));
 }
 
 void Overlay::pollKeyboard(_XDisplay* display)

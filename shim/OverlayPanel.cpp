@@ -92,8 +92,7 @@ std::string OverlayPanel::configText() const
 }
 
 OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool styled,
-                                          const std::vector<uint64_t>& leftTextures,
-                                          const OverlayFigures& figures)
+                                          const LeaveRules& rules, const OverlayFigures& figures)
 {
     follow(running);
     Changes changes;
@@ -110,10 +109,10 @@ OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool sty
     ImGui::SameLine();
     ImGui::Text("frame %.1f ms, nprgl %.1f ms", figures.frameMs, figures.composeMs);
     // The controls first, at places that do not move with the figures below them.
-    changes.rules = pickRows(leftTextures, changes.leftTextures);
+    changes.rules = pickRows(rules, changes.leave);
     bool edited = presetRow();
     ImGui::SameLine();
-    saveButton(changes.rules ? changes.leftTextures : leftTextures);
+    saveButton(changes.rules ? changes.leave : rules);
     if (!mSaved.empty()) ImGui::TextWrapped("%s", mSaved.c_str());
     if (figures.counts) {
         ImGui::TextWrapped("3D draws: %s", figures.counts->describe().c_str());
@@ -306,64 +305,88 @@ bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param)
     return changed;
 }
 
-void OverlayPanel::picked(uint32_t object, uint32_t faces, GLuint texture, uint64_t textureHash)
+void OverlayPanel::picked(const PickResult& hit, uint64_t textureHash)
 {
-    mPickedHash = textureHash;
-    char text[160];
-    if (object == 0) {
+    mPickedHash = hit.hit ? textureHash : 0;
+    mPickedStates = hit.hit ? hit.states : 0;
+    // The states first: the line is cut at the panel's edge, and a hash is long.
+    const std::string states = mPickedStates ? LeaveRules::stateNames(mPickedStates) + ", " : "";
+    char text[200];
+    if (!hit.hit) {
         std::snprintf(text, sizeof text, "nothing nprgl styles there");
-    } else if (texture == 0) {
-        std::snprintf(text, sizeof text, "object %u (%u faces), untextured: rules go by texture",
-                      object, faces);
+    } else if (hit.texture == 0) {
+        std::snprintf(text, sizeof text, "object %u (%u faces), %suntextured", hit.object,
+                      hit.faces, states.c_str());
     } else if (textureHash == 0) {
         std::snprintf(text, sizeof text,
-                      "object %u (%u faces), texture %u: its content was not seen uploaded", object,
-                      faces, texture);
+                      "object %u (%u faces), %stexture %u: its content was not seen uploaded",
+                      hit.object, hit.faces, states.c_str(), hit.texture);
     } else {
-        std::snprintf(text, sizeof text, "object %u (%u faces), texture %u = %s", object, faces,
-                      texture, ConfigFile::hashText(textureHash).c_str());
+        std::snprintf(text, sizeof text, "object %u (%u faces), %stexture %u = %s", hit.object,
+                      hit.faces, states.c_str(), hit.texture,
+                      ConfigFile::hashText(textureHash).c_str());
     }
     mPick = text;
     NPRGL_INFO("overlay: picked %s", text);
 }
 
-bool OverlayPanel::pickRows(const std::vector<uint64_t>& leftTextures, std::vector<uint64_t>& next)
+bool OverlayPanel::pickRows(const LeaveRules& rules, LeaveRules& next)
 {
     ImGui::Checkbox("pick", &mPicking);
     noteItem("pick");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("then click an object of the program");
-    const bool left = mPickedHash != 0 &&
-                      std::binary_search(leftTextures.begin(), leftTextures.end(), mPickedHash);
     bool changed = false;
+    // A button that edits the rules, disabled where it would change nothing.
+    auto ruleButton = [&](const char* label, bool enabled, auto edit) {
+        ImGui::BeginDisabled(!enabled);
+        if (ImGui::Button(label)) {
+            next = rules;
+            edit(next);
+            changed = true;
+        }
+        noteItem(label);
+        ImGui::EndDisabled();
+    };
+    const bool textureLeft = rules.leavesTexture(mPickedHash);
     ImGui::SameLine();
-    ImGui::BeginDisabled(mPickedHash == 0 || left);
-    if (ImGui::Button("leave texture")) {
-        next = leftTextures;
-        next.insert(std::upper_bound(next.begin(), next.end(), mPickedHash), mPickedHash);
-        changed = true;
+    ruleButton("leave texture", mPickedHash != 0 && !textureLeft, [&](LeaveRules& r) {
+        r.textures.push_back(mPickedHash);
+        r.normalise();
         NPRGL_INFO("overlay: rule: leave texture %s", ConfigFile::hashText(mPickedHash).c_str());
-    }
-    noteItem("leave texture");
-    ImGui::EndDisabled();
+    });
     ImGui::SameLine();
-    ImGui::BeginDisabled(!left);
-    if (ImGui::Button("style texture")) {
-        next = leftTextures;
-        next.erase(std::remove(next.begin(), next.end(), mPickedHash), next.end());
-        changed = true;
+    ruleButton("style texture", textureLeft, [&](LeaveRules& r) {
+        std::erase(r.textures, mPickedHash);
         NPRGL_INFO("overlay: rule: style texture %s", ConfigFile::hashText(mPickedHash).c_str());
-    }
-    noteItem("style texture");
-    ImGui::EndDisabled();
+    });
     ImGui::SameLine();
-    ImGui::TextDisabled("%zu rule%s", leftTextures.size(), leftTextures.size() == 1 ? "" : "s");
+    ImGui::TextDisabled("%zu rule%s", rules.count(), rules.count() == 1 ? "" : "s");
+    // A state rule leaves every draw in any of the picked object's states (for a translucent
+    // decal: every translucent draw and every decal), as leave_state lines do.
+    const std::string names = LeaveRules::stateNames(mPickedStates, " or ");
+    ruleButton("leave state", (mPickedStates & ~rules.states) != 0, [&](LeaveRules& r) {
+        r.states |= mPickedStates;
+        NPRGL_INFO("overlay: rule: leave state %s", names.c_str());
+    });
+    if (mPickedStates && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::SetTooltip("leave every draw that is %s as the program draws it", names.c_str());
+    }
+    ImGui::SameLine();
+    ruleButton("style state", (mPickedStates & rules.states) != 0, [&](LeaveRules& r) {
+        r.states &= ~mPickedStates;
+        NPRGL_INFO("overlay: rule: style state %s", names.c_str());
+    });
+    ImGui::SameLine();
+    ImGui::TextDisabled("left: %s",
+                        rules.states ? LeaveRules::stateNames(rules.states).c_str() : "none");
     // One line, always there: the rows below keep their places (the tests click them).
-    ImGui::TextDisabled("%s", mPick.empty() ? "pick, then click an object: rules by texture"
+    ImGui::TextDisabled("%s", mPick.empty() ? "pick, then click an object: rules by its texture "
+                                              "or its state"
                                             : mPick.c_str());
     return changed;
 }
 
-void OverlayPanel::saveButton(const std::vector<uint64_t>& leftTextures)
+void OverlayPanel::saveButton(const LeaveRules& rules)
 {
     if (mProgramFile.empty()) {
         ImGui::TextDisabled("(no config folder)");
@@ -374,7 +397,7 @@ void OverlayPanel::saveButton(const std::vector<uint64_t>& leftTextures)
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("write this look to %s", mProgramFile.c_str());
     if (!clicked) return;
     std::string error;
-    if (ConfigFile::writeLook(mProgramFile, chainText(), configText(), leftTextures, error)) {
+    if (ConfigFile::writeLook(mProgramFile, chainText(), configText(), rules, error)) {
         mSaved = "saved to " + mProgramFile;
         NPRGL_INFO("overlay: %s: style=%s %s", mSaved.c_str(), chainText().c_str(),
                    configText().c_str());

@@ -3,6 +3,8 @@
 // OverlayPanel: the overlay's window: chain, parameters, presets, coverage and frame times.
 
 #include "frame/DrawCounts.h"
+#include "frame/LeaveRules.h"
+#include "frame/ScenePick.h"
 #include "styles/StyleSettings.h"
 
 #include <GL/gl.h>
@@ -34,16 +36,16 @@ public:
         bool restyle = false; // run `settings` from the next frame
         StyleSettings settings;
         bool toggle = false; // styling on/off
-        bool rules = false;  // leave `leftTextures` from the next frame
-        std::vector<uint64_t> leftTextures;
+        bool rules = false;  // run `leave` from the next frame
+        LeaveRules leave;
     };
-    // `leftTextures`: the rules the compositor runs (sorted).
-    Changes build(const StyleSettings& running, bool styled,
-                  const std::vector<uint64_t>& leftTextures, const OverlayFigures& figures);
+    // `rules`: the rules the compositor runs.
+    Changes build(const StyleSettings& running, bool styled, const LeaveRules& rules,
+                  const OverlayFigures& figures);
     // Pick mode is on: the next click off the panel picks the object under it.
     bool picking() const { return mPicking; }
-    // What the click picked: an object (0: none) and its face's texture's content hash.
-    void picked(uint32_t object, uint32_t faces, GLuint texture, uint64_t textureHash);
+    // What the click picked (an object or none), its face's texture's content hash.
+    void picked(const PickResult& hit, uint64_t textureHash);
     // The next build() logs its items' rectangles (at debug level).
     void noteLayout();
 
@@ -53,8 +55,8 @@ private:
     bool presetRow();
     bool paramRows(const StyleInfo& style);
     bool paramRow(const std::string& key, const ParamInfo& param);
-    void saveButton(const std::vector<uint64_t>& leftTextures);
-    bool pickRows(const std::vector<uint64_t>& leftTextures, std::vector<uint64_t>& next);
+    void saveButton(const LeaveRules& rules);
+    bool pickRows(const LeaveRules& rules, LeaveRules& next);
     // With noteLayout(): logs (debug) where an item is, for tests that click it with XTEST.
     void noteItem(const std::string& id) const;
     std::string chainText() const;
@@ -74,6 +76,7 @@ private:
     bool mPicking = false;
     std::string mPick;        // what the last pick found, as shown
     uint64_t mPickedHash = 0; // its texture's content hash (0: untextured or unknown)
+    uint32_t mPickedStates = 0; // the states it was drawn in (LeftState bits)
 };
 
 } // namespace nprgl

@@ -92,9 +92,31 @@ TEST(ConfigFile, StateRulesNameTheirStates)
                                            "leave_state=glowing\n"
                                            "leave_state=backdrop\n",
                                            "rules.conf");
-    EXPECT_EQ(f.leftStates, uint32_t(kLeaveTranslucent | kLeaveBackdrop));
+    EXPECT_EQ(f.rules.states, uint32_t(kLeaveTranslucent | kLeaveBackdrop));
     ASSERT_EQ(f.errors.size(), 1u);
     EXPECT_EQ(f.errors[0].rfind("rules.conf:2: leave_state: 'glowing'", 0), 0u) << f.errors[0];
+}
+
+// Saving a look replaces the old rules with the new ones (texture and state), keeps the other
+// lines, and what it writes reads back as the same rules.
+TEST(ConfigFile, SavedRulesReadBackAndReplaceTheOldOnes)
+{
+    const std::string path = freshDir("write_look") + "/p.conf";
+    {
+        std::ofstream out(path);
+        out << "# mine\nleave_state=cutout\nleave_texture=00000000000000aa\nlog_level=warn\n";
+    }
+    LeaveRules rules;
+    rules.textures = {0x1234, 0xbeef};
+    rules.states = kLeaveDecal | kLeaveTranslucent;
+    std::string error;
+    ASSERT_TRUE(ConfigFile::writeLook(path, "toon", "toon.diffuse_threshold=0.7", rules, error))
+        << error;
+    const ConfigFile f = ConfigFile::read(path);
+    EXPECT_TRUE(f.errors.empty());
+    EXPECT_EQ(f.rules, rules);
+    EXPECT_EQ(f.logLevel, "warn");
+    EXPECT_EQ(f.chain, "toon");
 }
 
 TEST(ConfigFile, APresetLineGivesItsChainAndValuesUnderTheFilesOwn)
@@ -409,19 +431,21 @@ TEST(Overlay, ASliderDragRestylesTheProgramAndSaveKeepsIt)
         << stderrOf(next);
 }
 
-// Pick (a click on the program's textured poster with the overlay's pick on), "leave texture",
-// "save": the poster is drawn as the program draws it from then on, the cube still styled,
-// and the rule (leave_texture=HASH, by the texture's content) holds at the next start.
-TEST(Overlay, APickedTextureIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
+// probe_hotkeys' poster, in window pixels of kOverlaySize (both axes).
+constexpr int kPosterLo = 470, kPosterHi = 580;
+
+// With the overlay open on probe_hotkeys' poster (`poster`: --textured or --decal): "pick", a
+// click on the poster, `button` (a rule), "save". Returns the run; `home` is its config folder.
+std::string pickPosterAndSave(const std::string& name, const std::string& poster,
+                              const std::string& button, const std::string& home)
 {
-    const std::vector<std::string> toon = {nprglCommand(), "--style", "toon"};
     const std::string layout = runHotkeys(
-        "rule_layout", {nprglCommand(), "--style", "toon", "--log-level", "debug"},
-        {"--size", kOverlaySize, "--frames", "3", "--textured"}, "3", {{"NPRGL_OVERLAY", "open"}});
+        name + "_layout", {nprglCommand(), "--style", "toon", "--log-level", "debug"},
+        {"--size", kOverlaySize, "--frames", "3", poster}, "3", {{"NPRGL_OVERLAY", "open"}});
     const ItemRect pick = itemAt(stderrOf(layout), "pick");
-    const ItemRect leave = itemAt(stderrOf(layout), "leave texture");
+    const ItemRect leave = itemAt(stderrOf(layout), button);
     const ItemRect save = itemAt(stderrOf(layout), "save");
-    ASSERT_GT(pick.w * leave.w * save.w, 0) << stderrOf(layout);
+    EXPECT_GT(pick.w * leave.w * save.w, 0) << stderrOf(layout);
     auto centre = [](const ItemRect& r) {
         return std::vector<std::string>{std::to_string(r.x + r.w / 2),
                                         std::to_string(r.y + r.h / 2)};
@@ -429,7 +453,7 @@ TEST(Overlay, APickedTextureIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
     auto at = [](int frame, const std::vector<std::string>& xy) {
         return std::vector<std::string>{"--pointer", std::to_string(frame), xy[0], xy[1]};
     };
-    std::vector<std::string> args = {"--size", kOverlaySize, "--frames", "16", "--textured"};
+    std::vector<std::string> args = {"--size", kOverlaySize, "--frames", "16", poster};
     for (const auto& step : {at(3, centre(pick)), at(6, {"525", "525"}),
                              at(9, centre(leave)), at(12, centre(save)), at(15, {"590", "10"})}) {
         args.insert(args.end(), step.begin(), step.end());
@@ -438,35 +462,53 @@ TEST(Overlay, APickedTextureIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
         args.insert(args.end(), {"--button", std::to_string(down), "down", "--button",
                                  std::to_string(down + 1), "up"});
     }
+    return runHotkeys(name + "_run", {nprglCommand(), "--style", "toon"}, args, "15",
+                      {{"NPRGL_OVERLAY", "open"}, {"XDG_CONFIG_HOME", home}});
+}
+
+// The poster (lower right) of `ruled` and of a next start with the config folder `home` is
+// drawn as the program draws it; the cube (right of the overlay, above the poster) is styled.
+void expectPosterLeft(const std::string& name, const std::string& poster,
+                      const std::string& ruled, const std::string& home)
+{
+    const std::vector<std::string> toon = {nprglCommand(), "--style", "toon"};
+    const std::vector<std::string> plain = {"--size", kOverlaySize, "--frames", "16", poster};
+    const std::string native =
+        runHotkeys(name + "_native", {nprglCommand(), "--style", "none"}, plain, "15");
+    const std::string styled = runHotkeys(name + "_styled", toon, plain, "15");
+    const std::string next =
+        runHotkeys(name + "_next", toon, plain, "15", {{"XDG_CONFIG_HOME", home}});
+    const int p0 = kPosterLo, p1 = kPosterHi;
+    EXPECT_GT(differingIn(shot(styled, 15), shot(native, 15), p0, p0, p1, p1), 500)
+        << "the style does not change the poster: the test cannot tell";
+    EXPECT_EQ(differingIn(shot(ruled, 15), shot(native, 15), p0, p0, p1, p1), 0);
+    EXPECT_EQ(differingIn(shot(next, 15), shot(native, 15), p0, p0, p1, p1), 0);
+    EXPECT_EQ(differingIn(shot(ruled, 15), shot(styled, 15), 372, 0, 600, 460), 0);
+    EXPECT_EQ(differingIn(shot(next, 15), shot(styled, 15), 372, 0, 600, 460), 0);
+}
+
+std::string savedRules(const std::string& home)
+{
+    std::ifstream file(home + "/nprgl/probe_hotkeys.conf");
+    return {std::istreambuf_iterator<char>(file), {}};
+}
+
+// Pick (a click on the program's textured poster with the overlay's pick on), "leave texture",
+// "save": the poster is drawn as the program draws it from then on, the cube still styled,
+// and the rule (leave_texture=HASH, by the texture's content) holds at the next start.
+TEST(Overlay, APickedTextureIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
+{
     const std::string home = freshDir("rule_home");
-    const std::string ruled = runHotkeys("rule_run", toon, args, "15",
-                                         {{"NPRGL_OVERLAY", "open"}, {"XDG_CONFIG_HOME", home}});
+    const std::string ruled = pickPosterAndSave("rule", "--textured", "leave texture", home);
     const std::string log = stderrOf(ruled);
     EXPECT_NE(log.find("overlay: picked object"), std::string::npos) << log;
     const size_t rule = log.find("overlay: rule: leave texture ");
     ASSERT_NE(rule, std::string::npos) << log;
     const std::string hash = log.substr(rule + 29, 16);
-    std::ifstream file(home + "/nprgl/probe_hotkeys.conf");
-    const std::string saved{std::istreambuf_iterator<char>(file), {}};
-    EXPECT_NE(saved.find("leave_texture=" + hash + "\n"), std::string::npos) << saved << log;
-
-    const std::vector<std::string> plain = {"--size", kOverlaySize, "--frames", "16",
-                                            "--textured"};
-    const std::string native =
-        runHotkeys("rule_native", {nprglCommand(), "--style", "none"}, plain, "15");
-    const std::string styled = runHotkeys("rule_styled", toon, plain, "15");
-    const std::string next = runHotkeys("rule_next", toon, plain, "15",
-                                        {{"XDG_CONFIG_HOME", home}});
-    // The poster (lower right): styled unless the rule leaves it.
-    const int p0 = 470, p1 = 580;
-    EXPECT_GT(differingIn(shot(styled, 15), shot(native, 15), p0, p0, p1, p1), 500)
-        << "the style does not change the poster: the test cannot tell";
-    EXPECT_EQ(differingIn(shot(ruled, 15), shot(native, 15), p0, p0, p1, p1), 0);
-    EXPECT_EQ(differingIn(shot(next, 15), shot(native, 15), p0, p0, p1, p1), 0);
-    // The cube, right of the overlay and above the poster: still styled.
-    EXPECT_EQ(differingIn(shot(ruled, 15), shot(styled, 15), 372, 0, 600, 460), 0);
-    EXPECT_EQ(differingIn(shot(next, 15), shot(styled, 15), 372, 0, 600, 460), 0);
-    EXPECT_NE(stderrOf(next).find("leave_texture"), std::string::npos) << stderrOf(next);
+    EXPECT_NE(savedRules(home).find("leave_texture=" + hash + "\n"), std::string::npos)
+        << savedRules(home) << log;
+    expectPosterLeft("rule", "--textured", ruled, home);
+    const int p0 = kPosterLo, p1 = kPosterHi;
 
     // And in a replay of a recording, given the program's file (nprgl replay --rules).
     const std::string dir = freshDir("rule_replay");
@@ -494,6 +536,22 @@ TEST(Overlay, APickedTextureIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
     EXPECT_GT(differingIn(toonReplay, none, p0, p0, p1, p1), 500);
     EXPECT_EQ(differingIn(ruledReplay, none, p0, p0, p1, p1), 0);
     EXPECT_EQ(differingIn(ruledReplay, toonReplay, 0, 0, 600, 460), 0);
+}
+
+// The same with the poster drawn as a decal (polygon offset) and "leave state": the pick says
+// the poster is a decal, the rule leaves decals (leave_state=decal), now and at the next start.
+TEST(Overlay, APickedDrawStateIsLeftAsTheProgramDrawsItAndTheRuleIsKept)
+{
+    const std::string home = freshDir("state_rule_home");
+    const std::string ruled = pickPosterAndSave("state_rule", "--decal", "leave state", home);
+    const std::string log = stderrOf(ruled);
+    EXPECT_NE(log.find("overlay: picked object"), std::string::npos) << log;
+    EXPECT_NE(log.find(" faces), decal, texture "), std::string::npos) << log;
+    EXPECT_NE(log.find("overlay: rule: leave state decal\n"), std::string::npos) << log;
+    EXPECT_NE(savedRules(home).find("leave_state=decal\n"), std::string::npos)
+        << savedRules(home) << log;
+    EXPECT_EQ(savedRules(home).find("leave_texture"), std::string::npos) << savedRules(home);
+    expectPosterLeft("state_rule", "--decal", ruled, home);
 }
 
 // The keyboard reaches the overlay too (polled, as the pointer): Ctrl+click on a slider and

@@ -3,7 +3,8 @@
 // up at the start of frame K+1), moving the pointer (--pointer K X Y, window pixels) and
 // pressing or letting go of the left button (--button K down|up) at the start of frame K,
 // as a user would: the hotkey and overlay tests, counted in frames. --textured adds a
-// textured poster in front of the cube, in the window's lower right corner.
+// textured poster in front of the cube, in the window's lower right corner; --decal draws it
+// with a polygon offset (a decal, for state rules).
 #include "tests/probes/ProbeCube.h"
 #include "tests/probes/ProbeTexture.h"
 
@@ -59,8 +60,12 @@ GLuint makePosterTexture()
 }
 
 // In front of the cube (z = -2.2; the cube's nearest corner is at -2.27), unlit, textured.
-void drawPoster(GLuint texture)
+void drawPoster(GLuint texture, bool decal)
 {
+    if (decal) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(-1.0f, -1.0f);
+    }
     glDisable(GL_LIGHTING);
     glEnable(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, texture);
@@ -77,6 +82,7 @@ void drawPoster(GLuint texture)
     glVertex3f(0.8f, -0.8f, -2.2f);
     glEnd();
     glDisable(GL_TEXTURE_2D);
+    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 } // namespace
@@ -86,13 +92,15 @@ int main(int argc, char** argv)
     int frames = 4;
     int size = 128;
     bool textured = false;
+    bool decal = false;
     std::map<int, std::string> presses;
     std::map<int, std::pair<int, int>> pointer;
     std::map<int, bool> buttons;
     for (int i = 1; i < argc; i += 2) {
         const std::string option = argv[i];
-        if (option == "--textured") {
+        if (option == "--textured" || option == "--decal") {
             textured = true;
+            decal = decal || option == "--decal";
             --i;
         } else if (i + 1 >= argc) {
             std::fprintf(stderr, "probe_hotkeys: %s needs a value\n", argv[i]);
@@ -162,7 +170,7 @@ int main(int argc, char** argv)
             XSync(dpy, False);
         }
         nprgl::probes::drawCube(frame);
-        if (textured) drawPoster(poster);
+        if (textured) drawPoster(poster, decal);
         glXSwapBuffers(dpy, window);
     }
     if (!held.empty()) setKeys(dpy, held, false);
