@@ -369,6 +369,41 @@ TEST(Edges, SeamsBetweenPiecesOfOneSurfaceAreNotInked)
     }
 }
 
+// A part that covers one pixel (a sliver of one object poking through another, a detail
+// smaller than a pixel) gets no outline: around one pixel the line would be a cross of ink five
+// pixels big. A part a few pixels big still gets its outline.
+TEST(Edges, AnObjectOfOnePixelGetsNoOutline)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    // World units per pixel at eye distance d; a box centred on pixel (px, py) from the centre.
+    const float d = 5.0f;
+    const float perPixel = 2.0f * d * std::tan(glm::radians(kFov) * 0.5f) / float(kSize);
+    auto boxOnPixel = [&](int px, int py, float pixels) {
+        const glm::vec3 at((float(px) + 0.5f) * perPixel, (float(py) + 0.5f) * perPixel, -d);
+        return boxBatch(glm::translate(glm::mat4(1.0f), at), glm::vec3(0.4f * perPixel * pixels),
+                        kPale);
+    };
+    const reconstruct::Batch wall =
+        boxBatch(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance)),
+                 glm::vec3(1.2f, 1.2f, 0.2f), kRed);
+    auto scene = harness.makeScene({wall, boxOnPixel(-20, 0, 1.0f), boxOnPixel(20, 0, 6.0f)},
+                                   perspective());
+    const PngImage image = render(harness, scene, "toon+edges", "", "edges_one_pixel");
+    const glm::vec2 centre(kSize * 0.5f, kSize * 0.5f);
+    auto inkAround = [&](int px) {
+        int n = 0;
+        for (int dy = -6; dy <= 6; ++dy) {
+            for (int dx = -6; dx <= 6; ++dx) {
+                n += isInk(image, int(centre.x) + px + dx, kSize - 1 - (int(centre.y) + dy));
+            }
+        }
+        return n;
+    };
+    EXPECT_EQ(inkAround(-20), 0);
+    EXPECT_GT(inkAround(20), 12);
+}
+
 // A beam reaching from behind the eye into the distance (a corridor wall, a rail) is outlined
 // all along its visible part: the passes cover the box as GL clips it at the near plane, not
 // just its corners in front. It enters the view at the left border and runs to the middle.

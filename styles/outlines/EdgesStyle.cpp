@@ -98,46 +98,58 @@ vec3 unpackNormal(uint w)
     return vec3(uvec3(w, w >> 10, w >> 20) & 1023u) * (2.0 / 1023.0) - 1.0;
 }
 
-void compare(uvec4 c, vec3 n, vec3 colour, uvec4 s, inout vec3 found, inout float nearest)
+// The line classes between pixel c and its neighbour s: r silhouette, g crease, b material.
+vec3 classify(uvec4 c, uvec4 s)
 {
-    if (c.x == 0u && s.x == 0u) return;
+    if (c.x == 0u && s.x == 0u) return vec3(0.0);
     if (c.x == 0u || s.x == 0u || float(max(s.x, c.x) - min(s.x, c.x)) > depthStep) {
-        found.r = 1.0;
-        nearest = min(nearest, windowDepth(s.y));
-        return;
+        return vec3(1.0, 0.0, 0.0);
     }
     // Another object continuing the same surface in the same colour (a tube drawn in
     // segments, a floor in tiles) is no edge unless seams are asked for; where it turns or
     // changes colour it is a material edge.
     bool otherObject = (((s.y ^ c.y) | (s.z ^ c.z)) >> 24) != 0u;
-    bool otherColour = any(greaterThan(abs(unpackColour(s.z) - colour), vec3(colourThreshold)));
-    bool turns = dot(n, unpackNormal(s.w)) < creaseCosine;
-    if (otherColour || (otherObject && (objectSeams || turns))) {
-        found.b = 1.0;
-    } else if (turns) {
-        found.g = 1.0;
-    }
+    bool otherColour =
+        any(greaterThan(abs(unpackColour(s.z) - unpackColour(c.z)), vec3(colourThreshold)));
+    bool turns = dot(unpackNormal(c.w), unpackNormal(s.w)) < creaseCosine;
+    if (otherColour || (otherObject && (objectSeams || turns))) return vec3(0.0, 0.0, 1.0);
+    return turns ? vec3(0.0, 1.0, 0.0) : vec3(0.0);
 }
 
+bool differs(uvec4 a, uvec4 b) { return classify(a, b) != vec3(0.0); }
+
+uvec4 at(ivec2 q) { return texelFetch(attributes, clamp(q, rect.xy, rect.zw), 0); }
+
 // Line classes starting at p (r silhouette, g crease, b material); a the window depth of the
-// nearest side; own: p's window depth (1 for the background).
+// nearest side; own: p's window depth (1 for the background). A speck, one pixel unlike its
+// four neighbours (a sliver of a surface poking through another, a part smaller than a
+// pixel), draws no line: its outline would be a cross of ink bigger than the thing itself.
+// Whether a and b belong to different objects (the background is object 0): the speck test
+// below. Not by depth: at a grazing silhouette one surface's neighbouring pixels jump in depth.
+bool apart(uvec4 a, uvec4 b) { return (((a.y ^ b.y) | (a.z ^ b.z)) >> 24) != 0u; }
+
 vec4 detect(ivec2 p, out float own)
 {
-    uvec4 c = texelFetch(attributes, p, 0);
-    uvec4 e = texelFetch(attributes, ivec2(min(p.x + 1, rect.z), p.y), 0);
-    uvec4 w = texelFetch(attributes, ivec2(max(p.x - 1, rect.x), p.y), 0);
-    uvec4 n = texelFetch(attributes, ivec2(p.x, min(p.y + 1, rect.w)), 0);
-    uvec4 s = texelFetch(attributes, ivec2(p.x, max(p.y - 1, rect.y)), 0);
-    vec3 normal = unpackNormal(c.w);
-    vec3 colour = unpackColour(c.z);
-    vec3 found = vec3(0.0);
+    uvec4 c = at(p);
+    uvec4 e = at(p + ivec2(1, 0)), w = at(p - ivec2(1, 0));
+    uvec4 n = at(p + ivec2(0, 1)), s = at(p - ivec2(0, 1));
+    vec3 ce = classify(c, e), cw = classify(c, w), cn = classify(c, n), cs = classify(c, s);
     own = windowDepth(c.y);
+    // A speck (p, or the neighbour a line would be drawn against) is of another object than
+    // all four of its neighbours.
+    if (apart(c, e) && apart(c, w) && apart(c, n) && apart(c, s)) return vec4(vec3(0.0), own);
+    uvec4 ne = at(p + ivec2(1, 1)), nw = at(p + ivec2(-1, 1));
+    uvec4 se = at(p + ivec2(1, -1)), sw = at(p + ivec2(-1, -1));
+    if (apart(e, c) && apart(e, at(p + ivec2(2, 0))) && apart(e, ne) && apart(e, se)) ce = vec3(0.0);
+    if (apart(w, c) && apart(w, at(p - ivec2(2, 0))) && apart(w, nw) && apart(w, sw)) cw = vec3(0.0);
+    if (apart(n, c) && apart(n, at(p + ivec2(0, 2))) && apart(n, ne) && apart(n, nw)) cn = vec3(0.0);
+    if (apart(s, c) && apart(s, at(p - ivec2(0, 2))) && apart(s, se) && apart(s, sw)) cs = vec3(0.0);
     float nearest = own;
-    compare(c, normal, colour, e, found, nearest);
-    compare(c, normal, colour, w, found, nearest);
-    compare(c, normal, colour, n, found, nearest);
-    compare(c, normal, colour, s, found, nearest);
-    return vec4(found, nearest);
+    if (ce.r > 0.0) nearest = min(nearest, windowDepth(e.y));
+    if (cw.r > 0.0) nearest = min(nearest, windowDepth(w.y));
+    if (cn.r > 0.0) nearest = min(nearest, windowDepth(n.y));
+    if (cs.r > 0.0) nearest = min(nearest, windowDepth(s.y));
+    return vec4(max(max(ce, cw), max(cn, cs)), nearest);
 }
 )";
 
