@@ -39,6 +39,8 @@ void AttribStack::pop()
         a.materialDiffuse = saved.materialDiffuse;
         a.lightPosition = saved.lightPosition;
         a.lightDiffuse = saved.lightDiffuse;
+        a.lightAmbient = saved.lightAmbient;
+        a.modelAmbient = saved.modelAmbient;
     }
     if (mask & GL_DEPTH_BUFFER_BIT) {
         a.depthTest = saved.depthTest;

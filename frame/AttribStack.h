@@ -45,6 +45,9 @@ struct AttribState {
     // GL's defaults, white for light 0 and black for the others.
     std::array<glm::vec4, 8> lightPosition = defaultPositions();
     std::array<glm::vec3, 8> lightDiffuse = defaultDiffuse();
+    // GL_AMBIENT of each light (black by default) and GL_LIGHT_MODEL_AMBIENT.
+    std::array<glm::vec3, 8> lightAmbient{};
+    glm::vec3 modelAmbient{0.2f};
 
     static std::array<glm::vec4, 8> defaultPositions()
     {

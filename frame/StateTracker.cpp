@@ -242,9 +242,21 @@ void APIENTRY tRects(GLshort a, GLshort b, GLshort c, GLshort d)
 void APIENTRY tLightfv(GLenum light, GLenum pname, const GLfloat* v) { T().light(light, pname, v); }
 void APIENTRY tLightiv(GLenum light, GLenum pname, const GLint* v)
 {
+    // Integer colours map their range onto -1..1; positions and the rest are taken as they are.
+    const bool colour = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
     float f[4] = {0, 0, 0, 0};
-    for (size_t i = 0; i < pnameCount(pname) && i < 4; ++i) f[i] = float(v[i]);
+    for (size_t i = 0; i < pnameCount(pname) && i < 4; ++i)
+        f[i] = colour ? float(v[i]) / 2147483647.0f : float(v[i]);
     T().light(light, pname, f);
+}
+void APIENTRY tLightModelfv(GLenum pname, const GLfloat* v) { T().lightModel(pname, v); }
+void APIENTRY tLightModeliv(GLenum pname, const GLint* v)
+{
+    float f[4] = {0, 0, 0, 0};
+    if (pname == GL_LIGHT_MODEL_AMBIENT) {
+        for (size_t i = 0; i < 4; ++i) f[i] = float(v[i]) / 2147483647.0f;
+    }
+    T().lightModel(pname, f);
 }
 void APIENTRY tPolygonMode(GLenum face, GLenum mode) { T().polygonMode(face, mode); }
 void APIENTRY tColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
@@ -420,6 +432,8 @@ StateTracker::StateTracker()
     d.glRects = tRects;
     d.glLightfv = tLightfv;
     d.glLightiv = tLightiv;
+    d.glLightModelfv = tLightModelfv;
+    d.glLightModeliv = tLightModeliv;
     d.glPolygonMode = tPolygonMode;
     d.glColorMask = tColorMask;
     d.glBlendFunc = tBlendFunc;
@@ -767,7 +781,14 @@ void StateTracker::light(GLenum light, GLenum pname, const float* v)
         mAttrib.lightPosition[i] = mMatrices.modelview() * glm::vec4(v[0], v[1], v[2], v[3]);
     } else if (pname == GL_DIFFUSE) {
         mAttrib.lightDiffuse[i] = glm::vec3(v[0], v[1], v[2]);
+    } else if (pname == GL_AMBIENT) {
+        mAttrib.lightAmbient[i] = glm::vec3(v[0], v[1], v[2]);
     }
+}
+
+void StateTracker::lightModel(GLenum pname, const float* v)
+{
+    if (pname == GL_LIGHT_MODEL_AMBIENT && v) mAttrib.modelAmbient = glm::vec3(v[0], v[1], v[2]);
 }
 
 size_t StateTracker::keyLight() const
@@ -789,11 +810,15 @@ size_t StateTracker::keyLight() const
 
 glm::vec3 StateTracker::lightTint() const
 {
-    // The enabled lights' colours together, brightest channel at 1: the hue they give.
+    // The light on a fully lit surface (the scene's ambient, and every enabled light's
+    // ambient and diffuse colours), brightest channel at 1: the hue it gives. A bluish ambient
+    // under a pinkish sun lights snow nearly white, as GL's sum does.
     const AttribState& a = mAttrib;
-    glm::vec3 sum(0.0f);
+    glm::vec3 sum = glm::max(a.modelAmbient, glm::vec3(0.0f));
     for (size_t i = 0; i < 8; ++i) {
-        if (a.lightsOn & (1u << i)) sum += glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
+        if (!(a.lightsOn & (1u << i))) continue;
+        sum += glm::max(a.lightDiffuse[i], glm::vec3(0.0f)) +
+               glm::max(a.lightAmbient[i], glm::vec3(0.0f));
     }
     const float top = std::max({sum.r, sum.g, sum.b});
     return top > 1e-6f ? sum / top : glm::vec3(1.0f);

@@ -230,6 +230,7 @@ public:
     void rect(float x1, float y1, float x2, float y2);
     bool executing() const { return !mCompiling || mCompileAndExecute; }
     void light(GLenum light, GLenum pname, const float* v);
+    void lightModel(GLenum pname, const float* v);
     void blendFunc(GLenum src, GLenum dst);
     void depthMask(bool on);
     void alphaFunc(GLenum func, float ref);

@@ -440,6 +440,53 @@ TEST(StateTracker, TheBrightestEnabledLightAndTheLightsColoursReachTheBatch)
     EXPECT_LT(mixed.g - mixed.r, green.g - green.r);
 }
 
+// The ambient light counts in the hue of a lit surface as in GL's sum: a pinkish sun over a
+// bluish ambient (extremetuxracer's snow) lights a white material bluish-white, not pink; the
+// light model's ambient too; and glLightiv's integer colours map onto 0..1.
+TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto put = [&](uint16_t opcode, GLenum a, GLenum b, const void* v, size_t bytes) {
+        feed.run([&](CallWriter& w) {
+            w.op(opcode);
+            const size_t mark = w.beginPayload();
+            if (opcode != op::glLightModelfv) w.put<GLenum>(a);
+            w.put<GLenum>(b);
+            w.putBytes(v, bytes);
+            w.endPayload(mark);
+        });
+    };
+    auto lightfv = [&](GLenum pname, std::array<float, 4> v) {
+        put(op::glLightfv, GL_LIGHT0, pname, v.data(), sizeof v);
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    lightfv(GL_DIFFUSE, {1.0f, 0.8f, 1.0f, 1.0f});
+    feed.triangle();
+    lightfv(GL_AMBIENT, {0.2f, 0.4f, 0.9f, 1.0f});
+    feed.triangle();
+    const std::array<float, 4> dark = {0.0f, 0.0f, 0.0f, 1.0f};
+    put(op::glLightModelfv, 0, GL_LIGHT_MODEL_AMBIENT, dark.data(), sizeof dark);
+    const std::array<GLint, 4> blue = {0, 0, 2147483647, 2147483647};
+    put(op::glLightiv, GL_LIGHT0, GL_AMBIENT, blue.data(), sizeof blue);
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    const glm::vec4 sun = batches[0].vertices[0].color;
+    const glm::vec4 sky = batches[1].vertices[0].color;
+    const glm::vec4 deep = batches[2].vertices[0].color;
+    EXPECT_LT(sun.g, sun.b - 0.1f) << "the pinkish light alone tints pink";
+    EXPECT_GE(sky.g, sky.r - 0.01f) << "a bluish ambient takes the pink out";
+    EXPECT_NEAR(sky.b, sun.b, 0.01f);
+    // Without the model's ambient the blue light ambient weighs more: bluer than before.
+    EXPECT_LT(deep.r, sky.r - 0.1f);
+    EXPECT_GT(deep.r, 0.3f) << "glLightiv's integer colour was taken as a huge number";
+}
+
 TEST(StateTracker, FramesReuseTheirVertexStorage)
 {
     // A frame's vertex vectors come back to the tracker and serve the next frame's batches
