@@ -680,13 +680,25 @@ int StateTracker::surfaceUnit() const
     uint32_t layers = 0;
     const uint32_t base = texturedUnits(layers);
     if (base == 0) {
-        // No plain texture: untextured, or one unit on generated coordinates (styled without
-        // its texture); anything else is combiners the styles cannot follow.
+        // No plain texture: untextured, or a reflective surface: a unit on generated
+        // coordinates (an environment map, styled without its texture) under combined or
+        // added layers (shadows, fades; not drawn). Combiners alone are the surface's colour
+        // computed in ways the styles cannot follow.
         const uint32_t textured = (a.textureUnits | (a.texture2D ? 1u : 0u)) & 0xFFu;
         if (textured == 0) return 0;
-        const int u = std::countr_zero(textured);
-        const bool generated = ((a.texGen >> (4 * u)) & 0x3u) == 0x3u;
-        return (textured & (textured - 1)) == 0 && generated && u == 0 ? 0 : -1;
+        uint32_t generated = 0;
+        for (int u = 0; u < 8; ++u) {
+            if ((textured & (1u << u)) && ((a.texGen >> (4 * u)) & 0x3u) == 0x3u) {
+                generated |= 1u << u;
+            }
+        }
+        if (generated == 0) return -1;
+        for (int u = 0; u < 8; ++u) {
+            const GLenum mode = a.envMode[size_t(u)];
+            const bool layer = mode == GL_COMBINE || mode == GL_ADD;
+            if ((textured & ~generated & (1u << u)) && !layer) return -1;
+        }
+        return std::countr_zero(generated);
     }
     const int u = std::countr_zero(base);
     // The surface's texture must be a 2D one (the styles draw 2D textures).

@@ -314,6 +314,50 @@ TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
 }
 
+// A reflective surface: an environment map (generated coordinates) on one unit under a
+// combiner layer on another (neverball's rails: a shadow combined on unit 0, the sphere-mapped
+// metal on unit 2) is styled without either texture. A combiner alone stays the program's.
+TEST(StateTracker, AnEnvironmentMapUnderCombinedLayersIsStyledWithoutThem)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    auto unit = [&](GLenum u) {
+        run([&](CallWriter& w) {
+            w.op(op::glActiveTexture);
+            w.put<GLenum>(u);
+        });
+    };
+    auto envMode = [&](GLint mode) {
+        run([&](CallWriter& w) {
+            w.op(op::glTexEnvi);
+            w.put<GLenum>(GL_TEXTURE_ENV);
+            w.put<GLenum>(GL_TEXTURE_ENV_MODE);
+            w.put<GLint>(mode);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    envMode(GL_COMBINE);
+    feed.enable(GL_TEXTURE_2D, true);
+    ASSERT_FALSE(tracker.wouldHold(GL_TRIANGLES)) << "a combiner alone was styled";
+    EXPECT_NE(std::string(tracker.unstylableState()).find("GL_COMBINE"), std::string::npos);
+    unit(GL_TEXTURE2);
+    feed.enable(GL_TEXTURE_2D, true);
+    feed.enable(GL_TEXTURE_GEN_S, true);
+    feed.enable(GL_TEXTURE_GEN_T, true);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    feed.triangle();
+    // The same with a plain-looking but unsupported layer (GL_BLEND) under it: left.
+    unit(GL_TEXTURE0);
+    envMode(GL_BLEND);
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, 0u) << "the sphere map taken for the surface's texture";
+}
+
 // A draw textured by one unit other than 0 alone (units 0 and 1 off, 2 on: neverball draws
 // its backgrounds so) is styled with that unit's texture and coordinates (glMultiTexCoord of
 // that unit; array draws take its coordinate array, seen on neverball).
