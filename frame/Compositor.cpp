@@ -1,6 +1,7 @@
 #include "frame/Compositor.h"
 
 #include "common/Log.h"
+#include "frame/BatchReplay.h"
 #include "frame/Recorder.h"
 #include "shim/Context.h"
 #include "shim/RealGl.h"
@@ -22,18 +23,7 @@ Compositor& C() { return *tThread.context->compositor(); }
 void APIENTRY cBegin(GLenum mode) { C().begin(mode); }
 void APIENTRY cEnd() { C().end(); }
 
-// A display list also sets state (materials, shade model...), so a held one still runs in
-// the driver, writing neither colour nor depth.
-void APIENTRY c_glCallList(GLuint list)
-{
-    Compositor& c = C();
-    const bool masked = c.holdList(list) && c.shading();
-    if (masked) c.mask();
-    else c.tintBegin();
-    c.next().glCallList(list);
-    if (masked) c.unmask();
-    else c.tintEnd();
-}
+void APIENTRY c_glCallList(GLuint list) { C().callList(list); }
 
 // glCallLists as a whole, held when every list it calls would be.
 void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
@@ -57,7 +47,7 @@ void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
         if (placed == Compositor::Placement::Layer) {                                           \
             const size_t mark = c.streamSize();                                                 \
             c.heldNext().name args;                                                             \
-            if (!c.settleLayer(mark)) return;                                                   \
+            if (c.settleLayer(mark) != Compositor::Settled::Draw) return;                       \
             c.tintBegin();                                                                      \
             gRealGl.name args; /* recorded already */                                           \
             c.tintEnd();                                                                        \
@@ -266,18 +256,11 @@ void Compositor::syncStream()
         mTracker.setHolding(false);
     }
     mSynced = w.size();
-    // Passes the tracker merged into their objects (held or asked about by settleLayer).
+    // Translucent passes the tracker merged into their held objects.
     const uint64_t merged = mTracker.mergedPasses();
     if (merged == mMergedSeen) return;
-    mRunCounts.noteMerged(merged - mMergedSeen);
-    mFrameCounts.noteMerged(merged - mMergedSeen);
+    noteMerged(merged - mMergedSeen);
     mMergedSeen = merged;
-    if (mMergeSaid) return;
-    mMergeSaid = true;
-    NPRGL_INFO("context %u: blended passes over geometry it styles (multi-pass surfaces: "
-               "detail, light, shine or fog layers) are merged into their object, not drawn "
-               "again",
-               mContext.serial());
 }
 
 void Compositor::keepBlob(uint64_t hash, const void* data, size_t size)
@@ -497,7 +480,11 @@ Compositor::Placement Compositor::placeDraw(GLenum mode, bool layers)
     if (!mTracker.wouldHold(mode)) {
         // Decided once the tracker has its vertices (settleLayer), before it reaches the
         // driver.
-        if (layers && mHeld && mTracker.mayLayer(mode)) return Placement::Layer;
+        if (layers && mHeld && mTracker.mayLayer(mode)) {
+            mLayerWhy = mTracker.unstylableState();
+            mTracker.watchRepeats();
+            return Placement::Layer;
+        }
         noteUnstyled(mode >= GL_TRIANGLES && mode <= GL_POLYGON);
         if (mHeld) flush();
         return Placement::Left;
@@ -509,26 +496,39 @@ Compositor::Placement Compositor::placeDraw(GLenum mode, bool layers)
 
 size_t Compositor::streamSize() const { return mRecorder.writer().size(); }
 
-bool Compositor::settleLayer(size_t mark)
+Compositor::Settled Compositor::settleLayer(size_t mark)
 {
     // The recorder could not follow the draw's arrays: the driver drew it as it is.
     if (streamSize() == mark) {
-        noteUnstyled(true);
+        mTracker.repeatedAll(); // ends the watch
+        noteLeft(mLayerWhy);
         mLeftNow = false;
-        return false;
+        return Settled::Drawn;
     }
-    mTracker.clearRepeat();
     syncStream();
-    if (mTracker.repeatedHeld()) {
+    if (mTracker.repeatedAll()) {
         mRunCounts.noteStyled();
         mFrameCounts.noteStyled();
+        noteMerged(1);
         // Without a shading style the program draws its objects itself, layers and all, and
         // the outline styles draw over the whole (a pencil's page covers the shine too).
-        return !mShading;
+        return mShading ? Settled::Merged : Settled::Draw;
     }
-    noteUnstyled(true);
+    noteLeft(mLayerWhy);
     flush(); // what it draws goes over the finished scene
-    return true;
+    return Settled::Draw;
+}
+
+void Compositor::noteMerged(uint64_t passes)
+{
+    mRunCounts.noteMerged(passes);
+    mFrameCounts.noteMerged(passes);
+    if (mMergeSaid) return;
+    mMergeSaid = true;
+    NPRGL_INFO("context %u: blended passes over geometry it styles (multi-pass surfaces: "
+               "detail, light, shine or fog layers) are merged into their object, not drawn "
+               "again",
+               mContext.serial());
 }
 
 void Compositor::noteLayers()
@@ -553,17 +553,50 @@ void Compositor::noteLayers()
                mContext.serial(), units.c_str());
 }
 
-bool Compositor::holdList(GLuint list)
+// A display list also sets state (materials, shade model...), so one held, or merged as a
+// pass, still runs in the driver, writing neither colour nor depth.
+void Compositor::callList(GLuint list)
 {
-    if (!ready()) return false;
+    const Placement placed = placeList(list);
+    if (placed == Placement::Layer) {
+        const size_t mark = streamSize();
+        mHeldNext.glCallList(list);
+        const Settled settled = settleLayer(mark);
+        if (settled == Settled::Merged) {
+            mask();
+            gRealGl.glCallList(list);
+            unmask();
+        } else if (settled == Settled::Draw) {
+            tintBegin();
+            gRealGl.glCallList(list); // recorded already
+            tintEnd();
+        }
+        return;
+    }
+    const bool masked = placed == Placement::Held && mShading;
+    if (masked) mask();
+    else tintBegin();
+    mNext.glCallList(list);
+    if (masked) unmask();
+    else tintEnd();
+}
+
+Compositor::Placement Compositor::placeList(GLuint list)
+{
+    if (!ready()) return Placement::Left;
     syncStream();
     if (!mTracker.wouldHoldList(list)) {
+        if (mHeld && mTracker.mayLayerList(list)) {
+            mLayerWhy = mTracker.listUnstylable(list);
+            mTracker.watchRepeats();
+            return Placement::Layer;
+        }
         noteLeft(mTracker.listUnstylable(list));
         if (mHeld) flush();
-        return false;
+        return Placement::Left;
     }
     noteHeld();
-    return true;
+    return Placement::Held;
 }
 
 bool Compositor::holdLists(GLsizei n, GLenum type, const void* lists)
@@ -615,7 +648,16 @@ void Compositor::unmask()
 
 void Compositor::begin(GLenum mode)
 {
-    if (placeDraw(mode, false) == Placement::Held && mShading) {
+    const Placement placed = placeDraw(mode, true);
+    if (placed == Placement::Layer) {
+        // Recorded only until glEnd decides whether it is a pass over held geometry.
+        mLayerMark = streamSize();
+        mHoldingBegin = true;
+        mHeldNext.glBegin(mode);
+        tThread.dispatch = &mHeldTable;
+        return;
+    }
+    if (placed == Placement::Held && mShading) {
         // Vertices go to the Stream only until glEnd (attribute calls still reach the driver).
         mHoldingBegin = true;
         mHeldNext.glBegin(mode);
@@ -633,9 +675,30 @@ void Compositor::end()
         tintEnd();
         return;
     }
+    if (mLayerMark == kNoLayer) {
+        mHeldNext.glEnd();
+        mHoldingBegin = false;
+        tThread.dispatch = &mContext.dispatch();
+        return;
+    }
+    // A possible pass: its calls are kept before glEnd, which may turn them into a blob
+    // reference when recording to a file.
+    const CallWriter& w = mRecorder.writer();
+    mLayerCalls.assign(w.data() + mLayerMark, w.data() + w.size());
+    const size_t mark = std::exchange(mLayerMark, kNoLayer);
     mHeldNext.glEnd();
     mHoldingBegin = false;
     tThread.dispatch = &mContext.dispatch();
+    if (settleLayer(mark) != Settled::Draw) return;
+    tintBegin();
+    if (!replayBatch(mLayerCalls.data(), mLayerCalls.size()) && !mReplaySaid) {
+        mReplaySaid = true;
+        NPRGL_ERROR("context %u: a glBegin/glEnd pass could not be given to the driver whole; "
+                    "part of it is missing from the picture",
+                    mContext.serial());
+    }
+    gRealGl.glEnd();
+    tintEnd();
 }
 
 void Compositor::barrier()

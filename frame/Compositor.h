@@ -85,17 +85,18 @@ public:
     void begin(GLenum mode);
     void end();
     // Where a draw issued now goes: held for the styles, a possible layer over held geometry
-    // (array draws only, `layers`), or left to the driver (counted, with a flush first when
-    // a scene is held).
+    // (array draws and glBegin; `layers`), or left to the driver (counted, with a flush first
+    // when a scene is held).
     enum class Placement { Held, Layer, Left };
     Placement placeDraw(GLenum mode, bool layers);
-    // After a Layer draw was recorded only (the stream was `mark` bytes long before it):
-    // whether the caller is to draw it in the driver now. Merged into its object (counted
-    // styled): only when the chain has no shading style (the program draws its objects). Left
-    // (counted, the scene flushed first): always, tinted by the coverage style.
-    bool settleLayer(size_t mark);
+    // After a Layer draw was recorded only (the stream was `mark` bytes long before it): what
+    // the caller does with it. Merged into its object (counted styled): not drawn, unless the
+    // chain has no shading style (the program draws its objects). Left (counted, the scene
+    // flushed first): drawn, tinted by the coverage style. Drawn: the driver drew it already.
+    enum class Settled { Merged, Draw, Drawn };
+    Settled settleLayer(size_t mark);
     size_t streamSize() const;
-    bool holdList(GLuint list);
+    void callList(GLuint list);
     bool holdLists(GLsizei n, GLenum type, const void* lists);
     // Rasteriser discard around a held display list (its state changes must still run).
     void mask();
@@ -115,6 +116,9 @@ public:
 
 private:
     bool ready();
+    // placeDraw for a glCallList (a list is a Layer when it may be a pass).
+    Placement placeList(GLuint list);
+    void noteMerged(uint64_t passes);
     bool startStyles();
     // Shuts the chain down (when it ran) and starts mSettings' chain, with the program's
     // state and pending GL error kept; false with a message when it cannot start.
@@ -159,6 +163,11 @@ private:
 
     bool mHeld = false;         // held batches wait for the next flush
     bool mHoldingBegin = false; // inside a held glBegin..glEnd
+    static constexpr size_t kNoLayer = SIZE_MAX;
+    size_t mLayerMark = kNoLayer;    // stream size at a possible layer's glBegin
+    std::vector<uint8_t> mLayerCalls; // its calls, for the driver when it is not merged
+    const char* mLayerWhy = nullptr;  // why a possible layer would be left
+    bool mReplaySaid = false;
     GLboolean mSavedDiscard = GL_FALSE;
     bool mStackWarned = false;
     GLint mHeldFramebuffer = 0;

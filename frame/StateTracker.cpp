@@ -475,6 +475,7 @@ bool StateTracker::runFrame(const uint8_t* data, size_t size, BlobSource* blobs,
     if (mFrameDone) {
         recycle(mFrameBatches);
         mFrameBatches.clear();
+        mPassIndex.clear();
         mFrameDone = false;
     }
     return feed(data, size, blobs, error);
@@ -495,6 +496,7 @@ void StateTracker::takeBatches(std::vector<TrackedBatch>& out)
     recycle(out);
     out.swap(mFrameBatches);
     mFrameBatches.clear();
+    mPassIndex.clear();
 }
 
 void StateTracker::recycle(std::vector<TrackedBatch>& batches)
@@ -591,6 +593,19 @@ bool StateTracker::mayLayer(GLenum mode) const
     return unstylableState() != nullptr;
 }
 
+bool StateTracker::mayLayerList(GLuint list) const
+{
+    bool anyBatch = false;
+    return mayLayer(GL_TRIANGLES) && listHoldable(list, anyBatch) && anyBatch;
+}
+
+bool StateTracker::repeatedAll()
+{
+    const bool all = mWatch.repeated > 0 && mWatch.others == 0;
+    mWatch = {};
+    return all;
+}
+
 bool StateTracker::leftByRule() const
 {
     if (const uint32_t states = mRules.states) {
@@ -616,20 +631,47 @@ GLenum StateTracker::culledWinding() const
     return a.cullMode == GL_FRONT ? a.frontFace : back;
 }
 
+// What a pass over a batch shares with it, hashed: mode, size, culling, matrices and three of
+// its positions (the rest are compared on a match). Constant time whatever the batch's size.
+uint64_t StateTracker::passKey(const TrackedBatch& batch)
+{
+    struct Key {
+        GLenum mode, culled;
+        uint64_t count;
+        glm::mat4 modelview, projection;
+        glm::vec3 first, middle, last;
+    } key{};
+    std::memset(&key, 0, sizeof key); // no padding bytes of chance in the hash
+    key.mode = batch.mode;
+    key.culled = batch.culled;
+    key.count = batch.vertices.size();
+    key.modelview = batch.modelview;
+    key.projection = batch.projection;
+    if (!batch.vertices.empty()) {
+        key.first = batch.vertices.front().position;
+        key.middle = batch.vertices[batch.vertices.size() / 2].position;
+        key.last = batch.vertices.back().position;
+    }
+    return XXH3_64bits(&key, sizeof key);
+}
+
+void StateTracker::indexBatch(const TrackedBatch& batch)
+{
+    // A depth-only pass shows nothing a layer could merge into.
+    if (!batch.depthOnly) mPassIndex.emplace(passKey(batch), uint32_t(mFrameBatches.size()));
+}
+
 bool StateTracker::repeatsHeld(const TrackedBatch& batch) const
 {
-    // A multi-pass surface draws its passes one after another (ioquake3 draws a shader's
-    // stages so): the last few held batches are enough, and keep the search short.
-    constexpr size_t kReach = 16;
-    const size_t n = mFrameBatches.size();
-    for (size_t i = n; i > 0 && n - i < kReach; --i) {
-        const TrackedBatch& base = mFrameBatches[i - 1];
-        // A depth-only pass shows nothing a layer could merge into.
+    // Passes may come right after their surface (ioquake3 draws a shader's stages so) or
+    // after the whole scene (a lightmap pass over a world): any batch of the frame, found by
+    // its key.
+    auto [from, to] = mPassIndex.equal_range(passKey(batch));
+    for (auto it = from; it != to; ++it) {
+        const TrackedBatch& base = mFrameBatches[it->second];
         if (base.mode != batch.mode || base.vertices.size() != batch.vertices.size() ||
-            base.depthOnly || base.culled != batch.culled) {
-            continue;
-        }
-        if (std::memcmp(&base.modelview, &batch.modelview, sizeof(glm::mat4)) != 0 ||
+            base.culled != batch.culled ||
+            std::memcmp(&base.modelview, &batch.modelview, sizeof(glm::mat4)) != 0 ||
             std::memcmp(&base.projection, &batch.projection, sizeof(glm::mat4)) != 0) {
             continue;
         }
@@ -1130,7 +1172,10 @@ uint32_t StateTracker::currentMaterialId()
 
 void StateTracker::emit(TrackedBatch&& batch)
 {
-    if (keep(batch)) mFrameBatches.push_back(std::move(batch));
+    if (keep(batch)) {
+        indexBatch(batch);
+        mFrameBatches.push_back(std::move(batch));
+    }
     else recycle(std::move(batch.vertices));
 }
 
@@ -1176,10 +1221,11 @@ bool StateTracker::keep(TrackedBatch& batch)
         // its blending and asked about by the compositor, or translucent and held itself) is
         // that object's: merged into it, not drawn or styled again.
         if (a.blend && repeatsHeld(batch)) {
-            mRepeated = true;
-            ++mMergedPasses;
+            if (mWatch.on) ++mWatch.repeated;
+            else ++mMergedPasses;
             return false;
         }
+        if (mWatch.on) ++mWatch.others;
         if (!batch.held) return false; // the compositor keeps only what it re-draws
     }
     batch.lit = a.lighting;

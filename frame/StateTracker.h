@@ -18,6 +18,7 @@
 #include <set>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace nprgl {
@@ -104,13 +105,18 @@ public:
     const char* unstylableState() const;
     // Could a draw of `mode` issued now, left only for its blending, be a further pass over
     // geometry held for the scene (a detail, light, shine or fog layer of a multi-pass
-    // surface)? Feed it, then ask repeatedHeld().
+    // surface)? watchRepeats(), feed it, then ask repeatedAll().
     bool mayLayer(GLenum mode) const;
-    // Whether a blended draw fed since clearRepeat() repeated held geometry (same mode,
-    // positions, matrices and culling as one of the last held batches): a pass over that
-    // object, merged into it and not kept. mergedPasses() counts them over the run.
-    void clearRepeat() { mRepeated = false; }
-    bool repeatedHeld() const { return mRepeated; }
+    // The same for a display list called now (one that draws only what could be held).
+    bool mayLayerList(GLuint list) const;
+    // Whether every polygon batch fed since watchRepeats() repeated held geometry (same
+    // mode, positions, matrices and culling as one of the last held batches): a pass over
+    // that object, not kept; the caller merges it (or draws all of it when not every batch
+    // repeats). Ends the watch.
+    void watchRepeats() { mWatch = {true, 0, 0}; }
+    bool repeatedAll();
+    // Held blended batches that repeated held geometry, merged without asking (translucent
+    // passes), over the run.
     uint64_t mergedPasses() const { return mMergedPasses; }
     // Texture units (bits) a draw issued now layers over its surface's texture, which the
     // styles do not draw (see surfaceUnit).
@@ -307,8 +313,10 @@ private:
     bool leftByRule() const;
     // The winding the current culling removes (TrackedBatch::culled).
     GLenum culledWinding() const;
-    // Does a batch draw the same triangles as one of the last held ones (repeatedHeld)?
+    // Does a batch draw the same triangles as one held this frame (a pass over it)?
     bool repeatsHeld(const TrackedBatch& batch) const;
+    static uint64_t passKey(const TrackedBatch& batch);
+    void indexBatch(const TrackedBatch& batch);
     // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.
     bool opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
                      const void* pixels) const;
@@ -401,7 +409,13 @@ private:
     std::map<GLuint, std::vector<uint8_t>> mBuffers;
 
     std::vector<TrackedBatch> mFrameBatches;
-    bool mRepeated = false;
+    // mFrameBatches (but depth-only passes) by passKey: where a pass finds its surface.
+    std::unordered_multimap<uint64_t, uint32_t> mPassIndex;
+    struct RepeatWatch {
+        bool on = false;
+        uint32_t repeated = 0; // polygon batches that repeated held geometry
+        uint32_t others = 0;   // polygon batches that did not
+    } mWatch;
     uint64_t mMergedPasses = 0;
     // Vertex vectors of earlier batches, last frame's first batch at the back.
     std::vector<std::vector<TrackedVertex>> mVertexPool;

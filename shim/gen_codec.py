@@ -224,10 +224,11 @@ def sub(expr, prefix):
 
 # Draws and vertices the compositor holds back: recorded, not sent to the driver (the styles
 # draw them). Attribute calls inside a held glBegin/glEnd still reach the driver (they are
-# valid outside glBegin/glEnd too), so the current colour, normal... stay the program's.
+# valid outside glBegin/glEnd too), so the current colour, normal... stay the program's. A
+# glCallList that may be a pass over held geometry is recorded first and run once decided.
 HELD_RE = re.compile(r"gl(Begin|End|Vertex[234][dfis]v?|ArrayElement|EvalCoord[12][df]v?|"
                      r"EvalPoint[12]|DrawArrays|DrawElements|DrawRangeElements|"
-                     r"MultiDrawArrays|Rect[dfis]v?)")
+                     r"MultiDrawArrays|Rect[dfis]v?|CallList)")
 
 
 def emitRecord(cmds):

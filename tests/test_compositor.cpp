@@ -990,15 +990,20 @@ TEST(Compositor, AStateRuleLeavesTheDrawsInThatState)
     EXPECT_GT(redShare(framePng(rec + "/out", 3), 190, 110, 225, 145), 0.95f) << replayed.err;
 }
 
-// A multi-pass surface: demo_arrays --shine draws its column a second time over the same
-// vertices, adding light (GL_ONE, GL_ONE), as ioquake3 draws a shader's stages. The pass is
-// merged into the styled column: the styled picture is the one without the pass (nothing
-// drawn twice), the coverage style paints none of it red, and the counts say so. Natively
-// the pass does add light (else the test would prove nothing).
-TEST(Compositor, ABlendedSecondPassIsMergedIntoItsObject)
+// A multi-pass surface: --shine draws an object a second time over the same vertices,
+// adding light (GL_ONE, GL_ONE), as ioquake3 draws a shader's stages: demo_arrays with an
+// array draw, demo_immediate with glBegin/glEnd, demo_displaylist by calling the list again.
+// The pass is merged into the styled object: the styled picture is the one without the pass
+// (nothing drawn twice), the coverage style paints none of it red, and the counts say so.
+// Natively the pass does add light (else the test would prove nothing).
+class MultiPass : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MultiPass, ABlendedSecondPassIsMergedIntoItsObject)
 {
-    auto run = [](const std::string& style, bool shine, std::string* log = nullptr) {
-        return demoFrame("arrays", "shine_" + style + (shine ? "_on" : "_off"), {"--style", style},
+    const std::string app = GetParam();
+    auto run = [&](const std::string& style, bool shine, std::string* log = nullptr) {
+        return demoFrame(app, "shine_" + app + "_" + style + (shine ? "_on" : "_off"),
+                         {"--style", style},
                          shine ? std::vector<std::string>{"--shine"} : std::vector<std::string>{},
                          log);
     };
@@ -1010,7 +1015,7 @@ TEST(Compositor, ABlendedSecondPassIsMergedIntoItsObject)
     const ImageDiff styled =
         compareImages(run("toon+paper+edges", false), run("toon+paper+edges", true, &log), 24);
     ASSERT_TRUE(styled.comparable) << styled.error;
-    EXPECT_EQ(styled.differingPixels, 0u) << "the pass was drawn over the styled column";
+    EXPECT_EQ(styled.differingPixels, 0u) << "the pass was drawn over the styled object";
     EXPECT_NE(log.find("passes merged into their object), 0 left"), std::string::npos) << log;
 
     PngImage image;
@@ -1020,3 +1025,9 @@ TEST(Compositor, ABlendedSecondPassIsMergedIntoItsObject)
     for (size_t i = 0; i < image.rgba.size(); i += 4) red += image.rgba[i] >= 250;
     EXPECT_EQ(red, 0) << "the pass was left as the program draws it";
 }
+
+INSTANTIATE_TEST_SUITE_P(Compositor, MultiPass,
+                         ::testing::Values("arrays", "immediate", "displaylist"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             return info.param;
+                         });

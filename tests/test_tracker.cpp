@@ -803,9 +803,9 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
     // Asks as the compositor does before the driver sees the draw.
     auto pass = [&](float dx) {
         EXPECT_TRUE(tracker.mayLayer(GL_TRIANGLES));
-        tracker.clearRepeat();
+        tracker.watchRepeats();
         triangle(dx);
-        return tracker.repeatedHeld();
+        return tracker.repeatedAll();
     };
     feed.enable(GL_DEPTH_TEST, true);
     triangle(0.0f); // the surface, held
@@ -813,7 +813,17 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
     blend(GL_ONE, GL_ONE);
     EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
     EXPECT_TRUE(pass(0.0f)) << "an additive stage over the surface";
+    // A pass after the whole scene (a lightmap pass over a world) still finds its surface.
+    feed.enable(GL_BLEND, false);
+    for (int i = 1; i <= 40; ++i) triangle(float(i));
+    feed.enable(GL_BLEND, true);
+    EXPECT_TRUE(pass(0.0f)) << "a pass 40 held batches after its surface";
     EXPECT_FALSE(pass(0.5f)) << "another triangle";
+    // A pass of two batches (a display list, say) is merged only when both repeat.
+    tracker.watchRepeats();
+    triangle(0.0f);
+    triangle(0.5f);
+    EXPECT_FALSE(tracker.repeatedAll()) << "half of it repeats the surface";
     feed.enable(GL_CULL_FACE, true);
     EXPECT_FALSE(pass(0.0f)) << "culled: it draws other triangles than the surface";
     feed.enable(GL_CULL_FACE, false);
@@ -824,13 +834,11 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
         for (float c : {1.0f, 1.0f, 1.0f, 0.5f}) w.put<float>(c);
     });
     ASSERT_TRUE(tracker.wouldHold(GL_TRIANGLES));
-    tracker.clearRepeat();
     triangle(0.0f);
-    EXPECT_TRUE(tracker.repeatedHeld());
-    EXPECT_EQ(tracker.mergedPasses(), 2u);
+    EXPECT_EQ(tracker.mergedPasses(), 1u) << "merged without being asked";
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
-    EXPECT_EQ(batches.size(), 1u) << "the surface alone";
+    EXPECT_EQ(batches.size(), 41u) << "the surface and the others, each once";
     // A scene drawn (the batches taken): the same pass has nothing held to merge into.
     blend(GL_ONE, GL_ONE);
     EXPECT_FALSE(pass(0.0f));
@@ -849,5 +857,5 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
     triangle(0.0f);
     tracker.takeBatches(batches);
     EXPECT_EQ(batches.size(), 2u);
-    EXPECT_EQ(tracker.mergedPasses(), 2u);
+    EXPECT_EQ(tracker.mergedPasses(), 1u) << "one of them taken for a pass over the other";
 }

@@ -130,8 +130,16 @@ void drawAxle(float radius, float length)
 
 class DisplayListScene : public demo::Scene {
 public:
+    std::vector<demo::ExtraOption> extraOptions() const override
+    {
+        return {{"shine", demo::ExtraOption::Kind::Flag,
+                 "call the red gear's list a second time, adding light (GL_ONE, GL_ONE) over "
+                 "the same vertices, as multi-pass programs draw a surface's layers"}};
+    }
+
     bool init(const demo::Options& options, std::string& error) override
     {
+        shine_ = options.has("shine");
         base_ = glGenLists(listCount);
         if (base_ == 0) {
             error = "glGenLists failed";
@@ -196,6 +204,19 @@ public:
         glListBase(0);
 
         drawGearAt(gear1List, -3.0f, -2.0f, angle);
+        if (shine_) {
+            // Unlit added light, no depth writes, the same list at the same place.
+            glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |
+                         GL_CURRENT_BIT);
+            glDisable(GL_LIGHTING);
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE);
+            glDepthMask(GL_FALSE);
+            glDepthFunc(GL_LEQUAL);
+            glColor3f(0.35f, 0.2f, 0.05f);
+            drawGearAt(gear1List, -3.0f, -2.0f, angle);
+            glPopAttrib();
+        }
         drawGearAt(gear2List, 3.1f, -2.0f, -2.0f * angle - 9.0f);
         drawGearAt(gear3List, -3.1f, 4.2f, -2.0f * angle - 25.0f);
     }
@@ -224,6 +245,7 @@ private:
     }
 
     GLuint base_ = 0;
+    bool shine_ = false;
 };
 
 } // namespace

@@ -48,7 +48,10 @@ public:
     std::vector<demo::ExtraOption> extraOptions() const override
     {
         return {{"detail", demo::ExtraOption::Kind::Int,
-                 "tessellation factor; vertices per frame grow linearly (default 1)", 1, 2000}};
+                 "tessellation factor; vertices per frame grow linearly (default 1)", 1, 2000},
+                {"shine", demo::ExtraOption::Kind::Flag,
+                 "draw the first shape a second time, adding light (GL_ONE, GL_ONE) over the "
+                 "same vertices, as multi-pass programs draw a surface's layers"}};
     }
 
     bool init(const demo::Options& options, std::string&) override
@@ -57,6 +60,7 @@ public:
         height_ = options.height;
         report_ = options.report;
         scale_ = std::sqrt(static_cast<float>(options.intValue("detail", 1)));
+        shine_ = options.has("shine");
         buildShapes();
 
         glViewport(0, 0, width_, height_);
@@ -101,6 +105,7 @@ public:
             for (const Batch& batch : shape.batches) {
                 vertices += drawBatch(batch);
             }
+            if (shine_ && &shape == &shapes_.front()) drawShine(shape);
             glPopMatrix();
         }
         if (report_ && frame == 1) {
@@ -109,6 +114,20 @@ public:
     }
 
 private:
+    // The shape's second pass: unlit added light, no depth writes, the same vertices.
+    static void drawShine(const Shape& shape)
+    {
+        glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
+        glDisable(GL_LIGHTING);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glColor3f(0.35f, 0.2f, 0.05f);
+        for (const Batch& batch : shape.batches) drawBatch(batch);
+        glPopAttrib();
+    }
+
     static size_t drawBatch(const Batch& batch)
     {
         if (batch.coloured) {
@@ -376,6 +395,7 @@ private:
     int height_ = 0;
     bool report_ = false;
     float scale_ = 1.0f;
+    bool shine_ = false;
     std::vector<Shape> shapes_;
 };
 
