@@ -41,6 +41,10 @@ void AttribStack::pop()
         a.lightDiffuse = saved.lightDiffuse;
         a.lightAmbient = saved.lightAmbient;
         a.modelAmbient = saved.modelAmbient;
+        a.spotDirection = saved.spotDirection;
+        a.spotCutoff = saved.spotCutoff;
+        a.spotExponent = saved.spotExponent;
+        a.attenuation = saved.attenuation;
     }
     if (mask & GL_DEPTH_BUFFER_BIT) {
         a.depthTest = saved.depthTest;

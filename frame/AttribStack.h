@@ -48,6 +48,20 @@ struct AttribState {
     // GL_AMBIENT of each light (black by default) and GL_LIGHT_MODEL_AMBIENT.
     std::array<glm::vec3, 8> lightAmbient{};
     glm::vec3 modelAmbient{0.2f};
+    // GL_SPOT_DIRECTION (eye space, as GL_POSITION), GL_SPOT_CUTOFF (180: no spot),
+    // GL_SPOT_EXPONENT, and the constant, linear and quadratic attenuation of each light.
+    std::array<glm::vec3, 8> spotDirection = filled(glm::vec3(0.0f, 0.0f, -1.0f));
+    std::array<float, 8> spotCutoff = filled(180.0f);
+    std::array<float, 8> spotExponent{};
+    std::array<glm::vec3, 8> attenuation = filled(glm::vec3(1.0f, 0.0f, 0.0f));
+
+    template <typename T>
+    static std::array<T, 8> filled(const T& value)
+    {
+        std::array<T, 8> a;
+        a.fill(value);
+        return a;
+    }
 
     static std::array<glm::vec4, 8> defaultPositions()
     {

@@ -803,6 +803,7 @@ void Compositor::buildScene()
         s.modelview = o.modelview;
         s.projection = t.projection;
         s.lightDir = lightDirection(t);
+        if (t.lit && t.lightOn) s.lights = t.lights;
         s.texture = t.texture;
         s.lightmap = t.lightmap;
         s.translucent = t.translucent;

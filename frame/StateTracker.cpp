@@ -249,6 +249,12 @@ void APIENTRY tLightiv(GLenum light, GLenum pname, const GLint* v)
         f[i] = colour ? float(v[i]) / 2147483647.0f : float(v[i]);
     T().light(light, pname, f);
 }
+void APIENTRY tLightf(GLenum light, GLenum pname, GLfloat v) { T().light(light, pname, &v); }
+void APIENTRY tLighti(GLenum light, GLenum pname, GLint v)
+{
+    const float f = float(v);
+    T().light(light, pname, &f);
+}
 void APIENTRY tLightModelfv(GLenum pname, const GLfloat* v) { T().lightModel(pname, v); }
 void APIENTRY tLightModeliv(GLenum pname, const GLint* v)
 {
@@ -430,6 +436,8 @@ StateTracker::StateTracker()
     d.glRectd = tRectd;
     d.glRecti = tRecti;
     d.glRects = tRects;
+    d.glLightf = tLightf;
+    d.glLighti = tLighti;
     d.glLightfv = tLightfv;
     d.glLightiv = tLightiv;
     d.glLightModelfv = tLightModelfv;
@@ -837,6 +845,47 @@ void StateTracker::light(GLenum light, GLenum pname, const float* v)
         mAttrib.lightDiffuse[i] = glm::vec3(v[0], v[1], v[2]);
     } else if (pname == GL_AMBIENT) {
         mAttrib.lightAmbient[i] = glm::vec3(v[0], v[1], v[2]);
+    } else if (pname == GL_SPOT_DIRECTION) {
+        // Eye space too, by the modelview's upper 3x3.
+        mAttrib.spotDirection[i] = glm::mat3(mMatrices.modelview()) * glm::vec3(v[0], v[1], v[2]);
+    } else if (pname == GL_SPOT_CUTOFF) {
+        mAttrib.spotCutoff[i] = v[0];
+    } else if (pname == GL_SPOT_EXPONENT) {
+        mAttrib.spotExponent[i] = v[0];
+    } else if (pname == GL_CONSTANT_ATTENUATION) {
+        mAttrib.attenuation[i].x = v[0];
+    } else if (pname == GL_LINEAR_ATTENUATION) {
+        mAttrib.attenuation[i].y = v[0];
+    } else if (pname == GL_QUADRATIC_ATTENUATION) {
+        mAttrib.attenuation[i].z = v[0];
+    }
+}
+
+void StateTracker::litBy(styles::SceneLights& out) const
+{
+    // The enabled lights, the brightest (keyLight) first, each weighted by its diffuse
+    // brightness against the brightest's: a surface facing the brightest light is fully lit,
+    // as in GL, and a dimmer fill light adds its part.
+    const AttribState& a = mAttrib;
+    out.count = 0;
+    const size_t key = keyLight();
+    float top = 0.0f;
+    for (size_t k = 0; k < 8; ++k) {
+        const size_t i = k == 0 ? key : (k <= key ? k - 1 : k);
+        if (!(a.lightsOn & (1u << i))) continue;
+        styles::SceneLights::Light& l = out.lights[out.count++];
+        l.position = a.lightPosition[i];
+        l.spotDirection = a.spotDirection[i];
+        const bool spot = l.position.w != 0.0f && a.spotCutoff[i] < 180.0f;
+        l.spotCosCutoff = spot ? std::cos(glm::radians(std::max(a.spotCutoff[i], 0.0f))) : -2.0f;
+        l.falloff = glm::vec4(a.attenuation[i], a.spotExponent[i]);
+        l.weight = glm::dot(glm::max(a.lightDiffuse[i], glm::vec3(0.0f)),
+                            glm::vec3(0.299f, 0.587f, 0.114f));
+        top = std::max(top, l.weight);
+    }
+    for (uint32_t k = 0; k < out.count; ++k) {
+        styles::SceneLights::Light& l = out.lights[k];
+        l.weight = top > 1e-6f ? l.weight / top : 1.0f;
     }
 }
 
@@ -1231,6 +1280,8 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.lit = a.lighting;
     batch.lightOn = a.lightsOn != 0;
     batch.keyLight = a.lightPosition[keyLight()];
+    if (a.lighting) litBy(batch.lights);
+    else batch.lights.count = 0;
     batch.texture = detailTexture();
     // Without GL lighting a lightmap is the surface's light (the styles' L·n).
     batch.lightmap = mLightUnit >= 0 && !a.lighting ? mUnitTextures[size_t(mLightUnit)] : 0;

@@ -8,6 +8,7 @@
 #include "reconstruct/Batch.h"
 #include "shim/Api.h"
 #include "stream/CallReader.h"
+#include "styles/Scene.h"
 
 #include <glm/glm.hpp>
 
@@ -42,6 +43,7 @@ struct TrackedBatch {
     bool held = false; // the compositor held it back (only when holding is on)
     bool lit = false;
     glm::vec4 keyLight{0.0f, 0.0f, 1.0f, 0.0f}; // the brightest enabled light, eye space
+    styles::SceneLights lights; // every enabled light, when lit
     bool lightOn = false;                       // any light enabled
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none
@@ -252,6 +254,8 @@ public:
     bool translucent() const;
     // The enabled light with the brightest diffuse colour (0 when none is on).
     size_t keyLight() const;
+    // The enabled lights as the styles take them (SceneLights).
+    void litBy(styles::SceneLights& out) const;
     // The hue of the enabled lights' diffuse colours, scaled so its brightest channel is 1.
     glm::vec3 lightTint() const;
     void polygonMode(GLenum face, GLenum mode);

@@ -33,9 +33,9 @@ namespace nprgl::styles {
     X(LinkProgram) X(PixelStorei) X(PointSize) X(PolygonMode) X(PolygonOffset) X(ReadBuffer)    \
     X(ReadPixels) X(RenderbufferStorage) X(Scissor) X(ShaderSource) X(StencilFunc)              \
     X(StencilMask) X(StencilOp) X(TexImage2D) X(TexParameterf) X(TexParameteri)                 \
-    X(TexSubImage2D) X(Uniform1f) X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform3fv)          \
-    X(Uniform4f) X(Uniform4fv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(UseProgram)            \
-    X(Uniform2i) \
+    X(TexSubImage2D) X(Uniform1f) X(Uniform1fv) X(Uniform1i) X(Uniform2f) X(Uniform3f)         \
+    X(Uniform3fv) X(Uniform4f) X(Uniform4fv) X(UniformMatrix3fv) X(UniformMatrix4fv)          \
+    X(UseProgram) X(Uniform2i) \
     X(CopyTexSubImage2D) \
     X(ClearBufferuiv) \
     X(Uniform4i) \

@@ -11,6 +11,20 @@
 
 namespace nprgl::styles {
 
+// The program's enabled GL lights at a lit draw, the brightest first: what the shading styles'
+// light term sums, as GL's diffuse sum does (ShadingCommon's litDot).
+struct SceneLights {
+    struct Light {
+        glm::vec4 position{0.0f, 0.0f, 1.0f, 0.0f}; // eye space; w 0: towards a far light
+        glm::vec3 spotDirection{0.0f, 0.0f, -1.0f}; // eye space, where a spot points
+        float spotCosCutoff = -2.0f;                 // below -1: not a spot
+        glm::vec4 falloff{1.0f, 0.0f, 0.0f, 0.0f};   // constant, linear, quadratic; spot exponent
+        float weight = 1.0f; // its diffuse brightness against the brightest light's (1)
+    };
+    uint32_t count = 0; // 0: the object was not lit by the program
+    Light lights[8];
+};
+
 // One object the compositor held back: a welded mesh and the state it was drawn with.
 // Colours per corner (mesh->corner(f, k).color) are what the program's picture shows: the
 // current colour, or the material's diffuse when it lit the object without colour-material.
@@ -21,6 +35,8 @@ struct SceneObject {
     // Towards the light in eye space, unit: the brightest enabled light's position (or
     // direction) when the program lit the object, else a head-light from the upper left.
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
+    // Every light the program lit it with (none: lightDir alone, a head-light).
+    SceneLights lights;
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
     // GL lighting, the shading styles take their light from it instead of L·n. 0: none.

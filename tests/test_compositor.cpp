@@ -852,6 +852,36 @@ TEST(Compositor, AWeaponInADepthRangeOfItsOwnStaysInFront)
     EXPECT_LT(redPixels(run("pencil+paper", true)), 50) << "the pencil left the weapon as drawn";
 }
 
+// Every enabled GL light shades the styled scene, as GL sums their diffuse light: demo_immediate
+// --light1 adds a white light as bright as its first, from the lower right. In toon the far
+// sides of the shapes come out of the shadow band (with the brightest light alone, they would
+// not: the two white lights leave the colours' hue as it was). A spot aimed away from the
+// shapes lights none of them, as in GL; aimed at them, it does.
+TEST(Compositor, EveryEnabledLightShadesTheStyledScene)
+{
+    auto run = [](const std::string& style, const std::string& light1) {
+        std::vector<std::string> extra;
+        if (!light1.empty()) extra = {"--light1", light1};
+        return demoFrame("immediate", "light1_" + style + "_" + (light1.empty() ? "off" : light1),
+                         {"--style", style}, extra);
+    };
+    const ImageDiff native = compareImages(run("none", ""), run("none", "directional"), 24);
+    ASSERT_TRUE(native.comparable) << native.error;
+    EXPECT_GT(native.differingPixels, 2000u) << "the second light lights nothing natively";
+
+    const std::string alone = run("toon", "");
+    const ImageDiff second = compareImages(alone, run("toon", "directional"), 24);
+    ASSERT_TRUE(second.comparable) << second.error;
+    EXPECT_GT(second.differingPixels, 2000u) << "the second light is not in the styled shading";
+
+    const ImageDiff away = compareImages(alone, run("toon", "spot-away"), 24);
+    ASSERT_TRUE(away.comparable) << away.error;
+    EXPECT_EQ(away.differingPixels, 0u) << "a spot aimed away from the shapes lit them";
+    const ImageDiff at = compareImages(alone, run("toon", "spot"), 24);
+    ASSERT_TRUE(at.comparable) << at.error;
+    EXPECT_GT(at.differingPixels, 2000u) << "a spot aimed at the shapes lit nothing";
+}
+
 // The program's fog (linear, 6 to 11 units, pale) is applied to the styled colours: the far
 // floor fades into the fog colour as it does natively, and does not without fog.
 TEST(Compositor, TheProgramsFogFadesTheStyledScene)

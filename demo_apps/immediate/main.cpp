@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace {
@@ -51,16 +52,26 @@ public:
                  "tessellation factor; vertices per frame grow linearly (default 1)", 1, 2000},
                 {"shine", demo::ExtraOption::Kind::Flag,
                  "draw the first shape a second time, adding light (GL_ONE, GL_ONE) over the "
-                 "same vertices, as multi-pass programs draw a surface's layers"}};
+                 "same vertices, as multi-pass programs draw a surface's layers"},
+                {"light1", demo::ExtraOption::Kind::Text,
+                 "a second white light as bright as the first, from the lower right: "
+                 "'directional', 'spot' (positional, aimed at the shapes) or 'spot-away' (the "
+                 "same, aimed away from them)"}};
     }
 
-    bool init(const demo::Options& options, std::string&) override
+    bool init(const demo::Options& options, std::string& error) override
     {
         width_ = options.width;
         height_ = options.height;
         report_ = options.report;
         scale_ = std::sqrt(static_cast<float>(options.intValue("detail", 1)));
         shine_ = options.has("shine");
+        light1_ = options.textValue("light1", "");
+        if (!light1_.empty() && light1_ != "directional" && light1_ != "spot" &&
+            light1_ != "spot-away") {
+            error = "--light1: directional, spot or spot-away";
+            return false;
+        }
         buildShapes();
 
         glViewport(0, 0, width_, height_);
@@ -88,6 +99,7 @@ public:
         // Light fixed in eye space, above-left of the viewer.
         const float lightDirection[] = {-0.4f, 0.6f, 1.0f, 0.0f};
         glLightfv(GL_LIGHT0, GL_POSITION, lightDirection);
+        if (!light1_.empty()) placeLight1();
 
         glTranslatef(0.0f, 0.0f, -10.0f);
         glRotatef(15.0f, 1.0f, 0.0f, 0.0f);
@@ -114,6 +126,28 @@ public:
     }
 
 private:
+    // GL_LIGHT1, fixed in eye space at the lower right (as bright as GL_LIGHT0): a far light,
+    // or a spot with a 30-degree cone, aimed at the shapes or away from them.
+    void placeLight1() const
+    {
+        const float white[] = {1.0f, 1.0f, 1.0f, 1.0f};
+        glLightfv(GL_LIGHT1, GL_DIFFUSE, white);
+        if (light1_ == "directional") {
+            const float direction[] = {0.9f, -0.5f, 0.3f, 0.0f};
+            glLightfv(GL_LIGHT1, GL_POSITION, direction);
+            glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 180.0f);
+        } else {
+            const float position[] = {9.0f, -5.0f, -7.0f, 1.0f};
+            glLightfv(GL_LIGHT1, GL_POSITION, position);
+            const float towards[] = {-9.0f, 5.0f, -3.0f};
+            const float away[] = {9.0f, -5.0f, 3.0f};
+            glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, light1_ == "spot" ? towards : away);
+            glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 30.0f);
+            glLightf(GL_LIGHT1, GL_SPOT_EXPONENT, 2.0f);
+        }
+        glEnable(GL_LIGHT1);
+    }
+
     // The shape's second pass: unlit added light, no depth writes, the same vertices.
     static void drawShine(const Shape& shape)
     {
@@ -396,6 +430,7 @@ private:
     bool report_ = false;
     float scale_ = 1.0f;
     bool shine_ = false;
+    std::string light1_;
     std::vector<Shape> shapes_;
 };
 

@@ -18,7 +18,6 @@ uniform sampler2D ramp; // unit 1: the pure tones from cool (left) to warm (righ
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
-in vec3 eyePosition;
 out vec4 fragColor;
 
 void main()

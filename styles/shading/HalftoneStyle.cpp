@@ -22,7 +22,6 @@ uniform vec2 anchor;      // window pixel of the object's origin
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
-in vec3 eyePosition;
 out vec4 fragColor;
 
 void main()

@@ -53,15 +53,48 @@ vec3 shadingNormal(vec3 eyeNormal)
 }
 
 // The light a surface gets, as L·n in [-1, 1]: from the program's lightmap where it has one
-// and no GL lighting (its baked light's luminance), else from the light direction.
+// and no GL lighting (its baked light's luminance); from the program's lights where it lit
+// the object (SceneLights: each light's L·n at this point, attenuated and cut by its spot,
+// weighted by brightness and summed as GL sums their diffuse light; where none reaches, the
+// brightest light's own L·n, so the shadow side keeps its gradient); else from towardsLight.
 uniform sampler2D lightmap;
 uniform float lightmapped;
+uniform int lightCount;
+uniform vec4 lightPosition[8];
+uniform vec4 lightSpot[8];    // where a spot points; w: cos of its cutoff (below -1: no spot)
+uniform vec4 lightFalloff[8]; // constant, linear, quadratic attenuation; spot exponent
+uniform float lightWeight[8];
 in vec2 lightUv;
+in vec3 eyePosition;
 float litDot(vec3 n, vec3 towardsLight)
 {
-    if (lightmapped < 0.5) return dot(n, towardsLight);
-    vec3 baked = texture(lightmap, lightUv).rgb;
-    return 2.0 * dot(baked, vec3(0.299, 0.587, 0.114)) - 1.0;
+    if (lightmapped > 0.5) {
+        vec3 baked = texture(lightmap, lightUv).rgb;
+        return 2.0 * dot(baked, vec3(0.299, 0.587, 0.114)) - 1.0;
+    }
+    if (lightCount == 0) return dot(n, towardsLight);
+    float lit = 0.0;
+    float key = 0.0;
+    for (int i = 0; i < lightCount; ++i) {
+        vec4 p = lightPosition[i];
+        vec3 l = p.xyz - eyePosition * p.w;
+        float dist = length(l);
+        l /= max(dist, 1e-6);
+        float reach = 1.0;
+        if (p.w != 0.0) {
+            vec4 f = lightFalloff[i];
+            reach = 1.0 / max(f.x + (f.y + f.z * dist) * dist, 1e-6);
+            vec4 s = lightSpot[i];
+            if (s.w >= -1.0) {
+                float c = dot(-l, normalize(s.xyz));
+                reach *= c < s.w ? 0.0 : pow(max(c, 0.0), f.w);
+            }
+        }
+        float d = dot(n, l) * min(reach, 1.0);
+        if (i == 0) key = d;
+        lit += lightWeight[i] * max(d, 0.0);
+    }
+    return lit > 0.0 ? min(lit, 1.0) : key;
 }
 )";
 }
@@ -101,6 +134,11 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightDir = gl.GetUniformLocation(program, "lightDir");
     lightmapped = gl.GetUniformLocation(program, "lightmapped");
     lightmapSampler = gl.GetUniformLocation(program, "lightmap");
+    lightCount = gl.GetUniformLocation(program, "lightCount");
+    lightPosition = gl.GetUniformLocation(program, "lightPosition");
+    lightSpot = gl.GetUniformLocation(program, "lightSpot");
+    lightFalloff = gl.GetUniformLocation(program, "lightFalloff");
+    lightWeight = gl.GetUniformLocation(program, "lightWeight");
 }
 
 bool ShadingCommon::normalsFollowCcw(const reconstruct::ObjectMesh& mesh)
@@ -132,6 +170,7 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     const bool flip = !frontIsCcw ^ mirrored ^ !normalsFollowCcw(*object.mesh);
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
+    setLights(gl, object.lights);
     gl.Uniform1i(lightmapSampler, 3);
     gl.Uniform1f(lightmapped, 0.0f); // drawTextured says where a lightmap is bound
     if (fogMode >= 0) {
@@ -144,6 +183,28 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
         gl.Uniform3f(fogRange, f.start, f.end, f.density);
         gl.Uniform3fv(fogColour, 1, glm::value_ptr(f.colour));
     }
+}
+
+void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
+                                              const SceneLights& lights) const
+{
+    if (lightCount < 0) return;
+    const GLsizei n = GLsizei(std::min<uint32_t>(lights.count, 8));
+    gl.Uniform1i(lightCount, n);
+    if (n == 0) return;
+    glm::vec4 position[8], spot[8], falloff[8];
+    float weight[8];
+    for (GLsizei i = 0; i < n; ++i) {
+        const SceneLights::Light& l = lights.lights[i];
+        position[i] = l.position;
+        spot[i] = glm::vec4(l.spotDirection, l.spotCosCutoff);
+        falloff[i] = l.falloff;
+        weight[i] = l.weight;
+    }
+    gl.Uniform4fv(lightPosition, n, glm::value_ptr(position[0]));
+    gl.Uniform4fv(lightSpot, n, glm::value_ptr(spot[0]));
+    gl.Uniform4fv(lightFalloff, n, glm::value_ptr(falloff[0]));
+    gl.Uniform1fv(lightWeight, n, weight);
 }
 
 bool ShadingCommon::beginTwoSided(const GlFunctions& gl)

@@ -22,7 +22,9 @@ public:
     // Uniforms: see ObjectUniforms.
     static const char* vertexShader();
     // GLSL helper for fragment shaders: `vec3 shadingNormal(vec3 eyeNormal)` normalises and
-    // flips it when it points away from the visible side (two-sided lighting).
+    // flips it when it points away from the visible side (two-sided lighting), and
+    // `float litDot(vec3 n, vec3 towardsLight)`, the light term. Declares `in vec3
+    // eyePosition`.
     static const char* normalFunction();
     // GLSL helper for fragment shaders: `vec3 programFog(vec3 colour, vec3 eyePosition)`, the
     // program's fog (SceneObject::fog) over a styled colour. Declare `in vec3 eyePosition`.
@@ -32,9 +34,12 @@ public:
         GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
         GLint fogMode = -1, fogRange = -1, fogColour = -1;
         GLint lightmapped = -1, lightmapSampler = -1;
+        GLint lightCount = -1, lightPosition = -1, lightSpot = -1, lightFalloff = -1,
+              lightWeight = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;
+        void setLights(const GlFunctions& gl, const SceneLights& lights) const;
     };
     // Draws the object's faces with the program's textures bound on the active unit, run by
     // run (SceneObject::textureRuns); faces without one get a white texture, so that one

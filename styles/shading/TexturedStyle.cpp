@@ -243,7 +243,6 @@ std::string TexturedStyle::fragmentSource(bool textured) const
          "in vec3 eyeNormal;\n"
          "in vec4 baseColor;\n"
          "in vec2 uv;\n"
-         "in vec3 eyePosition;\n"
          "out vec4 fragColor;\n";
     s += layerFunction("lightLayer", mLight, lightMode, "lightTex", objectSpace);
     s += layerFunction("shadowLayer", mShadow, shadowMode, "shadowTex", objectSpace);

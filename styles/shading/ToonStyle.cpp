@@ -19,7 +19,6 @@ uniform sampler2D detail;
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
-in vec3 eyePosition;
 out vec4 fragColor;
 
 // 0 below the threshold, 1 above; with SMOOTH a one-pixel ramp (screen-space antialiasing of

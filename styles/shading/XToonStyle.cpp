@@ -24,7 +24,6 @@ uniform float perspectiveView;
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
-in vec3 eyePosition;
 out vec4 fragColor;
 
 void main()
