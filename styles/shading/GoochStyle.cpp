@@ -73,7 +73,7 @@ StyleInfo goochStyleInfo()
     return info;
 }
 
-std::string GoochStyle::fragmentSource(bool detail) const
+std::string GoochStyle::fragmentSource(bool detail, int lights) const
 {
     auto f = [](float v) { return ShadingCommon::glslFloat(v); };
     std::string s = "#version 130\n";
@@ -82,8 +82,20 @@ std::string GoochStyle::fragmentSource(bool detail) const
     s += "const float alpha = " + f(mAlpha) + ";\n";
     s += "const float beta = " + f(mBeta) + ";\n";
     s += "const float highlight = " + f(mHighlight) + ";\n";
-    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+    return s + ShadingCommon::normalFunction(lights) + ShadingCommon::fogFunction() +
            kFragment;
+}
+
+bool GoochStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
+{
+    const std::string fragment = fragmentSource(k % 2 == 1, ShadingCommon::variantLights(k));
+    Variant& variant = mVariants[k];
+    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+        return false;
+    }
+    variant.u.find(gl, variant.program.id());
+    variant.ramp = variant.program.uniform(gl, "ramp");
+    return true;
 }
 
 bool GoochStyle::init(StyleContext& ctx, std::string& error)
@@ -95,15 +107,9 @@ bool GoochStyle::init(StyleContext& ctx, std::string& error)
     mBeta = float(ctx.param("gooch", "beta"));
     mHighlight = float(ctx.param("gooch", "highlight"));
     mDetail = ctx.param("gooch", "detail") >= 0.5;
-    for (int v = 0; v < (mDetail ? 2 : 1); ++v) {
-        const std::string fragment = fragmentSource(v == 1);
-        Variant& variant = mVariants[v];
-        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
-                                   error)) {
-            return false;
-        }
-        variant.u.find(gl, variant.program.id());
-        variant.ramp = variant.program.uniform(gl, "ramp");
+    // Unlit objects' variants now; those for lit ones when first needed (variantFor).
+    for (int k = 0; k < (mDetail ? 2 : 1); ++k) {
+        if (!buildVariant(gl, k, error)) return false;
     }
     const std::string path = ctx.text("gooch", "texture");
     std::string why;
@@ -151,7 +157,9 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured() && mDetail;
-        const Variant& variant = mVariants[textured ? 1 : 0];
+        Variant& variant = ShadingCommon::variantFor(
+            mVariants, mVariantsFailed, textured, object,
+            [&](int k, std::string& error) { return buildVariant(gl, k, error); });
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);

@@ -24,10 +24,12 @@ private:
         ShadingCommon::ObjectUniforms u;
         GLint ramp = -1;
     };
-    std::string fragmentSource(bool detail) const;
+    std::string fragmentSource(bool detail, int lights) const;
+    bool buildVariant(const GlFunctions& gl, int k, std::string& error);
     TextureImage generatedRamp() const;
 
-    Variant mVariants[2];
+    Variant mVariants[ShadingCommon::kVariants]; // ShadingCommon::variantIndex
+    uint32_t mVariantsFailed = 0;
     float mBlue = 0.4f, mYellow = 0.4f, mAlpha = 0.2f, mBeta = 0.6f;
     float mHighlight = 0.0f; // exponent of the white highlight (0: none)
     bool mDetail = true;

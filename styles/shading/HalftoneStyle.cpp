@@ -129,7 +129,7 @@ bool HalftoneStyle::screenMipmaps() const
     return mObjectSpace || mScale > 1.0f;
 }
 
-std::string HalftoneStyle::fragmentSource(bool textured) const
+std::string HalftoneStyle::fragmentSource(bool textured, int lights) const
 {
     auto f = [](float v) { return ShadingCommon::glslFloat(v); };
     auto flag = [](const char* name, bool on) {
@@ -153,8 +153,21 @@ std::string HalftoneStyle::fragmentSource(bool textured) const
     s += "const vec3 paper = " + ShadingCommon::glslVec3(mPaper) + ";\n";
     s += std::string("#define INK_COLOR ") +
          (mInkFromObject ? "(baseColor.rgb * 0.6)" : ShadingCommon::glslVec3(mInk)) + "\n";
-    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+    return s + ShadingCommon::normalFunction(lights) + ShadingCommon::fogFunction() +
            kFragment;
+}
+
+bool HalftoneStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
+{
+    const std::string fragment = fragmentSource(k % 2 == 1, ShadingCommon::variantLights(k));
+    Variant& variant = mVariants[k];
+    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+        return false;
+    }
+    variant.u.find(gl, variant.program.id());
+    variant.anchor = variant.program.uniform(gl, "anchor");
+    variant.screen = variant.program.uniform(gl, "screen");
+    return true;
 }
 
 bool HalftoneStyle::init(StyleContext& ctx, std::string& error)
@@ -196,16 +209,9 @@ bool HalftoneStyle::init(StyleContext& ctx, std::string& error)
 
     // The programs know the screen's size, so they come after it.
     const GlFunctions& gl = ctx.gl;
-    for (int v = 0; v < 2; ++v) {
-        const std::string fragment = fragmentSource(v == 1);
-        Variant& variant = mVariants[v];
-        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
-                                   error)) {
-            return false;
-        }
-        variant.u.find(gl, variant.program.id());
-        variant.anchor = variant.program.uniform(gl, "anchor");
-        variant.screen = variant.program.uniform(gl, "screen");
+    // Unlit objects' variants now; those for lit ones when first needed (variantFor).
+    for (int k = 0; k < 2; ++k) {
+        if (!buildVariant(gl, k, error)) return false;
     }
     return true;
 }
@@ -224,7 +230,9 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured();
-        Variant& variant = mVariants[textured ? 1 : 0];
+        Variant& variant = ShadingCommon::variantFor(
+            mVariants, mVariantsFailed, textured, object,
+            [&](int k, std::string& error) { return buildVariant(gl, k, error); });
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);

@@ -30,10 +30,12 @@ private:
         GLint anchor = -1, screen = -1;
         bool configured = false; // its sampler units are set
     };
-    std::string fragmentSource(bool textured) const;
+    std::string fragmentSource(bool textured, int lights) const;
+    bool buildVariant(const GlFunctions& gl, int k, std::string& error);
     bool screenMipmaps() const;
 
-    Variant mVariants[2];
+    Variant mVariants[ShadingCommon::kVariants]; // ShadingCommon::variantIndex
+    uint32_t mVariantsFailed = 0;
     TextureImage mScreenImage; // combined H, uploaded on first render
     GlTexture mScreen;
     float mAmbient = 0.0f, mDiffuse = 1.0f, mGamma = 1.0f, mSmoothness = 6.0f, mScale = 1.0f;

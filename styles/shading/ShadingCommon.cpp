@@ -38,9 +38,9 @@ void main()
 )";
 }
 
-const char* ShadingCommon::normalFunction()
+std::string ShadingCommon::normalFunction(int lights)
 {
-    return R"(
+    return "#define PROGRAM_LIGHTS " + std::to_string(lights) + R"(
 uniform float faceSign;
 vec3 shadingNormal(vec3 eyeNormal)
 {
@@ -59,11 +59,12 @@ vec3 shadingNormal(vec3 eyeNormal)
 // brightest light's own L·n, so the shadow side keeps its gradient); else from towardsLight.
 uniform sampler2D lightmap;
 uniform float lightmapped;
-uniform int lightCount;
-uniform vec4 lightPosition[8];
-uniform vec4 lightSpot[8];    // where a spot points; w: cos of its cutoff (below -1: no spot)
-uniform vec4 lightFalloff[8]; // constant, linear, quadratic attenuation; spot exponent
-uniform float lightWeight[8];
+#if PROGRAM_LIGHTS
+uniform vec4 lightPosition[PROGRAM_LIGHTS];
+uniform vec4 lightSpot[PROGRAM_LIGHTS];    // where a spot points (unit); w: cos of its cutoff
+uniform vec4 lightFalloff[PROGRAM_LIGHTS]; // constant, linear, quadratic attenuation; exponent
+uniform float lightWeight[PROGRAM_LIGHTS]; // 0: no light (a variant sums more than there are)
+#endif
 in vec2 lightUv;
 in vec3 eyePosition;
 float litDot(vec3 n, vec3 towardsLight)
@@ -72,29 +73,29 @@ float litDot(vec3 n, vec3 towardsLight)
         vec3 baked = texture(lightmap, lightUv).rgb;
         return 2.0 * dot(baked, vec3(0.299, 0.587, 0.114)) - 1.0;
     }
-    if (lightCount == 0) return dot(n, towardsLight);
+#if PROGRAM_LIGHTS
+    // Without branches (llvmpipe runs both sides): a far light has attenuation 1, 0, 0 and a
+    // light that is no spot a cutoff of -2 and exponent 0, so both factors are 1 there.
     float lit = 0.0;
     float key = 0.0;
-    for (int i = 0; i < lightCount; ++i) {
+    for (int i = 0; i < PROGRAM_LIGHTS; ++i) {
         vec4 p = lightPosition[i];
         vec3 l = p.xyz - eyePosition * p.w;
         float dist = length(l);
         l /= max(dist, 1e-6);
-        float reach = 1.0;
-        if (p.w != 0.0) {
-            vec4 f = lightFalloff[i];
-            reach = 1.0 / max(f.x + (f.y + f.z * dist) * dist, 1e-6);
-            vec4 s = lightSpot[i];
-            if (s.w >= -1.0) {
-                float c = dot(-l, normalize(s.xyz));
-                reach *= c < s.w ? 0.0 : pow(max(c, 0.0), f.w);
-            }
-        }
+        vec4 f = lightFalloff[i];
+        vec4 s = lightSpot[i];
+        float c = dot(-l, s.xyz);
+        float reach = step(s.w, c) * exp2(f.w * log2(max(c, 1e-4))) /
+                      max(f.x + (f.y + f.z * dist) * dist, 1e-6);
         float d = dot(n, l) * min(reach, 1.0);
         if (i == 0) key = d;
         lit += lightWeight[i] * max(d, 0.0);
     }
     return lit > 0.0 ? min(lit, 1.0) : key;
+#else
+    return dot(n, towardsLight);
+#endif
 }
 )";
 }
@@ -134,7 +135,6 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightDir = gl.GetUniformLocation(program, "lightDir");
     lightmapped = gl.GetUniformLocation(program, "lightmapped");
     lightmapSampler = gl.GetUniformLocation(program, "lightmap");
-    lightCount = gl.GetUniformLocation(program, "lightCount");
     lightPosition = gl.GetUniformLocation(program, "lightPosition");
     lightSpot = gl.GetUniformLocation(program, "lightSpot");
     lightFalloff = gl.GetUniformLocation(program, "lightFalloff");
@@ -188,23 +188,31 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
 void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
                                               const SceneLights& lights) const
 {
-    if (lightCount < 0) return;
-    const GLsizei n = GLsizei(std::min<uint32_t>(lights.count, 8));
-    gl.Uniform1i(lightCount, n);
-    if (n == 0) return;
+    if (lightPosition < 0) return; // a variant without the program's lights
+    // The shader sums all 8 in its largest variant: the ones past the object's weigh nothing.
     glm::vec4 position[8], spot[8], falloff[8];
     float weight[8];
-    for (GLsizei i = 0; i < n; ++i) {
-        const SceneLights::Light& l = lights.lights[i];
+    const uint32_t n = std::min<uint32_t>(lights.count, 8);
+    for (uint32_t i = 0; i < 8; ++i) {
+        SceneLights::Light l;
+        if (i < n) l = lights.lights[i];
+        else l.weight = 0.0f;
+        // The shader takes its factors without branches: a far light is not attenuated and
+        // a light that is no spot has a cutoff of -2 and exponent 0 (SceneLights' defaults).
+        const bool isSpot = l.position.w != 0.0f && l.spotCosCutoff >= -1.0f;
+        const float length = glm::length(l.spotDirection);
         position[i] = l.position;
-        spot[i] = glm::vec4(l.spotDirection, l.spotCosCutoff);
-        falloff[i] = l.falloff;
+        spot[i] = glm::vec4(isSpot && length > 1e-12f ? l.spotDirection / length
+                                                       : glm::vec3(0.0f, 0.0f, -1.0f),
+                            isSpot ? l.spotCosCutoff : -2.0f);
+        falloff[i] = l.position.w != 0.0f ? l.falloff : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+        if (!isSpot) falloff[i].w = 0.0f;
         weight[i] = l.weight;
     }
-    gl.Uniform4fv(lightPosition, n, glm::value_ptr(position[0]));
-    gl.Uniform4fv(lightSpot, n, glm::value_ptr(spot[0]));
-    gl.Uniform4fv(lightFalloff, n, glm::value_ptr(falloff[0]));
-    gl.Uniform1fv(lightWeight, n, weight);
+    gl.Uniform4fv(lightPosition, 8, glm::value_ptr(position[0]));
+    gl.Uniform4fv(lightSpot, 8, glm::value_ptr(spot[0]));
+    gl.Uniform4fv(lightFalloff, 8, glm::value_ptr(falloff[0]));
+    gl.Uniform1fv(lightWeight, 8, weight);
 }
 
 bool ShadingCommon::beginTwoSided(const GlFunctions& gl)

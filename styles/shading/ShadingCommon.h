@@ -1,5 +1,6 @@
 #pragma once
 
+#include "common/Log.h"
 #include "styles/Scene.h"
 #include "styles/Style.h"
 
@@ -23,9 +24,45 @@ public:
     static const char* vertexShader();
     // GLSL helper for fragment shaders: `vec3 shadingNormal(vec3 eyeNormal)` normalises and
     // flips it when it points away from the visible side (two-sided lighting), and
-    // `float litDot(vec3 n, vec3 towardsLight)`, the light term. Declares `in vec3
+    // `float litDot(vec3 n, vec3 towardsLight)`, the light term: the sum over the first
+    // `lights` of the object's SceneLights (0: towardsLight alone). Declares `in vec3
     // eyePosition`.
-    static const char* normalFunction();
+    static std::string normalFunction(int lights = 0);
+    // A shading style's shader variants: [textured] + 2 * [lights class], the class by how
+    // many lights the program lit the object with: none, one, two, or up to eight. Each sums
+    // a fixed number of lights, so llvmpipe runs no loop of unknown length for any pixel (it
+    // pays for every iteration the shader could run).
+    static constexpr int kVariants = 8;
+    static int variantIndex(bool textured, const SceneObject& object)
+    {
+        const uint32_t n = object.lights.count;
+        return (textured ? 1 : 0) + 2 * (n == 0 ? 0 : n == 1 ? 1 : n == 2 ? 2 : 3);
+    }
+    // How many lights variant k's shader sums.
+    static int variantLights(int k)
+    {
+        constexpr int kLights[4] = {0, 1, 2, 8};
+        return kLights[(k / 2) & 3];
+    }
+    // The variant that draws `object`, built on first use by build(k, error) (a style's own
+    // uniforms); where that fails, said once and the unlit variant instead.
+    template <typename V, typename Build>
+    static V& variantFor(V (&variants)[kVariants], uint32_t& failed, bool textured,
+                         const SceneObject& object, Build&& build)
+    {
+        int k = variantIndex(textured, object);
+        if (variants[k].program.id() == 0 && !(failed & (1u << k))) {
+            std::string error;
+            if (!build(k, error)) {
+                failed |= 1u << k;
+                NPRGL_ERROR("a shader for objects lit by %d light(s) does not build (%s); they "
+                            "are shaded by a head-light",
+                            variantLights(k), error.c_str());
+            }
+        }
+        if (variants[k].program.id() == 0) k = textured ? 1 : 0;
+        return variants[k];
+    }
     // GLSL helper for fragment shaders: `vec3 programFog(vec3 colour, vec3 eyePosition)`, the
     // program's fog (SceneObject::fog) over a styled colour. Declare `in vec3 eyePosition`.
     static const char* fogFunction();
@@ -34,8 +71,7 @@ public:
         GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
         GLint fogMode = -1, fogRange = -1, fogColour = -1;
         GLint lightmapped = -1, lightmapSampler = -1;
-        GLint lightCount = -1, lightPosition = -1, lightSpot = -1, lightFalloff = -1,
-              lightWeight = -1;
+        GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;

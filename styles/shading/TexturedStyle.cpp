@@ -206,7 +206,7 @@ std::string TexturedStyle::layerFunction(const char* name, const Layer& layer, i
     return std::string("vec3 ") + name + "()\n{\n" + body + "}\n";
 }
 
-std::string TexturedStyle::fragmentSource(bool textured) const
+std::string TexturedStyle::fragmentSource(bool textured, int lights) const
 {
     auto f = [](float v) { return ShadingCommon::glslFloat(v); };
     auto flag = [](const char* name, bool on) {
@@ -233,7 +233,7 @@ std::string TexturedStyle::fragmentSource(bool textured) const
     s += "const float bandLow = " + f(mBandLow) + ";\n";   // ta_l
     s += "const float bandHigh = " + f(mBandHigh) + ";\n"; // ta_u
     s += "const float falloff = " + f(mFalloff) + ";\n";
-    s += ShadingCommon::normalFunction();
+    s += ShadingCommon::normalFunction(lights);
     s += ShadingCommon::fogFunction();
     s += "uniform vec3 lightDir;\n"
          "uniform sampler2D lightTex;\n"
@@ -247,6 +247,20 @@ std::string TexturedStyle::fragmentSource(bool textured) const
     s += layerFunction("lightLayer", mLight, lightMode, "lightTex", objectSpace);
     s += layerFunction("shadowLayer", mShadow, shadowMode, "shadowTex", objectSpace);
     return s + kFragment;
+}
+
+bool TexturedStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
+{
+    const std::string fragment = fragmentSource(k % 2 == 1, ShadingCommon::variantLights(k));
+    Variant& variant = mVariants[k];
+    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+        return false;
+    }
+    variant.u.find(gl, variant.program.id());
+    variant.anchor = variant.program.uniform(gl, "anchor");
+    variant.lightTex = variant.program.uniform(gl, "lightTex");
+    variant.shadowTex = variant.program.uniform(gl, "shadowTex");
+    return true;
 }
 
 bool TexturedStyle::init(StyleContext& ctx, std::string& error)
@@ -289,17 +303,9 @@ bool TexturedStyle::init(StyleContext& ctx, std::string& error)
 
     // The programs know the layers' sizes, so they come after them.
     const GlFunctions& gl = ctx.gl;
-    for (int v = 0; v < 2; ++v) {
-        const std::string fragment = fragmentSource(v == 1);
-        Variant& variant = mVariants[v];
-        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
-                                   error)) {
-            return false;
-        }
-        variant.u.find(gl, variant.program.id());
-        variant.anchor = variant.program.uniform(gl, "anchor");
-        variant.lightTex = variant.program.uniform(gl, "lightTex");
-        variant.shadowTex = variant.program.uniform(gl, "shadowTex");
+    // Unlit objects' variants now; those for lit ones when first needed (variantFor).
+    for (int k = 0; k < 2; ++k) {
+        if (!buildVariant(gl, k, error)) return false;
     }
     return true;
 }
@@ -325,7 +331,9 @@ void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured();
-        Variant& variant = mVariants[textured ? 1 : 0];
+        Variant& variant = ShadingCommon::variantFor(
+            mVariants, mVariantsFailed, textured, object,
+            [&](int k, std::string& error) { return buildVariant(gl, k, error); });
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);

@@ -42,11 +42,13 @@ private:
         bool configured = false; // its sampler units are set
     };
     void prepareLayer(StyleContext& ctx, Layer& layer, const char* choice, const char* png);
-    std::string fragmentSource(bool textured) const;
+    std::string fragmentSource(bool textured, int lights) const;
+    bool buildVariant(const GlFunctions& gl, int k, std::string& error);
     std::string layerFunction(const char* name, const Layer& layer, int mode, const char* sampler,
                               bool objectSpace) const;
     bool layerMipmaps() const;
-    Variant mVariants[2];
+    Variant mVariants[ShadingCommon::kVariants]; // ShadingCommon::variantIndex
+    uint32_t mVariantsFailed = 0;
     Layer mLight, mShadow;
     bool mUploaded = false;
     int mTones = 2;

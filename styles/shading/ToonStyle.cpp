@@ -112,7 +112,7 @@ StyleInfo toonStyleInfo()
     return info;
 }
 
-std::string ToonStyle::fragmentSource(int detail) const
+std::string ToonStyle::fragmentSource(int detail, int lights) const
 {
     auto f = [](float v) { return ShadingCommon::glslFloat(v); };
     std::string s = "#version 130\n";
@@ -134,8 +134,19 @@ std::string ToonStyle::fragmentSource(int detail) const
          ((mFixed & 4) ? ShadingCommon::glslVec3(mColors[2])
                        : "mix(base, vec3(1.0), " + f(mHighlightMix) + ")") +
          "\n";
-    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+    return s + ShadingCommon::normalFunction(lights) + ShadingCommon::fogFunction() +
            kFragment;
+}
+
+bool ToonStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
+{
+    const std::string fragment = fragmentSource(k % 2 == 0 ? 0 : mDetail, ShadingCommon::variantLights(k));
+    Variant& variant = mVariants[k];
+    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+        return false;
+    }
+    variant.u.find(gl, variant.program.id());
+    return true;
 }
 
 bool ToonStyle::init(StyleContext& ctx, std::string& error)
@@ -173,14 +184,9 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
         }
     }
     // Untextured objects, and the detail mode for textured ones (when it is on).
-    for (int v = 0; v < (mDetail != 0 ? 2 : 1); ++v) {
-        const std::string fragment = fragmentSource(v == 0 ? 0 : mDetail);
-        Variant& variant = mVariants[v];
-        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
-                                   error)) {
-            return false;
-        }
-        variant.u.find(gl, variant.program.id());
+    // Unlit objects' variants now; those for lit ones when first needed (variantFor).
+    for (int k = 0; k < (mDetail != 0 ? 2 : 1); ++k) {
+        if (!buildVariant(gl, k, error)) return false;
     }
     return true;
 }
@@ -193,7 +199,9 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured() && mDetail != 0;
-        const Variant& variant = mVariants[textured ? 1 : 0];
+        Variant& variant = ShadingCommon::variantFor(
+            mVariants, mVariantsFailed, textured, object,
+            [&](int k, std::string& error) { return buildVariant(gl, k, error); });
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);

@@ -27,9 +27,11 @@ private:
         ShaderProgram program;
         ShadingCommon::ObjectUniforms u;
     };
-    std::string fragmentSource(int detail) const;
+    std::string fragmentSource(int detail, int lights) const;
+    bool buildVariant(const GlFunctions& gl, int k, std::string& error);
 
-    Variant mVariants[2];
+    Variant mVariants[ShadingCommon::kVariants]; // ShadingCommon::variantIndex
+    uint32_t mVariantsFailed = 0;
     // Parameters: fixed for the chain's life, so read once at init.
     int mTones = 3;
     float mDiffuseThreshold = 0.0f, mHighlightThreshold = 0.9f;

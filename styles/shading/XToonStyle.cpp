@@ -81,14 +81,28 @@ StyleInfo xtoonStyleInfo()
     return info;
 }
 
-std::string XToonStyle::fragmentSource(bool detail) const
+std::string XToonStyle::fragmentSource(bool detail, int lights) const
 {
     std::string s = "#version 130\n";
     s += std::string("#define DETAIL ") + (detail ? "1" : "0") + "\n";
     s += std::string("#define ORIENTATION ") + (mOrientation ? "1" : "0") + "\n";
     s += "const float exponent = " + ShadingCommon::glslFloat(mExponent) + ";\n";
-    return s + ShadingCommon::normalFunction() + ShadingCommon::fogFunction() +
+    return s + ShadingCommon::normalFunction(lights) + ShadingCommon::fogFunction() +
            kFragment;
+}
+
+bool XToonStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
+{
+    const std::string fragment = fragmentSource(k % 2 == 1, ShadingCommon::variantLights(k));
+    Variant& variant = mVariants[k];
+    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+        return false;
+    }
+    variant.u.find(gl, variant.program.id());
+    variant.depthRange = variant.program.uniform(gl, "depthRange");
+    variant.perspectiveView = variant.program.uniform(gl, "perspectiveView");
+    variant.toneMap = variant.program.uniform(gl, "toneMap");
+    return true;
 }
 
 bool XToonStyle::init(StyleContext& ctx, std::string& error)
@@ -114,17 +128,9 @@ bool XToonStyle::init(StyleContext& ctx, std::string& error)
         }
         mToneImage = XToonTexture::generate(bands);
     }
-    for (int v = 0; v < (mDetail ? 2 : 1); ++v) {
-        const std::string fragment = fragmentSource(v == 1);
-        Variant& variant = mVariants[v];
-        if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(),
-                                   error)) {
-            return false;
-        }
-        variant.u.find(gl, variant.program.id());
-        variant.depthRange = variant.program.uniform(gl, "depthRange");
-        variant.perspectiveView = variant.program.uniform(gl, "perspectiveView");
-        variant.toneMap = variant.program.uniform(gl, "toneMap");
+    // Unlit objects' variants now; those for lit ones when first needed (variantFor).
+    for (int k = 0; k < (mDetail ? 2 : 1); ++k) {
+        if (!buildVariant(gl, k, error)) return false;
     }
     return true;
 }
@@ -186,7 +192,9 @@ void XToonStyle::render(const Scene& scene, StyleContext& ctx)
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured() && mDetail;
-        const Variant& variant = mVariants[textured ? 1 : 0];
+        Variant& variant = ShadingCommon::variantFor(
+            mVariants, mVariantsFailed, textured, object,
+            [&](int k, std::string& error) { return buildVariant(gl, k, error); });
         if (variant.program.id() != current) {
             current = variant.program.id();
             gl.UseProgram(current);

@@ -27,13 +27,15 @@ private:
         ShadingCommon::ObjectUniforms u;
         GLint depthRange = -1, perspectiveView = -1, toneMap = -1;
     };
-    std::string fragmentSource(bool detail) const;
+    std::string fragmentSource(bool detail, int lights) const;
+    bool buildVariant(const GlFunctions& gl, int k, std::string& error);
     // The scene's eye distances: the near and far of the depth axis when not configured.
     glm::vec2 sceneDepthRange(const Scene& scene) const;
     // The depth axis' ends: near and far, each the scene's where not configured.
     glm::vec2 depthRange(const Scene& scene);
 
-    Variant mVariants[2]; // [0] untextured objects, [1] with the program's texture
+    Variant mVariants[ShadingCommon::kVariants]; // ShadingCommon::variantIndex
+    uint32_t mVariantsFailed = 0;
     GlTexture mToneMap;
     TextureImage mToneImage;
     bool mOrientation = false;
