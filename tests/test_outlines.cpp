@@ -404,6 +404,42 @@ TEST(Edges, AnObjectOfOnePixelGetsNoOutline)
     EXPECT_GT(inkAround(20), 12);
 }
 
+// Thin geometry (a wire, a beam, a rail far off: one or two pixels across) keeps its colour
+// between its outlines: they are drawn on its neighbours' pixels, not over it. Before, the
+// line's two-pixel band covered such a wire whole.
+TEST(Edges, AThinWireKeepsItsColourBetweenItsOutlines)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const float d = 5.0f;
+    const float perPixel = 2.0f * d * std::tan(glm::radians(kFov) * 0.5f) / float(kSize);
+    // A vertical wire `pixels` wide whose left side is at pixel column x0 from the centre.
+    auto wire = [&](int x0, int pixels) {
+        const glm::vec3 at((float(x0) + 0.5f * float(pixels)) * perPixel, 0.0f, -d);
+        return boxBatch(glm::translate(glm::mat4(1.0f), at),
+                        glm::vec3(0.5f * float(pixels), 30.0f, 0.5f * float(pixels)) * perPixel,
+                        kPale);
+    };
+    const reconstruct::Batch wall =
+        boxBatch(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance)),
+                 glm::vec3(1.2f, 1.2f, 0.2f), kRed);
+    auto scene = harness.makeScene({wall, wire(-20, 1), wire(20, 2)}, perspective());
+    const PngImage image = render(harness, scene, "toon+edges", "", "edges_thin_wire");
+    const int cx = kSize / 2;
+    // Over the middle 40 rows: ink in a column (x from the centre).
+    auto inkIn = [&](int x) {
+        int n = 0;
+        for (int y = -20; y < 20; ++y) n += isInk(image, cx + x, kSize / 2 + y);
+        return n;
+    };
+    EXPECT_LT(inkIn(-20), 4) << "the one-pixel wire is under its outline";
+    EXPECT_LT(inkIn(20) + inkIn(21), 8) << "the two-pixel wire is under its outline";
+    EXPECT_GT(inkIn(-21), 36) << "no outline left of the one-pixel wire";
+    EXPECT_GT(inkIn(-19), 36) << "no outline right of the one-pixel wire";
+    EXPECT_GT(inkIn(19), 36) << "no outline left of the two-pixel wire";
+    EXPECT_GT(inkIn(22), 36) << "no outline right of the two-pixel wire";
+}
+
 // A beam reaching from behind the eye into the distance (a corridor wall, a rail) is outlined
 // all along its visible part: the passes cover the box as GL clips it at the near plane, not
 // just its corners in front. It enters the view at the left border and runs to the middle.

@@ -140,10 +140,18 @@ vec4 detect(ivec2 p, out float own)
     if (apart(c, e) && apart(c, w) && apart(c, n) && apart(c, s)) return vec4(vec3(0.0), own);
     uvec4 ne = at(p + ivec2(1, 1)), nw = at(p + ivec2(-1, 1));
     uvec4 se = at(p + ivec2(1, -1)), sw = at(p + ivec2(-1, -1));
-    if (apart(e, c) && apart(e, at(p + ivec2(2, 0))) && apart(e, ne) && apart(e, se)) ce = vec3(0.0);
-    if (apart(w, c) && apart(w, at(p - ivec2(2, 0))) && apart(w, nw) && apart(w, sw)) cw = vec3(0.0);
-    if (apart(n, c) && apart(n, at(p + ivec2(0, 2))) && apart(n, ne) && apart(n, nw)) cn = vec3(0.0);
-    if (apart(s, c) && apart(s, at(p - ivec2(0, 2))) && apart(s, se) && apart(s, sw)) cs = vec3(0.0);
+    uvec4 e2 = at(p + ivec2(2, 0)), w2 = at(p - ivec2(2, 0));
+    uvec4 n2 = at(p + ivec2(0, 2)), s2 = at(p - ivec2(0, 2));
+    if (apart(e, c) && apart(e, e2) && apart(e, ne) && apart(e, se)) ce = vec3(0.0);
+    if (apart(w, c) && apart(w, w2) && apart(w, nw) && apart(w, sw)) cw = vec3(0.0);
+    if (apart(n, c) && apart(n, n2) && apart(n, ne) && apart(n, nw)) cn = vec3(0.0);
+    if (apart(s, c) && apart(s, s2) && apart(s, se) && apart(s, sw)) cs = vec3(0.0);
+    // Thin across (one or two pixels between other things: a wire, a beam, a rail far off):
+    // no line on its own pixels along that axis, only on its neighbours' (which draw theirs
+    // against it), so it keeps its colour between two lines instead of vanishing under them.
+    bool toE = apart(c, e), toW = apart(c, w), toN = apart(c, n), toS = apart(c, s);
+    if ((toE && toW) || (toW && apart(c, e2)) || (toE && apart(c, w2))) ce = cw = vec3(0.0);
+    if ((toN && toS) || (toS && apart(c, n2)) || (toN && apart(c, s2))) cn = cs = vec3(0.0);
     float nearest = own;
     if (ce.r > 0.0) nearest = min(nearest, windowDepth(e.y));
     if (cw.r > 0.0) nearest = min(nearest, windowDepth(w.y));
