@@ -37,6 +37,9 @@ struct SceneObject {
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
     // Every light the program lit it with (none: lightDir alone, a head-light).
     SceneLights lights;
+    // Shaded in one even light (the shading styles' middle band): a sky or backdrop the
+    // program did not light, which a head-light would shade by its faces' arbitrary normals.
+    bool flatLight = false;
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
     // GL lighting, the shading styles take their light from it instead of L·n. 0: none.

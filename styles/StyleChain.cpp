@@ -105,8 +105,13 @@ void StyleChain::render(const Scene& scene)
         // scenery behind the scene (before its first object), marks over it (after): drawn as
         // the program drew them, so they neither hide nor cover what they should not. Without
         // the shading style the program draws them itself; they get no lines.
+        // Unlit by the program, they are shaded in an even light (a sky box's faces would
+        // otherwise fall into the shadow band by the head-light).
         if (!o.depthTest || (!o.depthWrite && !o.translucent && !o.depthOnly)) {
-            if (mHasShading) (depthTested ? mOnTop : mBackdrop).objects.push_back(o);
+            if (!mHasShading) continue;
+            Scene& part = depthTested ? mOnTop : mBackdrop;
+            part.objects.push_back(o);
+            part.objects.back().flatLight = o.lights.count == 0;
             continue;
         }
         depthTested = true;

@@ -177,6 +177,37 @@ TEST(Toon, SphereShowsOnlyItsBandColours)
     EXPECT_LE(colours.size(), 3u);
 }
 
+// A sky or backdrop the program drew without the depth test and did not light is shaded in
+// one even light (the diffuse band: its own colour), not by the head-light, which would put
+// half of a sky box's faces into the shadow band. Lit or depth-tested, the same sphere shows
+// its shadow band.
+TEST(Toon, AnUnlitBackdropIsShadedInAnEvenLight)
+{
+    StyleHarness harness(128, 128);
+    ASSERT_TRUE(harness.ok());
+    const glm::vec4 red(0.8f, 0.1f, 0.1f, 1.0f);
+    auto mv = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -6));
+    auto shadowPixels = [&](bool backdrop) {
+        // The head-light from the right: the left half of the sphere is in shadow.
+        auto scene = harness.makeScene({sphereBatch(mv, 1.5f, 48, 24, red)}, perspective(),
+                                       glm::normalize(glm::vec3(1.0f, 0.0f, 0.2f)));
+        for (auto& o : scene.objects) o.depthTest = !backdrop;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+        int shadow = 0, diffuse = 0;
+        for (size_t i = 0; i < image.rgba.size(); i += 4) {
+            const Rgb c{image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]};
+            shadow += near(c, Rgb{112, 14, 14});
+            diffuse += near(c, kDiffuse);
+        }
+        EXPECT_GT(diffuse, 500);
+        return shadow;
+    };
+    EXPECT_GT(shadowPixels(false), 500) << "no shadow band on the depth-tested sphere: no test";
+    EXPECT_EQ(shadowPixels(true), 0) << "the backdrop is shaded by the head-light";
+}
+
 TEST_F(Shading, TwoTonesGiveTwoColoursMatchingTheLight)
 {
     ASSERT_TRUE(harness.ok());

@@ -59,6 +59,7 @@ vec3 shadingNormal(vec3 eyeNormal)
 // brightest light's own L·n, so the shadow side keeps its gradient); else from towardsLight.
 uniform sampler2D lightmap;
 uniform float lightmapped;
+uniform float flatLight; // above -2: the light everywhere (SceneObject::flatLight)
 #if PROGRAM_LIGHTS
 uniform vec4 lightPosition[PROGRAM_LIGHTS];
 uniform vec4 lightSpot[PROGRAM_LIGHTS];    // where a spot points (unit); w: cos of its cutoff
@@ -69,6 +70,7 @@ in vec2 lightUv;
 in vec3 eyePosition;
 float litDot(vec3 n, vec3 towardsLight)
 {
+    if (flatLight > -2.0) return flatLight;
     if (lightmapped > 0.5) {
         vec3 baked = texture(lightmap, lightUv).rgb;
         return 2.0 * dot(baked, vec3(0.299, 0.587, 0.114)) - 1.0;
@@ -135,6 +137,7 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightDir = gl.GetUniformLocation(program, "lightDir");
     lightmapped = gl.GetUniformLocation(program, "lightmapped");
     lightmapSampler = gl.GetUniformLocation(program, "lightmap");
+    flatLight = gl.GetUniformLocation(program, "flatLight");
     lightPosition = gl.GetUniformLocation(program, "lightPosition");
     lightSpot = gl.GetUniformLocation(program, "lightSpot");
     lightFalloff = gl.GetUniformLocation(program, "lightFalloff");
@@ -171,6 +174,8 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
     setLights(gl, object.lights);
+    // Between the toon bands' thresholds (their base colour), halftone's light dots.
+    gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     gl.Uniform1i(lightmapSampler, 3);
     gl.Uniform1f(lightmapped, 0.0f); // drawTextured says where a lightmap is bound
     if (fogMode >= 0) {
