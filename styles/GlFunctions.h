@@ -29,10 +29,10 @@ namespace nprgl::styles {
     X(GenFramebuffers) X(GenQueries) X(GenRenderbuffers) X(GenTextures) X(GenVertexArrays)      \
     X(GenerateMipmap) X(GetBooleanv) X(GetError) X(GetFloatv) X(GetIntegerv) X(GetProgramInfoLog) \
     X(GetProgramiv) X(GetQueryObjectuiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString)        \
-    X(GetTexLevelParameteriv) X(GetUniformLocation) X(Hint) X(IsEnabled) X(LineWidth)           \
+    X(GetTexLevelParameteriv) X(GetTexParameteriv) X(GetUniformLocation) X(Hint) X(IsEnabled) X(LineWidth)           \
     X(LinkProgram) X(PixelStorei) X(PointSize) X(PolygonMode) X(PolygonOffset) X(ReadBuffer)    \
     X(ReadPixels) X(RenderbufferStorage) X(Scissor) X(ShaderSource) X(StencilFunc)              \
-    X(StencilMask) X(StencilOp) X(TexImage2D) X(TexParameterf) X(TexParameteri)                 \
+    X(StencilMask) X(StencilOp) X(TexImage2D) X(TexParameterf) X(TexParameteri) X(TexParameteriv) \
     X(TexSubImage2D) X(Uniform1f) X(Uniform1fv) X(Uniform1i) X(Uniform2f) X(Uniform3f)         \
     X(Uniform3fv) X(Uniform4f) X(Uniform4fv) X(UniformMatrix3fv) X(UniformMatrix4fv)          \
     X(UseProgram) X(Uniform2i) \

@@ -206,21 +206,33 @@ void StyleChain::applyTestAndOffset(const SceneObject& o)
 
 void StyleChain::renderAsDrawn(const Scene& part)
 {
-    // The program's depth test and writes, in runs of equal ones.
+    // The program's depth test and writes, blending (translucent text and sprites drawn over
+    // the scene without the depth test), alpha test and offset, in runs of equal ones.
     const GlFunctions& gl = mContext.gl;
     for (size_t i = 0; i < part.objects.size();) {
         const SceneObject& first = part.objects[i];
+        auto same = [&first](const SceneObject& o) {
+            return o.depthTest == first.depthTest && o.depthWrite == first.depthWrite &&
+                   o.translucent == first.translucent && o.alphaFunc == first.alphaFunc &&
+                   o.alphaRef == first.alphaRef && o.offsetFactor == first.offsetFactor &&
+                   o.offsetUnits == first.offsetUnits;
+        };
         size_t end = i + 1;
-        while (end < part.objects.size() && part.objects[end].depthTest == first.depthTest &&
-               part.objects[end].depthWrite == first.depthWrite) {
-            ++end;
-        }
+        while (end < part.objects.size() && same(part.objects[end])) ++end;
         mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
         setBaseline(mRun, true);
         if (first.depthTest) gl.DepthFunc(GL_LEQUAL);
         else gl.Disable(GL_DEPTH_TEST);
         gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
+        if (first.translucent) {
+            gl.Enable(GL_BLEND);
+            gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        }
+        applyTestAndOffset(first);
         mStyles.front()->render(mRun, mContext);
+        gl.Disable(GL_ALPHA_TEST);
+        gl.Disable(GL_POLYGON_OFFSET_FILL);
+        if (first.translucent) gl.Disable(GL_BLEND);
         i = end;
     }
 }

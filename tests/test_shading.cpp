@@ -146,6 +146,23 @@ protected:
         return id;
     }
 
+    // A GL_ALPHA texture, opaque everywhere (text and sprites are uploaded so): no colour.
+    GLuint alphaTexture()
+    {
+        const styles::GlFunctions& gl = harness.gl();
+        std::vector<uint8_t> texels(16 * 16, 255);
+        GLuint id = 0;
+        gl.GenTextures(1, &id);
+        gl.BindTexture(GL_TEXTURE_2D, id);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 16, 16, 0, GL_ALPHA, GL_UNSIGNED_BYTE,
+                      texels.data());
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+        return id;
+    }
+
     StyleHarness harness{kSize, kSize};
 };
 
@@ -206,6 +223,47 @@ TEST(Toon, AnUnlitBackdropIsShadedInAnEvenLight)
     };
     EXPECT_GT(shadowPixels(false), 500) << "no shadow band on the depth-tested sphere: no test";
     EXPECT_EQ(shadowPixels(true), 0) << "the backdrop is shaded by the head-light";
+}
+
+// A GL_ALPHA texture gives the fixed-function pipeline only alpha (the fragment keeps its
+// colour); a shader samples it black. Text and sprites drawn with one (crack-attack's) were
+// black shapes, invisible on a dark screen: the styles read its colour as white.
+TEST_F(Shading, AnAlphaTextureKeepsTheObjectsColour)
+{
+    ASSERT_TRUE(harness.ok());
+    const PngImage image = render("toon", "toon.band=nearest", "toon_alpha_texture",
+                                  glm::vec4(0.8f, 0.1f, 0.1f, 1.0f), alphaTexture());
+    int diffuse = 0, black = 0;
+    forSphere(image, [&](const Rgb& c, float) {
+        diffuse += near(c, kDiffuse);
+        black += c.r < 40 && c.g < 40 && c.b < 40;
+    });
+    EXPECT_GT(diffuse, 1000);
+    EXPECT_EQ(black, 0) << "the alpha texture's colour was taken as black";
+}
+
+// A translucent object drawn without the depth test (text, a sprite, a HUD part in
+// perspective) is blended as the program blends it, not drawn opaque over what is behind.
+TEST(Toon, ATranslucentObjectWithoutTheDepthTestIsBlended)
+{
+    StyleHarness harness(128, 128);
+    ASSERT_TRUE(harness.ok());
+    const glm::vec4 halfRed(0.8f, 0.1f, 0.1f, 0.5f);
+    auto mv = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -6));
+    auto scene = harness.makeScene({sphereBatch(mv, 1.5f, 48, 24, halfRed)}, perspective());
+    for (auto& o : scene.objects) {
+        o.depthTest = false;
+        o.translucent = true;
+        o.depthWrite = false;
+    }
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+    // The centre: the unlit sphere's even diffuse colour over the white background, its back
+    // and front halves each at alpha 0.5 (no depth test, no culling: 1 - 0.5^2 of it).
+    const uint8_t* p = &image.rgba[(size_t(64) * 128 + 64) * 4];
+    EXPECT_NEAR(int(p[0]), (204 * 3 + 255) / 4, 6);
+    EXPECT_NEAR(int(p[1]), (26 * 3 + 255) / 4, 6) << "drawn opaque";
 }
 
 TEST_F(Shading, TwoTonesGiveTwoColoursMatchingTheLight)

@@ -233,6 +233,35 @@ glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)
     return glm::transpose(glm::inverse(glm::mat3(modelview)));
 }
 
+namespace {
+
+// Binds the program's texture for the styles. A GL_ALPHA texture has no colour: the fixed
+// pipeline keeps the fragment's (modulating only its alpha), but a shader samples it black,
+// so text and sprites drawn with one vanished. While the styles draw with it its colour
+// channels read one (texture swizzle); unbindProgramTexture puts the program's back.
+bool bindProgramTexture(const GlFunctions& gl, GLuint texture, GLint (&swizzle)[4])
+{
+    gl.BindTexture(GL_TEXTURE_2D, texture);
+    if (texture == 0) return false;
+    GLint format = 0;
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    if (format != GL_ALPHA && format != GL_ALPHA4 && format != GL_ALPHA8 &&
+        format != GL_ALPHA12 && format != GL_ALPHA16) {
+        return false;
+    }
+    gl.GetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    const GLint ones[4] = {GL_ONE, GL_ONE, GL_ONE, swizzle[3]};
+    gl.TexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, ones);
+    return true;
+}
+
+void unbindProgramTexture(const GlFunctions& gl, bool swizzled, const GLint (&swizzle)[4])
+{
+    if (swizzled) gl.TexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+}
+
+} // namespace
+
 void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
                                  const ObjectUniforms& u)
 {
@@ -247,8 +276,10 @@ void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
     };
     if (object.textureRuns.empty()) {
         useLightmap(object.lightmap);
-        gl.BindTexture(GL_TEXTURE_2D, object.texture);
+        GLint swizzle[4];
+        const bool swizzled = bindProgramTexture(gl, object.texture, swizzle);
         ctx.meshes.draw(gl, *object.mesh);
+        unbindProgramTexture(gl, swizzled, swizzle);
         return;
     }
     for (const SceneObject::TextureRun& run : object.textureRuns) {
@@ -268,8 +299,10 @@ void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
             texture = ctx.blankTexture;
         }
         useLightmap(run.lightmap);
-        gl.BindTexture(GL_TEXTURE_2D, texture);
+        GLint swizzle[4];
+        const bool swizzled = bindProgramTexture(gl, texture, swizzle);
         ctx.meshes.drawFaces(gl, *object.mesh, run.firstFace, run.faceCount);
+        unbindProgramTexture(gl, swizzled, swizzle);
     }
 }
 
