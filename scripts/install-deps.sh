@@ -8,7 +8,7 @@ pkgs=(
     libcli11-dev libassimp-dev assimp-testmodels
     mesa-utils x11-utils xvfb xauth libxtst-dev xscreensaver-gl
     freeglut3-dev libsdl2-dev libglfw3-dev
-    apitrace libimgui-dev neverball openarena extremetuxracer xdotool
+    apitrace libimgui-dev neverball openarena extremetuxracer crack-attack xdotool
     clang libclang-rt-14-dev
 )
 sudo=""

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The README's real-programs gallery: a few of Debian's xscreensaver GL hacks (package
-# xscreensaver-gl) and games (neverball, openarena, extremetuxracer) natively and in three
-# chains, one frame of each run (the hacks' 40th at 480x270, the games' in their level at
-# 640x480; etr driven into its race by keys, tests/compat/drive-keys.sh), into
+# xscreensaver-gl) and games (neverball, openarena, extremetuxracer, crack-attack) natively
+# and in three chains, one frame of each run (the hacks' 40th at 480x270, the games' in their
+# level at 640x480; etr and crack-attack driven by keys, tests/compat/drive-keys.sh), into
 # docs/gallery/compat_<program>_<style>.png, and the table between the compat-gallery markers
 # in README.md. The hacks animate by the clock and openarena spawns where it likes, so each run
 # shows another moment: look at the pictures before committing them.
@@ -15,7 +15,7 @@ source "$root/scripts/gallery-lib.sh"
 build=${1:-$root/build}
 shift || true
 hacks=(engine molecule superquadrics glknots)
-games=(neverball openarena etr)
+games=(neverball openarena etr crack-attack)
 styles=(none toon+paper+edges preset:pencil halftone+paper+edges)
 out="$root/docs/gallery"
 tmp=$(mktemp -d)
@@ -28,6 +28,7 @@ shotOf() {
     neverball) echo "100 neverball_ctx2" ;;
     openarena) echo "250 ioquake3_ctx2" ;;
     etr) echo "500 etr_ctx2" ;;
+    crack-attack) echo "600 crack-attack" ;;
     *) echo "40 $1" ;;
     esac
 }
@@ -57,6 +58,16 @@ shoot() { # program style -> docs/gallery/compat_<program>_<style>.png, run unti
             "$root/scripts/with-display.sh" "$root/tests/compat/drive-keys.sh" "$dir" "$name" \
             "$frame" "50:Return 100:Return 150:Return 200:Return 250:Return" -- \
             "$build/bin/nprgl" $(styleArgs "$style") -- /usr/games/etr >/dev/null 2>&1 || true
+        [ -f "$shot" ] && cp "$shot" "$out/compat_${program}_$(fileName "$style").png"
+        return 0
+    fi
+    if [ "$program" = crack-attack ]; then
+        # A solo game, started by Return; its board of blocks has risen by the frame kept.
+        # shellcheck disable=SC2046 # words: the style options
+        HOME="$tmp/home" SDL_AUDIODRIVER=dummy NPRGL_SCREENSHOT="frames=100,$frame;dir=$dir" \
+            "$root/scripts/with-display.sh" "$root/tests/compat/drive-keys.sh" "$dir" "$name" \
+            "$frame" "100:Return" -- "$build/bin/nprgl" $(styleArgs "$style") -- \
+            /usr/games/crack-attack --solo >/dev/null 2>&1 || true
         [ -f "$shot" ] && cp "$shot" "$out/compat_${program}_$(fileName "$style").png"
         return 0
     fi

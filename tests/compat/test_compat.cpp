@@ -251,3 +251,31 @@ TEST(Traces, StyleNoneReplaysAGameAsNative)
         EXPECT_GT(lit, image.rgba.size() / 4 / 2) << frame << " is mostly black";
     }
 }
+
+// crack-attack (a GLUT game): Return starts a solo game, then its board of lit blocks rises.
+// Its text is GL_ALPHA textures drawn blended without the depth test (they vanished in every
+// shading style until 2026-11-25).
+TEST(GamesDriven, CrackAttackPlaysStyled)
+{
+    const std::string program = "/usr/games/crack-attack";
+    if (!std::filesystem::exists(program) || !std::filesystem::exists("/usr/bin/xdotool")) {
+        GTEST_SKIP() << "needs crack-attack and xdotool (scripts/install-deps.sh)";
+    }
+    const std::string dir = freshDir("compat_crack_attack");
+    const std::string source = NPRGL_TEST_SOURCE_DIR;
+    const std::map<std::string, std::string> env = {
+        {"NPRGL_SCREENSHOT", "frames=100,600;dir=" + dir},
+        {"HOME", freshDir("compat_home_crack_attack")},
+        {"SDL_AUDIODRIVER", "dummy"}};
+    const std::vector<std::string> argv = {
+        source + "/../scripts/with-display.sh", source + "/compat/drive-keys.sh", dir,
+        "crack-attack", "600", "100:Return", "--", nprglCommand(), "--style", "coverage", "--",
+        program, "--solo"};
+    ProcessResult r = runProcess(argv, env);
+    ASSERT_EQ(r.exitCode, 0) << r.err.substr(0, 3000);
+    EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err.substr(0, 2000);
+    double share = 0.0;
+    ASSERT_NO_FATAL_FAILURE(
+        measureStyledShare(dir + "/crack-attack_600.png", "crack-attack", share));
+    EXPECT_GE(share, 0.9) << r.err.substr(0, 2000);
+}
