@@ -1058,6 +1058,4 @@ TEST_P(MultiPass, ABlendedSecondPassIsMergedIntoItsObject)
 
 INSTANTIATE_TEST_SUITE_P(Compositor, MultiPass,
                          ::testing::Values("arrays", "immediate", "displaylist"),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             return info.param;
-                         });
+                         [](const auto& param) { return param.param; });
