@@ -348,6 +348,12 @@ GLuint listId(GLenum type, const uint8_t* p, GLsizei i)
 
 // While a list compiles: what it will call (for deciding whether it can be held).
 void APIENTRY tCallListCompiled(GLuint list) { T().noteCompiledCall(list); }
+// While a list compiles, a material between glBegin and glEnd still colours the batch's
+// vertices from there on (its state change is kept for the list's execution).
+void APIENTRY tMaterialfvCompiled(GLenum face, GLenum pname, const GLfloat* v)
+{
+    T().batchMaterial(face, pname, v);
+}
 void APIENTRY tCallListsCompiled(GLsizei, GLenum, const void*) { T().otherDraw(); }
 
 void APIENTRY tCallLists(GLsizei n, GLenum type, const void* lists)
@@ -471,6 +477,7 @@ StateTracker::StateTracker()
     mCompileOnly.glDrawPixels = tDrawPixels;
     mCompileOnly.glCopyPixels = tCopyPixels;
     mCompileOnly.glCallList = tCallListCompiled;
+    mCompileOnly.glMaterialfv = tMaterialfvCompiled;
     mCompileOnly.glCallLists = tCallListsCompiled;
 }
 
@@ -1183,6 +1190,7 @@ void StateTracker::begin(GLenum mode)
     mBatch.vertices = takeVertices();
     mBatch.mode = mode;
     mBatch.hasNormals = mNormalSet;
+    mBatch.beginMaterial = mAttrib.materialDiffuse;
 }
 
 void StateTracker::end()
@@ -1253,7 +1261,17 @@ bool StateTracker::keep(TrackedBatch& batch)
     if (a.lighting) {
         // One pass over the vertices: the material's colour (or the vertex's), tinted.
         const glm::vec4 tint(lightTint(), 1.0f);
-        if (!a.colorMaterial) {
+        if (!a.colorMaterial && !batch.materials.empty()) {
+            // Materials set between glBegin and glEnd: each colours its run of vertices.
+            glm::vec4 c = batch.beginMaterial * tint;
+            size_t next = 0;
+            for (size_t i = 0; i < batch.vertices.size(); ++i) {
+                while (next < batch.materials.size() && batch.materials[next].first <= i) {
+                    c = batch.materials[next++].diffuse * tint;
+                }
+                batch.vertices[i].color = c;
+            }
+        } else if (!a.colorMaterial) {
             const glm::vec4 c = a.materialDiffuse * tint;
             for (TrackedVertex& v : batch.vertices) v.color = c;
         } else if (tint != glm::vec4(1.0f)) {
@@ -1375,8 +1393,16 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     }
 }
 
+void StateTracker::batchMaterial(GLenum face, GLenum pname, const float* v)
+{
+    if (!mInBegin || face == GL_BACK || !v) return;
+    if (pname != GL_DIFFUSE && pname != GL_AMBIENT_AND_DIFFUSE) return;
+    mBatch.materials.push_back({uint32_t(mBatch.vertices.size()), {v[0], v[1], v[2], v[3]}});
+}
+
 void StateTracker::material(GLenum face, GLenum pname, const float* v)
 {
+    batchMaterial(face, pname, v);
     if (face == GL_BACK || !v) return;
     if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
         mAttrib.materialDiffuse = {v[0], v[1], v[2], v[3]};
@@ -1460,6 +1486,8 @@ void StateTracker::callListBody(GLuint list)
             batch.vertices.assign(compiled.vertices.begin(), compiled.vertices.end());
             batch.mode = compiled.mode;
             batch.hasNormals = compiled.hasNormals;
+            batch.materials = compiled.materials;
+            batch.beginMaterial = compiled.beginMaterial;
             const List::Inherits& from = body.inherits[size_t(item.batch)];
             if (from.normal) batch.hasNormals = batch.hasNormals || mNormalSet;
             // What the list did not set itself comes from the state at this call.

@@ -44,6 +44,15 @@ struct TrackedBatch {
     bool lit = false;
     glm::vec4 keyLight{0.0f, 0.0f, 1.0f, 0.0f}; // the brightest enabled light, eye space
     styles::SceneLights lights; // every enabled light, when lit
+    // glMaterial diffuse colours set between glBegin and glEnd (per face or per vertex, as
+    // programs set them): each from vertex `first` on; before the first, the material at
+    // glBegin. Empty: the material at the draw colours every vertex.
+    struct MaterialChange {
+        uint32_t first = 0;
+        glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+    };
+    std::vector<MaterialChange> materials;
+    glm::vec4 beginMaterial{0.8f, 0.8f, 0.8f, 1.0f};
     bool lightOn = false;                       // any light enabled
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none
@@ -186,6 +195,8 @@ public:
     void setEnabled(GLenum cap, bool on);
     void useProgram(GLuint program) { mProgram = program; }
     void material(GLenum face, GLenum pname, const float* v);
+    // A glMaterial between glBegin and glEnd: its diffuse colour from the batch's next vertex.
+    void batchMaterial(GLenum face, GLenum pname, const float* v);
     void newList(GLuint list, GLenum mode);
     void endList();
     void callList(GLuint list);

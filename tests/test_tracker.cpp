@@ -247,6 +247,63 @@ struct Feed {
     }
 };
 
+// Materials set between glBegin and glEnd colour their own vertices (xscreensaver's cityflow
+// sets one per box face inside one GL_QUADS batch; every box came out in the last one's
+// colour), drawn directly and from a display list compiled so.
+TEST(StateTracker, MaterialsInsideABatchColourTheirOwnVertices)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto material = [](CallWriter& w, glm::vec4 c) {
+        w.op(op::glMaterialfv);
+        const size_t mark = w.beginPayload();
+        w.put<GLenum>(GL_FRONT);
+        w.put<GLenum>(GL_AMBIENT_AND_DIFFUSE);
+        w.putBytes(&c, sizeof c);
+        w.endPayload(mark);
+    };
+    const glm::vec4 red(1, 0, 0, 1), green(0, 1, 0, 1), blue(0, 0, 1, 1);
+    // Blue before glBegin; red for the first triangle, green for the second.
+    auto batch = [&](CallWriter& w) {
+        material(w, blue);
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        for (int t = 0; t < 2; ++t) {
+            material(w, t == 0 ? red : green);
+            for (float x : {0.0f, 1.0f, 0.0f}) {
+                w.op(op::glVertex3f);
+                for (float c : {x + 2.0f * float(t), x == 0.0f ? 0.0f : 1.0f, 0.0f}) {
+                    w.put<float>(c);
+                }
+            }
+        }
+        w.op(op::glEnd);
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    feed.run(batch);
+    feed.run([&](CallWriter& w) {
+        w.op(op::glNewList);
+        w.put<GLuint>(1);
+        w.put<GLenum>(GL_COMPILE);
+        batch(w);
+        w.op(op::glEndList);
+        w.op(op::glCallList);
+        w.put<GLuint>(1);
+    });
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 2u);
+    for (const TrackedBatch& b : batches) {
+        ASSERT_EQ(b.vertices.size(), 6u);
+        for (size_t i = 0; i < 6; ++i) {
+            EXPECT_EQ(b.vertices[i].color, i < 3 ? red : green) << "vertex " << i;
+        }
+    }
+}
+
 // Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
 // the generation off again gives the plain texture back (a program that sphere-maps one
 // object must not leave every later draw unstyled). A texture on unit 1 layers over unit 0's.
