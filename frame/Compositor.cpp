@@ -809,6 +809,7 @@ void Compositor::buildScene()
         s.translucent = t.translucent;
         s.depthWrite = t.depthWrite;
         s.depthTest = t.depthTest;
+        s.culled = t.culled;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
         s.depthOnly = t.depthOnly;

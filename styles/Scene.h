@@ -40,6 +40,9 @@ struct SceneObject {
     // Shaded in one even light (the shading styles' middle band): a sky or backdrop the
     // program did not light, which a head-light would shade by its faces' arbitrary normals.
     bool flatLight = false;
+    // The winding the program culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0):
+    // the styles cull the same faces (FaceCulling).
+    GLenum culled = 0;
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
     // GL lighting, the shading styles take their light from it instead of L·n. 0: none.

@@ -266,6 +266,29 @@ TEST(Toon, ATranslucentObjectWithoutTheDepthTestIsBlended)
     EXPECT_NEAR(int(p[1]), (26 * 3 + 255) / 4, 6) << "drawn opaque";
 }
 
+// Faces the program culls stay culled: seen from inside, a box the program draws with back
+// faces culled shows nothing (lavalite's lamp hid its own lava blob behind the inner faces of
+// its glass); without culling its inside fills the view.
+TEST(Toon, TheProgramsCulledFacesAreNotDrawn)
+{
+    StyleHarness harness(64, 64);
+    ASSERT_TRUE(harness.ok());
+    auto drawnPixels = [&](GLenum culled) {
+        auto scene = harness.makeScene(
+            {boxBatch(glm::mat4(1.0f), glm::vec3(3.0f), glm::vec4(0.8f, 0.1f, 0.1f, 1.0f))},
+            perspective());
+        for (auto& o : scene.objects) o.culled = culled;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "", image, error)) << error;
+        int drawn = 0;
+        for (size_t i = 0; i < image.rgba.size(); i += 4) drawn += image.rgba[i + 1] < 200;
+        return drawn;
+    };
+    EXPECT_EQ(drawnPixels(0), 64 * 64) << "the box's inside does not fill the view: no test";
+    EXPECT_EQ(drawnPixels(GL_CW), 0) << "back faces the program culls were drawn";
+}
+
 TEST_F(Shading, TwoTonesGiveTwoColoursMatchingTheLight)
 {
     ASSERT_TRUE(harness.ok());

@@ -1,5 +1,6 @@
 #include "styles/shading/CoverageStyle.h"
 
+#include "styles/FaceCulling.h"
 #include "styles/StyleRegistry.h"
 
 #include <cmath>
@@ -72,7 +73,9 @@ void CoverageStyle::render(const Scene& scene, StyleContext& ctx)
         mU.set(gl, object, frontIsCcw);
         const glm::vec3 c = colourOf(object.id);
         gl.Uniform3f(mTint, c.r, c.g, c.b);
+        if (!FaceCulling::begin(gl, object)) continue;
         ctx.meshes.draw(gl, *object.mesh);
+        FaceCulling::end(gl, object);
     }
 }
 

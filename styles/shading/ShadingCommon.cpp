@@ -1,5 +1,6 @@
 #include "styles/shading/ShadingCommon.h"
 
+#include "styles/FaceCulling.h"
 #include "styles/textures/GlTexture.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -309,11 +310,13 @@ void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
 void ShadingCommon::draw(StyleContext& ctx, const SceneObject& object, const ObjectUniforms& u,
                          bool textured)
 {
+    if (!FaceCulling::begin(ctx.gl, object)) return;
     if (textured || object.lightmapped()) {
         drawTextured(ctx, object, u);
     } else {
         ctx.meshes.draw(ctx.gl, *object.mesh);
     }
+    FaceCulling::end(ctx.gl, object);
 }
 
 glm::vec2 ShadingCommon::screenAnchor(const SceneObject& object, const glm::ivec4& viewport)
