@@ -140,7 +140,8 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
 
 bool ToonStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
 {
-    const std::string fragment = fragmentSource(k % 2 == 0 ? 0 : mDetail, ShadingCommon::variantLights(k));
+    const std::string fragment =
+        fragmentSource(k % 2 == 0 ? 0 : mDetail, ShadingCommon::variantLights(k));
     Variant& variant = mVariants[k];
     if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
         return false;
