@@ -168,17 +168,11 @@ private:
     // The column's second pass: unlit added light, no depth writes, the same vertices.
     void drawShine()
     {
-        glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
-        glDisable(GL_LIGHTING);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-        glDepthMask(GL_FALSE);
-        glDepthFunc(GL_LEQUAL);
+        demo::beginShinePass();
         glDisableClientState(GL_COLOR_ARRAY);
-        glColor3f(0.35f, 0.2f, 0.05f);
         glDrawArrays(GL_TRIANGLES, gridVertices, columnVertices);
         glEnableClientState(GL_COLOR_ARRAY);
-        glPopAttrib();
+        demo::endShinePass();
     }
 
     static int gridIndex(int i, int j) { return j * (gridSize + 1) + i; }

@@ -53,6 +53,19 @@ void setPerspective(double fovYDegrees, double aspect, double zNear, double zFar
     glMatrixMode(GL_MODELVIEW);
 }
 
+void beginShinePass()
+{
+    glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
+    glDisable(GL_LIGHTING);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glColor3f(0.35f, 0.2f, 0.05f);
+}
+
+void endShinePass() { glPopAttrib(); }
+
 void drawSphere(float radius, int stacks, int slices, float textureRepeats)
 {
     const float pi = 3.14159265358979f;

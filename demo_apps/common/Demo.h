@@ -19,4 +19,10 @@ void drawSphere(float radius, int stacks, int slices, float textureRepeats = 0.0
 // it; they do not cull).
 void drawTorus(float major, float minor, int rings, int sides);
 
+// Around a second pass over geometry just drawn (a multi-pass surface's shine, as multi-pass
+// engines draw a surface's layers): unlit added light (GL_ONE, GL_ONE), no depth writes,
+// GL_LEQUAL, a warm colour; endShinePass restores the state.
+void beginShinePass();
+void endShinePass();
+
 } // namespace demo

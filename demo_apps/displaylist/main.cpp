@@ -206,16 +206,9 @@ public:
         drawGearAt(gear1List, -3.0f, -2.0f, angle);
         if (shine_) {
             // Unlit added light, no depth writes, the same list at the same place.
-            glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |
-                         GL_CURRENT_BIT);
-            glDisable(GL_LIGHTING);
-            glEnable(GL_BLEND);
-            glBlendFunc(GL_ONE, GL_ONE);
-            glDepthMask(GL_FALSE);
-            glDepthFunc(GL_LEQUAL);
-            glColor3f(0.35f, 0.2f, 0.05f);
+            demo::beginShinePass();
             drawGearAt(gear1List, -3.0f, -2.0f, angle);
-            glPopAttrib();
+            demo::endShinePass();
         }
         drawGearAt(gear2List, 3.1f, -2.0f, -2.0f * angle - 9.0f);
         drawGearAt(gear3List, -3.1f, 4.2f, -2.0f * angle - 25.0f);

@@ -151,15 +151,9 @@ private:
     // The shape's second pass: unlit added light, no depth writes, the same vertices.
     static void drawShine(const Shape& shape)
     {
-        glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
-        glDisable(GL_LIGHTING);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-        glDepthMask(GL_FALSE);
-        glDepthFunc(GL_LEQUAL);
-        glColor3f(0.35f, 0.2f, 0.05f);
+        demo::beginShinePass();
         for (const Batch& batch : shape.batches) drawBatch(batch);
-        glPopAttrib();
+        demo::endShinePass();
     }
 
     static size_t drawBatch(const Batch& batch)

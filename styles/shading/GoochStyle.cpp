@@ -90,10 +90,9 @@ bool GoochStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
 {
     const std::string fragment = fragmentSource(k % 2 == 1, ShadingCommon::variantLights(k));
     Variant& variant = mVariants[k];
-    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+    if (!ShadingCommon::buildProgram(gl, variant.program, variant.u, fragment, error)) {
         return false;
     }
-    variant.u.find(gl, variant.program.id());
     variant.ramp = variant.program.uniform(gl, "ramp");
     return true;
 }

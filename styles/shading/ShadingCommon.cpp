@@ -145,6 +145,15 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightWeight = gl.GetUniformLocation(program, "lightWeight");
 }
 
+bool ShadingCommon::buildProgram(const GlFunctions& gl, ShaderProgram& program,
+                                 ObjectUniforms& u, const std::string& fragment,
+                                 std::string& error)
+{
+    if (!program.build(gl, vertexShader(), fragment.c_str(), error)) return false;
+    u.find(gl, program.id());
+    return true;
+}
+
 bool ShadingCommon::normalsFollowCcw(const reconstruct::ObjectMesh& mesh)
 {
     // A sample of faces is enough: meshes are consistent or not at all.

@@ -2,6 +2,7 @@
 
 #include "common/Log.h"
 #include "styles/Scene.h"
+#include "styles/ShaderProgram.h"
 #include "styles/Style.h"
 
 #include <glm/glm.hpp>
@@ -77,6 +78,10 @@ public:
         void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;
         void setLights(const GlFunctions& gl, const SceneLights& lights) const;
     };
+    // Builds a variant's program (vertexShader() and `fragment`) and finds its ObjectUniforms;
+    // false with the driver's log in error.
+    static bool buildProgram(const GlFunctions& gl, ShaderProgram& program, ObjectUniforms& u,
+                             const std::string& fragment, std::string& error);
     // Draws the object's faces with the program's textures bound on the active unit, run by
     // run (SceneObject::textureRuns); faces without one get a white texture, so that one
     // textured shader serves the whole object.

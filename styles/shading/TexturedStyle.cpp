@@ -253,10 +253,9 @@ bool TexturedStyle::buildVariant(const GlFunctions& gl, int k, std::string& erro
 {
     const std::string fragment = fragmentSource(k % 2 == 1, ShadingCommon::variantLights(k));
     Variant& variant = mVariants[k];
-    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+    if (!ShadingCommon::buildProgram(gl, variant.program, variant.u, fragment, error)) {
         return false;
     }
-    variant.u.find(gl, variant.program.id());
     variant.anchor = variant.program.uniform(gl, "anchor");
     variant.lightTex = variant.program.uniform(gl, "lightTex");
     variant.shadowTex = variant.program.uniform(gl, "shadowTex");

@@ -143,10 +143,9 @@ bool ToonStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
     const std::string fragment =
         fragmentSource(k % 2 == 0 ? 0 : mDetail, ShadingCommon::variantLights(k));
     Variant& variant = mVariants[k];
-    if (!variant.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error)) {
+    if (!ShadingCommon::buildProgram(gl, variant.program, variant.u, fragment, error)) {
         return false;
     }
-    variant.u.find(gl, variant.program.id());
     return true;
 }
 
