@@ -74,6 +74,7 @@ void AttribStack::pop()
         a.textureUnits = saved.textureUnits;
         a.texGen = saved.texGen;
     }
+    if (mask & GL_TEXTURE_BIT) a.sphereMap = saved.sphereMap;
     if (mask & GL_VIEWPORT_BIT) {
         a.viewport = saved.viewport;
         a.depthRange = saved.depthRange;

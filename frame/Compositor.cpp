@@ -810,6 +810,7 @@ void Compositor::buildScene()
         s.depthWrite = t.depthWrite;
         s.depthTest = t.depthTest;
         s.culled = t.culled;
+        s.reflection = t.reflection;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
         s.depthOnly = t.depthOnly;

@@ -151,6 +151,30 @@ void APIENTRY tCallList(GLuint list) { T().callList(list); }
 void APIENTRY tListBase(GLuint base) { T().listBase(base); }
 void APIENTRY tDeleteLists(GLuint list, GLsizei range) { T().deleteLists(list, range); }
 void APIENTRY tBindTexture(GLenum target, GLuint texture) { T().bindTexture(target, texture); }
+void APIENTRY tTexGeni(GLenum coord, GLenum pname, GLint param)
+{
+    T().texGenMode(coord, pname, GLenum(param));
+}
+void APIENTRY tTexGenf(GLenum coord, GLenum pname, GLfloat param)
+{
+    T().texGenMode(coord, pname, GLenum(param));
+}
+void APIENTRY tTexGend(GLenum coord, GLenum pname, GLdouble param)
+{
+    T().texGenMode(coord, pname, GLenum(param));
+}
+void APIENTRY tTexGeniv(GLenum coord, GLenum pname, const GLint* params)
+{
+    if (params) T().texGenMode(coord, pname, GLenum(params[0]));
+}
+void APIENTRY tTexGenfv(GLenum coord, GLenum pname, const GLfloat* params)
+{
+    if (params) T().texGenMode(coord, pname, GLenum(params[0]));
+}
+void APIENTRY tTexGendv(GLenum coord, GLenum pname, const GLdouble* params)
+{
+    if (params) T().texGenMode(coord, pname, GLenum(params[0]));
+}
 void APIENTRY tTexEnvi(GLenum target, GLenum pname, GLint param)
 {
     T().texEnv(target, pname, GLenum(param));
@@ -419,6 +443,12 @@ StateTracker::StateTracker()
     d.glTexImage2D = tTexImage2D;
     d.glTexSubImage2D = tTexSubImage2D;
     d.glTexEnvi = tTexEnvi;
+    d.glTexGeni = tTexGeni;
+    d.glTexGenf = tTexGenf;
+    d.glTexGend = tTexGend;
+    d.glTexGeniv = tTexGeniv;
+    d.glTexGenfv = tTexGenfv;
+    d.glTexGendv = tTexGendv;
     d.glTexEnvf = tTexEnvf;
     d.glTexEnviv = tTexEnviv;
     d.glTexEnvfv = tTexEnvfv;
@@ -798,6 +828,25 @@ void StateTracker::followSurfaceUnit()
     // the surface's unit, mCurrent.texcoord).
     mLightUnit = lightUnit();
     if (mLightUnit >= 0) mCurrent.lightcoord = mUnitTexcoords[size_t(mLightUnit)];
+}
+
+void StateTracker::texGenMode(GLenum coord, GLenum pname, GLenum mode)
+{
+    if (pname != GL_TEXTURE_GEN_MODE || coord < GL_S || coord > GL_Q || mActiveUnit >= 8) return;
+    const uint32_t bit = 1u << (4 * uint32_t(mActiveUnit) + (coord - GL_S));
+    AttribState& a = mAttrib;
+    a.sphereMap = mode == GL_SPHERE_MAP ? a.sphereMap | bit : a.sphereMap & ~bit;
+}
+
+GLuint StateTracker::reflectionTexture() const
+{
+    // The surface unit's 2D texture on sphere-mapped S and T: a reflection the styles may
+    // show as detail (their parameter).
+    const AttribState& a = mAttrib;
+    const int u = surfaceUnit();
+    if (u < 0 || ((a.texGen & a.sphereMap) >> (4 * u) & 0x3u) != 0x3u) return 0;
+    if (u == 0) return a.texture2D ? mBoundTexture : 0;
+    return mUnitTextures[size_t(u)];
 }
 
 GLuint StateTracker::detailTexture() const
@@ -1301,6 +1350,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     if (a.lighting) litBy(batch.lights);
     else batch.lights.count = 0;
     batch.texture = detailTexture();
+    batch.reflection = batch.texture == 0 ? reflectionTexture() : 0;
     // Without GL lighting a lightmap is the surface's light (the styles' L·n).
     batch.lightmap = mLightUnit >= 0 && !a.lighting ? mUnitTextures[size_t(mLightUnit)] : 0;
     // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its

@@ -43,6 +43,9 @@ struct SceneObject {
     // The winding the program culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0):
     // the styles cull the same faces (FaceCulling).
     GLenum culled = 0;
+    // A texture the program maps on the object by GL_SPHERE_MAP coordinates (a reflection):
+    // not the surface's, dropped unless a style's parameter shows it (toon.reflections).
+    GLuint reflection = 0;
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
     // GL lighting, the shading styles take their light from it instead of L·n. 0: none.

@@ -489,10 +489,13 @@ INSTANTIATE_TEST_SUITE_P(
 
 // A sphere-mapped surface (GL_SPHERE_MAP on unit 0) is styled like any other, its reflection
 // dropped: no draw is left, the stripes the reflection paints natively are gone from the
-// styled sphere, and the draws after it (texgen off again) keep their own textures.
+// styled sphere, and the draws after it (texgen off again) keep their own textures. With
+// toon.reflections the reflection is the sphere's detail, on coordinates the style computes
+// as GL_SPHERE_MAP does: the stripes are back.
 TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
 {
     const std::string native = freshDir("spheremap_native"), toon = freshDir("spheremap_toon");
+    const std::string shown = freshDir("spheremap_reflections");
     const std::vector<std::string> app = {demo("textured"), "--sphere-map", "--offscreen",
                                           "--size", "320x240", "--frames", "3",
                                           "--save-frames", "3", "--save-dir"};
@@ -505,13 +508,17 @@ TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
     ProcessResult t = runProcess(under({nprglCommand(), "--style", "toon"}, with(app, toon)));
     ASSERT_EQ(t.exitCode, 0) << t.err;
     EXPECT_NE(t.err.find("styled, 0 left as the program drew them"), std::string::npos) << t.err;
-    PngImage a, b;
+    ProcessResult r = runProcess(under(
+        {nprglCommand(), "--style", "toon", "--set", "toon.reflections=1"}, with(app, shown)));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    PngImage a, b, c;
     std::string error;
     ASSERT_TRUE(PngImage::read(native + "/textured_3.png", a, error)) << error;
     ASSERT_TRUE(PngImage::read(toon + "/textured_3.png", b, error)) << error;
+    ASSERT_TRUE(PngImage::read(shown + "/textured_3.png", c, error)) << error;
     // The sphere's middle (right half of the frame, above the floor's far edge): orange
     // stripes natively, the white material's tones styled.
-    int orangeNative = 0, orangeStyled = 0;
+    int orangeNative = 0, orangeStyled = 0, orangeShown = 0;
     for (int y = 100; y < 150; ++y) {
         for (int x = 190; x < 230; ++x) {
             const size_t i = (size_t(y) * a.width + x) * 4;
@@ -520,10 +527,12 @@ TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
             };
             orangeNative += orange(a);
             orangeStyled += orange(b);
+            orangeShown += orange(c);
         }
     }
     EXPECT_GT(orangeNative, 300) << "the demo's sphere is not where the test looks";
     EXPECT_EQ(orangeStyled, 0) << "the reflection was taken for the sphere's own texture";
+    EXPECT_GT(orangeShown, 300) << "toon.reflections did not show the reflection";
     // The cube's red checks, drawn after texgen went off, are still red.
     int red = 0;
     for (int y = 100; y < 170; ++y) {

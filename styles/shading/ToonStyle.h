@@ -26,6 +26,7 @@ private:
     struct Variant {
         ShaderProgram program;
         ShadingCommon::ObjectUniforms u;
+        GLint sphereMapped = -1;
     };
     std::string fragmentSource(int detail, int lights) const;
     bool buildVariant(const GlFunctions& gl, int k, std::string& error);
@@ -39,6 +40,8 @@ private:
     bool mSmooth = true, mBandLines = false;
     float mLineWidth = 1.5f;
     int mDetail = 1; // 0 off, 1 modulate, 2 decal
+    bool mReflections = false; // sphere-mapped textures shown as detail
+    SceneObject mReflected;    // a reflective object with its reflection as its texture
     int mFixed = 0; // bit i: colour i (shadow, diffuse, highlight) is configured
     glm::vec3 mColors[3]{};
 };
