@@ -166,11 +166,12 @@ void* realProc(const char* name) { return realProcAddress(name); }
 
 glm::vec3 lightDirection(const TrackedBatch& b)
 {
-    if (b.lit && b.lightOn) {
-        glm::vec3 toLight = glm::vec3(b.keyLight);
-        if (b.keyLight.w != 0.0f) {
+    if (b.lights.count > 0) {
+        const glm::vec4 key = b.lights.lights[0].position; // the brightest
+        glm::vec3 toLight = glm::vec3(key);
+        if (key.w != 0.0f) {
             // A positional light: towards it from the object's origin.
-            toLight = glm::vec3(b.keyLight) / b.keyLight.w - glm::vec3(b.modelview[3]);
+            toLight = glm::vec3(key) / key.w - glm::vec3(b.modelview[3]);
         }
         if (glm::dot(toLight, toLight) > 1e-12f) return glm::normalize(toLight);
     }
@@ -803,7 +804,7 @@ void Compositor::buildScene()
         s.modelview = o.modelview;
         s.projection = t.projection;
         s.lightDir = lightDirection(t);
-        if (t.lit && t.lightOn) s.lights = t.lights;
+        s.lights = t.lights;
         s.texture = t.texture;
         s.lightmap = t.lightmap;
         s.translucent = t.translucent;

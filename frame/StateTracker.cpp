@@ -930,11 +930,17 @@ void StateTracker::litBy(styles::SceneLights& out) const
         const size_t i = k == 0 ? key : (k <= key ? k - 1 : k);
         if (!(a.lightsOn & (1u << i))) continue;
         styles::SceneLights::Light& l = out.lights[out.count++];
+        // As the shader takes them, without branches: a far light is not attenuated, and a
+        // light that is no spot keeps SceneLights' cutoff of -2 and an exponent of 0.
         l.position = a.lightPosition[i];
-        l.spotDirection = a.spotDirection[i];
-        const bool spot = l.position.w != 0.0f && a.spotCutoff[i] < 180.0f;
+        const bool positional = l.position.w != 0.0f;
+        const bool spot = positional && a.spotCutoff[i] < 180.0f;
+        const float length = glm::length(a.spotDirection[i]);
+        l.spotDirection = spot && length > 1e-12f ? a.spotDirection[i] / length
+                                                  : glm::vec3(0.0f, 0.0f, -1.0f);
         l.spotCosCutoff = spot ? std::cos(glm::radians(std::max(a.spotCutoff[i], 0.0f))) : -2.0f;
-        l.falloff = glm::vec4(a.attenuation[i], a.spotExponent[i]);
+        l.falloff = positional ? glm::vec4(a.attenuation[i], spot ? a.spotExponent[i] : 0.0f)
+                               : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
         l.weight = glm::dot(glm::max(a.lightDiffuse[i], glm::vec3(0.0f)),
                             glm::vec3(0.299f, 0.587f, 0.114f));
         top = std::max(top, l.weight);
@@ -1344,9 +1350,6 @@ bool StateTracker::keep(TrackedBatch& batch)
         if (mWatch.on) ++mWatch.others;
         if (!batch.held) return false; // the compositor keeps only what it re-draws
     }
-    batch.lit = a.lighting;
-    batch.lightOn = a.lightsOn != 0;
-    batch.keyLight = a.lightPosition[keyLight()];
     if (a.lighting) litBy(batch.lights);
     else batch.lights.count = 0;
     batch.texture = detailTexture();

@@ -41,9 +41,9 @@ struct TrackedBatch {
     bool hasNormals = false;
     bool is3D = false; // perspective projection or depth test on: what nprgl stylises
     bool held = false; // the compositor held it back (only when holding is on)
-    bool lit = false;
-    glm::vec4 keyLight{0.0f, 0.0f, 1.0f, 0.0f}; // the brightest enabled light, eye space
-    styles::SceneLights lights; // every enabled light, when lit
+    // Every enabled light when the draw was lit, the brightest first (none: unlit, or no
+    // light on).
+    styles::SceneLights lights;
     // glMaterial diffuse colours set between glBegin and glEnd (per face or per vertex, as
     // programs set them): each from vertex `first` on; before the first, the material at
     // glBegin. Empty: the material at the draw colours every vertex.
@@ -53,7 +53,6 @@ struct TrackedBatch {
     };
     std::vector<MaterialChange> materials;
     glm::vec4 beginMaterial{0.8f, 0.8f, 0.8f, 1.0f};
-    bool lightOn = false;                       // any light enabled
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     GLuint reflection = 0; // a sphere-mapped texture on the surface unit (texture is then 0)
     GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none

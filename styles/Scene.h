@@ -16,9 +16,11 @@ namespace nprgl::styles {
 struct SceneLights {
     struct Light {
         glm::vec4 position{0.0f, 0.0f, 1.0f, 0.0f}; // eye space; w 0: towards a far light
-        glm::vec3 spotDirection{0.0f, 0.0f, -1.0f}; // eye space, where a spot points
+        glm::vec3 spotDirection{0.0f, 0.0f, -1.0f}; // eye space, unit, where a spot points
         float spotCosCutoff = -2.0f;                 // below -1: not a spot
-        glm::vec4 falloff{1.0f, 0.0f, 0.0f, 0.0f};   // constant, linear, quadratic; spot exponent
+        // Constant, linear, quadratic attenuation and spot exponent: 1, 0, 0 for a far light,
+        // exponent 0 for one that is no spot (the shader's factors are then 1).
+        glm::vec4 falloff{1.0f, 0.0f, 0.0f, 0.0f};
         float weight = 1.0f; // its diffuse brightness against the brightest light's (1)
     };
     uint32_t count = 0; // 0: the object was not lit by the program

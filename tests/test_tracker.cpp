@@ -531,11 +531,12 @@ TEST(StateTracker, TheBrightestEnabledLightAndTheLightsColoursReachTheBatch)
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
     ASSERT_EQ(batches.size(), 2u);
-    EXPECT_TRUE(batches[0].lightOn);
-    EXPECT_EQ(batches[0].keyLight, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f));
+    ASSERT_GT(batches[0].lights.count, 0u);
+    EXPECT_EQ(batches[0].lights.lights[0].position, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f));
     const glm::vec4 green = batches[0].vertices[0].color;
     EXPECT_GT(green.g, green.r + 0.4f) << "the green light did not tint the white material";
-    EXPECT_EQ(batches[1].keyLight, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+    ASSERT_GT(batches[1].lights.count, 0u);
+    EXPECT_EQ(batches[1].lights.lights[0].position, glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
     const glm::vec4 mixed = batches[1].vertices[0].color;
     EXPECT_GT(mixed.r, green.r + 0.2f);
     EXPECT_LT(mixed.g - mixed.r, green.g - green.r);

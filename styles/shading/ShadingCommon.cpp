@@ -205,6 +205,7 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
 {
     if (lightPosition < 0) return; // a variant without the program's lights
     // The shader sums all 8 in its largest variant: the ones past the object's weigh nothing.
+    // The lights come as the shader takes them (StateTracker::litBy).
     glm::vec4 position[8], spot[8], falloff[8];
     float weight[8];
     const uint32_t n = std::min<uint32_t>(lights.count, 8);
@@ -212,16 +213,9 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
         SceneLights::Light l;
         if (i < n) l = lights.lights[i];
         else l.weight = 0.0f;
-        // The shader takes its factors without branches: a far light is not attenuated and
-        // a light that is no spot has a cutoff of -2 and exponent 0 (SceneLights' defaults).
-        const bool isSpot = l.position.w != 0.0f && l.spotCosCutoff >= -1.0f;
-        const float length = glm::length(l.spotDirection);
         position[i] = l.position;
-        spot[i] = glm::vec4(isSpot && length > 1e-12f ? l.spotDirection / length
-                                                       : glm::vec3(0.0f, 0.0f, -1.0f),
-                            isSpot ? l.spotCosCutoff : -2.0f);
-        falloff[i] = l.position.w != 0.0f ? l.falloff : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
-        if (!isSpot) falloff[i].w = 0.0f;
+        spot[i] = glm::vec4(l.spotDirection, l.spotCosCutoff);
+        falloff[i] = l.falloff;
         weight[i] = l.weight;
     }
     gl.Uniform4fv(lightPosition, 8, glm::value_ptr(position[0]));
