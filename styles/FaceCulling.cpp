@@ -17,4 +17,9 @@ void FaceCulling::end(const GlFunctions& gl, const SceneObject& object)
     if (object.culled == GL_CW || object.culled == GL_CCW) gl.Disable(GL_CULL_FACE);
 }
 
+GLenum FaceCulling::shownWinding(const SceneObject& object)
+{
+    return object.culled == GL_CCW ? GL_CW : GL_CCW;
+}
+
 } // namespace nprgl::styles

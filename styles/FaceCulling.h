@@ -17,6 +17,10 @@ public:
     static bool begin(const GlFunctions& gl, const SceneObject& object);
     // Back to the styles' baseline (no culling, counter-clockwise front faces).
     static void end(const GlFunctions& gl, const SceneObject& object);
+    // The window-space winding of the faces the program shows: clockwise where it culls the
+    // counter-clockwise ones (Quake III's renderer culls GL_FRONT), else counter-clockwise
+    // (the default, also assumed when it culls nothing).
+    static GLenum shownWinding(const SceneObject& object);
 };
 
 } // namespace nprgl::styles

@@ -321,6 +321,25 @@ TEST(Wireframe, StencilKeepsLinesOffTheInterior)
     EXPECT_EQ(s.outsideInk, 0);
 }
 
+// A program whose shown faces wind clockwise on screen (Quake III's renderer mirrors its
+// modelview and culls GL_FRONT) still gets its silhouette only: the faces turned away are
+// the ones it culls, not the counter-clockwise ones (which would ink its whole surface).
+TEST(Wireframe, AProgramShowingClockwiseFacesIsOutlinedOnItsRimOnly)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 mirrored = glm::scale(sphereModelview(), glm::vec3(-1.0f, 1.0f, 1.0f));
+    auto scene = harness.makeScene({sphereBatch(mirrored, kRadius, 48, 24, kRed)},
+                                   perspective());
+    for (auto& o : scene.objects) o.culled = GL_CCW;
+    PngImage image = render(harness, scene, "toon+wireframe", "", "wireframe_clockwise");
+    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, 0.9f);
+    EXPECT_GE(s.inside, 10000) << "no sphere: no test";
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0) << "the shown faces' edges were drawn";
+    EXPECT_EQ(s.outsideInk, 0);
+}
+
 // The image-space buffers follow the viewport, also when it does not start at the origin.
 TEST(Edges, FollowsAnOffsetViewport)
 {

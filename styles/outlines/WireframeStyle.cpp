@@ -1,5 +1,6 @@
 #include "styles/outlines/WireframeStyle.h"
 
+#include "styles/FaceCulling.h"
 #include "styles/StyleRegistry.h"
 #include "styles/outlines/OutlineParams.h"
 
@@ -259,6 +260,8 @@ void WireframeStyle::render(const Scene& scene, StyleContext& ctx)
         gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         for (size_t i = 0; i < scene.objects.size(); ++i) {
             const SceneObject& o = scene.objects[i];
+            if (o.culled == GL_FRONT_AND_BACK) continue;
+            gl.FrontFace(FaceCulling::shownWinding(o));
             gl.StencilFunc(GL_ALWAYS, GLint(i % 255 + 1), 0xff);
             gl.UniformMatrix4fv(mLoc.modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));
             gl.UniformMatrix4fv(mLoc.projection, 1, GL_FALSE, glm::value_ptr(o.projection));
@@ -266,11 +269,13 @@ void WireframeStyle::render(const Scene& scene, StyleContext& ctx)
         }
         gl.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         gl.Disable(GL_STENCIL_TEST);
+        gl.FrontFace(GL_CCW);
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
 
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
+        if (o.culled == GL_FRONT_AND_BACK) continue; // the program shows none of it
         gl.UniformMatrix4fv(mLoc.modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));
         gl.UniformMatrix4fv(mLoc.projection, 1, GL_FALSE, glm::value_ptr(o.projection));
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
@@ -295,9 +300,10 @@ void WireframeStyle::drawSilhouette(const SceneObject& object, StyleContext& ctx
         gl.Enable(GL_STENCIL_TEST);
         gl.StencilFunc(GL_NOTEQUAL, stencilId, 0xff);
     }
-    // Back faces only: their edges behind the object fail the depth test, the ones on the
-    // rim stick out as a halo.
+    // Back faces only (the side the program turns away or culls): their edges behind the
+    // object fail the depth test, the ones on the rim stick out as a halo.
     gl.Enable(GL_CULL_FACE);
+    gl.FrontFace(FaceCulling::shownWinding(object));
     gl.CullFace(GL_FRONT);
     setClass(gl, mClasses[Silhouette]);
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_LINE);
@@ -312,6 +318,7 @@ void WireframeStyle::drawSilhouette(const SceneObject& object, StyleContext& ctx
     }
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     gl.Disable(GL_CULL_FACE);
+    gl.FrontFace(GL_CCW);
     if (stencilId) gl.Disable(GL_STENCIL_TEST);
 }
 
