@@ -57,7 +57,8 @@ float hatchLayer(vec2 p, float angle, float layer, float t)
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    float d = dot(n, lightDir);
+    // The program's light: its lightmap's, its GL lights' or the head-light's.
+    float d = litDot(n, lightDir);
     float lightTone = clamp((light - d) / (light - dark), 0.0, 1.0);
     float luminance = dot(baseColor.rgb, vec3(0.299, 0.587, 0.114));
     float tone = 1.0 - (1.0 - lightTone) * (1.0 - colourTone * (1.0 - luminance));
@@ -133,7 +134,7 @@ StyleInfo pencilStyleInfo()
     return info;
 }
 
-std::string PencilStyle::fragmentSource(bool cut) const
+std::string PencilStyle::fragmentSource(bool cut, int lights) const
 {
     auto f = [](float v) { return ShadingCommon::glslFloat(v); };
     const float a = glm::radians(mAngle);
@@ -153,7 +154,17 @@ std::string PencilStyle::fragmentSource(bool cut) const
     s += "const float grainSize = " + f(float(std::max(mGrainImage.width, 1))) + ";\n";
     s += "const vec3 paper = " + ShadingCommon::glslVec3(mPaper) + ";\n";
     s += "const vec3 graphite = " + ShadingCommon::glslVec3(mGraphite) + ";\n";
-    return s + ShadingCommon::normalFunction() + kFragment;
+    return s + ShadingCommon::normalFunction(lights) + kFragment;
+}
+
+bool PencilStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
+{
+    const std::string fragment = fragmentSource(k % 2 == 1, ShadingCommon::variantLights(k));
+    Variant& v = mVariants[k];
+    if (!ShadingCommon::buildProgram(gl, v.program, v.u, fragment, error)) return false;
+    v.anchor = v.program.uniform(gl, "anchor");
+    v.grainTex = v.program.uniform(gl, "grainTex");
+    return true;
 }
 
 bool PencilStyle::init(StyleContext& ctx, std::string& error)
@@ -180,16 +191,9 @@ bool PencilStyle::init(StyleContext& ctx, std::string& error)
     mColourTone = param("color_tone");
     mPressure = param("pressure");
     mGrainImage = PaperGrain::make(PaperGrain::Options{});
-    if (mFill) {
-        for (bool cut : {false, true}) {
-            Variant& v = mVariants[cut];
-            const std::string fragment = fragmentSource(cut);
-            if (!v.program.build(gl, ShadingCommon::vertexShader(), fragment.c_str(), error))
-                return false;
-            v.u.find(gl, v.program.id());
-            v.anchor = v.program.uniform(gl, "anchor");
-            v.grainTex = v.program.uniform(gl, "grainTex");
-        }
+    // Unlit objects' variants now; those for lit ones when first needed (variantFor).
+    for (int k = 0; mFill && k < 2; ++k) {
+        if (!buildVariant(gl, k, error)) return false;
     }
     if (mOutlines && !mStrokes.init(gl, error)) return false;
 
@@ -236,17 +240,19 @@ void PencilStyle::drawSurfaces(const Scene& scene, StyleContext& ctx)
     // Onto the surfaces' own depth (the baseline's LEQUAL and offset); the depth stays the
     // scene's for the strokes' visibility.
     gl.DepthMask(GL_FALSE);
-    int bound = -1;
+    GLuint bound = 0;
     for (const SceneObject& object : scene.objects) {
         if (!object.mesh) continue;
         // Cut-outs and translucent surfaces are drawn where the program's texture and alpha
         // test let them be, blended by its alpha: a tree's quad is hatched as the tree.
         const bool cut = object.alphaFunc != GL_ALWAYS || object.translucent;
-        const Variant& v = mVariants[cut];
-        if (bound != int(cut)) {
+        const Variant& v = ShadingCommon::variantFor(
+            mVariants, mVariantsFailed, cut, object,
+            [&](int k, std::string& error) { return buildVariant(gl, k, error); });
+        if (bound != v.program.id()) {
             gl.UseProgram(v.program.id());
             gl.Uniform1i(v.grainTex, 1);
-            bound = int(cut);
+            bound = v.program.id();
         }
         if (object.alphaFunc != GL_ALWAYS) {
             gl.Enable(GL_ALPHA_TEST);
@@ -259,8 +265,8 @@ void PencilStyle::drawSurfaces(const Scene& scene, StyleContext& ctx)
         v.u.set(gl, object, frontIsCcw);
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
         gl.Uniform2f(v.anchor, anchor.x, anchor.y);
-        if (cut) ShadingCommon::drawTextured(ctx, object, v.u);
-        else ctx.meshes.draw(gl, *object.mesh);
+        // The program's culling, and its lightmaps bound where it has them.
+        ShadingCommon::draw(ctx, object, v.u, cut);
         gl.Disable(GL_ALPHA_TEST);
         gl.Disable(GL_BLEND);
     }

@@ -27,8 +27,11 @@ public:
     void shutdown(StyleContext& ctx) override;
 
 private:
-    // cut: the variant that takes the program's texture alpha (cut-outs, translucent).
-    std::string fragmentSource(bool cut) const;
+    // cut: the variant that takes the program's texture alpha (cut-outs, translucent);
+    // lights: how many of the program's lights it sums (ShadingCommon::normalFunction).
+    std::string fragmentSource(bool cut, int lights) const;
+    // Variant k as ShadingCommon numbers them, "textured" meaning cut.
+    bool buildVariant(const GlFunctions& gl, int k, std::string& error);
     void drawSurfaces(const Scene& scene, StyleContext& ctx);
 
     struct Variant {
@@ -36,7 +39,8 @@ private:
         ShadingCommon::ObjectUniforms u;
         GLint anchor = -1, grainTex = -1;
     };
-    Variant mVariants[2]; // plain, cut
+    Variant mVariants[ShadingCommon::kVariants];
+    uint32_t mVariantsFailed = 0;
     Scene mSolid;         // the objects the strokes outline
     GlTexture mGrainTexture;
     TextureImage mGrainImage;
