@@ -340,6 +340,26 @@ TEST(Wireframe, AProgramShowingClockwiseFacesIsOutlinedOnItsRimOnly)
     EXPECT_EQ(s.outsideInk, 0);
 }
 
+// Faces the program culls are not on screen, so no line comes from them: seen from inside,
+// a box drawn with its back faces culled shows nothing, not the creases of its inner corners
+// (a long box around the eye: its far end and the edges along its sides are in view).
+TEST(Edges, FacesTheProgramCullsDrawNoLines)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto ink = [&](GLenum culled) {
+        auto scene = harness.makeScene(
+            {boxBatch(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -5.0f)),
+                      glm::vec3(1.0f, 1.0f, 6.0f), kPale)},
+            perspective());
+        for (auto& o : scene.objects) o.culled = culled;
+        return countInk(render(harness, scene, "toon+edges", "",
+                               culled ? "edges_culled_inside" : "edges_inside"));
+    };
+    EXPECT_GT(ink(0), 300) << "no creases inside the box: no test";
+    EXPECT_EQ(ink(GL_CW), 0);
+}
+
 // The image-space buffers follow the viewport, also when it does not start at the origin.
 TEST(Edges, FollowsAnOffsetViewport)
 {

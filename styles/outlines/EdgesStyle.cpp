@@ -1,5 +1,6 @@
 #include "styles/outlines/EdgesStyle.h"
 
+#include "styles/FaceCulling.h"
 #include "styles/StyleRegistry.h"
 #include "styles/outlines/OutlineParams.h"
 
@@ -511,7 +512,10 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         const bool ortho = o.orthographic();
         gl.Uniform1i(mGeo.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(mGeo.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
+        // What the program culls is not on screen: no line may come from it.
+        if (!FaceCulling::begin(gl, o)) continue;
         ctx.meshes.draw(gl, *o.mesh);
+        FaceCulling::end(gl, o);
     }
     gl.Disable(GL_POLYGON_OFFSET_FILL);
     gl.Disable(GL_DEPTH_TEST);
