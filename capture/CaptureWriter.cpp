@@ -94,20 +94,11 @@ bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::str
     }
     try {
         resetLocked();
-        std::string why = checkMetadata(meta);
-        std::vector<uint8_t> head(kMagic, kMagic + sizeof kMagic);
-        ByteWriter w(head);
-        w.u32(kFormatVersion);
-        w.u32(0);
-        size_t start = beginChunk(head, kChunkMeta);
-        if (why.empty()) encodeMetadata(meta, head);
-        if (why.empty() && head.size() - start - kChunkHeaderSize > kMaxSmallChunk)
-            why = "the metadata is over the limit of " + std::to_string(kMaxSmallChunk) + " bytes";
-        if (!why.empty()) {
+        std::vector<uint8_t> head;
+        if (std::string why = encodeHeader(meta, head); !why.empty()) {
             error = path + ": cannot record: " + why;
             return false;
         }
-        finishChunk(head, start);
         if (!mCctx) mCctx = ZSTD_createCCtx();
         if (!mCctx) {
             error = path + ": cannot create a zstd context";
@@ -127,10 +118,57 @@ bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::str
         mFd = fd;
         mPath = path;
         mOffset = head.size();
+        mHeaderSize = head.size();
         mOwnerPid = int(::getpid());
         return true;
     } catch (const std::exception& e) {
         error = path + ": cannot open: " + e.what();
+        return false;
+    }
+}
+
+std::string CaptureWriter::encodeHeader(const Metadata& meta, std::vector<uint8_t>& head)
+{
+    std::string why = checkMetadata(meta);
+    head.assign(kMagic, kMagic + sizeof kMagic);
+    ByteWriter w(head);
+    w.u32(kFormatVersion);
+    w.u32(0);
+    size_t start = beginChunk(head, kChunkMeta);
+    if (why.empty()) encodeMetadata(meta, head);
+    if (why.empty() && head.size() - start - kChunkHeaderSize > kMaxSmallChunk)
+        why = "the metadata is over the limit of " + std::to_string(kMaxSmallChunk) + " bytes";
+    if (why.empty()) finishChunk(head, start);
+    return why;
+}
+
+bool CaptureWriter::rewriteMetadata(const Metadata& meta)
+{
+    std::lock_guard lock(mMutex);
+    if (!usable("rewrite the header")) return false;
+    try {
+        std::vector<uint8_t> head;
+        if (std::string why = encodeHeader(meta, head); !why.empty()) {
+            setError(mPath + ": header not rewritten: " + why);
+            return false;
+        }
+        if (head.size() != mHeaderSize) {
+            setError(mPath + ": header not rewritten: its size would change");
+            return false;
+        }
+        // At its place: the descriptor's own offset (the file's end) is left as it is.
+        for (size_t done = 0; done < head.size();) {
+            const ssize_t n = ::pwrite(mFd, head.data() + done, head.size() - done, off_t(done));
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) {
+                setError(mPath + ": cannot rewrite the header: " + std::strerror(errno));
+                return false;
+            }
+            done += size_t(n);
+        }
+        return true;
+    } catch (const std::exception& e) {
+        setError(mPath + ": header not rewritten: " + e.what());
         return false;
     }
 }

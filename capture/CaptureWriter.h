@@ -30,6 +30,10 @@ public:
 
     // Creates/truncates path and writes the header (magic, format version, metadata).
     bool open(const std::string& path, const Metadata& meta, std::string& error);
+    // Writes the header again with meta, which must encode to as many bytes as open()'s (the
+    // same fields, another drawable size): a program resizes its window after making its
+    // context current, before its first frame is shown.
+    bool rewriteMetadata(const Metadata& meta);
     // Stores a blob once per file: returns its hash; a blob already stored writes nothing.
     // Blobs are written (compressed) before the next frame chunk that may reference them.
     BlobHash putBlob(const void* data, size_t size);
@@ -79,6 +83,8 @@ private:
     bool flushPending();
     bool usable(const char* what);
     void setError(std::string message);
+    // Magic, format version and the META chunk; a reason when meta cannot be recorded.
+    static std::string encodeHeader(const Metadata& meta, std::vector<uint8_t>& head);
     void resetLocked();
     void dropInheritedFile();
 
@@ -90,6 +96,7 @@ private:
     std::string mPath;
     std::string mError;
     uint64_t mOffset = 0; // end of what is safely in the file
+    size_t mHeaderSize = 0;
     ZSTD_CCtx* mCctx = nullptr;
     std::vector<uint8_t> mPending; // chunks not yet written, starting at mOffset
     std::vector<BlobEntry> mPendingBlobs;

@@ -13,7 +13,7 @@ struct Metadata {
     std::string program; // e.g. "glxgears"
     std::vector<std::string> commandLine;
     std::string glVendor, glRenderer, glVersion;
-    int width = 0, height = 0; // drawable size at first MakeCurrent
+    int width = 0, height = 0; // drawable size when the first frame was shown
     uint32_t pid = 0;
     uint64_t startTimeUnix = 0;
     std::vector<std::pair<std::string, std::string>> extra; // free-form key/values

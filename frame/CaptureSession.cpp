@@ -144,6 +144,7 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
         return false;
     }
     NPRGL_INFO("recording to %s", mPath.c_str());
+    mMeta = std::move(meta);
     return true;
 }
 
@@ -161,6 +162,21 @@ bool CaptureSession::writeFrame(const Context& ctx, uint64_t frame, const uint8_
 {
     std::lock_guard lock(mMutex);
     if (frame > mLastFrame || !ensureOpenLocked(ctx)) return false;
+    // The header opened with the size at the first blob or frame, which may come before the
+    // program sized its window (glretrace, SDL); the first frame shown says.
+    if (mFramesWritten == 0 && ctx.drawableWidth() > 0 && ctx.drawableHeight() > 0 &&
+        (ctx.drawableWidth() != mMeta.width || ctx.drawableHeight() != mMeta.height)) {
+        capture::Metadata sized = mMeta;
+        sized.width = ctx.drawableWidth();
+        sized.height = ctx.drawableHeight();
+        if (mWriter.rewriteMetadata(sized)) {
+            mMeta = std::move(sized);
+        } else {
+            NPRGL_WARN("%s; it says %dx%d, the first frame was shown at %dx%d",
+                       mWriter.lastError().c_str(), mMeta.width, mMeta.height, sized.width,
+                       sized.height);
+        }
+    }
     if (!mWriter.writeFrame(ctx.serial(), frame, calls, size)) {
         NPRGL_ERROR("recording stopped at frame %llu: %s",
                     static_cast<unsigned long long>(frame), mWriter.lastError().c_str());

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "capture/CaptureWriter.h"
+#include "capture/Metadata.h"
 #include "common/FrameSet.h"
 #include "frame/StreamSink.h"
 
@@ -48,6 +49,7 @@ private:
     FrameSet mFrames;
     uint64_t mLastFrame;
     capture::CaptureWriter mWriter;
+    capture::Metadata mMeta; // as the header has it
     bool mOpenFailed = false;
     bool mFinished = false; // closed with its index: later frames are not recorded
     uint64_t mFramesWritten = 0;

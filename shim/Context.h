@@ -51,8 +51,12 @@ public:
     void drawOverlay(_XDisplay* display, unsigned long window, int width, int height);
     // Before endFrame on a window system with a keyboard: reads the hotkeys' state.
     void pollKeys(_XDisplay* display);
-    // The size of the drawable it was last made current with (0 when not known).
+    // The size of the drawable it was last made current with or, while recording to a file,
+    // shown at the last swap (0 when not known).
     void setDrawableSize(int width, int height);
+    // Whether frames go to a capture file: the swap hooks then ask the drawable's size (a
+    // server round trip), which the file's header takes from its first frame.
+    bool recordsToFile() const;
 
     // The program is about to make another context (or none) current: draw what is held.
     void release();
@@ -96,6 +100,8 @@ private:
     std::unique_ptr<Compositor> mCompositor;
     std::string mVendor, mRenderer, mVersion;
     int mWidth = 0, mHeight = 0;
+    // The size the capture file's header took (its first frame's) and the last resize said.
+    int mCaptureWidth = 0, mCaptureHeight = 0, mToldWidth = 0, mToldHeight = 0;
     ContextCaps mCaps;
     WindowSystem mWs;
     const void* mHandle;

@@ -51,6 +51,11 @@ EGLBoolean eglDestroyContext(EGLDisplay dpy, EGLContext ctx)
 EGLBoolean eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
 {
     Context* ctx = tThread.context;
+    if (ctx && ctx->windowSystem() == WindowSystem::Egl && ctx->recordsToFile()) {
+        EGLint width = 0, height = 0;
+        surfaceSize(dpy, surface, width, height);
+        if (width > 0 && height > 0) ctx->setDrawableSize(width, height);
+    }
     if (ctx && ctx->windowSystem() == WindowSystem::Egl && ctx->endFrame()) {
         EGLint width = 0, height = 0;
         surfaceSize(dpy, surface, width, height);

@@ -85,6 +85,12 @@ void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
                       gRealWs.glXGetCurrentDrawable() == drawable;
     if (ours) {
         ctx->pollKeys(dpy);
+        if (ctx->recordsToFile()) {
+            unsigned width = 0, height = 0;
+            gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
+            gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
+            ctx->setDrawableSize(int(width), int(height));
+        }
         const bool shots = ctx->endFrame();
         // A server round trip: only for a screenshot or the overlay.
         unsigned width = 0, height = 0;

@@ -199,6 +199,31 @@ TEST(Info, ReportsProgramFramesCallsAndWhatWasNotCaptured)
     EXPECT_NE(i.out.find("not captured:\n  (none)"), std::string::npos) << i.out;
 }
 
+// A program that sizes its window after making its context current (glretrace, SDL games)
+// is replayed at the size its frames were shown at, not the first one's; a later resize is
+// said at record time (its frames still replay at the first frame's size).
+TEST(Record, TheCaptureTakesTheSizeItsFirstFrameWasShownAt)
+{
+    ASSERT_TRUE(haveDisplay()) << "no DISPLAY: run the tests through scripts/test.sh";
+    std::string dir = freshDir("resized");
+    auto record = [&](const std::string& growAt, const std::string& file) {
+        ProcessResult r = runProcess({nprglCommand(), "record", "--style", "none", "-o", file,
+                                      "--", demo("immediate"), "--size", "48x32", "--frames",
+                                      "4", "--grow-at", growAt});
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        ProcessResult i = runProcess({nprglCommand(), "info", file});
+        EXPECT_EQ(i.exitCode, 0) << i.err;
+        return std::pair{r.err, i.out};
+    };
+    const auto [atStartLog, atStart] = record("1", dir + "/start.nprgl");
+    EXPECT_NE(atStart.find("size:        96x64"), std::string::npos) << atStart;
+    EXPECT_EQ(atStartLog.find("the window is"), std::string::npos) << atStartLog;
+    const auto [laterLog, later] = record("3", dir + "/later.nprgl");
+    EXPECT_NE(later.find("size:        48x32"), std::string::npos) << later;
+    EXPECT_NE(laterLog.find("the window is 96x64 from frame 3 on"), std::string::npos)
+        << laterLog;
+}
+
 TEST(Record, DefaultFileIsNamedAfterTheProgramAndFramesLimitTheRecording)
 {
     std::string dir = freshDir("default");

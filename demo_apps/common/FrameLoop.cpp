@@ -55,6 +55,7 @@ int runFrames(const Options& options, const GlApi& gl, Scene& scene)
         if (!surface->processEvents()) {
             break;
         }
+        if (frame == options.growAt) surface->resize(2 * options.width, 2 * options.height);
         scene.draw(frame);
         surface->finishFrame();
         if (options.shouldSave(frame)) {

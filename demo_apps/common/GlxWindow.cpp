@@ -62,12 +62,7 @@ bool GlxWindow::open(const Options& options, std::string& error)
                             visual->visual, CWColormap | CWBorderPixel | CWEventMask,
                             &windowAttributes);
 
-    // A fixed size keeps the pictures independent of the window manager.
-    XSizeHints hints{};
-    hints.flags = PMinSize | PMaxSize;
-    hints.min_width = hints.max_width = width_;
-    hints.min_height = hints.max_height = height_;
-    XSetWMNormalHints(display_, window_, &hints);
+    fixSize();
     XStoreName(display_, window_, options.appName.c_str());
     deleteAtom_ = XInternAtom(display_, "WM_DELETE_WINDOW", False);
     XSetWMProtocols(display_, window_, &deleteAtom_, 1);
@@ -119,6 +114,29 @@ void GlxWindow::readPixels(Image& image)
     gl_.readBuffer(GL_BACK);
     readFramebuffer(gl_, width_, height_, image);
     gl_.readBuffer(static_cast<GLenum>(oldReadBuffer));
+}
+
+void GlxWindow::fixSize()
+{
+    // A fixed size keeps the pictures independent of the window manager.
+    XSizeHints hints{};
+    hints.flags = PMinSize | PMaxSize;
+    hints.min_width = hints.max_width = width_;
+    hints.min_height = hints.max_height = height_;
+    XSetWMNormalHints(display_, window_, &hints);
+}
+
+void GlxWindow::resize(int width, int height)
+{
+    width_ = width;
+    height_ = height;
+    fixSize();
+    XResizeWindow(display_, window_, unsigned(width), unsigned(height));
+    XEvent event;
+    do {
+        XWindowEvent(display_, window_, StructureNotifyMask, &event);
+    } while (event.type != ConfigureNotify || event.xconfigure.width != width ||
+             event.xconfigure.height != height);
 }
 
 void GlxWindow::present()

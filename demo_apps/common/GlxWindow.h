@@ -18,8 +18,11 @@ public:
     void finishFrame() override {}
     void readPixels(Image& image) override;
     void present() override;
+    void resize(int width, int height) override;
 
 private:
+    void fixSize();
+
     GlApi gl_;
     Display* display_ = nullptr;
     Window window_ = 0;

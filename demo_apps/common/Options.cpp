@@ -38,6 +38,7 @@ void printHelp(const Options& options, const std::vector<ExtraOption>& extraOpti
                 "  --save-dir DIR     write DIR/%s_<frame>.png (every frame unless --save-frames)\n"
                 "  --save-frames LIST frames to save, 1-based, e.g. 1,5,10 or 1-3,7\n"
                 "  --report           print 'frames=N seconds=S fps=F' at exit\n"
+                "  --grow-at N        window: resize it to twice --size before frame N\n"
                 "  --help             show this help\n",
                 options.appName.c_str(), options.shortName.c_str());
     for (const ExtraOption& extra : extraOptions) {
@@ -127,6 +128,10 @@ int parseOptions(int argc, char** argv, const std::string& shortName,
                 return usageError(options, "--frames needs a non-negative integer");
             }
             framesGiven = true;
+        } else if (arg == "--grow-at") {
+            if (!takeValue() || !parseInt(value, 1, INT_MAX, options.growAt)) {
+                return usageError(options, "--grow-at needs a frame number from 1");
+            }
         } else if (arg == "--size") {
             if (!takeValue() || !parseSize(value, options.width, options.height)) {
                 return usageError(options, "--size needs WxH, e.g. 640x480");

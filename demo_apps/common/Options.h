@@ -30,6 +30,7 @@ struct Options {
     FrameList saveFrames;
     bool saveFramesGiven = false;
     bool report = false;
+    int growAt = 0; // GLX: the window doubles its size before this frame (0: never)
     std::map<std::string, std::string> extras; // flags are stored with an empty value
 
     bool shouldSave(int frame) const;

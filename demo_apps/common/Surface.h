@@ -21,6 +21,8 @@ public:
     // Reads the frame just drawn, top row first.
     virtual void readPixels(Image& image) = 0;
     virtual void present() = 0;
+    // Resizes a window (what the program draws keeps its own viewport); nothing offscreen.
+    virtual void resize(int /*width*/, int /*height*/) {}
 };
 
 } // namespace demo
