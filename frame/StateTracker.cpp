@@ -706,7 +706,7 @@ void StateTracker::indexBatch(const TrackedBatch& batch)
     if (!batch.depthOnly) mPassIndex.emplace(passKey(batch), uint32_t(mFrameBatches.size()));
 }
 
-bool StateTracker::repeatsHeld(const TrackedBatch& batch) const
+bool StateTracker::repeatsHeld(const TrackedBatch& batch, bool layer) const
 {
     // Passes may come right after their surface (ioquake3 draws a shader's stages so) or
     // after the whole scene (a lightmap pass over a world): any batch of the frame, found by
@@ -714,7 +714,7 @@ bool StateTracker::repeatsHeld(const TrackedBatch& batch) const
     auto [from, to] = mPassIndex.equal_range(passKey(batch));
     for (auto it = from; it != to; ++it) {
         const TrackedBatch& base = mFrameBatches[it->second];
-        if (base.mode != batch.mode || base.vertices.size() != batch.vertices.size() ||
+        if ((layer && base.translucent) || base.mode != batch.mode || base.vertices.size() != batch.vertices.size() ||
             base.culled != batch.culled ||
             std::memcmp(&base.modelview, &batch.modelview, sizeof(glm::mat4)) != 0 ||
             std::memcmp(&base.projection, &batch.projection, sizeof(glm::mat4)) != 0) {
@@ -1341,8 +1341,12 @@ bool StateTracker::keep(TrackedBatch& batch)
         batch.held = mHoldingList > 0 || (mPassingList == 0 && wouldHold(batch.mode));
         // A blended pass over geometry already held (a shine, light or fog stage; left for
         // its blending and asked about by the compositor, or translucent and held itself) is
-        // that object's: merged into it, not drawn or styled again.
-        if (a.blend && repeatsHeld(batch)) {
+        // that object's: merged into it, not drawn or styled again. Not so an alpha-blended
+        // layer the program lifts off the surface with a polygon offset: a decal (neverball's
+        // start arrow on its floor tile), whose picture is its own.
+        const bool layer = translucent();
+        const bool lifted = a.polygonOffsetFill && (a.offsetFactor < 0.0f || a.offsetUnits < 0.0f);
+        if (a.blend && !(layer && lifted) && repeatsHeld(batch, layer)) {
             if (mWatch.on) ++mWatch.repeated;
             else ++mMergedPasses;
             return false;

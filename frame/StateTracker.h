@@ -329,8 +329,11 @@ private:
     bool leftByRule() const;
     // The winding the current culling removes (TrackedBatch::culled).
     GLenum culledWinding() const;
-    // Does a batch draw the same triangles as one held this frame (a pass over it)?
-    bool repeatsHeld(const TrackedBatch& batch) const;
+    // Does a batch draw the same triangles as one held this frame (a pass over it)? An
+    // alpha-blended layer over a translucent batch is not a pass over a surface but the next
+    // layer of a layered decal, whose picture is its own: `layer` says the batch is
+    // alpha-blended, and then translucent batches are no base.
+    bool repeatsHeld(const TrackedBatch& batch, bool layer) const;
     static uint64_t passKey(const TrackedBatch& batch);
     void indexBatch(const TrackedBatch& batch);
     // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.

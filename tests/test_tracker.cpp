@@ -917,3 +917,59 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
     EXPECT_EQ(batches.size(), 2u);
     EXPECT_EQ(tracker.mergedPasses(), 1u) << "one of them taken for a pass over the other";
 }
+
+// An alpha-blended layer the program lifts off its surface with a polygon offset is a decal
+// (neverball's start arrow, drawn on the very quad of its floor tile), and a layer over a
+// translucent batch is the next layer of a layered decal: their pictures are their own, kept
+// as objects, not merged as stages of what they cover. A layer over an opaque surface without
+// an offset (a fog or detail stage) still is.
+TEST(StateTracker, ADecalOnTheTrianglesOfItsSurfaceIsKeptNotMerged)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto triangle = [&] {
+        feed.run([](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (float x : {0.0f, 1.0f, 0.0f}) {
+                w.op(op::glVertex3f);
+                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    auto alpha = [&](float a) {
+        feed.run([a](CallWriter& w) {
+            w.op(op::glColor4f);
+            for (float c : {1.0f, 1.0f, 1.0f, a}) w.put<float>(c);
+        });
+    };
+    std::vector<TrackedBatch> batches;
+    feed.enable(GL_DEPTH_TEST, true);
+    triangle(); // the floor, opaque
+    feed.run([](CallWriter& w) {
+        w.op(op::glBlendFunc);
+        w.put<GLenum>(GL_SRC_ALPHA);
+        w.put<GLenum>(GL_ONE_MINUS_SRC_ALPHA);
+        w.op(op::glPolygonOffset);
+        w.put<float>(-1.0f);
+        w.put<float>(-2.0f);
+    });
+    feed.enable(GL_BLEND, true);
+    alpha(0.5f);
+    feed.enable(GL_POLYGON_OFFSET_FILL, true);
+    triangle(); // the decal
+    EXPECT_EQ(tracker.mergedPasses(), 0u) << "the decal was merged into its floor";
+    feed.enable(GL_POLYGON_OFFSET_FILL, false);
+    triangle(); // a stage of the floor: merged (the decal is no base for it)
+    EXPECT_EQ(tracker.mergedPasses(), 1u);
+    tracker.takeBatches(batches);
+    EXPECT_EQ(batches.size(), 2u) << "the floor and its decal";
+
+    triangle(); // a translucent pane
+    triangle(); // a second layer on it
+    EXPECT_EQ(tracker.mergedPasses(), 1u) << "a layer merged into a translucent one";
+    tracker.takeBatches(batches);
+    EXPECT_EQ(batches.size(), 2u);
+}
