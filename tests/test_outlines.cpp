@@ -343,7 +343,9 @@ TEST(Wireframe, AProgramShowingClockwiseFacesIsOutlinedOnItsRimOnly)
 // Faces the program culls are not on screen, so no line comes from them: seen from inside,
 // a box drawn with its back faces culled shows nothing, not the creases of its inner corners
 // (a long box around the eye: its far end and the edges along its sides are in view).
-TEST(Edges, FacesTheProgramCullsDrawNoLines)
+class CulledFaces : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CulledFaces, DrawNoLines)
 {
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
@@ -353,12 +355,14 @@ TEST(Edges, FacesTheProgramCullsDrawNoLines)
                       glm::vec3(1.0f, 1.0f, 6.0f), kPale)},
             perspective());
         for (auto& o : scene.objects) o.culled = culled;
-        return countInk(render(harness, scene, "toon+edges", "",
-                               culled ? "edges_culled_inside" : "edges_inside"));
+        return countInk(render(harness, scene, "toon+" + GetParam(), "",
+                               GetParam() + (culled ? "_culled_inside" : "_inside")));
     };
-    EXPECT_GT(ink(0), 300) << "no creases inside the box: no test";
+    EXPECT_GT(ink(0), 300) << "no ink inside the box: no test";
     EXPECT_EQ(ink(GL_CW), 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Styles, CulledFaces, ::testing::Values("edges", "perpixel"));
 
 // The image-space buffers follow the viewport, also when it does not start at the origin.
 TEST(Edges, FollowsAnOffsetViewport)

@@ -1,5 +1,6 @@
 #include "styles/outlines/PerPixelStyle.h"
 
+#include "styles/FaceCulling.h"
 #include "styles/StyleRegistry.h"
 #include "styles/outlines/OutlineParams.h"
 
@@ -118,7 +119,10 @@ void PerPixelStyle::render(const Scene& scene, StyleContext& ctx)
         gl.UniformMatrix4fv(mLoc.projection, 1, GL_FALSE, glm::value_ptr(o.projection));
         gl.UniformMatrix3fv(mLoc.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
         gl.Uniform1i(mLoc.orthographic, ortho ? 1 : 0);
+        // What the program culls is not on screen: no ink on it.
+        if (!FaceCulling::begin(gl, o)) continue;
         ctx.meshes.draw(gl, *o.mesh);
+        FaceCulling::end(gl, o);
     }
 }
 
