@@ -1,5 +1,7 @@
 #include "styles/FaceCulling.h"
 
+#include "styles/shading/ShadingCommon.h"
+
 namespace nprgl::styles {
 
 bool FaceCulling::begin(const GlFunctions& gl, const SceneObject& object)
@@ -19,7 +21,12 @@ void FaceCulling::end(const GlFunctions& gl, const SceneObject& object)
 
 GLenum FaceCulling::shownWinding(const SceneObject& object)
 {
-    return object.culled == GL_CCW ? GL_CW : GL_CCW;
+    if (object.culled == GL_CCW) return GL_CW;
+    if (object.culled == GL_CW || !object.mesh) return GL_CCW;
+    // The program culls nothing: its normals say which side is the outside (a mirroring
+    // modelview turns the window-space winding around).
+    const bool mirrored = glm::determinant(glm::mat3(object.modelview)) < 0.0f;
+    return ShadingCommon::normalsFollowCcw(*object.mesh) != mirrored ? GL_CCW : GL_CW;
 }
 
 } // namespace nprgl::styles

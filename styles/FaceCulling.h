@@ -18,8 +18,8 @@ public:
     // Back to the styles' baseline (no culling, counter-clockwise front faces).
     static void end(const GlFunctions& gl, const SceneObject& object);
     // The window-space winding of the faces the program shows: clockwise where it culls the
-    // counter-clockwise ones (Quake III's renderer culls GL_FRONT), else counter-clockwise
-    // (the default, also assumed when it culls nothing).
+    // counter-clockwise ones (Quake III's renderer culls GL_FRONT), counter-clockwise where it
+    // culls the others; where it culls nothing, the side its normals point out of.
     static GLenum shownWinding(const SceneObject& object);
 };
 

@@ -340,6 +340,25 @@ TEST(Wireframe, AProgramShowingClockwiseFacesIsOutlinedOnItsRimOnly)
     EXPECT_EQ(s.outsideInk, 0);
 }
 
+// A program that culls nothing may wind its faces either way (demo_immediate's sphere and
+// torus wind clockwise seen from outside); its normals say which side is the outside, and
+// the silhouette pass draws the other, not the shown faces' edges all over the surface.
+TEST(Wireframe, AClockwiseMeshTheProgramDoesNotCullIsOutlinedOnItsRimOnly)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    reconstruct::Batch sphere = sphereBatch(sphereModelview(), kRadius, 48, 24, kRed);
+    for (size_t i = 0; i + 2 < sphere.vertices.size(); i += 3) {
+        std::swap(sphere.vertices[i + 1], sphere.vertices[i + 2]);
+    }
+    auto scene = harness.makeScene({sphere}, perspective());
+    PngImage image = render(harness, scene, "toon+wireframe", "", "wireframe_clockwise_unculled");
+    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, 0.9f);
+    EXPECT_GE(s.inside, 10000) << "no sphere: no test";
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0) << "the shown faces' edges were drawn";
+}
+
 // Faces the program culls are not on screen, so no line comes from them: seen from inside,
 // a box drawn with its back faces culled shows nothing, not the creases of its inner corners
 // (a long box around the eye: its far end and the edges along its sides are in view).
