@@ -1025,3 +1025,58 @@ TEST_F(Shading, LightmapsGiveTheLightOfUnlitSurfaces)
     }
     gl.DeleteTextures(1, &lightmap);
 }
+
+// A decal's or cut-out's texture is its drawing: pencil hatches its dark parts darker, as it
+// does a darker colour. A translucent quad whose texture is black on the left and white on
+// the right, lit evenly: the left half is hatched darker (before, the tone took the vertex
+// colour alone, and neverball's painted start arrow vanished into its floor's hatching).
+TEST_F(Shading, PencilHatchesADecalByItsTexture)
+{
+    ASSERT_TRUE(harness.ok());
+    const styles::GlFunctions& gl = harness.gl();
+    const uint8_t texels[2 * 4] = {0, 0, 0, 255, 255, 255, 255, 255};
+    GLuint texture = 0;
+    gl.GenTextures(1, &texture);
+    gl.BindTexture(GL_TEXTURE_2D, texture);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+
+    reconstruct::Batch quad;
+    quad.mode = GL_TRIANGLES;
+    quad.modelview = glm::translate(glm::mat4(1.0f), kCentre);
+    quad.materialId = 1;
+    const glm::vec2 corners[6] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+    for (const glm::vec2& c : corners) {
+        reconstruct::Vertex v{};
+        v.position = {c.x, c.y, 0.0f};
+        v.normal = {0.0f, 0.0f, 1.0f};
+        v.hasNormal = true;
+        v.color = {1.0f, 1.0f, 1.0f, 1.0f};
+        v.texcoord = {0.5f * (c.x + 1.0f), 0.5f};
+        quad.vertices.push_back(v);
+    }
+    // Lit head-on: bare paper by the light alone, so only the texture can darken it.
+    auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+    for (auto& o : scene.objects) {
+        o.texture = texture;
+        o.translucent = true;
+    }
+    PngImage image;
+    std::string error;
+    EXPECT_TRUE(harness.render(scene, "pencil", "pencil.outlines=off", image, error)) << error;
+    save(image, "pencil_decal");
+    auto patch = [&](int x0) {
+        float sum = 0.0f;
+        int n = 0;
+        for (int y = kSize / 2 - 10; y < kSize / 2 + 10; ++y) {
+            for (int x = x0; x < x0 + 20; ++x, ++n) sum += luminance(pixel(image, x, y));
+        }
+        return sum / float(n);
+    };
+    const float left = patch(kSize / 2 - 30), right = patch(kSize / 2 + 10);
+    EXPECT_GT(right - left, 0.1f) << "the texture's black half is not hatched darker: "
+                                  << left << " against " << right;
+    gl.DeleteTextures(1, &texture);
+}

@@ -60,7 +60,14 @@ void main()
     // The program's light: its lightmap's, its GL lights' or the head-light's.
     float d = litDot(n, lightDir);
     float lightTone = clamp((light - d) / (light - dark), 0.0, 1.0);
+#if CUT
+    // A cut-out's or decal's texture is its drawing (a painted arrow, a leaf): its darker
+    // parts darken the tone as a darker colour does.
+    vec4 texel = texture(detail, uv);
+    float luminance = dot(baseColor.rgb * texel.rgb, vec3(0.299, 0.587, 0.114));
+#else
     float luminance = dot(baseColor.rgb, vec3(0.299, 0.587, 0.114));
+#endif
     float tone = 1.0 - (1.0 - lightTone) * (1.0 - colourTone * (1.0 - luminance));
     vec2 p = gl_FragCoord.xy - anchor;
     float keep = 1.0;
@@ -75,7 +82,7 @@ void main()
     vec3 sheet = paper * (1.0 - grain * (1.0 - g));
 #if CUT
     // The program's alpha, its texture modulating: what its alpha test and blending see.
-    fragColor = vec4(mix(sheet, graphite, ink), baseColor.a * texture(detail, uv).a);
+    fragColor = vec4(mix(sheet, graphite, ink), baseColor.a * texel.a);
 #else
     fragColor = vec4(mix(sheet, graphite, ink), 1.0);
 #endif
