@@ -359,6 +359,36 @@ TEST(Wireframe, AClockwiseMeshTheProgramDoesNotCullIsOutlinedOnItsRimOnly)
     EXPECT_EQ(s.insideInk, 0) << "the shown faces' edges were drawn";
 }
 
+// A thin part (a coin, a plate, a shell) seen face on: its back faces lie just behind its
+// front, and the silhouette pass must not lift their edges over it (winduprobot's bodies and
+// neverball's coins were blots of ink). A plate 0.004 thick at distance 6: ink on its rim, none
+// inside (the back face's diagonal and edges).
+TEST(Wireframe, AThinPlateShowsNoLinesOfItsBackOverItsFront)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance));
+    auto scene = harness.makeScene({boxBatch(mv, glm::vec3(1.0f, 1.0f, 0.002f), kPale)},
+                                   perspective());
+    PngImage image = render(harness, scene, "toon+wireframe", "", "wireframe_thin_plate");
+    const glm::vec4 viewport(0, 0, kSize, kSize);
+    const glm::vec2 lo(glm::project(glm::vec3(-1.0f, -1.0f, 0.002f), mv, perspective(), viewport));
+    const glm::vec2 hi(glm::project(glm::vec3(1.0f, 1.0f, 0.002f), mv, perspective(), viewport));
+    int inside = 0, insideInk = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec2 p(x + 0.5f, kSize - y - 0.5f);
+            if (p.x > lo.x + 6 && p.x < hi.x - 6 && p.y > lo.y + 6 && p.y < hi.y - 6) {
+                ++inside;
+                insideInk += isInk(image, x, y);
+            }
+        }
+    }
+    EXPECT_GT(inside, 2000) << "no plate: no test";
+    EXPECT_EQ(insideInk, 0);
+    EXPECT_TRUE(inkNear(image, glm::vec2(lo.x, 0.5f * (lo.y + hi.y)), 3.0f)) << "no rim";
+}
+
 // Faces the program culls are not on screen, so no line comes from them: seen from inside,
 // a box drawn with its back faces culled shows nothing, not the creases of its inner corners
 // (a long box around the eye: its far end and the edges along its sides are in view).

@@ -138,8 +138,9 @@ StyleInfo wireframeStyleInfo()
         0.0, 0.0, 1.0));
     p.push_back(ParamInfo::number(
         "depth_bias",
-        "lines move this fraction of their distance towards the eye to win over their surface "
-        "(feature edges also by their faces' slope)",
+        "creases, borders and material lines move this fraction of their distance (and by "
+        "their faces' slope) towards the eye to win over their surface; silhouettes are "
+        "lifted by a polygon offset",
         0.002, 0.0, 0.05));
     return info;
 }
@@ -305,6 +306,14 @@ void WireframeStyle::drawSilhouette(const SceneObject& object, StyleContext& ctx
     gl.Enable(GL_CULL_FACE);
     gl.FrontFace(FaceCulling::shownWinding(object));
     gl.CullFace(GL_FRONT);
+    // Not pulled by a share of the distance, as lines on a face are: a thin part (a shell, a
+    // coin) would then show its back faces' edges all over its front. A polygon offset pulls
+    // them by their slope: the rim's grazing faces win against the front faces there, the
+    // back faces behind a surface stay behind it.
+    gl.Uniform1f(mLoc.pull, 0.0f);
+    gl.Enable(GL_POLYGON_OFFSET_LINE);
+    gl.Enable(GL_POLYGON_OFFSET_POINT);
+    gl.PolygonOffset(-1.0f, -2.0f);
     setClass(gl, mClasses[Silhouette]);
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     ctx.meshes.draw(gl, *object.mesh);
@@ -317,6 +326,9 @@ void WireframeStyle::drawSilhouette(const SceneObject& object, StyleContext& ctx
         gl.Disable(GL_POINT_SPRITE);
     }
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    gl.Disable(GL_POLYGON_OFFSET_LINE);
+    gl.Disable(GL_POLYGON_OFFSET_POINT);
+    gl.Uniform1f(mLoc.pull, mPull);
     gl.Disable(GL_CULL_FACE);
     gl.FrontFace(GL_CCW);
     if (stencilId) gl.Disable(GL_STENCIL_TEST);
