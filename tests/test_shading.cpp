@@ -963,6 +963,31 @@ TEST_F(Shading, GoochTakesItsPureTonesFromTheRamp)
     EXPECT_EQ(fallback.rgba, generated.rgba);
 }
 
+namespace {
+
+// A 2x2 quad facing the eye at kCentre, in colour; its texture (or else lightmap) coordinates
+// run from 0 on its left edge to 1 on its right, at t = 0.5.
+reconstruct::Batch facingQuad(const glm::vec4& colour, bool texture)
+{
+    reconstruct::Batch quad;
+    quad.mode = GL_TRIANGLES;
+    quad.modelview = glm::translate(glm::mat4(1.0f), kCentre);
+    quad.materialId = 1;
+    const glm::vec2 corners[6] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+    for (const glm::vec2& c : corners) {
+        reconstruct::Vertex v{};
+        v.position = {c.x, c.y, 0.0f};
+        v.normal = {0.0f, 0.0f, 1.0f};
+        v.hasNormal = true;
+        v.color = colour;
+        (texture ? v.texcoord : v.lightcoord) = {0.5f * (c.x + 1.0f), 0.5f};
+        quad.vertices.push_back(v);
+    }
+    return quad;
+}
+
+} // namespace
+
 // A lightmapped surface of a program without GL lighting (Quake-style worlds): the shading
 // styles take its light from the lightmap's luminance, not from L·n. A flat quad whose
 // lightmap is dark on the left and bright on the right gets the shadow band on the left and a
@@ -983,20 +1008,8 @@ TEST_F(Shading, LightmapsGiveTheLightOfUnlitSurfaces)
     gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
     gl.BindTexture(GL_TEXTURE_2D, 0);
 
-    reconstruct::Batch quad;
-    quad.mode = GL_TRIANGLES;
-    quad.modelview = glm::translate(glm::mat4(1.0f), kCentre);
-    quad.materialId = 1;
-    const glm::vec2 corners[6] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
-    for (const glm::vec2& c : corners) {
-        reconstruct::Vertex v{};
-        v.position = {c.x, c.y, 0.0f};
-        v.normal = {0.0f, 0.0f, 1.0f};
-        v.hasNormal = true;
-        v.color = {0.8f, 0.8f, 0.8f, 1.0f};
-        v.lightcoord = {0.5f * (c.x + 1.0f), 0.5f};
-        quad.vertices.push_back(v);
-    }
+    // The lightmap's left texel on the left half, its right one on the right.
+    const reconstruct::Batch quad = facingQuad(glm::vec4(0.8f, 0.8f, 0.8f, 1.0f), false);
     auto halves = [&](const std::string& chain, bool withLightmap, const std::string& name) {
         auto scene = harness.makeScene({quad}, perspective(), kLight);
         for (auto& o : scene.objects) o.lightmap = withLightmap ? lightmap : 0;
@@ -1043,20 +1056,7 @@ TEST_F(Shading, PencilHatchesADecalByItsTexture)
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
     gl.BindTexture(GL_TEXTURE_2D, 0);
 
-    reconstruct::Batch quad;
-    quad.mode = GL_TRIANGLES;
-    quad.modelview = glm::translate(glm::mat4(1.0f), kCentre);
-    quad.materialId = 1;
-    const glm::vec2 corners[6] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
-    for (const glm::vec2& c : corners) {
-        reconstruct::Vertex v{};
-        v.position = {c.x, c.y, 0.0f};
-        v.normal = {0.0f, 0.0f, 1.0f};
-        v.hasNormal = true;
-        v.color = {1.0f, 1.0f, 1.0f, 1.0f};
-        v.texcoord = {0.5f * (c.x + 1.0f), 0.5f};
-        quad.vertices.push_back(v);
-    }
+    const reconstruct::Batch quad = facingQuad(glm::vec4(1.0f), true);
     // Lit head-on: bare paper by the light alone, so only the texture can darken it.
     auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
     for (auto& o : scene.objects) {

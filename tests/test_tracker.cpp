@@ -928,17 +928,6 @@ TEST(StateTracker, ADecalOnTheTrianglesOfItsSurfaceIsKeptNotMerged)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    auto triangle = [&] {
-        feed.run([](CallWriter& w) {
-            w.op(op::glBegin);
-            w.put<GLenum>(GL_TRIANGLES);
-            for (float x : {0.0f, 1.0f, 0.0f}) {
-                w.op(op::glVertex3f);
-                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
-            }
-            w.op(op::glEnd);
-        });
-    };
     auto alpha = [&](float a) {
         feed.run([a](CallWriter& w) {
             w.op(op::glColor4f);
@@ -947,7 +936,7 @@ TEST(StateTracker, ADecalOnTheTrianglesOfItsSurfaceIsKeptNotMerged)
     };
     std::vector<TrackedBatch> batches;
     feed.enable(GL_DEPTH_TEST, true);
-    triangle(); // the floor, opaque
+    feed.triangle(); // the floor, opaque
     feed.run([](CallWriter& w) {
         w.op(op::glBlendFunc);
         w.put<GLenum>(GL_SRC_ALPHA);
@@ -959,16 +948,16 @@ TEST(StateTracker, ADecalOnTheTrianglesOfItsSurfaceIsKeptNotMerged)
     feed.enable(GL_BLEND, true);
     alpha(0.5f);
     feed.enable(GL_POLYGON_OFFSET_FILL, true);
-    triangle(); // the decal
+    feed.triangle(); // the decal
     EXPECT_EQ(tracker.mergedPasses(), 0u) << "the decal was merged into its floor";
     feed.enable(GL_POLYGON_OFFSET_FILL, false);
-    triangle(); // a stage of the floor: merged (the decal is no base for it)
+    feed.triangle(); // a stage of the floor: merged (the decal is no base for it)
     EXPECT_EQ(tracker.mergedPasses(), 1u);
     tracker.takeBatches(batches);
     EXPECT_EQ(batches.size(), 2u) << "the floor and its decal";
 
-    triangle(); // a translucent pane
-    triangle(); // a second layer on it
+    feed.triangle(); // a translucent pane
+    feed.triangle(); // a second layer on it
     EXPECT_EQ(tracker.mergedPasses(), 1u) << "a layer merged into a translucent one";
     tracker.takeBatches(batches);
     EXPECT_EQ(batches.size(), 2u);
