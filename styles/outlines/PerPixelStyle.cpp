@@ -43,8 +43,13 @@ out vec4 fragColor;
 void main()
 {
     vec3 n = normalize(eyeNormal);
-    if (!gl_FrontFacing) n = -n;
     vec3 toEye = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-eyePosition);
+    // Seen from the side the program's normals point away from (the inside of an open part,
+    // or any face where normals and winding disagree: a mirrored half drawn with a clockwise
+    // front), the surface is judged by its other side. Which side is seen comes from the
+    // face's own plane, not from its winding: programs wind their parts either way.
+    vec3 face = cross(dFdx(eyePosition), dFdy(eyePosition));
+    if (dot(face, toEye) * dot(face, n) < 0.0) n = -n;
     float d = dot(toEye, n);
     float alpha = d < epsilon ? 1.0 : 0.0;
     if (smoothEdges) {
