@@ -1,5 +1,7 @@
 #include "frame/StateTracker.h"
 
+#include "common/Log.h"
+
 #include "stream/CallDecoder.h"
 #include "stream/Opcodes.h"
 
@@ -1493,6 +1495,7 @@ void StateTracker::callList(GLuint list)
     const bool pass = top && !hold;
     mHoldingList += hold;
     mPassingList += pass;
+    if (mCallDepth == 0) mListWork = 0;
     callListBody(list);
     mPassingList -= pass;
     mHoldingList -= hold;
@@ -1506,6 +1509,7 @@ void StateTracker::callLists(GLsizei n, GLenum type, const void* lists)
     const bool pass = top && !hold;
     mHoldingList += hold;
     mPassingList += pass;
+    if (mCallDepth == 0) mListWork = 0;
     const uint8_t* p = static_cast<const uint8_t*>(lists);
     for (GLsizei i = 0; p && i < n; ++i) {
         const GLuint list = mListBase + listId(type, p, i);
@@ -1533,8 +1537,19 @@ void StateTracker::callListBody(GLuint list)
     auto it = mLists.find(list);
     // GL_MAX_LIST_NESTING is 64: a list that calls itself stops there, as in the driver.
     if (it == mLists.end() || mCallDepth >= 64) return;
-    ++mCallDepth;
     const List& body = it->second;
+    mListWork += body.items.size() + 1;
+    if (mListWork > kListWorkLimit) {
+        if (!mListWorkSaid) {
+            NPRGL_WARN("a display list runs more than %llu list items in one call (lists calling "
+                       "themselves over and over): nprgl stops following it there, so what the "
+                       "rest would draw is not styled",
+                       static_cast<unsigned long long>(kListWorkLimit));
+            mListWorkSaid = true;
+        }
+        return;
+    }
+    ++mCallDepth;
     for (const ListItem& item : body.items) {
         if (item.batch >= 0) {
             const TrackedBatch& compiled = body.batches[size_t(item.batch)];

@@ -414,6 +414,11 @@ private:
     List mCompiled;
     GLuint mListBase = 0;
     int mCallDepth = 0;
+    // List items run by the current top-level glCallList(s): lists calling themselves more
+    // than once would otherwise run 2^64 of them within the nesting limit (a hostile capture).
+    static constexpr uint64_t kListWorkLimit = uint64_t(1) << 20;
+    uint64_t mListWork = 0;
+    bool mListWorkSaid = false;
 
     ArrayBinding mArrayState[kArraySlotCount];
     int mClientActiveTexture = 0;

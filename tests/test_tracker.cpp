@@ -962,3 +962,30 @@ TEST(StateTracker, ADecalOnTheTrianglesOfItsSurfaceIsKeptNotMerged)
     tracker.takeBatches(batches);
     EXPECT_EQ(batches.size(), 2u);
 }
+
+// A list that calls itself twice runs 2^64 times within the driver's nesting limit: a hostile
+// capture (the replay fuzzer made one) must not hang the tracker. It follows a bounded number
+// of list items a top-level call, says so once, and goes on with the next call.
+TEST(StateTracker, AListCallingItselfOverAndOverIsFollowedOnlySoFar)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.run([](CallWriter& w) {
+        w.op(op::glNewList);
+        w.put<GLuint>(1);
+        w.put<GLenum>(GL_COMPILE);
+        for (int k = 0; k < 2; ++k) {
+            w.op(op::glCallList);
+            w.put<GLuint>(1);
+        }
+        w.op(op::glEndList);
+        w.op(op::glCallList);
+        w.put<GLuint>(1);
+    });
+    feed.triangle(); // the next call is followed
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    EXPECT_EQ(batches.size(), 1u);
+}

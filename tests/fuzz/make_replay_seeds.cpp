@@ -181,8 +181,15 @@ void lists(CallWriter& w)
     w.put(GLenum(GL_UNSIGNED_BYTE));
     w.putBytes(names, sizeof names);
     w.endPayload(mark);
+    // A list calling itself twice: 2^64 runs within the nesting limit, bounded by the
+    // replayer's budget for the driver and by the compositor's tracker for itself.
+    call(w, op::glNewList, GLuint(3), GLenum(GL_COMPILE));
+    call(w, op::glCallList, GLuint(3));
+    call(w, op::glCallList, GLuint(3));
+    call(w, op::glEndList);
+    call(w, op::glCallList, GLuint(3));
     call(w, op::glGenLists, GLsizei(2));
-    call(w, op::glDeleteLists, GLuint(1), GLsizei(2));
+    call(w, op::glDeleteLists, GLuint(1), GLsizei(3));
 }
 
 void images(CallWriter& w)
