@@ -89,7 +89,7 @@ void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
             unsigned width = 0, height = 0;
             gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
             gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
-            ctx->setDrawableSize(int(width), int(height));
+            if (width > 0 && height > 0) ctx->setDrawableSize(int(width), int(height));
         }
         const bool shots = ctx->endFrame();
         // A server round trip: only for a screenshot or the overlay.
