@@ -4,6 +4,7 @@
 #include "styles/StyleRegistry.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace nprgl::styles {
 
@@ -85,6 +86,30 @@ void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
     gl.PointSize(1.0f);
 }
 
+template <typename Draw>
+void StyleChain::forEachRun(const Scene& part, Draw&& draw)
+{
+    auto same = [](const SceneObject& a, const SceneObject& b) {
+        return a.depthTest == b.depthTest && a.depthWrite == b.depthWrite &&
+               a.translucent == b.translucent && a.alphaFunc == b.alphaFunc &&
+               a.alphaRef == b.alphaRef && a.offsetFactor == b.offsetFactor &&
+               a.offsetUnits == b.offsetUnits;
+    };
+    const GlFunctions& gl = mContext.gl;
+    for (size_t i = 0; i < part.objects.size();) {
+        const SceneObject& first = part.objects[i];
+        size_t end = i + 1;
+        while (end < part.objects.size() && same(part.objects[end], first)) ++end;
+        mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
+        setBaseline(mRun, true);
+        applyTestAndOffset(first);
+        draw(std::as_const(mRun), first);
+        gl.Disable(GL_ALPHA_TEST);
+        gl.Disable(GL_POLYGON_OFFSET_FILL);
+        i = end;
+    }
+}
+
 void StyleChain::render(const Scene& scene)
 {
     // The opaque scene goes through the whole chain; the translucent objects then through the
@@ -140,23 +165,9 @@ void StyleChain::render(const Scene& scene)
             mStyles[i]->render(mOpaque, mContext);
         }
         if (!shading) continue;
-        for (size_t k = 0; k < mCutOut.objects.size();) {
-            size_t end = k + 1;
-            const SceneObject& first = mCutOut.objects[k];
-            auto same = [&first](const SceneObject& o) {
-                return o.alphaFunc == first.alphaFunc && o.alphaRef == first.alphaRef &&
-                       o.offsetFactor == first.offsetFactor && o.offsetUnits == first.offsetUnits;
-            };
-            while (end < mCutOut.objects.size() && same(mCutOut.objects[end])) ++end;
-            mRun.objects.assign(mCutOut.objects.begin() + long(k),
-                                mCutOut.objects.begin() + long(end));
-            setBaseline(mRun, true);
-            applyTestAndOffset(first);
-            mStyles[i]->render(mRun, mContext);
-            gl.Disable(GL_ALPHA_TEST);
-            gl.Disable(GL_POLYGON_OFFSET_FILL);
-            k = end;
-        }
+        forEachRun(mCutOut, [&](const Scene& run, const SceneObject&) {
+            mStyles[i]->render(run, mContext);
+        });
     }
     renderAsDrawn(mOnTop);
     if (!mDepthOnly.objects.empty()) {
@@ -165,29 +176,14 @@ void StyleChain::render(const Scene& scene)
         mStyles.front()->render(mDepthOnly, mContext);
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
-    for (size_t i = 0; i < mTranslucent.objects.size();) {
-        // Runs of objects with the same depth writes, alpha test and offset: a translucent
-        // decal (a goal painted on the floor) keeps the offset that lifts it off its surface.
-        size_t end = i + 1;
-        const SceneObject& first = mTranslucent.objects[i];
-        auto same = [&first](const SceneObject& o) {
-            return o.depthWrite == first.depthWrite && o.alphaFunc == first.alphaFunc &&
-                   o.alphaRef == first.alphaRef && o.offsetFactor == first.offsetFactor &&
-                   o.offsetUnits == first.offsetUnits;
-        };
-        while (end < mTranslucent.objects.size() && same(mTranslucent.objects[end])) ++end;
-        mRun.objects.assign(mTranslucent.objects.begin() + long(i),
-                            mTranslucent.objects.begin() + long(end));
-        setBaseline(mRun, true);
+    // With the program's depth writes, alpha test and offset: a translucent decal (a goal
+    // painted on the floor) keeps the offset that lifts it off its surface.
+    forEachRun(mTranslucent, [&](const Scene& run, const SceneObject& first) {
         gl.Enable(GL_BLEND);
         gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
-        applyTestAndOffset(first);
-        mStyles.front()->render(mRun, mContext);
-        gl.Disable(GL_ALPHA_TEST);
-        gl.Disable(GL_POLYGON_OFFSET_FILL);
-        i = end;
-    }
+        mStyles.front()->render(run, mContext);
+    });
     mContext.meshes.endFlush(mContext.gl);
 }
 
@@ -206,21 +202,9 @@ void StyleChain::applyTestAndOffset(const SceneObject& o)
 
 void StyleChain::renderAsDrawn(const Scene& part)
 {
-    // The program's depth test and writes, blending (translucent text and sprites drawn over
-    // the scene without the depth test), alpha test and offset, in runs of equal ones.
+    // Translucent text and sprites are drawn over the scene without the depth test.
     const GlFunctions& gl = mContext.gl;
-    for (size_t i = 0; i < part.objects.size();) {
-        const SceneObject& first = part.objects[i];
-        auto same = [&first](const SceneObject& o) {
-            return o.depthTest == first.depthTest && o.depthWrite == first.depthWrite &&
-                   o.translucent == first.translucent && o.alphaFunc == first.alphaFunc &&
-                   o.alphaRef == first.alphaRef && o.offsetFactor == first.offsetFactor &&
-                   o.offsetUnits == first.offsetUnits;
-        };
-        size_t end = i + 1;
-        while (end < part.objects.size() && same(part.objects[end])) ++end;
-        mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
-        setBaseline(mRun, true);
+    forEachRun(part, [&](const Scene& run, const SceneObject& first) {
         if (first.depthTest) gl.DepthFunc(GL_LEQUAL);
         else gl.Disable(GL_DEPTH_TEST);
         gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
@@ -228,13 +212,9 @@ void StyleChain::renderAsDrawn(const Scene& part)
             gl.Enable(GL_BLEND);
             gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         }
-        applyTestAndOffset(first);
-        mStyles.front()->render(mRun, mContext);
-        gl.Disable(GL_ALPHA_TEST);
-        gl.Disable(GL_POLYGON_OFFSET_FILL);
+        mStyles.front()->render(run, mContext);
         if (first.translucent) gl.Disable(GL_BLEND);
-        i = end;
-    }
+    });
 }
 
 void StyleChain::shutdown()

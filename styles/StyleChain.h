@@ -43,10 +43,15 @@ private:
     bool mHasShading = false;
     GlowInk mGlowInk;
     bool mGlowInkReady = false;
-    // The shading style alone draws `part`'s objects with the program's depth test and
-    // depth writes.
     // The object's alpha test and polygon offset, as the program drew it (a run's first).
     void applyTestAndOffset(const SceneObject& o);
+    // `part`'s objects in runs of equal draw state (depth test and writes, translucency,
+    // alpha test, offset), each from the baseline with its alpha test and offset applied:
+    // draw(mRun, first) sets the rest and renders; test and offset are undone after.
+    template <typename Draw>
+    void forEachRun(const Scene& part, Draw&& draw);
+    // The shading style alone draws `part`'s objects with the program's depth test, depth
+    // writes and blending.
     void renderAsDrawn(const Scene& part);
 
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
