@@ -177,6 +177,16 @@ bool CaptureSession::writeFrame(const Context& ctx, uint64_t frame, const uint8_
                        sized.height);
         }
     }
+    // Later resizes do not change the file's size: said once each, per context.
+    const std::pair shown{ctx.drawableWidth(), ctx.drawableHeight()};
+    auto [seen, first] = mShownSizes.try_emplace(ctx.serial(), shown);
+    if (!first && seen->second != shown) {
+        seen->second = shown;
+        NPRGL_WARN("context %u: the window is %dx%d from frame %llu on; the capture replays "
+                   "every frame at its first frame's %dx%d (nprgl replay --size WxH to choose)",
+                   ctx.serial(), shown.first, shown.second,
+                   static_cast<unsigned long long>(frame), mMeta.width, mMeta.height);
+    }
     if (!mWriter.writeFrame(ctx.serial(), frame, calls, size)) {
         NPRGL_ERROR("recording stopped at frame %llu: %s",
                     static_cast<unsigned long long>(frame), mWriter.lastError().c_str());

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <mutex>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace nprgl {
@@ -50,6 +52,8 @@ private:
     uint64_t mLastFrame;
     capture::CaptureWriter mWriter;
     capture::Metadata mMeta; // as the header has it
+    // Each context's drawable size at its last frame written (to say when it changes).
+    std::unordered_map<uint32_t, std::pair<int, int>> mShownSizes;
     bool mOpenFailed = false;
     bool mFinished = false; // closed with its index: later frames are not recorded
     uint64_t mFramesWritten = 0;

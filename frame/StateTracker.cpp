@@ -716,8 +716,8 @@ bool StateTracker::repeatsHeld(const TrackedBatch& batch, bool layer) const
     auto [from, to] = mPassIndex.equal_range(passKey(batch));
     for (auto it = from; it != to; ++it) {
         const TrackedBatch& base = mFrameBatches[it->second];
-        if ((layer && base.translucent) || base.mode != batch.mode || base.vertices.size() != batch.vertices.size() ||
-            base.culled != batch.culled ||
+        if ((layer && base.translucent) || base.mode != batch.mode ||
+            base.vertices.size() != batch.vertices.size() || base.culled != batch.culled ||
             std::memcmp(&base.modelview, &batch.modelview, sizeof(glm::mat4)) != 0 ||
             std::memcmp(&base.projection, &batch.projection, sizeof(glm::mat4)) != 0) {
             continue;

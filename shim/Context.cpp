@@ -140,20 +140,6 @@ bool Context::endFrame()
     followConfig();
     applyKeys();
     ++mFrame;
-    if (recordsToFile()) {
-        if (mCaptureWidth == 0 && mCaptureHeight == 0) {
-            mCaptureWidth = mToldWidth = mWidth; // the header is written with this frame
-            mCaptureHeight = mToldHeight = mHeight;
-        } else if (mWidth != mToldWidth || mHeight != mToldHeight) {
-            mToldWidth = mWidth;
-            mToldHeight = mHeight;
-            NPRGL_WARN("context %u: the window is %dx%d from frame %llu on; the capture replays "
-                       "every frame at its first frame's %dx%d (nprgl replay --size WxH to "
-                       "choose)",
-                       mSerial, mWidth, mHeight, static_cast<unsigned long long>(mFrame),
-                       mCaptureWidth, mCaptureHeight);
-        }
-    }
     if (mRecorder) mRecorder->endFrame(mFrame);
     return (mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame)) ||
            !mShotNow.empty();

@@ -100,8 +100,6 @@ private:
     std::unique_ptr<Compositor> mCompositor;
     std::string mVendor, mRenderer, mVersion;
     int mWidth = 0, mHeight = 0;
-    // The size the capture file's header took (its first frame's) and the last resize said.
-    int mCaptureWidth = 0, mCaptureHeight = 0, mToldWidth = 0, mToldHeight = 0;
     ContextCaps mCaps;
     WindowSystem mWs;
     const void* mHandle;

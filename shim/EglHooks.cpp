@@ -51,15 +51,18 @@ EGLBoolean eglDestroyContext(EGLDisplay dpy, EGLContext ctx)
 EGLBoolean eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
 {
     Context* ctx = tThread.context;
-    if (ctx && ctx->windowSystem() == WindowSystem::Egl && ctx->recordsToFile()) {
+    if (ctx && ctx->windowSystem() == WindowSystem::Egl) {
+        // The surface's size while recording to a file (its header) or for a screenshot.
         EGLint width = 0, height = 0;
-        surfaceSize(dpy, surface, width, height);
-        if (width > 0 && height > 0) ctx->setDrawableSize(width, height);
-    }
-    if (ctx && ctx->windowSystem() == WindowSystem::Egl && ctx->endFrame()) {
-        EGLint width = 0, height = 0;
-        surfaceSize(dpy, surface, width, height);
-        ctx->writeScreenshot(width, height);
+        const bool recording = ctx->recordsToFile();
+        if (recording) {
+            surfaceSize(dpy, surface, width, height);
+            if (width > 0 && height > 0) ctx->setDrawableSize(width, height);
+        }
+        if (ctx->endFrame()) {
+            if (!recording) surfaceSize(dpy, surface, width, height);
+            ctx->writeScreenshot(width, height);
+        }
     }
     return gRealWs.eglSwapBuffers(dpy, surface);
 }

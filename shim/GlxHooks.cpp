@@ -85,19 +85,22 @@ void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
                       gRealWs.glXGetCurrentDrawable() == drawable;
     if (ours) {
         ctx->pollKeys(dpy);
-        if (ctx->recordsToFile()) {
-            unsigned width = 0, height = 0;
+        // The drawable's size is a server round trip: asked at most once, and only while
+        // recording to a file (its header), for a screenshot or for the overlay.
+        unsigned width = 0, height = 0;
+        bool asked = false;
+        auto askSize = [&] {
+            if (asked) return;
+            asked = true;
             gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
             gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
+        };
+        if (ctx->recordsToFile()) {
+            askSize();
             if (width > 0 && height > 0) ctx->setDrawableSize(int(width), int(height));
         }
         const bool shots = ctx->endFrame();
-        // A server round trip: only for a screenshot or the overlay.
-        unsigned width = 0, height = 0;
-        if (shots || ctx->overlayOpen()) {
-            gRealWs.glXQueryDrawable(dpy, drawable, GLX_WIDTH, &width);
-            gRealWs.glXQueryDrawable(dpy, drawable, GLX_HEIGHT, &height);
-        }
+        if (shots || ctx->overlayOpen()) askSize();
         // The hotkey's pair without the overlay; the configured frames as the window shows.
         if (shots) ctx->writeHotkeyScreenshot(int(width), int(height));
         ctx->drawOverlay(dpy, GlxWindows::instance().windowOf(drawable), int(width),
