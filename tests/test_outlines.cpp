@@ -139,6 +139,26 @@ PngImage render(StyleHarness& harness, const styles::Scene& scene, const std::st
 
 const glm::vec2 kCentre(kSize * 0.5f, kSize * 0.5f);
 
+// The centre's sphere drawn mirrored (glScalef(-1, 1, 1)): it winds clockwise on screen.
+styles::Scene mirroredSphere(StyleHarness& harness)
+{
+    const glm::mat4 mirrored = glm::scale(sphereModelview(), glm::vec3(-1.0f, 1.0f, 1.0f));
+    return harness.makeScene({sphereBatch(mirrored, kRadius, 48, 24, kRed)}, perspective());
+}
+
+// A sphere at the centre outlined on its rim alone in `chain`: ink all round its silhouette,
+// none deeper inside than `inner` x its radius. Returns the figures for further checks.
+RingStats expectRimOnly(StyleHarness& harness, const styles::Scene& scene,
+                        const std::string& chain, const std::string& name, float inner)
+{
+    const PngImage image = render(harness, scene, chain, "", name);
+    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, inner);
+    EXPECT_GE(s.inside, 10000) << name << ": no sphere, no test";
+    EXPECT_GE(s.rimCoverage, 0.99f) << name;
+    EXPECT_EQ(s.insideInk, 0) << name << ": ink inside the outline";
+    return s;
+}
+
 class SphereOutline : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SphereOutline, InkOnTheAnalyticSilhouetteOnly)
@@ -328,15 +348,10 @@ TEST(Wireframe, AProgramShowingClockwiseFacesIsOutlinedOnItsRimOnly)
 {
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
-    const glm::mat4 mirrored = glm::scale(sphereModelview(), glm::vec3(-1.0f, 1.0f, 1.0f));
-    auto scene = harness.makeScene({sphereBatch(mirrored, kRadius, 48, 24, kRed)},
-                                   perspective());
+    auto scene = mirroredSphere(harness);
     for (auto& o : scene.objects) o.culled = GL_CCW;
-    PngImage image = render(harness, scene, "toon+wireframe", "", "wireframe_clockwise");
-    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, 0.9f);
-    EXPECT_GE(s.inside, 10000) << "no sphere: no test";
-    EXPECT_GE(s.rimCoverage, 0.99f);
-    EXPECT_EQ(s.insideInk, 0) << "the shown faces' edges were drawn";
+    const RingStats s =
+        expectRimOnly(harness, scene, "toon+wireframe", "wireframe_clockwise", 0.9f);
     EXPECT_EQ(s.outsideInk, 0);
 }
 
@@ -352,11 +367,7 @@ TEST(Wireframe, AClockwiseMeshTheProgramDoesNotCullIsOutlinedOnItsRimOnly)
         std::swap(sphere.vertices[i + 1], sphere.vertices[i + 2]);
     }
     auto scene = harness.makeScene({sphere}, perspective());
-    PngImage image = render(harness, scene, "toon+wireframe", "", "wireframe_clockwise_unculled");
-    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, 0.9f);
-    EXPECT_GE(s.inside, 10000) << "no sphere: no test";
-    EXPECT_GE(s.rimCoverage, 0.99f);
-    EXPECT_EQ(s.insideInk, 0) << "the shown faces' edges were drawn";
+    expectRimOnly(harness, scene, "toon+wireframe", "wireframe_clockwise_unculled", 0.9f);
 }
 
 // A thin part (a coin, a plate, a shell) seen face on: its back faces lie just behind its
@@ -396,14 +407,8 @@ TEST(PerPixel, AMirroredObjectIsInkedOnItsRimOnly)
 {
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
-    const glm::mat4 mirrored = glm::scale(sphereModelview(), glm::vec3(-1.0f, 1.0f, 1.0f));
-    auto scene = harness.makeScene({sphereBatch(mirrored, kRadius, 48, 24, kRed)},
-                                   perspective());
-    PngImage image = render(harness, scene, "toon+perpixel", "", "perpixel_mirrored");
-    const RingStats s = ring(image, kCentre, silhouetteRadius(kSize), 3.0f, 0.75f);
-    EXPECT_GE(s.inside, 10000) << "no sphere: no test";
-    EXPECT_GE(s.rimCoverage, 0.99f);
-    EXPECT_EQ(s.insideInk, 0);
+    auto scene = mirroredSphere(harness);
+    expectRimOnly(harness, scene, "toon+perpixel", "perpixel_mirrored", 0.75f);
 }
 
 // Faces the program culls are not on screen, so no line comes from them: seen from inside,

@@ -149,16 +149,24 @@ protected:
     // A GL_ALPHA texture, opaque everywhere (text and sprites are uploaded so): no colour.
     GLuint alphaTexture()
     {
+        const std::vector<uint8_t> texels(16 * 16, 255);
+        return nearestTexture(GL_ALPHA, 16, 16, GL_ALPHA, texels.data());
+    }
+
+    // A texture of bytes, tightly packed, sampled nearest (one texel a face's part).
+    GLuint nearestTexture(GLint internalFormat, int width, int height, GLenum format,
+                          const uint8_t* texels)
+    {
         const styles::GlFunctions& gl = harness.gl();
-        std::vector<uint8_t> texels(16 * 16, 255);
         GLuint id = 0;
         gl.GenTextures(1, &id);
         gl.BindTexture(GL_TEXTURE_2D, id);
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 16, 16, 0, GL_ALPHA, GL_UNSIGNED_BYTE,
-                      texels.data());
+        gl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format,
+                      GL_UNSIGNED_BYTE, texels);
+        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
         gl.BindTexture(GL_TEXTURE_2D, 0);
         return id;
     }
@@ -169,15 +177,21 @@ protected:
 // The toon band colours of the red test sphere with default scales.
 const Rgb kDiffuse{204, 26, 26};
 
+// The red sphere of the toon tests (radius 1.5, 6 in front of the eye), in `colour`.
+styles::Scene sphereScene(StyleHarness& harness, const glm::vec4& colour,
+                          glm::vec3 light = glm::normalize(glm::vec3(0.3f, 0.5f, 1.0f)))
+{
+    const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -6));
+    return harness.makeScene({sphereBatch(mv, 1.5f, 48, 24, colour)}, perspective(), light);
+}
+
 } // namespace
 
 TEST(Toon, SphereShowsOnlyItsBandColours)
 {
     StyleHarness harness(128, 128);
     ASSERT_TRUE(harness.ok());
-    const glm::vec4 red(0.8f, 0.1f, 0.1f, 1.0f);
-    auto mv = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -6));
-    auto scene = harness.makeScene({sphereBatch(mv, 1.5f, 48, 24, red)}, perspective());
+    auto scene = sphereScene(harness, glm::vec4(0.8f, 0.1f, 0.1f, 1.0f));
     PngImage image;
     std::string error;
     ASSERT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
@@ -202,12 +216,10 @@ TEST(Toon, AnUnlitBackdropIsShadedInAnEvenLight)
 {
     StyleHarness harness(128, 128);
     ASSERT_TRUE(harness.ok());
-    const glm::vec4 red(0.8f, 0.1f, 0.1f, 1.0f);
-    auto mv = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -6));
     auto shadowPixels = [&](bool backdrop) {
         // The head-light from the right: the left half of the sphere is in shadow.
-        auto scene = harness.makeScene({sphereBatch(mv, 1.5f, 48, 24, red)}, perspective(),
-                                       glm::normalize(glm::vec3(1.0f, 0.0f, 0.2f)));
+        auto scene = sphereScene(harness, glm::vec4(0.8f, 0.1f, 0.1f, 1.0f),
+                                 glm::normalize(glm::vec3(1.0f, 0.0f, 0.2f)));
         for (auto& o : scene.objects) o.depthTest = !backdrop;
         PngImage image;
         std::string error;
@@ -248,9 +260,7 @@ TEST(Toon, ATranslucentObjectWithoutTheDepthTestIsBlended)
 {
     StyleHarness harness(128, 128);
     ASSERT_TRUE(harness.ok());
-    const glm::vec4 halfRed(0.8f, 0.1f, 0.1f, 0.5f);
-    auto mv = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -6));
-    auto scene = harness.makeScene({sphereBatch(mv, 1.5f, 48, 24, halfRed)}, perspective());
+    auto scene = sphereScene(harness, glm::vec4(0.8f, 0.1f, 0.1f, 0.5f)); // half transparent
     for (auto& o : scene.objects) {
         o.depthTest = false;
         o.translucent = true;
@@ -965,6 +975,16 @@ TEST_F(Shading, GoochTakesItsPureTonesFromTheRamp)
 
 namespace {
 
+// The mean luminance of the size x size patch from pixel (x0, y0) on, as pixel() counts.
+float meanLuminance(const PngImage& image, int x0, int y0, int size)
+{
+    float sum = 0.0f;
+    for (int y = y0; y < y0 + size; ++y) {
+        for (int x = x0; x < x0 + size; ++x) sum += luminance(pixel(image, x, y));
+    }
+    return sum / float(size * size);
+}
+
 // A 2x2 quad facing the eye at kCentre, in colour; its texture (or else lightmap) coordinates
 // run from 0 on its left edge to 1 on its right, at t = 0.5.
 reconstruct::Batch facingQuad(const glm::vec4& colour, bool texture)
@@ -998,15 +1018,7 @@ TEST_F(Shading, LightmapsGiveTheLightOfUnlitSurfaces)
     ASSERT_TRUE(harness.ok());
     const styles::GlFunctions& gl = harness.gl();
     const uint8_t texels[2 * 3] = {30, 30, 30, 240, 240, 240};
-    GLuint lightmap = 0;
-    gl.GenTextures(1, &lightmap);
-    gl.BindTexture(GL_TEXTURE_2D, lightmap);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, 2, 1, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
-    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    gl.BindTexture(GL_TEXTURE_2D, 0);
+    const GLuint lightmap = nearestTexture(GL_RGB8, 2, 1, GL_RGB, texels);
 
     // The lightmap's left texel on the left half, its right one on the right.
     const reconstruct::Batch quad = facingQuad(glm::vec4(0.8f, 0.8f, 0.8f, 1.0f), false);
@@ -1017,16 +1029,9 @@ TEST_F(Shading, LightmapsGiveTheLightOfUnlitSurfaces)
         std::string error;
         EXPECT_TRUE(harness.render(scene, chain, "", image, error)) << error;
         save(image, name);
-        // Mean luminance of a patch left and right of the middle, inside the quad.
-        auto patch = [&](int x0) {
-            float sum = 0.0f;
-            int n = 0;
-            for (int y = kSize / 2 - 6; y < kSize / 2 + 6; ++y) {
-                for (int x = x0; x < x0 + 12; ++x, ++n) sum += luminance(pixel(image, x, y));
-            }
-            return sum / float(n);
-        };
-        return std::pair{patch(kSize / 2 - 20), patch(kSize / 2 + 8)};
+        // A patch left and right of the middle, inside the quad.
+        return std::pair{meanLuminance(image, kSize / 2 - 20, kSize / 2 - 6, 12),
+                         meanLuminance(image, kSize / 2 + 8, kSize / 2 - 6, 12)};
     };
     for (const std::string chain : {"toon", "halftone", "pencil"}) {
         const auto [left, right] = halves(chain, true, chain + "_lightmap");
@@ -1048,13 +1053,7 @@ TEST_F(Shading, PencilHatchesADecalByItsTexture)
     ASSERT_TRUE(harness.ok());
     const styles::GlFunctions& gl = harness.gl();
     const uint8_t texels[2 * 4] = {0, 0, 0, 255, 255, 255, 255, 255};
-    GLuint texture = 0;
-    gl.GenTextures(1, &texture);
-    gl.BindTexture(GL_TEXTURE_2D, texture);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-    gl.BindTexture(GL_TEXTURE_2D, 0);
+    const GLuint texture = nearestTexture(GL_RGBA8, 2, 1, GL_RGBA, texels);
 
     const reconstruct::Batch quad = facingQuad(glm::vec4(1.0f), true);
     // Lit head-on: bare paper by the light alone, so only the texture can darken it.
@@ -1067,15 +1066,8 @@ TEST_F(Shading, PencilHatchesADecalByItsTexture)
     std::string error;
     EXPECT_TRUE(harness.render(scene, "pencil", "pencil.outlines=off", image, error)) << error;
     save(image, "pencil_decal");
-    auto patch = [&](int x0) {
-        float sum = 0.0f;
-        int n = 0;
-        for (int y = kSize / 2 - 10; y < kSize / 2 + 10; ++y) {
-            for (int x = x0; x < x0 + 20; ++x, ++n) sum += luminance(pixel(image, x, y));
-        }
-        return sum / float(n);
-    };
-    const float left = patch(kSize / 2 - 30), right = patch(kSize / 2 + 10);
+    const float left = meanLuminance(image, kSize / 2 - 30, kSize / 2 - 10, 20);
+    const float right = meanLuminance(image, kSize / 2 + 10, kSize / 2 - 10, 20);
     EXPECT_GT(right - left, 0.1f) << "the texture's black half is not hatched darker: "
                                   << left << " against " << right;
     gl.DeleteTextures(1, &texture);
