@@ -153,27 +153,12 @@ void APIENTRY tCallList(GLuint list) { T().callList(list); }
 void APIENTRY tListBase(GLuint base) { T().listBase(base); }
 void APIENTRY tDeleteLists(GLuint list, GLsizei range) { T().deleteLists(list, range); }
 void APIENTRY tBindTexture(GLenum target, GLuint texture) { T().bindTexture(target, texture); }
-void APIENTRY tTexGeni(GLenum coord, GLenum pname, GLint param)
+// glTexGen{i,f,d}[v]: only the mode is followed (its one value).
+template <typename P> void APIENTRY tTexGen(GLenum coord, GLenum pname, P param)
 {
     T().texGenMode(coord, pname, GLenum(param));
 }
-void APIENTRY tTexGenf(GLenum coord, GLenum pname, GLfloat param)
-{
-    T().texGenMode(coord, pname, GLenum(param));
-}
-void APIENTRY tTexGend(GLenum coord, GLenum pname, GLdouble param)
-{
-    T().texGenMode(coord, pname, GLenum(param));
-}
-void APIENTRY tTexGeniv(GLenum coord, GLenum pname, const GLint* params)
-{
-    if (params) T().texGenMode(coord, pname, GLenum(params[0]));
-}
-void APIENTRY tTexGenfv(GLenum coord, GLenum pname, const GLfloat* params)
-{
-    if (params) T().texGenMode(coord, pname, GLenum(params[0]));
-}
-void APIENTRY tTexGendv(GLenum coord, GLenum pname, const GLdouble* params)
+template <typename P> void APIENTRY tTexGenv(GLenum coord, GLenum pname, const P* params)
 {
     if (params) T().texGenMode(coord, pname, GLenum(params[0]));
 }
@@ -445,12 +430,12 @@ StateTracker::StateTracker()
     d.glTexImage2D = tTexImage2D;
     d.glTexSubImage2D = tTexSubImage2D;
     d.glTexEnvi = tTexEnvi;
-    d.glTexGeni = tTexGeni;
-    d.glTexGenf = tTexGenf;
-    d.glTexGend = tTexGend;
-    d.glTexGeniv = tTexGeniv;
-    d.glTexGenfv = tTexGenfv;
-    d.glTexGendv = tTexGendv;
+    d.glTexGeni = tTexGen<GLint>;
+    d.glTexGenf = tTexGen<GLfloat>;
+    d.glTexGend = tTexGen<GLdouble>;
+    d.glTexGeniv = tTexGenv<GLint>;
+    d.glTexGenfv = tTexGenv<GLfloat>;
+    d.glTexGendv = tTexGenv<GLdouble>;
     d.glTexEnvf = tTexEnvf;
     d.glTexEnviv = tTexEnviv;
     d.glTexEnvfv = tTexEnvfv;
