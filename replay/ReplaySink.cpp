@@ -392,7 +392,10 @@ bool ReplaySink::checkUnpacked(uint16_t opcode, const Image& image, size_t size)
 
 bool ReplaySink::check_glDrawArrays(GLenum, GLint first, GLsizei count)
 {
-    if (first < 0 || count <= 0 || !idle()) return true; // the driver refuses or draws nothing
+    if (count <= 0 || !idle()) return true; // the driver refuses or draws nothing
+    // Mesa does not check the sign of first: it reads the arrays before their start.
+    if (first < 0)
+        return refuse("glDrawArrays from " + std::to_string(first) + ": a negative first");
     if (uint64_t(count) > mLimits.drawVertices)
         return refuse("glDrawArrays of " + std::to_string(count) + " vertices");
     mWork = 1 + uint64_t(count);
@@ -477,7 +480,11 @@ bool ReplaySink::check_glMultiDrawArrays(GLenum, const GLint* first, const GLsiz
     if (!first || !count) return refuse("glMultiDrawArrays without its firsts and counts");
     uint64_t total = 0, hi = 0;
     for (GLsizei i = 0; i < drawcount; ++i) {
-        if (first[i] < 0 || count[i] <= 0) continue;
+        if (count[i] <= 0) continue;
+        if (first[i] < 0) {
+            return refuse("glMultiDrawArrays from " + std::to_string(first[i]) +
+                          ": a negative first");
+        }
         total += uint64_t(count[i]);
         hi = std::max(hi, uint64_t(first[i]) + uint64_t(count[i]));
     }

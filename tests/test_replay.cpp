@@ -183,6 +183,19 @@ TEST(Replay, NegativeArrayElementIsRefused)
     EXPECT_NE(error.find("a negative index"), std::string::npos) << error;
 }
 
+// Nor the sign of glDrawArrays' first (a fuzzed capture crashed the replay this way).
+TEST(Replay, NegativeFirstVertexIsRefused)
+{
+    std::string path = writeCapture("first", {[](CallWriter& w) {
+                                        triangleArray(w);
+                                        call(w, op::glDrawArrays, GLenum(GL_TRIANGLES),
+                                             GLint(-512), GLsizei(255));
+                                    }});
+    std::string error = replayError(path);
+    EXPECT_NE(error.find("(glDrawArrays)"), std::string::npos) << error;
+    EXPECT_NE(error.find("a negative first"), std::string::npos) << error;
+}
+
 TEST(Replay, PointerIntoDeletedBufferIsRefused)
 {
     std::string path =
