@@ -81,6 +81,9 @@ void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
         gl.Disable(cap);
     }
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    // The styles' front: gl_FrontFacing and culling are by it, not by the program's front face
+    // at the flush (FaceCulling, ShadingCommon's faceSign).
+    gl.FrontFace(GL_CCW);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.LineWidth(1.0f);
     gl.PointSize(1.0f);

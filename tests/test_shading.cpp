@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -298,6 +299,50 @@ TEST(Toon, TheProgramsCulledFacesAreNotDrawn)
     EXPECT_EQ(drawnPixels(0), 64 * 64) << "the box's inside does not fill the view: no test";
     EXPECT_EQ(drawnPixels(GL_CW), 0) << "back faces the program culls were drawn";
 }
+
+// The program's front face at the flush is its own business: the styles draw with theirs.
+// Two spheres, the left culled as the program culled it: with the program's glFrontFace(GL_CW)
+// still set at the flush, every shading style drew both turned inside out (lit on the side
+// away from the light), since it read the front face once and the culled sphere's set-up
+// changed it under the other.
+class FrontFaceAtFlush : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FrontFaceAtFlush, DoesNotTurnTheShading)
+{
+    StyleHarness harness(128, 64);
+    ASSERT_TRUE(harness.ok());
+    const glm::vec4 red(0.8f, 0.1f, 0.1f, 1.0f);
+    auto picture = [&](GLenum programFront) {
+        const glm::mat4 left = glm::translate(glm::mat4(1.0f), glm::vec3(-1.6f, 0, -6));
+        const glm::mat4 right = glm::translate(glm::mat4(1.0f), glm::vec3(1.6f, 0, -6));
+        auto scene = harness.makeScene(
+            {sphereBatch(left, 1.4f, 32, 16, red), sphereBatch(right, 1.4f, 32, 16, red)},
+            glm::perspective(glm::radians(kFov), 2.0f, 1.0f, 20.0f),
+            glm::normalize(glm::vec3(1.0f, 0.0f, 0.3f)));
+        EXPECT_EQ(scene.objects.size(), 2u);
+        scene.objects.front().culled = GL_CW; // the back faces of a sphere wound CCW outside
+        harness.gl().FrontFace(programFront);
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, GetParam(), "", image, error)) << error;
+        harness.gl().FrontFace(GL_CCW);
+        return image;
+    };
+    const PngImage own = picture(GL_CCW), clockwise = picture(GL_CW);
+    ASSERT_EQ(own.rgba.size(), clockwise.rgba.size());
+    size_t differ = 0, drawn = 0;
+    for (size_t i = 0; i < own.rgba.size(); i += 4) {
+        differ += std::memcmp(&own.rgba[i], &clockwise.rgba[i], 3) != 0;
+        drawn += own.rgba[i + 1] < 200;
+    }
+    EXPECT_GT(drawn, 1000u) << "no spheres drawn: no test";
+    EXPECT_EQ(differ, 0u) << "the program's front face changed the picture";
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, FrontFaceAtFlush,
+                         ::testing::Values("toon", "textured", "halftone", "gooch", "xtoon",
+                                           "pencil", "coverage"),
+                         [](const auto& p) { return std::string(p.param); });
 
 TEST_F(Shading, TwoTonesGiveTwoColoursMatchingTheLight)
 {

@@ -240,7 +240,6 @@ void PencilStyle::drawSurfaces(const Scene& scene, StyleContext& ctx)
         mGrainTexture.upload(gl, mGrainImage, false);
         gl.ActiveTexture(GL_TEXTURE0);
     }
-    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     gl.ActiveTexture(GL_TEXTURE1);
     gl.BindTexture(GL_TEXTURE_2D, mGrainTexture.id());
     gl.ActiveTexture(GL_TEXTURE0);
@@ -269,7 +268,7 @@ void PencilStyle::drawSurfaces(const Scene& scene, StyleContext& ctx)
             gl.Enable(GL_BLEND);
             gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         }
-        v.u.set(gl, object, frontIsCcw);
+        v.u.set(gl, object);
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
         gl.Uniform2f(v.anchor, anchor.x, anchor.y);
         // The program's culling, and its lightmaps bound where it has them.

@@ -67,10 +67,9 @@ bool CoverageStyle::init(StyleContext& ctx, std::string& error)
 void CoverageStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
-    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     gl.UseProgram(mProgram.id());
     for (const SceneObject& object : scene.objects) {
-        mU.set(gl, object, frontIsCcw);
+        mU.set(gl, object);
         const glm::vec3 c = colourOf(object.id);
         gl.Uniform3f(mTint, c.r, c.g, c.b);
         if (!FaceCulling::begin(gl, object)) continue;

@@ -152,7 +152,6 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
     }
     gl.BindTexture(GL_TEXTURE_2D, mRamp.id());
     gl.ActiveTexture(GL_TEXTURE0);
-    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured() && mDetail;
@@ -164,7 +163,7 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
             gl.UseProgram(current);
             gl.Uniform1i(variant.ramp, 1);
         }
-        variant.u.set(gl, object, frontIsCcw);
+        variant.u.set(gl, object);
         // The program's textures keep their own filtering and wrapping; both sides are
         // drawn in one pass (shadingNormal).
         ShadingCommon::draw(ctx, object, variant.u, textured);

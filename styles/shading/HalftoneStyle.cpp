@@ -225,7 +225,6 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
     }
     gl.BindTexture(GL_TEXTURE_2D, mScreen.id());
     gl.ActiveTexture(GL_TEXTURE0);
-    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured();
@@ -239,7 +238,7 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
             if (!variant.configured) gl.Uniform1i(variant.screen, 1);
             variant.configured = true;
         }
-        variant.u.set(gl, object, frontIsCcw);
+        variant.u.set(gl, object);
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
         gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         // The program's textures keep their own filtering and wrapping; both sides are

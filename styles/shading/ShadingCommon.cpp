@@ -47,9 +47,10 @@ vec3 shadingNormal(vec3 eyeNormal)
 {
     vec3 n = normalize(eyeNormal);
     // Is the visible side the one the program's normals point out of? From the window-space
-    // winding (gl_FrontFacing) and faceSign, which folds in the program's front face, a
-    // mirroring modelview and which winding the mesh's normals follow (legacy programs often
-    // wind backwards while their normals are right). The other side is lit flipped.
+    // winding (gl_FrontFacing, by the styles' counter-clockwise front) and faceSign, which
+    // folds in a mirroring modelview and which winding the mesh's normals follow (legacy
+    // programs often wind backwards while their normals are right). The other side is lit
+    // flipped.
     return gl_FrontFacing == (faceSign > 0.0) ? n : -n;
 }
 
@@ -169,18 +170,18 @@ bool ShadingCommon::normalsFollowCcw(const reconstruct::ObjectMesh& mesh)
     return agree >= 0;
 }
 
-void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject& object,
-                                        bool frontIsCcw) const
+void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject& object) const
 {
     gl.UniformMatrix4fv(modelview, 1, GL_FALSE, glm::value_ptr(object.modelview));
     gl.UniformMatrix4fv(projection, 1, GL_FALSE, glm::value_ptr(object.projection));
     const glm::mat3 linear(object.modelview);
     const glm::mat3 normals = ShadingCommon::normalMatrix(object.modelview);
     gl.UniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normals));
-    // A mirroring modelview turns the faces' winding around, and so do a clockwise front and
-    // normals that follow the clockwise side.
+    // gl_FrontFacing is by the styles' counter-clockwise front (StyleChain's baseline). A
+    // mirroring modelview turns the faces' winding around, and so do normals that follow the
+    // clockwise side.
     const bool mirrored = glm::determinant(linear) < 0.0f;
-    const bool flip = !frontIsCcw ^ mirrored ^ !normalsFollowCcw(*object.mesh);
+    const bool flip = mirrored ^ !normalsFollowCcw(*object.mesh);
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
     setLights(gl, object.lights);
@@ -222,13 +223,6 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
     gl.Uniform4fv(lightSpot, 8, glm::value_ptr(spot[0]));
     gl.Uniform4fv(lightFalloff, 8, glm::value_ptr(falloff[0]));
     gl.Uniform1fv(lightWeight, 8, weight);
-}
-
-bool ShadingCommon::beginTwoSided(const GlFunctions& gl)
-{
-    GLint frontFace = GL_CCW;
-    gl.GetIntegerv(GL_FRONT_FACE, &frontFace);
-    return frontFace == GL_CCW;
 }
 
 glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)

@@ -75,7 +75,7 @@ public:
         GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
 
         void find(const GlFunctions& gl, GLuint program);
-        void set(const GlFunctions& gl, const SceneObject& object, bool frontIsCcw) const;
+        void set(const GlFunctions& gl, const SceneObject& object) const;
         void setLights(const GlFunctions& gl, const SceneLights& lights) const;
     };
     // Builds a variant's program (vertexShader() and `fragment`) and finds its ObjectUniforms;
@@ -93,8 +93,6 @@ public:
     // the object has lightmaps, else in one draw.
     static void draw(StyleContext& ctx, const SceneObject& object, const ObjectUniforms& u,
                      bool textured);
-    // Returns whether the program's front faces are counter-clockwise (once per render()).
-    static bool beginTwoSided(const GlFunctions& gl);
     // Whether the program's normals point out of the counter-clockwise side of its faces.
     static bool normalsFollowCcw(const reconstruct::ObjectMesh& mesh);
     static glm::mat3 normalMatrix(const glm::mat4& modelview);

@@ -326,7 +326,6 @@ void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
     gl.ActiveTexture(GL_TEXTURE2);
     gl.BindTexture(GL_TEXTURE_2D, mShadow.texture.id());
     gl.ActiveTexture(GL_TEXTURE0);
-    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     GLuint current = 0;
     for (const SceneObject& object : scene.objects) {
         const bool textured = object.textured();
@@ -343,7 +342,7 @@ void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
             }
             variant.configured = true;
         }
-        variant.u.set(gl, object, frontIsCcw);
+        variant.u.set(gl, object);
         const glm::vec2 anchor = ShadingCommon::screenAnchor(object, scene.viewport);
         gl.Uniform2f(variant.anchor, anchor.x, anchor.y);
         // The program's textures keep their own filtering and wrapping; both sides are

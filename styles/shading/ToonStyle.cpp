@@ -210,7 +210,6 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
 void ToonStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
-    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     // The detail sampler is unit 0, the default of sampler uniforms.
     GLuint current = 0;
     for (const SceneObject& listed : scene.objects) {
@@ -229,7 +228,7 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
             current = variant.program.id();
             gl.UseProgram(current);
         }
-        variant.u.set(gl, object, frontIsCcw);
+        variant.u.set(gl, object);
         gl.Uniform1f(variant.sphereMapped, reflects ? 1.0f : 0.0f);
         // The program's textures keep their own filtering and wrapping; both sides are
         // drawn in one pass (shadingNormal).

@@ -184,7 +184,6 @@ void XToonStyle::render(const Scene& scene, StyleContext& ctx)
         gl.ActiveTexture(GL_TEXTURE0);
     }
     const glm::vec2 range = depthRange(scene);
-    const bool frontIsCcw = ShadingCommon::beginTwoSided(gl);
     gl.ActiveTexture(GL_TEXTURE1);
     gl.BindTexture(GL_TEXTURE_2D, mToneMap.id());
     gl.ActiveTexture(GL_TEXTURE0);
@@ -200,7 +199,7 @@ void XToonStyle::render(const Scene& scene, StyleContext& ctx)
             gl.Uniform1i(variant.toneMap, 1);
             gl.Uniform2f(variant.depthRange, range.x, range.y);
         }
-        variant.u.set(gl, object, frontIsCcw);
+        variant.u.set(gl, object);
         gl.Uniform1f(variant.perspectiveView, object.orthographic() ? 0.0f : 1.0f);
         ShadingCommon::draw(ctx, object, variant.u, textured);
     }
