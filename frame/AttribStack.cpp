@@ -74,7 +74,11 @@ void AttribStack::pop()
         a.textureUnits = saved.textureUnits;
         a.texGen = saved.texGen;
     }
-    if (mask & GL_TEXTURE_BIT) a.sphereMap = saved.sphereMap;
+    if (mask & GL_TEXTURE_BIT) {
+        a.texGenMode = saved.texGenMode;
+        a.objectPlane = saved.objectPlane;
+        a.eyePlane = saved.eyePlane;
+    }
     if (mask & GL_VIEWPORT_BIT) {
         a.viewport = saved.viewport;
         a.depthRange = saved.depthRange;

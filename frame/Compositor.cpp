@@ -811,7 +811,7 @@ void Compositor::buildScene()
         s.depthWrite = t.depthWrite;
         s.depthTest = t.depthTest;
         s.culled = t.culled;
-        s.reflection = t.reflection;
+        s.generated = t.generated;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
         s.depthOnly = t.depthOnly;

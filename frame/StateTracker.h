@@ -54,7 +54,8 @@ struct TrackedBatch {
     std::vector<MaterialChange> materials;
     glm::vec4 beginMaterial{0.8f, 0.8f, 0.8f, 1.0f};
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
-    GLuint reflection = 0; // a sphere-mapped texture on the surface unit (texture is then 0)
+    // A texture on coordinates GL generates on the surface unit (texture is then 0).
+    styles::GeneratedTexture generated;
     GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none
     bool translucent = false; // blended by its alpha over what is behind (StateTracker::translucent)
     bool depthWrite = true;
@@ -195,7 +196,9 @@ public:
     void setEnabled(GLenum cap, bool on);
     void useProgram(GLuint program) { mProgram = program; }
     void material(GLenum face, GLenum pname, const float* v);
-    void texGenMode(GLenum coord, GLenum pname, GLenum mode);
+    // glTexGen: the mode, or the object or eye plane (four values; the eye plane is taken
+    // into eye space by the current modelview, as GL does).
+    void texGen(GLenum coord, GLenum pname, const double* values, size_t count);
     // A glMaterial between glBegin and glEnd: its diffuse colour from the batch's next vertex.
     void batchMaterial(GLenum face, GLenum pname, const float* v);
     void newList(GLuint list, GLenum mode);
@@ -353,7 +356,7 @@ private:
     // The surface unit's 2D texture as the styles use it: 0 when off or on generated
     // coordinates.
     GLuint detailTexture() const;
-    GLuint reflectionTexture() const;
+    styles::GeneratedTexture generatedTexture() const;
     void noteListArrays();
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
     bool isVertexCall(uint16_t opcode) const;

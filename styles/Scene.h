@@ -27,6 +27,18 @@ struct SceneLights {
     Light lights[8];
 };
 
+// A texture the program maps by coordinates GL generates (glTexGen on S and T): a reflection
+// (GL_SPHERE_MAP) or a projection (GL_OBJECT_LINEAR, GL_EYE_LINEAR planes). Not the surface's
+// own texture: dropped unless a style's parameter shows it (`reflections`), on the
+// coordinates GL would generate (ShadingCommon's vertex shader).
+struct GeneratedTexture {
+    GLuint texture = 0;
+    GLenum mode[2] = {0, 0}; // of S and T: GL_SPHERE_MAP, GL_OBJECT_LINEAR or GL_EYE_LINEAR
+    // Each coordinate's plane: in object space for GL_OBJECT_LINEAR, in eye space (as
+    // glTexGen transformed it by the modelview of its call) for GL_EYE_LINEAR.
+    glm::vec4 plane[2]{glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)};
+};
+
 // One object the compositor held back: a welded mesh and the state it was drawn with.
 // Colours per corner (mesh->corner(f, k).color) are what the program's picture shows: the
 // current colour, or the material's diffuse when it lit the object without colour-material.
@@ -45,9 +57,8 @@ struct SceneObject {
     // The winding the program culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0):
     // the styles cull the same faces (FaceCulling).
     GLenum culled = 0;
-    // A texture the program maps on the object by GL_SPHERE_MAP coordinates (a reflection):
-    // not the surface's, dropped unless a style's parameter shows it (toon.reflections).
-    GLuint reflection = 0;
+    // A texture on generated coordinates (texture is then 0): shown only as a style says.
+    GeneratedTexture generated;
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
     // GL lighting, the shading styles take their light from it instead of L·n. 0: none.

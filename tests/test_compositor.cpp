@@ -487,18 +487,25 @@ INSTANTIATE_TEST_SUITE_P(
                                {"--model", "/usr/share/assimp/models/MD2/sydney.md2"}}),
     [](const auto& p) { return p.param.app + std::to_string(p.index); });
 
-// A sphere-mapped surface (GL_SPHERE_MAP on unit 0) is styled like any other, its reflection
-// dropped: no draw is left, the stripes the reflection paints natively are gone from the
-// styled sphere, and the draws after it (texgen off again) keep their own textures. With
-// toon.reflections the reflection is the sphere's detail, on coordinates the style computes
-// as GL_SPHERE_MAP does: the stripes are back.
-TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
+// A surface on generated texture coordinates (glTexGen on unit 0: a GL_SPHERE_MAP
+// reflection, stripes on GL_OBJECT_LINEAR or GL_EYE_LINEAR planes) is styled like any other,
+// its generated texture dropped: no draw is left, the stripes the texture paints natively are
+// gone from the styled sphere, and the draws after it (texgen off again) keep their own
+// textures. With toon.reflections the texture is the sphere's detail, on coordinates the style
+// generates as GL does: the stripes are back, where the program has them.
+class GeneratedCoordinates : public ::testing::TestWithParam<std::vector<std::string>> {};
+
+TEST_P(GeneratedCoordinates, AreStyledWithoutTheirTextureUnlessAsked)
 {
-    const std::string native = freshDir("spheremap_native"), toon = freshDir("spheremap_toon");
-    const std::string shown = freshDir("spheremap_reflections");
-    const std::vector<std::string> app = {demo("textured"), "--sphere-map", "--offscreen",
-                                          "--size", "320x240", "--frames", "3",
-                                          "--save-frames", "3", "--save-dir"};
+    const std::string name = "texgen" + std::to_string(GetParam().size()) + GetParam().back();
+    const std::string native = freshDir(name + "_native"), toon = freshDir(name + "_toon");
+    const std::string shown = freshDir(name + "_reflections");
+    std::vector<std::string> app = {demo("textured")};
+    app.insert(app.end(), GetParam().begin(), GetParam().end());
+    for (const char* a : {"--offscreen", "--size", "320x240", "--frames", "3", "--save-frames",
+                          "3", "--save-dir"}) {
+        app.push_back(a);
+    }
     auto with = [](std::vector<std::string> v, const std::string& dir) {
         v.push_back(dir);
         return v;
@@ -518,21 +525,25 @@ TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
     ASSERT_TRUE(PngImage::read(shown + "/textured_3.png", c, error)) << error;
     // The sphere's middle (right half of the frame, above the floor's far edge): orange
     // stripes natively, the white material's tones styled.
-    int orangeNative = 0, orangeStyled = 0, orangeShown = 0;
+    int orangeNative = 0, orangeStyled = 0, orangeShown = 0, orangeBoth = 0;
     for (int y = 100; y < 150; ++y) {
         for (int x = 190; x < 230; ++x) {
             const size_t i = (size_t(y) * a.width + x) * 4;
             auto orange = [&](const PngImage& im) {
-                return im.rgba[i] > 180 && im.rgba[i] - im.rgba[i + 2] > 90;
+                return im.rgba[i] > 150 && im.rgba[i] - im.rgba[i + 2] > 90;
             };
             orangeNative += orange(a);
             orangeStyled += orange(b);
             orangeShown += orange(c);
+            orangeBoth += orange(a) && orange(c);
         }
     }
     EXPECT_GT(orangeNative, 300) << "the demo's sphere is not where the test looks";
-    EXPECT_EQ(orangeStyled, 0) << "the reflection was taken for the sphere's own texture";
-    EXPECT_GT(orangeShown, 300) << "toon.reflections did not show the reflection";
+    EXPECT_EQ(orangeStyled, 0) << "the generated texture was taken for the sphere's own";
+    EXPECT_GT(orangeShown, 300) << "toon.reflections did not show the generated texture";
+    // On the program's coordinates: the stripes lie where the program's lie.
+    EXPECT_GT(orangeBoth * 10, orangeNative * 7) << "the stripes are elsewhere";
+    EXPECT_GT(orangeBoth * 10, orangeShown * 7) << "the stripes are elsewhere";
     // The cube's red checks, drawn after texgen went off, are still red.
     int red = 0;
     for (int y = 100; y < 170; ++y) {
@@ -543,6 +554,16 @@ TEST(Compositor, SphereMappedSurfacesAreStyledWithoutTheirReflection)
     }
     EXPECT_GT(red, 200) << "the cube lost its texture";
 }
+
+INSTANTIATE_TEST_SUITE_P(Modes, GeneratedCoordinates,
+                         ::testing::Values(std::vector<std::string>{"--sphere-map"},
+                                           std::vector<std::string>{"--linear-map", "object"},
+                                           std::vector<std::string>{"--linear-map", "eye"}),
+                         [](const auto& p) {
+                             return p.param.size() == 1 ? std::string("SphereMap")
+                                    : p.param[1] == "object" ? std::string("ObjectLinear")
+                                                             : std::string("EyeLinear");
+                         });
 
 // A cube whose faces have their own textures (six glBegin/glEnd between glBindTexture calls,
 // one object): each face keeps its texture when styled, not the first face's on all six.

@@ -307,6 +307,86 @@ TEST(StateTracker, MaterialsInsideABatchColourTheirOwnVertices)
 // Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
 // the generation off again gives the plain texture back (a program that sphere-maps one
 // object must not leave every later draw unstyled). A texture on unit 1 layers over unit 0's.
+// Generated coordinates reach the batch as GL would make them: the mode of S and T, the
+// object plane as given, the eye plane in eye space by the modelview of its glTexGen call (not
+// of the draw), and glPopAttrib(GL_TEXTURE_BIT) brings the modes and planes back.
+TEST(StateTracker, GeneratedCoordinatesKeepTheirModesAndPlanes)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    auto mode = [&](GLenum coord, GLenum m) {
+        run([&](CallWriter& w) {
+            w.op(op::glTexGeni);
+            w.put<GLenum>(coord);
+            w.put<GLenum>(GL_TEXTURE_GEN_MODE);
+            w.put<GLint>(GLint(m));
+        });
+    };
+    auto plane = [&](GLenum coord, GLenum pname, glm::vec4 p) {
+        run([&](CallWriter& w) {
+            w.op(op::glTexGenfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(coord);
+            w.put<GLenum>(pname);
+            w.putBytes(&p, sizeof p);
+            w.endPayload(mark);
+        });
+    };
+    auto translate = [&](float z) {
+        run([&](CallWriter& w) {
+            w.op(op::glTranslatef);
+            for (float c : {0.0f, 0.0f, z}) w.put<float>(c);
+        });
+    };
+    auto attrib = [&](bool push) {
+        run([&](CallWriter& w) {
+            w.op(push ? op::glPushAttrib : op::glPopAttrib);
+            if (push) w.put<GLbitfield>(GL_TEXTURE_BIT);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true);
+    run([](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLuint>(7);
+    });
+    feed.enable(GL_TEXTURE_GEN_S, true);
+    feed.enable(GL_TEXTURE_GEN_T, true);
+    translate(-5.0f);
+    mode(GL_S, GL_OBJECT_LINEAR);
+    plane(GL_S, GL_OBJECT_PLANE, glm::vec4(2, 0, 0, 1));
+    plane(GL_T, GL_EYE_PLANE, glm::vec4(0, 0, 1, 0)); // T keeps GL's default, eye linear
+    translate(-3.0f); // after the call: the eye plane stays where it was put
+    feed.triangle();
+    attrib(true);
+    mode(GL_S, GL_SPHERE_MAP);
+    mode(GL_T, GL_SPHERE_MAP);
+    feed.triangle();
+    attrib(false);
+    feed.triangle();
+    mode(GL_T, GL_REFLECTION_MAP); // cube-map coordinates: no 2D map to show
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 4u);
+    const styles::GeneratedTexture& g = batches[0].generated;
+    EXPECT_EQ(g.texture, 7u);
+    EXPECT_EQ(g.mode[0], GLenum(GL_OBJECT_LINEAR));
+    EXPECT_EQ(g.mode[1], GLenum(GL_EYE_LINEAR));
+    EXPECT_EQ(g.plane[0], glm::vec4(2, 0, 0, 1));
+    // The object-space plane z = 0, moved 5 units away by the call's modelview: eye z = -5.
+    EXPECT_EQ(g.plane[1], glm::vec4(0, 0, 1, 5));
+    EXPECT_EQ(batches[1].generated.mode[0], GLenum(GL_SPHERE_MAP));
+    EXPECT_EQ(batches[1].generated.mode[1], GLenum(GL_SPHERE_MAP));
+    EXPECT_EQ(batches[2].generated.mode[0], GLenum(GL_OBJECT_LINEAR)) << "not popped";
+    EXPECT_EQ(batches[2].generated.mode[1], GLenum(GL_EYE_LINEAR)) << "not popped";
+    EXPECT_EQ(batches[3].generated.texture, 0u);
+    for (const TrackedBatch& b : batches) EXPECT_EQ(b.texture, 0u);
+}
+
 TEST(StateTracker, GeneratedCoordinatesOnUnitZeroAreStyledWithoutTheirTexture)
 {
     StateTracker tracker;

@@ -1,6 +1,7 @@
 // demo_textured: a lit cube, sphere and floor with procedurally generated textures
 // (GL_MODULATE, no mipmaps, glTexCoord2f per vertex); --sphere-map gives the sphere a
-// sphere-mapped reflection (generated coordinates) instead of its own; --face-textures gives
+// sphere-mapped reflection (generated coordinates) instead of its own, --linear-map object|eye
+// stripes on generated linear coordinates; --face-textures gives
 // each face of the cube its own texture (six glBegin/glEnd, one object); --translucent
 // blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
 // to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
@@ -139,6 +140,10 @@ public:
     {
         return {{"sphere-map", demo::ExtraOption::Kind::Flag,
                  "the sphere reflects its stripes by GL_SPHERE_MAP coordinates"},
+                {"linear-map", demo::ExtraOption::Kind::Text,
+                 "object or eye: the sphere's stripes on GL_OBJECT_LINEAR planes (turning with "
+                 "it) or GL_EYE_LINEAR planes (fixed in the world, the sphere turning under "
+                 "them)"},
                 {"face-textures", demo::ExtraOption::Kind::Flag,
                  "each face of the cube has its own texture"},
                 {"translucent", demo::ExtraOption::Kind::Flag,
@@ -162,9 +167,15 @@ public:
                  "the scene again, turned, in the top right quarter (scissor and clear)"}};
     }
 
-    bool init(const demo::Options& options, std::string&) override
+    bool init(const demo::Options& options, std::string& error) override
     {
         sphereMap_ = options.has("sphere-map");
+        const std::string linear = options.textValue("linear-map", "");
+        if (!linear.empty() && linear != "object" && linear != "eye") {
+            error = "--linear-map takes object or eye, not " + linear;
+            return false;
+        }
+        linearMap_ = linear == "object" ? GL_OBJECT_LINEAR : linear == "eye" ? GL_EYE_LINEAR : 0;
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
         depthPrepass_ = options.has("depth-prepass");
@@ -321,6 +332,17 @@ public:
             glEnable(GL_TEXTURE_GEN_S);
             glEnable(GL_TEXTURE_GEN_T);
         }
+        if (linearMap_) {
+            // Two stripes' periods across the sphere, slanted against the texture's own.
+            const GLfloat s[] = {0.55f, 0.2f, 0.0f, 0.5f}, t[] = {0.0f, 0.3f, 0.45f, 0.5f};
+            const GLenum plane = linearMap_ == GL_OBJECT_LINEAR ? GL_OBJECT_PLANE : GL_EYE_PLANE;
+            glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GLint(linearMap_));
+            glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GLint(linearMap_));
+            glTexGenfv(GL_S, plane, s);
+            glTexGenfv(GL_T, plane, t);
+            glEnable(GL_TEXTURE_GEN_S);
+            glEnable(GL_TEXTURE_GEN_T);
+        }
         if (translucent_) {
             const float glass[] = {1.0f, 1.0f, 1.0f, 0.6f};
             glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, glass);
@@ -360,6 +382,7 @@ private:
     GLuint sphereTexture_ = 0;
     GLuint faceTextures_[6] = {};
     bool sphereMap_ = false;
+    GLenum linearMap_ = 0; // GL_OBJECT_LINEAR, GL_EYE_LINEAR or 0
     bool translucent_ = false;
     bool additive_ = false;
     bool depthPrepass_ = false;

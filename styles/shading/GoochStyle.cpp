@@ -66,6 +66,7 @@ StyleInfo goochStyleInfo()
         ParamInfo::number("highlight", "exponent of a white highlight (0: none)", 0.0, 0.0,
                           256.0),
         ParamInfo::flag("detail", "the program's own texture modulates the tones", true),
+        ShadingCommon::reflectionsParam(),
         ParamInfo::text("texture", "PNG of the pure tones from cool (left, facing away from "
                                    "the light) to warm (right), its middle row; empty: "
                                    "blue to yellow from b and y"),
@@ -106,6 +107,7 @@ bool GoochStyle::init(StyleContext& ctx, std::string& error)
     mBeta = float(ctx.param("gooch", "beta"));
     mHighlight = float(ctx.param("gooch", "highlight"));
     mDetail = ctx.param("gooch", "detail") >= 0.5;
+    mReflections = ctx.param("gooch", "reflections") >= 0.5;
     // Unlit objects' variants now; those for lit ones when first needed (variantFor).
     for (int k = 0; k < (mDetail ? 2 : 1); ++k) {
         if (!buildVariant(gl, k, error)) return false;
@@ -153,7 +155,8 @@ void GoochStyle::render(const Scene& scene, StyleContext& ctx)
     gl.BindTexture(GL_TEXTURE_2D, mRamp.id());
     gl.ActiveTexture(GL_TEXTURE0);
     GLuint current = 0;
-    for (const SceneObject& object : scene.objects) {
+    for (const SceneObject& listed : scene.objects) {
+        const SceneObject& object = ShadingCommon::withGenerated(listed, mReflections, mReflected);
         const bool textured = object.textured() && mDetail;
         Variant& variant = ShadingCommon::variantFor(
             mVariants, mVariantsFailed, textured, object,

@@ -33,6 +33,8 @@ private:
     float mBlue = 0.4f, mYellow = 0.4f, mAlpha = 0.2f, mBeta = 0.6f;
     float mHighlight = 0.0f; // exponent of the white highlight (0: none)
     bool mDetail = true;
+    bool mReflections = false; // generated textures shown (ShadingCommon::withGenerated)
+    SceneObject mReflected;    // an object with its generated texture as its own
     TextureImage mRampImage; // the pure tones, cool to warm
     GlTexture mRamp;
 };

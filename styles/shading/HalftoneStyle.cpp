@@ -109,6 +109,7 @@ StyleInfo halftoneStyleInfo()
                                    "tones, < 1 lightens them",
                           1.0, 0.1, 10.0),
         ParamInfo::flag("detail", "the program's texture as detail map T", true),
+        ShadingCommon::reflectionsParam(),
         ParamInfo::number("detail_strength", "how much T darkens: colour textures made for "
                                              "shading are darker than halftone detail maps",
                           0.6, 0.0, 1.0),
@@ -177,6 +178,7 @@ bool HalftoneStyle::init(StyleContext& ctx, std::string& error)
     mSmoothness = float(ctx.param("halftone", "smoothness"));
     mScale = float(ctx.param("halftone", "screen_scale"));
     mDetail = ctx.param("halftone", "detail") >= 0.5;
+    mReflections = ctx.param("halftone", "reflections") >= 0.5;
     mDetailStrength = float(ctx.param("halftone", "detail_strength"));
     mObjectSpace = ctx.param("halftone", "space") >= 0.5;
     mInkFromObject = ctx.param("halftone", "ink") >= 0.5;
@@ -226,7 +228,8 @@ void HalftoneStyle::render(const Scene& scene, StyleContext& ctx)
     gl.BindTexture(GL_TEXTURE_2D, mScreen.id());
     gl.ActiveTexture(GL_TEXTURE0);
     GLuint current = 0;
-    for (const SceneObject& object : scene.objects) {
+    for (const SceneObject& listed : scene.objects) {
+        const SceneObject& object = ShadingCommon::withGenerated(listed, mReflections, mReflected);
         const bool textured = object.textured();
         Variant& variant = ShadingCommon::variantFor(
             mVariants, mVariantsFailed, textured, object,

@@ -41,6 +41,8 @@ private:
     float mAmbient = 0.0f, mDiffuse = 1.0f, mGamma = 1.0f, mSmoothness = 6.0f, mScale = 1.0f;
     float mDetailStrength = 0.6f;
     bool mDetail = true, mObjectSpace = false, mInkFromObject = false;
+    bool mReflections = false; // generated textures shown (ShadingCommon::withGenerated)
+    SceneObject mReflected;    // an object with its generated texture as its own
     glm::vec3 mInk{0.0f}, mPaper{1.0f};
 };
 

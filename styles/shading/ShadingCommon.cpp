@@ -26,14 +26,29 @@ out vec4 baseColor;
 out vec2 uv;
 out vec2 lightUv;
 out vec3 eyePosition;
+// The texture coordinates GL generates, per vertex as GL does (SceneObject::generated): for S
+// and T, 0 the program's, 1 GL_SPHERE_MAP, 2 GL_OBJECT_LINEAR, 3 GL_EYE_LINEAR.
+uniform vec2 genMode;
+uniform vec4 genPlaneS;
+uniform vec4 genPlaneT;
+float generated(float mode, vec4 plane, float own, float sphere, vec4 eye)
+{
+    return mode < 0.5   ? own
+           : mode < 1.5 ? sphere
+           : mode < 2.5 ? dot(plane, vec4(position, 1.0))
+                        : dot(plane, eye);
+}
 void main()
 {
     eyeNormal = normalMatrix * normal;
     baseColor = color;
-    uv = texcoord;
     lightUv = lightcoord;
     vec4 eye = modelview * vec4(position, 1.0);
     eyePosition = eye.xyz / eye.w;
+    vec3 r = reflect(normalize(eyePosition), normalize(eyeNormal));
+    vec2 sphere = r.xy / max(2.0 * length(r + vec3(0.0, 0.0, 1.0)), 1e-6) + 0.5;
+    uv = vec2(generated(genMode.x, genPlaneS, texcoord.x, sphere.x, eye),
+              generated(genMode.y, genPlaneT, texcoord.y, sphere.y, eye));
     gl_Position = projection * eye;
 }
 )";
@@ -144,6 +159,9 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightSpot = gl.GetUniformLocation(program, "lightSpot");
     lightFalloff = gl.GetUniformLocation(program, "lightFalloff");
     lightWeight = gl.GetUniformLocation(program, "lightWeight");
+    genMode = gl.GetUniformLocation(program, "genMode");
+    genPlaneS = gl.GetUniformLocation(program, "genPlaneS");
+    genPlaneT = gl.GetUniformLocation(program, "genPlaneT");
 }
 
 bool ShadingCommon::buildProgram(const GlFunctions& gl, ShaderProgram& program,
@@ -185,6 +203,19 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
     setLights(gl, object.lights);
+    // The generated coordinates where the object shows its generated texture as its own
+    // (withGenerated), else the program's.
+    const GeneratedTexture& g = object.generated;
+    const bool generates = g.texture != 0 && object.texture == g.texture;
+    auto code = [&](GLenum mode) {
+        return !generates                ? 0.0f
+               : mode == GL_SPHERE_MAP   ? 1.0f
+               : mode == GL_OBJECT_LINEAR ? 2.0f
+                                         : 3.0f;
+    };
+    gl.Uniform2f(genMode, code(g.mode[0]), code(g.mode[1]));
+    gl.Uniform4fv(genPlaneS, 1, glm::value_ptr(g.plane[0]));
+    gl.Uniform4fv(genPlaneT, 1, glm::value_ptr(g.plane[1]));
     // Between the toon bands' thresholds (their base colour), halftone's light dots.
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     gl.Uniform1i(lightmapSampler, 3);
@@ -223,6 +254,25 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
     gl.Uniform4fv(lightSpot, 8, glm::value_ptr(spot[0]));
     gl.Uniform4fv(lightFalloff, 8, glm::value_ptr(falloff[0]));
     gl.Uniform1fv(lightWeight, 8, weight);
+}
+
+const SceneObject& ShadingCommon::withGenerated(const SceneObject& object, bool show,
+                                               SceneObject& scratch)
+{
+    if (!show || object.generated.texture == 0 || object.textured()) return object;
+    scratch = object;
+    scratch.texture = object.generated.texture;
+    scratch.textureRuns.clear();
+    return scratch;
+}
+
+ParamInfo ShadingCommon::reflectionsParam()
+{
+    return ParamInfo::flag("reflections",
+                           "a texture the program maps by generated coordinates (GL_SPHERE_MAP "
+                           "chrome and reflections, GL_OBJECT_LINEAR or GL_EYE_LINEAR "
+                           "projections) shown as the object's texture (off: dropped)",
+                           false);
 }
 
 glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)

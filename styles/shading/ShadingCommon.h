@@ -3,6 +3,7 @@
 #include "common/Log.h"
 #include "styles/Scene.h"
 #include "styles/ShaderProgram.h"
+#include "styles/StyleRegistry.h"
 #include "styles/Style.h"
 
 #include <glm/glm.hpp>
@@ -73,6 +74,7 @@ public:
         GLint fogMode = -1, fogRange = -1, fogColour = -1;
         GLint lightmapped = -1, lightmapSampler = -1, flatLight = -1;
         GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
+        GLint genMode = -1, genPlaneS = -1, genPlaneT = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object) const;
@@ -93,6 +95,12 @@ public:
     // the object has lightmaps, else in one draw.
     static void draw(StyleContext& ctx, const SceneObject& object, const ObjectUniforms& u,
                      bool textured);
+    // The object as a style draws it: where `show` (the style's reflectionsParam()) and the
+    // object has no texture of its own, a copy in `scratch` with its generated texture as its
+    // texture, mapped on the coordinates GL generates (ObjectUniforms::set).
+    static const SceneObject& withGenerated(const SceneObject& object, bool show,
+                                            SceneObject& scratch);
+    static ParamInfo reflectionsParam();
     // Whether the program's normals point out of the counter-clockwise side of its faces.
     static bool normalsFollowCcw(const reconstruct::ObjectMesh& mesh);
     static glm::mat3 normalMatrix(const glm::mat4& modelview);

@@ -121,6 +121,7 @@ StyleInfo texturedStyleInfo()
         ParamInfo::flag("tint", "shading colours from the program's colour (off: white paper, "
                                 "ink only)",
                         true),
+        ShadingCommon::reflectionsParam(),
         ParamInfo::number("alpha_low", "ta_l: L.n where the light texture starts to fade in",
                           -0.15, -1.0, 1.0),
         ParamInfo::number("alpha_high", "ta_u: L.n where only the light texture remains", 0.15,
@@ -265,6 +266,7 @@ bool TexturedStyle::buildVariant(const GlFunctions& gl, int k, std::string& erro
 bool TexturedStyle::init(StyleContext& ctx, std::string& error)
 {
     mTones = int(std::lround(ctx.param("textured", "tones"))) <= 2 ? 2 : 3;
+    mReflections = ctx.param("textured", "reflections") >= 0.5;
     mDiffuseThreshold = float(ctx.param("textured", "diffuse_threshold"));
     mHighlightThreshold = float(ctx.param("textured", "highlight_threshold"));
     if (mDiffuseThreshold >= mHighlightThreshold) {
@@ -327,7 +329,8 @@ void TexturedStyle::render(const Scene& scene, StyleContext& ctx)
     gl.BindTexture(GL_TEXTURE_2D, mShadow.texture.id());
     gl.ActiveTexture(GL_TEXTURE0);
     GLuint current = 0;
-    for (const SceneObject& object : scene.objects) {
+    for (const SceneObject& listed : scene.objects) {
+        const SceneObject& object = ShadingCommon::withGenerated(listed, mReflections, mReflected);
         const bool textured = object.textured();
         Variant& variant = ShadingCommon::variantFor(
             mVariants, mVariantsFailed, textured, object,

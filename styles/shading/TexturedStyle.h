@@ -54,6 +54,8 @@ private:
     int mTones = 2;
     float mDiffuseThreshold = 0.0f, mHighlightThreshold = 0.9f;
     float mShadowScale = 0.7f, mHighlightMix = 0.5f;
+    bool mReflections = false; // generated textures shown (ShadingCommon::withGenerated)
+    SceneObject mReflected;    // an object with its generated texture as its own
     float mBandLow = -0.1f, mBandHigh = 0.1f, mFalloff = 0.35f, mScale = 1.0f;
     bool mAsymmetric = false, mTint = true, mHighlightVariant = false, mObjectSpace = false;
 };

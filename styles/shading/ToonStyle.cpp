@@ -39,16 +39,6 @@ float boundaryInk(float d, float t, float pixel)
     return clamp(0.5 * lineWidth - dist + 0.5, 0.0, 1.0);
 }
 
-// The detail texture's coordinates: the program's, or with sphereMapped GL_SPHERE_MAP's,
-// from the eye-space view direction and normal (a reflection the program maps so).
-uniform float sphereMapped;
-vec2 detailUv(vec3 n)
-{
-    vec3 r = reflect(normalize(eyePosition), n);
-    float m = 2.0 * sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0));
-    return sphereMapped > 0.5 ? r.xy / max(m, 1e-6) + 0.5 : uv;
-}
-
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
@@ -66,11 +56,11 @@ void main()
     // The program's alpha, texture modulating: what its alpha test and blending see.
     float alpha = baseColor.a;
 #if DETAIL == 1
-    vec4 t = texture(detail, detailUv(n));
+    vec4 t = texture(detail, uv);
     c = c * t.rgb;
     alpha *= t.a;
 #elif DETAIL == 2
-    vec4 t = texture(detail, detailUv(n));
+    vec4 t = texture(detail, uv);
     c = mix(c, t.rgb, t.a);
     alpha *= t.a;
 #endif
@@ -117,10 +107,7 @@ StyleInfo toonStyleInfo()
                           {"off", "modulate", "decal"}, 1),
         ParamInfo::flag("band_lines", "ink lines between the shade bands (thesis fig. 3.8)",
                         false),
-        ParamInfo::flag("reflections", "a texture the program maps by GL_SPHERE_MAP (chrome, "
-                                       "reflections) shown as detail, as the detail mode says "
-                                       "(off: dropped)",
-                        false),
+        ShadingCommon::reflectionsParam(),
         ParamInfo::number("band_line_width", "width of the band lines in pixels", 1.5, 0.5, 8.0),
     };
     return info;
@@ -160,7 +147,6 @@ bool ToonStyle::buildVariant(const GlFunctions& gl, int k, std::string& error)
     if (!ShadingCommon::buildProgram(gl, variant.program, variant.u, fragment, error)) {
         return false;
     }
-    variant.sphereMapped = variant.program.uniform(gl, "sphereMapped");
     return true;
 }
 
@@ -213,13 +199,7 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
     // The detail sampler is unit 0, the default of sampler uniforms.
     GLuint current = 0;
     for (const SceneObject& listed : scene.objects) {
-        const bool reflects = mReflections && listed.reflection != 0 && !listed.textured();
-        if (reflects) {
-            mReflected = listed;
-            mReflected.texture = listed.reflection;
-            mReflected.textureRuns.clear();
-        }
-        const SceneObject& object = reflects ? mReflected : listed;
+        const SceneObject& object = ShadingCommon::withGenerated(listed, mReflections, mReflected);
         const bool textured = object.textured() && mDetail != 0;
         Variant& variant = ShadingCommon::variantFor(
             mVariants, mVariantsFailed, textured, object,
@@ -229,7 +209,6 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
             gl.UseProgram(current);
         }
         variant.u.set(gl, object);
-        gl.Uniform1f(variant.sphereMapped, reflects ? 1.0f : 0.0f);
         // The program's textures keep their own filtering and wrapping; both sides are
         // drawn in one pass (shadingNormal).
         ShadingCommon::draw(ctx, object, variant.u, textured);

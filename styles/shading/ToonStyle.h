@@ -26,7 +26,6 @@ private:
     struct Variant {
         ShaderProgram program;
         ShadingCommon::ObjectUniforms u;
-        GLint sphereMapped = -1;
     };
     std::string fragmentSource(int detail, int lights) const;
     bool buildVariant(const GlFunctions& gl, int k, std::string& error);
@@ -40,8 +39,8 @@ private:
     bool mSmooth = true, mBandLines = false;
     float mLineWidth = 1.5f;
     int mDetail = 1; // 0 off, 1 modulate, 2 decal
-    bool mReflections = false; // sphere-mapped textures shown as detail
-    SceneObject mReflected;    // a reflective object with its reflection as its texture
+    bool mReflections = false; // generated textures shown as detail
+    SceneObject mReflected;    // an object with its generated texture as its own
     int mFixed = 0; // bit i: colour i (shadow, diffuse, highlight) is configured
     glm::vec3 mColors[3]{};
 };

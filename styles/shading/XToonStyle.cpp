@@ -77,6 +77,7 @@ StyleInfo xtoonStyleInfo()
         ParamInfo::number("bands", "cel bands of the generated tone map (not of a texture=)", 3,
                           XToonTexture::kMinBands, XToonTexture::kMaxBands),
         ParamInfo::flag("detail", "the program's own texture modulates the tones", true),
+        ShadingCommon::reflectionsParam(),
     };
     return info;
 }
@@ -112,6 +113,7 @@ bool XToonStyle::init(StyleContext& ctx, std::string& error)
     mFar = float(ctx.param(kStyle, "far"));
     mExponent = float(ctx.param(kStyle, "r"));
     mDetail = ctx.param(kStyle, "detail") >= 0.5;
+    mReflections = ctx.param(kStyle, "reflections") >= 0.5;
     const int bands = int(std::lround(ctx.param(kStyle, "bands")));
     if (mFar > 0.0f && mFar <= mNear) {
         NPRGL_WARN("xtoon: far (%g) must lie beyond near (%g); using the scene's range",
@@ -188,7 +190,8 @@ void XToonStyle::render(const Scene& scene, StyleContext& ctx)
     gl.BindTexture(GL_TEXTURE_2D, mToneMap.id());
     gl.ActiveTexture(GL_TEXTURE0);
     GLuint current = 0;
-    for (const SceneObject& object : scene.objects) {
+    for (const SceneObject& listed : scene.objects) {
+        const SceneObject& object = ShadingCommon::withGenerated(listed, mReflections, mReflected);
         const bool textured = object.textured() && mDetail;
         Variant& variant = ShadingCommon::variantFor(
             mVariants, mVariantsFailed, textured, object,

@@ -40,6 +40,8 @@ private:
     TextureImage mToneImage;
     bool mOrientation = false;
     bool mDetail = true;
+    bool mReflections = false; // generated textures shown (ShadingCommon::withGenerated)
+    SceneObject mReflected;    // an object with its generated texture as its own
     bool mWarnedRange = false; // once per chain, not per frame
     float mNear = 0.0f, mFar = 0.0f, mExponent = 2.0f;
 };
