@@ -992,20 +992,35 @@ size_t StateTracker::keyLight() const
     return key;
 }
 
-glm::vec3 StateTracker::lightTint() const
+glm::vec3 StateTracker::litSideLight() const
 {
-    // The light on a fully lit surface (the scene's ambient, and every enabled light's
-    // ambient and diffuse colours), brightest channel at 1: the hue it gives. A bluish ambient
-    // under a pinkish sun lights snow nearly white, as GL's sum does.
+    // The light on the lit side of a surface: the scene's ambient, every enabled light's
+    // ambient, and its diffuse at N·L 0.75 (some 40 degrees off the light), as GL sums them.
+    // Its hue, at full strength (the styles' bands shade; a white light changes nothing).
+    // But where the ambient and the brightest light alone pass 1 (lights that reach
+    // everywhere: not spots, not attenuated), that sum as it is: GL brightens the material
+    // so, and clamps per channel. A bluish ambient under a pinkish sun lights snow white where
+    // both together pass 1 in every channel (extremetuxracer's) and its yellow yellower; a
+    // pinkish sun alone lights it pink. Other lights come from elsewhere: at most a part of
+    // them adds to the brightest's on one surface, so they only tint.
     const AttribState& a = mAttrib;
-    glm::vec3 sum = glm::max(a.modelAmbient, glm::vec3(0.0f));
+    constexpr float kLitSide = 0.75f;
+    const size_t key = keyLight();
+    const glm::vec3 ambient = glm::max(a.modelAmbient, glm::vec3(0.0f));
+    glm::vec3 all = ambient, main = ambient;
     for (size_t i = 0; i < 8; ++i) {
         if (!(a.lightsOn & (1u << i))) continue;
-        sum += glm::max(a.lightDiffuse[i], glm::vec3(0.0f)) +
-               glm::max(a.lightAmbient[i], glm::vec3(0.0f));
+        const glm::vec3 diffuse = kLitSide * glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
+        const glm::vec3 own = glm::max(a.lightAmbient[i], glm::vec3(0.0f));
+        all += diffuse + own;
+        const bool local = a.spotCutoff[i] != 180.0f ||
+                           (a.lightPosition[i].w != 0.0f &&
+                            a.attenuation[i] != glm::vec3(1.0f, 0.0f, 0.0f));
+        if (!local) main += own + (i == key ? diffuse : glm::vec3(0.0f));
     }
-    const float top = std::max({sum.r, sum.g, sum.b});
-    return top > 1e-6f ? sum / top : glm::vec3(1.0f);
+    if (std::max({main.r, main.g, main.b}) >= 1.0f) return main;
+    const float top = std::max({all.r, all.g, all.b});
+    return top > 1e-6f ? all / top : glm::vec3(1.0f);
 }
 
 bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha, bool& materialColour) const
@@ -1330,26 +1345,27 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.projection = mMatrices.projection();
     batch.materialId = currentMaterialId();
     const AttribState& a = mAttrib;
-    // What the program's picture shows: lit surfaces take the material's colour, in the
-    // colour of the lights on them (a white light changes nothing).
+    // What the program's picture shows: lit surfaces take the material's colour in the light
+    // on their lit side, clamped per channel as GL clamps.
     if (a.lighting) {
-        // One pass over the vertices: the material's colour (or the vertex's), tinted.
-        const glm::vec4 tint(lightTint(), 1.0f);
+        // One pass over the vertices: the material's colour (or the vertex's), lit.
+        const glm::vec4 light(litSideLight(), 1.0f);
+        auto lit = [&](const glm::vec4& c) { return glm::min(c * light, glm::vec4(1.0f)); };
         if (!a.colorMaterial && !batch.materials.empty()) {
             // Materials set between glBegin and glEnd: each colours its run of vertices.
-            glm::vec4 c = batch.beginMaterial * tint;
+            glm::vec4 c = lit(batch.beginMaterial);
             size_t next = 0;
             for (size_t i = 0; i < batch.vertices.size(); ++i) {
                 while (next < batch.materials.size() && batch.materials[next].first <= i) {
-                    c = batch.materials[next++].diffuse * tint;
+                    c = lit(batch.materials[next++].diffuse);
                 }
                 batch.vertices[i].color = c;
             }
         } else if (!a.colorMaterial) {
-            const glm::vec4 c = a.materialDiffuse * tint;
+            const glm::vec4 c = lit(a.materialDiffuse);
             for (TrackedVertex& v : batch.vertices) v.color = c;
-        } else if (tint != glm::vec4(1.0f)) {
-            for (TrackedVertex& v : batch.vertices) v.color *= tint;
+        } else if (light != glm::vec4(1.0f)) {
+            for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
         }
     }
     batch.is3D = batch.projection[3][3] == 0.0f || (a.depthTest && a.depthMask);

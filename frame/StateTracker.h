@@ -271,8 +271,9 @@ public:
     size_t keyLight() const;
     // The enabled lights as the styles take them (SceneLights).
     void litBy(styles::SceneLights& out) const;
-    // The hue of the enabled lights' diffuse colours, scaled so its brightest channel is 1.
-    glm::vec3 lightTint() const;
+    // The light GL sums on the lit side of a surface: its hue at full strength, or as it is
+    // where it passes 1 (per channel).
+    glm::vec3 litSideLight() const;
     void polygonMode(GLenum face, GLenum mode);
     void colorMask(bool r, bool g, bool b, bool a)
     {

@@ -28,9 +28,9 @@ struct SceneLights {
 };
 
 // A texture the program maps by coordinates GL generates (glTexGen on S and T): a reflection
-// (GL_SPHERE_MAP) or a projection (GL_OBJECT_LINEAR, GL_EYE_LINEAR planes). Not the surface's
-// own texture: dropped unless a style's parameter shows it (`reflections`), on the
-// coordinates GL would generate (ShadingCommon's vertex shader).
+// (GL_SPHERE_MAP) or a projection (GL_OBJECT_LINEAR, GL_EYE_LINEAR planes). A projection is
+// the surface's texture; a reflection is dropped unless a style's parameter shows it
+// (`reflections`). Drawn on the coordinates GL would generate (ShadingCommon's vertex shader).
 struct GeneratedTexture {
     GLuint texture = 0;
     GLenum mode[2] = {0, 0}; // of S and T: GL_SPHERE_MAP, GL_OBJECT_LINEAR or GL_EYE_LINEAR
@@ -57,7 +57,7 @@ struct SceneObject {
     // The winding the program culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0):
     // the styles cull the same faces (FaceCulling).
     GLenum culled = 0;
-    // A texture on generated coordinates (texture is then 0): shown only as a style says.
+    // A texture on generated coordinates (texture is then 0): ShadingCommon::withGenerated.
     GeneratedTexture generated;
     GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no

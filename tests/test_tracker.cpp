@@ -622,9 +622,9 @@ TEST(StateTracker, TheBrightestEnabledLightAndTheLightsColoursReachTheBatch)
     EXPECT_LT(mixed.g - mixed.r, green.g - green.r);
 }
 
-// The ambient light counts in the hue of a lit surface as in GL's sum: a pinkish sun over a
-// bluish ambient (extremetuxracer's snow) lights a white material bluish-white, not pink; the
-// light model's ambient too; and glLightiv's integer colours map onto 0..1.
+// The ambient light counts in the light of a lit surface as in GL's sum: a pinkish sun over a
+// bluish ambient lights a white material white, not pink; the light model's ambient too; and
+// glLightiv's integer colours map onto 0..1.
 TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
 {
     StateTracker tracker;
@@ -663,10 +663,46 @@ TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
     const glm::vec4 deep = batches[2].vertices[0].color;
     EXPECT_LT(sun.g, sun.b - 0.1f) << "the pinkish light alone tints pink";
     EXPECT_GE(sky.g, sky.r - 0.01f) << "a bluish ambient takes the pink out";
-    EXPECT_NEAR(sky.b, sun.b, 0.01f);
+    EXPECT_GE(sky.b, sun.b) << "the ambient light took light away";
     // Without the model's ambient the blue light ambient weighs more: bluer than before.
     EXPECT_LT(deep.r, sky.r - 0.1f);
     EXPECT_GT(deep.r, 0.3f) << "glLightiv's integer colour was taken as a huge number";
+}
+
+// GL clamps its light sum per channel: extremetuxracer's pinkish sun (1, 0.9, 1) over its
+// bluish ambient (0.45, 0.53, 0.75), with a grey fill light, passes 1 in every channel on the
+// lit side, and its snow is white there, not the lavender of the sum's hue (0.87, 0.86, 1).
+TEST(StateTracker, LightsPassingOneInEveryChannelLightWhite)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto lightfv = [&](GLenum light, GLenum pname, std::array<float, 4> v) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glLightfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(light);
+            w.put<GLenum>(pname);
+            w.putBytes(v.data(), sizeof v);
+            w.endPayload(mark);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    feed.enable(GL_LIGHT1, true);
+    lightfv(GL_LIGHT0, GL_AMBIENT, {0.45f, 0.53f, 0.75f, 1.0f});
+    lightfv(GL_LIGHT0, GL_DIFFUSE, {1.0f, 0.9f, 1.0f, 1.0f});
+    lightfv(GL_LIGHT1, GL_DIFFUSE, {0.3f, 0.3f, 0.3f, 1.0f});
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    // GL's default material (diffuse 0.8), brightened as GL's sum does, and untinted.
+    const glm::vec4 snow = batches[0].vertices[0].color;
+    EXPECT_GE(snow.r, 0.8f);
+    EXPECT_NEAR(snow.g, snow.r, 0.01f) << "lavender";
+    EXPECT_NEAR(snow.b, snow.r, 0.01f) << "lavender";
 }
 
 TEST(StateTracker, FramesReuseTheirVertexStorage)

@@ -259,7 +259,11 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
 const SceneObject& ShadingCommon::withGenerated(const SceneObject& object, bool show,
                                                SceneObject& scratch)
 {
-    if (!show || object.generated.texture == 0 || object.textured()) return object;
+    // A projection on linear planes (terrain textured by GL_OBJECT_LINEAR) is the surface's
+    // own texture; a sphere map reflects the surroundings, only shown when asked.
+    const GeneratedTexture& g = object.generated;
+    const bool reflects = g.mode[0] == GL_SPHERE_MAP || g.mode[1] == GL_SPHERE_MAP;
+    if ((reflects && !show) || g.texture == 0 || object.textured()) return object;
     scratch = object;
     scratch.texture = object.generated.texture;
     scratch.textureRuns.clear();
@@ -269,9 +273,9 @@ const SceneObject& ShadingCommon::withGenerated(const SceneObject& object, bool 
 ParamInfo ShadingCommon::reflectionsParam()
 {
     return ParamInfo::flag("reflections",
-                           "a texture the program maps by generated coordinates (GL_SPHERE_MAP "
-                           "chrome and reflections, GL_OBJECT_LINEAR or GL_EYE_LINEAR "
-                           "projections) shown as the object's texture (off: dropped)",
+                           "a texture the program maps by GL_SPHERE_MAP coordinates (chrome, "
+                           "reflections) shown as the object's texture (off: dropped; one on "
+                           "GL_OBJECT_LINEAR or GL_EYE_LINEAR planes is always the surface's)",
                            false);
 }
 

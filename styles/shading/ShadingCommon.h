@@ -95,9 +95,10 @@ public:
     // the object has lightmaps, else in one draw.
     static void draw(StyleContext& ctx, const SceneObject& object, const ObjectUniforms& u,
                      bool textured);
-    // The object as a style draws it: where `show` (the style's reflectionsParam()) and the
-    // object has no texture of its own, a copy in `scratch` with its generated texture as its
-    // texture, mapped on the coordinates GL generates (ObjectUniforms::set).
+    // The object as a style draws it: where it has no texture of its own but one on generated
+    // coordinates (a linear projection, or a sphere-mapped reflection where `show`, the
+    // style's reflectionsParam()), a copy in `scratch` with that as its texture, mapped on the
+    // coordinates GL generates (ObjectUniforms::set).
     static const SceneObject& withGenerated(const SceneObject& object, bool show,
                                             SceneObject& scratch);
     static ParamInfo reflectionsParam();
