@@ -422,7 +422,7 @@ void Compositor::tintBegin()
         // On the chain's page a glow is drawn as ink of its colour (GlowInk); the attribute
         // stack gives the program's blending back, glowEnd its program binding (none).
         gRealGl.glPushAttrib(GL_COLOR_BUFFER_BIT);
-        mChain.glowBegin(textured, sourceAlpha, material);
+        mChain.glowBegin(textured, sourceAlpha, material, mTracker.fogMode());
         mGlowing = true;
         if (!mGlowSaid) {
             NPRGL_INFO("context %u: additive glows are drawn as ink of their colour on the page",

@@ -265,6 +265,8 @@ public:
     void cullMode(GLenum mode) { mAttrib.cullMode = mode; }
     void frontFace(GLenum mode) { mAttrib.frontFace = mode; }
     void fog(GLenum pname, const float* v, size_t count);
+    // GL_FOG_MODE while GL_FOG is on, else 0.
+    GLenum fogMode() const { return mAttrib.fog ? mAttrib.fogMode : 0; }
     // Blending on with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.
     bool translucent() const;
     // The enabled light with the brightest diffuse colour (0 when none is on).

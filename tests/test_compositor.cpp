@@ -682,15 +682,22 @@ TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
 
 // An additive glow (the demo's sphere, GL_ONE, GL_ONE) on a paper page is drawn as ink of its
 // colour: not washed out to the page's white, as it is added natively and over a chain
-// without a page; still counted as left (its geometry is the program's drawing).
-TEST(Compositor, AdditiveGlowsReadOverPaper)
+// without a page; still counted as left (its geometry is the program's drawing). Also with
+// the program's alpha test on (gibson's glowing towers of text): the ink's fragments carry
+// the program's alpha, which the test passes (they carried none, and every one was dropped).
+class AdditiveGlows : public ::testing::TestWithParam<bool> {};
+
+TEST_P(AdditiveGlows, ReadOverPaper)
 {
-    auto whiteInSphere = [](const std::string& style) {
+    // The share of the sphere's square washed out to white, and how many of its pixels show
+    // its orange stripes (added natively; in ink of their colour on the page).
+    auto whiteInSphere = [](const std::string& style, int* orange = nullptr) {
         const std::string dir = freshDir("glow");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", style},
-                                           {demo("textured"), "--additive", "--offscreen",
-                                            "--size", "320x240", "--frames", "3", "--save-frames",
-                                            "3", "--save-dir", dir}));
+        std::vector<std::string> app = {demo("textured"), "--additive", "--offscreen",
+                                        "--size", "320x240", "--frames", "3", "--save-frames",
+                                        "3", "--save-dir", dir};
+        if (GetParam()) app.push_back("--glow-alpha-test");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
         EXPECT_EQ(r.exitCode, 0) << r.err;
         EXPECT_NE(r.err.find("left as the program drew them (blending other than"),
                   std::string::npos)
@@ -701,19 +708,28 @@ TEST(Compositor, AdditiveGlowsReadOverPaper)
         PngImage image;
         std::string error;
         EXPECT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
-        int white = 0, all = 0;
+        int white = 0, all = 0, stripes = 0;
         for (int y = 110; y < 145; ++y) {
             for (int x = 190; x < 225; ++x) {
                 const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
                 white += std::min({p[0], p[1], p[2]}) >= 225;
+                stripes += p[0] > 150 && p[0] - p[2] > 60;
                 ++all;
             }
         }
+        if (orange) *orange = stripes;
         return float(white) / float(all);
     };
     EXPECT_GT(whiteInSphere("toon"), 0.3f) << "the glow does not wash out here: no test";
-    EXPECT_LT(whiteInSphere("toon+paper"), 0.05f) << "the glow washed out on the page";
+    int orange = 0;
+    EXPECT_LT(whiteInSphere("toon+paper", &orange), 0.05f) << "the glow washed out on the page";
+    EXPECT_GT(orange, 300) << "the glow is not on the page";
 }
+
+INSTANTIATE_TEST_SUITE_P(Compositor, AdditiveGlows, ::testing::Bool(),
+                         [](const auto& p) {
+                             return std::string(p.param ? "AlphaTested" : "Plain");
+                         });
 
 // A scene drawn again under a scissor after a scissored clear (a rear-view mirror, a 3D pane
 // in a tool's window): the styled redraw stays inside the scissor box, so everything outside

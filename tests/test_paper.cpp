@@ -336,16 +336,16 @@ TEST(Paper, IsLaidOncePerFrameAndAgainAfterTheProgramClearsColour)
     chain.shutdown();
 }
 
-// An additive glow (an orange flame, GL_ONE onto GL_ONE) around which the chain's glow ink is
-// on: over the light page it is orange ink, not white; over a dark surface of the scene it
-// still lights the surface up, as the program's addition would.
-TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
+namespace {
+
+// The program's own fixed-function drawing, as a glow (GlowInk): an orange quad over both
+// halves of a picture dark on the left and page-white on the right, in `fogMode` (0: no fog;
+// else the program's black fog, all of it at the quad's depth).
+PngImage glowOverDarkAndPage(StyleHarness& harness, GLenum fogMode)
 {
-    StyleHarness harness(kSize, kSize);
-    ASSERT_TRUE(harness.ok());
     styles::StyleChain chain;
     startChain(chain, "toon+paper", "paper.grain=0");
-    ASSERT_TRUE(chain.inksGlows());
+    EXPECT_TRUE(chain.inksGlows());
     auto getProc = [](const char* name) {
         return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
     };
@@ -355,17 +355,25 @@ TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
     fillRect(gl, {0, 0, kSize / 2, kSize}, &dark, nullptr);
     fillRect(gl, {kSize / 2, 0, kSize / 2, kSize}, &page, nullptr);
 
-    // The program's own fixed-function drawing: a quad over both halves.
     using Begin = void (*)(GLenum);
     using Vertex2f = void (*)(GLfloat, GLfloat);
     using Color3f = void (*)(GLfloat, GLfloat, GLfloat);
     using NoArgs = void (*)();
+    using Fogf = void (*)(GLenum, GLfloat);
     auto begin = reinterpret_cast<Begin>(getProc("glBegin"));
     auto vertex = reinterpret_cast<Vertex2f>(getProc("glVertex2f"));
     auto colour = reinterpret_cast<Color3f>(getProc("glColor3f"));
     auto end = reinterpret_cast<NoArgs>(getProc("glEnd"));
+    auto fog = reinterpret_cast<Fogf>(getProc("glFogf"));
     gl.Disable(GL_DEPTH_TEST);
-    chain.glowBegin(false, false, false);
+    if (fogMode) {
+        // Linear, ending before the quad (eye depth 0): the fog colour (black) everywhere.
+        fog(GL_FOG_MODE, float(fogMode));
+        fog(GL_FOG_START, -2.0f);
+        fog(GL_FOG_END, -1.0f);
+        gl.Enable(GL_FOG);
+    }
+    chain.glowBegin(false, false, false, fogMode);
     colour(1.0f, 0.5f, 0.0f);
     begin(GL_QUADS);
     vertex(-0.9f, -0.5f);
@@ -374,10 +382,24 @@ TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
     vertex(-0.9f, 0.5f);
     end();
     chain.glowEnd();
+    gl.Disable(GL_FOG);
     gl.Disable(GL_BLEND);
     const PngImage image = readBack(gl);
-    save(image, "glow");
     chain.shutdown();
+    return image;
+}
+
+} // namespace
+
+// An additive glow (an orange flame, GL_ONE onto GL_ONE) around which the chain's glow ink is
+// on: over the light page it is orange ink, not white; over a dark surface of the scene it
+// still lights the surface up, as the program's addition would.
+TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const PngImage image = glowOverDarkAndPage(harness, 0);
+    save(image, "glow");
     // Left, over the dark surface: lit up orange (ink alone would leave it near black).
     const Rgb onDark = pixel(image, kSize / 4, kSize / 2);
     EXPECT_GT(onDark.r, 200) << onDark.r << " " << onDark.g << " " << onDark.b;
@@ -388,6 +410,19 @@ TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
     EXPECT_LT(onPage.b, 60) << onPage.r << " " << onPage.g << " " << onPage.b;
     // Outside the quad both halves are as they were.
     EXPECT_EQ(pixel(image, kSize / 4, 5), (Rgb{26, 26, 26}));
+}
+
+// A glow in the program's black fog adds nothing natively (gibson's glowing text far down
+// its floor): no ink on the page either, and nothing on the dark surface. The ink ignored the
+// fog and turned gibson's floor red with the ink of its far-off red glyphs.
+TEST(Paper, GlowsFadeIntoTheProgramsFog)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const PngImage image = glowOverDarkAndPage(harness, GL_LINEAR);
+    EXPECT_EQ(pixel(image, kSize / 4, kSize / 2), (Rgb{26, 26, 26})) << "lit through the fog";
+    EXPECT_EQ(pixel(image, 3 * kSize / 4, kSize / 2), (Rgb{242, 242, 242}))
+        << "inked through the fog";
 }
 
 TEST(Paper, StaysInsideTheViewport)

@@ -150,6 +150,9 @@ public:
                  "the sphere is blended over the scene at 60% opacity"},
                 {"additive", demo::ExtraOption::Kind::Flag,
                  "the sphere is added to the scene (GL_ONE, GL_ONE)"},
+                {"glow-alpha-test", demo::ExtraOption::Kind::Flag,
+                 "with --additive: the alpha test on (GL_GREATER 0.01), as glowing text keeps "
+                 "its glyphs' shape"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
@@ -178,6 +181,7 @@ public:
         linearMap_ = linear == "object" ? GL_OBJECT_LINEAR : linear == "eye" ? GL_EYE_LINEAR : 0;
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
+        glowAlphaTest_ = options.has("glow-alpha-test");
         depthPrepass_ = options.has("depth-prepass");
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
@@ -354,12 +358,17 @@ public:
             glEnable(GL_BLEND);
             glBlendFunc(GL_ONE, GL_ONE);
             glDepthMask(GL_FALSE);
+            if (glowAlphaTest_) {
+                glEnable(GL_ALPHA_TEST);
+                glAlphaFunc(GL_GREATER, 0.01f);
+            }
         }
         demo::drawSphere(0.95f, 24, 32, 2.0f);
         if (translucent_ || additive_) {
             const float opaque[] = {1.0f, 1.0f, 1.0f, 1.0f};
             glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, opaque);
             glDisable(GL_BLEND);
+            glDisable(GL_ALPHA_TEST);
             glDepthMask(GL_TRUE);
         }
         // Off again: the next frame's floor and cube have their own coordinates.
@@ -385,6 +394,7 @@ private:
     GLenum linearMap_ = 0; // GL_OBJECT_LINEAR, GL_EYE_LINEAR or 0
     bool translucent_ = false;
     bool additive_ = false;
+    bool glowAlphaTest_ = false;
     bool depthPrepass_ = false;
     bool decal_ = false;
     bool inset_ = false;

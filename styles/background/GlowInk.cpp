@@ -13,12 +13,14 @@ namespace {
 const char* kVertex = R"(
 OUT vec4 colour;
 OUT vec2 uv;
+OUT float fogDepth;
 uniform bool material;
 void main()
 {
     gl_Position = ftransform();
     colour = material ? gl_FrontMaterial.diffuse : gl_Color;
     uv = (gl_TextureMatrix[0] * gl_MultiTexCoord0).xy;
+    fogDepth = abs((gl_ModelViewMatrix * gl_Vertex).z); // GL's fog coordinate
 }
 )";
 
@@ -26,20 +28,36 @@ void main()
 const char* kFragmentCommon = R"(
 IN vec4 colour;
 IN vec2 uv;
+IN float fogDepth;
 uniform sampler2D tex;
 uniform bool textured;
 uniform bool sourceAlpha;
-vec3 added()
+uniform int fogMode; // the program's: 0 none, 1 linear, 2 exp, 3 exp2 (gl_Fog has the rest)
+// The program's fragment: its colour, texture and fog (additive effects fade into a black
+// fog with distance: they add nothing far away).
+vec4 fragment()
 {
     vec4 c = textured ? colour * texture2D(tex, uv) : colour;
+    float d = gl_Fog.density * fogDepth;
+    float f = fogMode == 1   ? (gl_Fog.end - fogDepth) * gl_Fog.scale
+              : fogMode == 2 ? exp(-d)
+              : fogMode == 3 ? exp(-d * d)
+                             : 1.0;
+    return vec4(mix(gl_Fog.color.rgb, c.rgb, clamp(f, 0.0, 1.0)), c.a);
+}
+vec3 added()
+{
+    vec4 c = fragment();
     return clamp(sourceAlpha ? c.rgb * c.a : c.rgb, 0.0, 1.0);
 }
 vec3 ink(vec3 a) { return vec3(1.0 - max(max(a.r, a.g), a.b)) + a; }
 )";
 
-// Ink alone, multiplied in (GL_DST_COLOR, GL_ZERO).
+// Ink alone, multiplied in (GL_DST_COLOR, GL_ZERO). Each main's alpha is the program's
+// fragment's, which its alpha test (still on) keeps or drops, as glyphs drawn as glowing text
+// keep their shapes; blending leaves the framebuffer's alpha as it was.
 const char* kInkMain = R"(
-void main() { gl_FragColor = vec4(ink(added()), 1.0); }
+void main() { gl_FragColor = vec4(ink(added()), fragment().a); }
 )";
 
 // With dual-source blending (GL_ONE_MINUS_DST_COLOR, GL_SRC1_COLOR) the page decides per
@@ -52,7 +70,7 @@ out vec4 inkColour;
 void main()
 {
     vec3 a = added();
-    fragColor = vec4(a, 0.0);
+    fragColor = vec4(a, fragment().a);
     inkColour = vec4(ink(a), 1.0);
 }
 )";
@@ -80,22 +98,28 @@ bool GlowInk::init(const GlFunctions& gl, std::string& error)
     mTextured = mProgram.uniform(gl, "textured");
     mSourceAlpha = mProgram.uniform(gl, "sourceAlpha");
     mMaterial = mProgram.uniform(gl, "material");
+    mFogMode = mProgram.uniform(gl, "fogMode");
     gl.UseProgram(mProgram.id());
     gl.Uniform1i(mProgram.uniform(gl, "tex"), 0);
     gl.UseProgram(0);
     return true;
 }
 
-void GlowInk::begin(const GlFunctions& gl, bool textured, bool sourceAlpha, bool materialColour)
+void GlowInk::begin(const GlFunctions& gl, bool textured, bool sourceAlpha, bool materialColour,
+                    GLenum fogMode)
 {
     gl.UseProgram(mProgram.id());
+    gl.Uniform1i(mFogMode, fogMode == GL_LINEAR ? 1
+                           : fogMode == GL_EXP  ? 2
+                           : fogMode == GL_EXP2 ? 3
+                                                : 0);
     gl.Uniform1i(mTextured, textured ? 1 : 0);
     gl.Uniform1i(mSourceAlpha, sourceAlpha ? 1 : 0);
     gl.Uniform1i(mMaterial, materialColour ? 1 : 0);
     gl.Enable(GL_BLEND);
     gl.BlendEquation(GL_FUNC_ADD);
-    if (mDual) gl.BlendFunc(GL_ONE_MINUS_DST_COLOR, GL_SRC1_COLOR);
-    else gl.BlendFunc(GL_DST_COLOR, GL_ZERO);
+    if (mDual) gl.BlendFuncSeparate(GL_ONE_MINUS_DST_COLOR, GL_SRC1_COLOR, GL_ZERO, GL_ONE);
+    else gl.BlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ZERO, GL_ONE);
 }
 
 void GlowInk::end(const GlFunctions& gl) { gl.UseProgram(0); }
