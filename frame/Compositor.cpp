@@ -392,7 +392,7 @@ PickResult Compositor::pick(int x, int y, int windowHeight, uint64_t& textureHas
 {
     const PickResult hit =
         pickScene(mScene, float(x) + 0.5f, float(windowHeight - 1 - y) + 0.5f);
-    textureHash = hit.texture ? mTracker.textureHash(hit.texture) : 0;
+    textureHash = hit.texture ? mTracker.textureHash(styles::textureName(hit.texture)) : 0;
     return hit;
 }
 

@@ -6,7 +6,7 @@ std::vector<glm::mat4>& MatrixStacks::current()
 {
     switch (mMode) {
     case GL_PROJECTION: return mProjection;
-    case GL_TEXTURE: return mTexture;
+    case GL_TEXTURE: return mTexture[size_t(mUnit)];
     default: return mModelview;
     }
 }

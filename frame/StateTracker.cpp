@@ -863,7 +863,7 @@ styles::GeneratedTexture StateTracker::generatedTexture() const
         g.plane[c] = mode == GL_OBJECT_LINEAR ? a.objectPlane[size_t(2 * u + c)]
                                               : a.eyePlane[size_t(2 * u + c)];
     }
-    g.texture = u == 0 ? (a.texture2D ? mBoundTexture : 0) : mUnitTextures[size_t(u)];
+    g.texture = u == 0 ? (a.texture2D ? sceneTexture(mBoundTexture) : 0) : mUnitTextures[size_t(u)];
     if (g.texture == 0) return {};
     return g;
 }
@@ -875,8 +875,35 @@ GLuint StateTracker::detailTexture() const
     const AttribState& a = mAttrib;
     const int u = surfaceUnit();
     if (u < 0 || ((a.texGen >> (4 * u)) & 0xFu) != 0) return 0;
-    if (u == 0) return a.texture2D ? mBoundTexture : 0;
+    if (u == 0) return a.texture2D ? sceneTexture(mBoundTexture) : 0;
     return mUnitTextures[size_t(u)];
+}
+
+void StateTracker::applyTextureMatrices(TrackedBatch& batch) const
+{
+    // The texture and lightmap coordinates as the units' texture matrices move them (a
+    // scrolled or scaled texture); one pass, and none where both are the identity.
+    static const glm::mat4 kIdentity(1.0f);
+    const int u = surfaceUnit();
+    const glm::mat4& surface = u >= 0 ? mMatrices.texture(u) : kIdentity;
+    const glm::mat4& light = mLightUnit >= 0 ? mMatrices.texture(mLightUnit) : kIdentity;
+    const bool moveSurface = surface != kIdentity, moveLight = light != kIdentity;
+    if (!moveSurface && !moveLight) return;
+    auto apply = [](const glm::mat4& m, glm::vec2& st) {
+        const glm::vec4 t = m * glm::vec4(st, 0.0f, 1.0f);
+        st = t.w != 0.0f ? glm::vec2(t) / t.w : glm::vec2(t);
+    };
+    for (TrackedVertex& v : batch.vertices) {
+        if (moveSurface) apply(surface, v.texcoord);
+        if (moveLight) apply(light, v.lightcoord);
+    }
+}
+
+GLuint StateTracker::sceneTexture(GLuint name) const
+{
+    // Unit 0's default texture, once it has an image (enabled without one, GL draws
+    // untextured: so do the styles).
+    return name == 0 && mDefaultImage ? styles::kDefaultTexture : name;
 }
 
 bool StateTracker::wouldHoldList(GLuint list) const
@@ -1030,7 +1057,7 @@ bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha, bool& materia
         mProgram != 0 || a.vertexProgram || a.fragmentProgram) {
         return false;
     }
-    textured = a.texture2D && mBoundTexture != 0;
+    textured = a.texture2D && sceneTexture(mBoundTexture) != 0;
     sourceAlpha = a.blendSrc == GL_SRC_ALPHA;
     materialColour = a.lighting && !a.colorMaterial;
     return true;
@@ -1418,6 +1445,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.fogDensity = a.fogDensity;
     batch.fogColour = a.fogColour;
     batch.viewport = a.viewport;
+    applyTextureMatrices(batch);
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
         reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);
@@ -1622,6 +1650,7 @@ void StateTracker::deleteLists(GLuint list, GLsizei range)
 void StateTracker::activeTexture(GLenum unit)
 {
     if (unit >= GL_TEXTURE0 && unit < GL_TEXTURE0 + 32) mActiveUnit = int(unit - GL_TEXTURE0);
+    mMatrices.setUnit(mActiveUnit);
 }
 
 void StateTracker::bindTexture(GLenum target, GLuint texture)
@@ -1638,7 +1667,8 @@ bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
     const int u = surfaceUnit();
     const GLenum mode = u >= 0 ? a.envMode[size_t(u)] : GL_MODULATE;
     // The texture's alpha counts unless GL_DECAL (the fragment keeps the colour's alpha).
-    if (batch.texture != 0 && mode != GL_DECAL && !mOpaqueTextures.contains(batch.texture)) {
+    if (batch.texture != 0 && mode != GL_DECAL &&
+        !mOpaqueTextures.contains(styles::textureName(batch.texture))) {
         return false;
     }
     if (mode == GL_REPLACE && batch.texture != 0) return true;
@@ -1665,6 +1695,7 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
         return;
     }
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
+    if (texture == 0 && mActiveUnit == 0) mDefaultImage = width > 0 && height > 0;
     mOpaqueTextures.erase(texture);
     mFilledLater.erase(texture);
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.

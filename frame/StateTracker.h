@@ -57,7 +57,8 @@ struct TrackedBatch {
     // A texture on coordinates GL generates on the surface unit (texture is then 0).
     styles::GeneratedTexture generated;
     GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none
-    bool translucent = false; // blended by its alpha over what is behind (StateTracker::translucent)
+    // Blended by its alpha over what is behind (StateTracker::translucent).
+    bool translucent = false;
     bool depthWrite = true;
     bool depthTest = true; // off: a sky or backdrop drawn first, or a 3D mark drawn on top
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
@@ -359,6 +360,9 @@ private:
     // The surface unit's 2D texture as the styles use it: 0 when off or on generated
     // coordinates.
     GLuint detailTexture() const;
+    void applyTextureMatrices(TrackedBatch& batch) const;
+    // A bound name as the scene takes it: unit 0's default texture as styles::kDefaultTexture.
+    GLuint sceneTexture(GLuint name) const;
     styles::GeneratedTexture generatedTexture() const;
     void noteListArrays();
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
@@ -396,6 +400,7 @@ private:
     int mLightUnit = -1;  // mCurrent.lightcoord is this unit's (-1: no lightmap)
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
+    bool mDefaultImage = false;       // unit 0's texture object 0 has a level 0 image
     std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
     LeaveRules mRules;
     size_t mImageBytes = 0; // of the call being decoded

@@ -27,6 +27,12 @@ struct SceneLights {
     Light lights[8];
 };
 
+// The texture object 0 of unit 0 (GL's default texture), where a program that never names
+// its textures (glTexImage2D with none bound) keeps its image: in the scene by this name,
+// since 0 there means no texture. textureName() gives the name to bind.
+constexpr GLuint kDefaultTexture = ~0u;
+inline GLuint textureName(GLuint texture) { return texture == kDefaultTexture ? 0 : texture; }
+
 // A texture the program maps by coordinates GL generates (glTexGen on S and T): a reflection
 // (GL_SPHERE_MAP) or a projection (GL_OBJECT_LINEAR, GL_EYE_LINEAR planes). A projection is
 // the surface's texture; a reflection is dropped unless a style's parameter shows it

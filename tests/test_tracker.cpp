@@ -705,6 +705,82 @@ TEST(StateTracker, LightsPassingOneInEveryChannelLightWhite)
     EXPECT_NEAR(snow.b, snow.r, 0.01f) << "lavender";
 }
 
+// A program that never names its textures keeps its image in unit 0's texture object 0
+// (xscreensaver's gflux): the scene takes it as kDefaultTexture, not as "no texture" (enabled
+// with no image, GL draws untextured: so does the scene). And texture coordinates move by
+// their unit's texture matrix (gflux scales its checkerboard so), not by another unit's.
+TEST(StateTracker, TheDefaultTextureAndItsTextureMatrixReachTheBatch)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto texturedTriangle = [&] {
+        feed.run([](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (float x : {0.0f, 1.0f, 0.0f}) {
+                w.op(op::glTexCoord2f);
+                w.put<float>(1.0f);
+                w.put<float>(1.0f);
+                w.op(op::glVertex3f);
+                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    auto texture = [&](GLenum mode, auto&& change) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glMatrixMode);
+            w.put<GLenum>(GL_TEXTURE);
+            change(w);
+            w.op(op::glMatrixMode);
+            w.put<GLenum>(mode);
+        });
+    };
+    auto unit = [&](GLenum u) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glActiveTexture);
+            w.put<GLenum>(u);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true);
+    texturedTriangle(); // texture 0 without an image
+    feed.run([](CallWriter& w) {
+        const uint8_t pixels[4 * 4] = {255, 0,   0, 255, 0, 255, 0, 255,
+                                       0,   0, 255, 255, 9, 9,   9, 255};
+        w.op(op::glTexImage2D);
+        const size_t mark = w.beginPayload();
+        for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 2, 2, 0}) w.put<GLint>(v);
+        w.put<GLenum>(GL_RGBA);
+        w.put<GLenum>(GL_UNSIGNED_BYTE);
+        w.put<uint8_t>(1);
+        w.putBytes(pixels, sizeof pixels);
+        w.endPayload(mark);
+    });
+    texturedTriangle();
+    texture(GL_MODELVIEW, [](CallWriter& w) {
+        w.op(op::glScalef);
+        for (float c : {0.5f, 0.25f, 1.0f}) w.put<float>(c);
+    });
+    texturedTriangle();
+    unit(GL_TEXTURE1); // another unit's matrix moves another unit's coordinates
+    texture(GL_MODELVIEW, [](CallWriter& w) {
+        w.op(op::glTranslatef);
+        for (float c : {5.0f, 5.0f, 0.0f}) w.put<float>(c);
+    });
+    unit(GL_TEXTURE0);
+    texturedTriangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 4u);
+    EXPECT_EQ(batches[0].texture, 0u) << "an imageless texture 0 drawn as a texture";
+    EXPECT_EQ(batches[1].texture, styles::kDefaultTexture) << "the default texture dropped";
+    EXPECT_EQ(batches[1].vertices[0].texcoord, glm::vec2(1.0f, 1.0f));
+    EXPECT_EQ(batches[2].vertices[0].texcoord, glm::vec2(0.5f, 0.25f)) << "matrix not applied";
+    EXPECT_EQ(batches[3].vertices[0].texcoord, glm::vec2(0.5f, 0.25f)) << "unit 1's applied";
+}
+
 TEST(StateTracker, FramesReuseTheirVertexStorage)
 {
     // A frame's vertex vectors come back to the tracker and serve the next frame's batches

@@ -293,7 +293,7 @@ namespace {
 // channels read one (texture swizzle); unbindProgramTexture puts the program's back.
 bool bindProgramTexture(const GlFunctions& gl, GLuint texture, GLint (&swizzle)[4])
 {
-    gl.BindTexture(GL_TEXTURE_2D, texture);
+    gl.BindTexture(GL_TEXTURE_2D, textureName(texture));
     if (texture == 0) return false;
     GLint format = 0;
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
