@@ -18,6 +18,13 @@ namespace nprgl {
 
 namespace {
 
+// An enum given as a float (glTexEnvf, glFogf, glTexGenf): 0, which names no mode, where the
+// value is none (NaN, negative, past 32 bits: converting those is undefined behaviour).
+GLenum enumOf(double value)
+{
+    return value >= 0.0 && value <= 4294967295.0 ? GLenum(value) : 0;
+}
+
 // Whether the alpha test passes a fragment of alpha 1.
 bool passesAlphaOne(GLenum func, float ref)
 {
@@ -173,7 +180,7 @@ void APIENTRY tTexEnvi(GLenum target, GLenum pname, GLint param)
 }
 void APIENTRY tTexEnvf(GLenum target, GLenum pname, GLfloat param)
 {
-    T().texEnv(target, pname, GLenum(param));
+    T().texEnv(target, pname, enumOf(param));
 }
 void APIENTRY tTexEnviv(GLenum target, GLenum pname, const GLint* params)
 {
@@ -182,7 +189,7 @@ void APIENTRY tTexEnviv(GLenum target, GLenum pname, const GLint* params)
 void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* params)
 {
     // GL_TEXTURE_ENV_COLOR is four floats; the mode is one.
-    if (params && pname == GL_TEXTURE_ENV_MODE) T().texEnv(target, pname, GLenum(params[0]));
+    if (params && pname == GL_TEXTURE_ENV_MODE) T().texEnv(target, pname, enumOf(params[0]));
 }
 void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsizei height, GLint,
                           GLenum format, GLenum type, const void* pixels)
@@ -828,7 +835,7 @@ void StateTracker::texGen(GLenum coord, GLenum pname, const double* values, size
     const uint32_t c = coord - GL_S;
     AttribState& a = mAttrib;
     if (pname == GL_TEXTURE_GEN_MODE && count == 1) {
-        const GLenum mode = GLenum(values[0]);
+        const GLenum mode = enumOf(values[0]);
         if (mode != GL_SPHERE_MAP && mode != GL_OBJECT_LINEAR && mode != GL_EYE_LINEAR &&
             mode != GL_NORMAL_MAP && mode != GL_REFLECTION_MAP) {
             return; // the driver refuses it (GL_INVALID_ENUM)
@@ -1084,7 +1091,7 @@ void StateTracker::fog(GLenum pname, const float* v, size_t count)
     AttribState& a = mAttrib;
     switch (pname) {
     case GL_FOG_MODE: {
-        const GLenum mode = GLenum(v[0]);
+        const GLenum mode = enumOf(v[0]);
         if (mode == GL_LINEAR || mode == GL_EXP || mode == GL_EXP2) a.fogMode = mode;
         break;
     }
@@ -1683,7 +1690,10 @@ bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
 
 void StateTracker::texEnv(GLenum target, GLenum pname, GLenum mode)
 {
-    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE && mActiveUnit < 8) {
+    // Another value is refused by the driver (GL_INVALID_ENUM), which keeps the mode it had.
+    const bool known = mode == GL_MODULATE || mode == GL_REPLACE || mode == GL_DECAL ||
+                       mode == GL_BLEND || mode == GL_ADD || mode == GL_COMBINE;
+    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE && mActiveUnit < 8 && known) {
         mAttrib.envMode[size_t(mActiveUnit)] = mode;
     }
 }

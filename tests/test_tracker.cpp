@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -779,6 +780,51 @@ TEST(StateTracker, TheDefaultTextureAndItsTextureMatrixReachTheBatch)
     EXPECT_EQ(batches[1].vertices[0].texcoord, glm::vec2(1.0f, 1.0f));
     EXPECT_EQ(batches[2].vertices[0].texcoord, glm::vec2(0.5f, 0.25f)) << "matrix not applied";
     EXPECT_EQ(batches[3].vertices[0].texcoord, glm::vec2(0.5f, 0.25f)) << "unit 1's applied";
+}
+
+// Modes given as floats that name no mode (a hostile capture's 1.6e29, NaN) are refused, as
+// the driver refuses them, and never converted out of range (undefined behaviour: the
+// sanitizer build fails on it; a fuzzed capture found it).
+TEST(StateTracker, FloatModesThatNameNoModeChangeNothing)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    const float hostile[] = {1.58459e29f, -3.0f, std::nanf("")};
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true);
+    feed.enable(GL_FOG, true);
+    feed.run([&](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLuint>(3);
+        w.op(op::glFogi);
+        w.put<GLenum>(GL_FOG_MODE);
+        w.put<GLint>(GL_LINEAR);
+        for (float f : hostile) {
+            w.op(op::glFogf);
+            w.put<GLenum>(GL_FOG_MODE);
+            w.put<float>(f);
+            w.op(op::glTexEnvf);
+            w.put<GLenum>(GL_TEXTURE_ENV);
+            w.put<GLenum>(GL_TEXTURE_ENV_MODE);
+            w.put<float>(f);
+            w.op(op::glTexGenf);
+            w.put<GLenum>(GL_S);
+            w.put<GLenum>(GL_TEXTURE_GEN_MODE);
+            w.put<float>(f);
+        }
+    });
+    // The texture environment is still GL_MODULATE: the surface's texture, held.
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    feed.enable(GL_TEXTURE_GEN_S, true);
+    feed.enable(GL_TEXTURE_GEN_T, true);
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].fogMode, GLenum(GL_LINEAR));
+    EXPECT_EQ(batches[0].generated.mode[0], GLenum(GL_EYE_LINEAR)); // GL's default, kept
 }
 
 TEST(StateTracker, FramesReuseTheirVertexStorage)
