@@ -872,6 +872,7 @@ styles::GeneratedTexture StateTracker::generatedTexture() const
     }
     g.texture = u == 0 ? (a.texture2D ? sceneTexture(mBoundTexture) : 0) : mUnitTextures[size_t(u)];
     if (g.texture == 0) return {};
+    g.matrix = mMatrices.texture(u);
     return g;
 }
 

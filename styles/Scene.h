@@ -43,6 +43,7 @@ struct GeneratedTexture {
     // Each coordinate's plane: in object space for GL_OBJECT_LINEAR, in eye space (as
     // glTexGen transformed it by the modelview of its call) for GL_EYE_LINEAR.
     glm::vec4 plane[2]{glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)};
+    glm::mat4 matrix{1.0f}; // the unit's texture matrix, which GL applies after generating
 };
 
 // One object the compositor held back: a welded mesh and the state it was drawn with.

@@ -562,9 +562,12 @@ TEST_P(GeneratedCoordinates, AreStyledWithoutTheirTextureUnlessAsked)
 INSTANTIATE_TEST_SUITE_P(Modes, GeneratedCoordinates,
                          ::testing::Values(std::vector<std::string>{"--sphere-map"},
                                            std::vector<std::string>{"--linear-map", "object"},
-                                           std::vector<std::string>{"--linear-map", "eye"}),
+                                           std::vector<std::string>{"--linear-map", "eye"},
+                                           std::vector<std::string>{"--linear-map", "object",
+                                                                    "--texgen-matrix"}),
                          [](const auto& p) {
-                             return p.param.size() == 1 ? std::string("SphereMap")
+                             return p.param.size() == 1   ? std::string("SphereMap")
+                                    : p.param.size() == 3 ? std::string("ByTheTextureMatrix")
                                     : p.param[1] == "object" ? std::string("ObjectLinear")
                                                              : std::string("EyeLinear");
                          });

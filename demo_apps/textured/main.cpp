@@ -144,6 +144,8 @@ public:
                  "object or eye: the sphere's stripes on GL_OBJECT_LINEAR planes (turning with "
                  "it) or GL_EYE_LINEAR planes (fixed in the world, the sphere turning under "
                  "them)"},
+                {"texgen-matrix", demo::ExtraOption::Kind::Flag,
+                 "with --linear-map: the texture matrix doubles S (twice the stripes across)"},
                 {"face-textures", demo::ExtraOption::Kind::Flag,
                  "each face of the cube has its own texture"},
                 {"translucent", demo::ExtraOption::Kind::Flag,
@@ -179,6 +181,7 @@ public:
             return false;
         }
         linearMap_ = linear == "object" ? GL_OBJECT_LINEAR : linear == "eye" ? GL_EYE_LINEAR : 0;
+        texgenMatrix_ = options.has("texgen-matrix");
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
         glowAlphaTest_ = options.has("glow-alpha-test");
@@ -346,6 +349,11 @@ public:
             glTexGenfv(GL_T, plane, t);
             glEnable(GL_TEXTURE_GEN_S);
             glEnable(GL_TEXTURE_GEN_T);
+            if (texgenMatrix_) {
+                glMatrixMode(GL_TEXTURE);
+                glScalef(2.0f, 1.0f, 1.0f);
+                glMatrixMode(GL_MODELVIEW);
+            }
         }
         if (translucent_) {
             const float glass[] = {1.0f, 1.0f, 1.0f, 0.6f};
@@ -371,6 +379,11 @@ public:
             glDisable(GL_ALPHA_TEST);
             glDepthMask(GL_TRUE);
         }
+        if (texgenMatrix_) {
+            glMatrixMode(GL_TEXTURE);
+            glLoadIdentity();
+            glMatrixMode(GL_MODELVIEW);
+        }
         // Off again: the next frame's floor and cube have their own coordinates.
         glDisable(GL_TEXTURE_GEN_S);
         glDisable(GL_TEXTURE_GEN_T);
@@ -392,6 +405,7 @@ private:
     GLuint faceTextures_[6] = {};
     bool sphereMap_ = false;
     GLenum linearMap_ = 0; // GL_OBJECT_LINEAR, GL_EYE_LINEAR or 0
+    bool texgenMatrix_ = false;
     bool translucent_ = false;
     bool additive_ = false;
     bool glowAlphaTest_ = false;

@@ -31,6 +31,7 @@ out vec3 eyePosition;
 uniform vec2 genMode;
 uniform vec4 genPlaneS;
 uniform vec4 genPlaneT;
+uniform mat4 genMatrix; // the unit's texture matrix, applied to generated coordinates
 float generated(float mode, vec4 plane, float own, float sphere, vec4 eye)
 {
     return mode < 0.5   ? own
@@ -49,6 +50,10 @@ void main()
     vec2 sphere = r.xy / max(2.0 * length(r + vec3(0.0, 0.0, 1.0)), 1e-6) + 0.5;
     uv = vec2(generated(genMode.x, genPlaneS, texcoord.x, sphere.x, eye),
               generated(genMode.y, genPlaneT, texcoord.y, sphere.y, eye));
+    if (genMode.x > 0.5) { // the program's own coordinates came moved already
+        vec4 moved = genMatrix * vec4(uv, 0.0, 1.0);
+        uv = moved.xy / (moved.w != 0.0 ? moved.w : 1.0);
+    }
     gl_Position = projection * eye;
 }
 )";
@@ -162,6 +167,7 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     genMode = gl.GetUniformLocation(program, "genMode");
     genPlaneS = gl.GetUniformLocation(program, "genPlaneS");
     genPlaneT = gl.GetUniformLocation(program, "genPlaneT");
+    genMatrix = gl.GetUniformLocation(program, "genMatrix");
 }
 
 bool ShadingCommon::buildProgram(const GlFunctions& gl, ShaderProgram& program,
@@ -216,6 +222,7 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform2f(genMode, code(g.mode[0]), code(g.mode[1]));
     gl.Uniform4fv(genPlaneS, 1, glm::value_ptr(g.plane[0]));
     gl.Uniform4fv(genPlaneT, 1, glm::value_ptr(g.plane[1]));
+    gl.UniformMatrix4fv(genMatrix, 1, GL_FALSE, glm::value_ptr(g.matrix));
     // Between the toon bands' thresholds (their base colour), halftone's light dots.
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     gl.Uniform1i(lightmapSampler, 3);

@@ -74,7 +74,7 @@ public:
         GLint fogMode = -1, fogRange = -1, fogColour = -1;
         GLint lightmapped = -1, lightmapSampler = -1, flatLight = -1;
         GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
-        GLint genMode = -1, genPlaneS = -1, genPlaneT = -1;
+        GLint genMode = -1, genPlaneS = -1, genPlaneT = -1, genMatrix = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object) const;
