@@ -344,6 +344,49 @@ INSTANTIATE_TEST_SUITE_P(Styles, FrontFaceAtFlush,
                                            "pencil", "coverage"),
                          [](const auto& p) { return std::string(p.param); });
 
+// Every shading style takes the reflections parameter: a sphere-mapped texture is
+// dropped without it (the picture is the untextured sphere's, pixel for pixel) and shown with
+// it (the checkerboard's reflection changes the sphere).
+class Reflections : public Shading, public ::testing::WithParamInterface<const char*> {
+protected:
+    PngImage reflecting(GLuint texture, bool shown)
+    {
+        auto mv = glm::translate(glm::mat4(1.0f), kCentre);
+        auto scene = harness.makeScene({sphereBatch(mv, kRadius, 48, 24, glm::vec4(0.9f))},
+                                       perspective(), kLight);
+        for (auto& o : scene.objects) {
+            o.generated.texture = texture;
+            o.generated.mode[0] = o.generated.mode[1] = GL_SPHERE_MAP;
+        }
+        const std::string style = GetParam();
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, style, style + ".reflections=" + (shown ? "1" : "0"),
+                                   image, error))
+            << error;
+        return image;
+    }
+};
+
+TEST_P(Reflections, ShowASphereMapOnlyWhenAsked)
+{
+    ASSERT_TRUE(harness.ok());
+    const GLuint checker = checkerTexture();
+    const PngImage plain = reflecting(0, true), dropped = reflecting(checker, false);
+    const PngImage shown = reflecting(checker, true);
+    size_t droppedDiffer = 0, shownDiffer = 0;
+    for (size_t i = 0; i < plain.rgba.size(); i += 4) {
+        droppedDiffer += std::memcmp(&plain.rgba[i], &dropped.rgba[i], 3) != 0;
+        shownDiffer += std::memcmp(&plain.rgba[i], &shown.rgba[i], 3) != 0;
+    }
+    EXPECT_EQ(droppedDiffer, 0u) << "the reflection was drawn without the parameter";
+    EXPECT_GT(shownDiffer, 500u) << "the parameter did not show the reflection";
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, Reflections,
+                         ::testing::Values("toon", "textured", "halftone", "gooch", "xtoon"),
+                         [](const auto& p) { return std::string(p.param); });
+
 TEST_F(Shading, TwoTonesGiveTwoColoursMatchingTheLight)
 {
     ASSERT_TRUE(harness.ok());

@@ -138,7 +138,6 @@ StyleInfo pencilStyleInfo()
                                   120, 0, 100000));
     p.push_back(ParamInfo::number("seed", "seed of the precomputed per-vertex jitter", 1, 0,
                                   1e6));
-    p.push_back(ShadingCommon::reflectionsParam());
     return info;
 }
 
@@ -185,7 +184,6 @@ bool PencilStyle::init(StyleContext& ctx, std::string& error)
     mGrain = float(ctx.param("paper", "grain"));
     mFill = param("fill") >= 0.5f;
     mOutlines = param("outlines") >= 0.5f;
-    mReflections = param("reflections") >= 0.5f;
     mLayers = std::clamp(int(std::lround(param("layers"))), 1, 3);
     mSpacing = param("spacing");
     mLineWidth = param("line_width");
@@ -250,7 +248,7 @@ void PencilStyle::drawSurfaces(const Scene& scene, StyleContext& ctx)
     gl.DepthMask(GL_FALSE);
     GLuint bound = 0;
     for (const SceneObject& listed : scene.objects) {
-        const SceneObject& object = ShadingCommon::withGenerated(listed, mReflections, mReflected);
+        const SceneObject& object = ShadingCommon::withGenerated(listed, false, mReflected);
         if (!object.mesh) continue;
         // Cut-outs and translucent surfaces are drawn where the program's texture and alpha
         // test let them be, blended by its alpha: a tree's quad is hatched as the tree.

@@ -52,8 +52,9 @@ private:
     glm::vec3 mPaper{1.0f}, mGraphite{0.2f};
     float mSpacing = 5.0f, mLineWidth = 1.0f, mAngle = 50.0f, mLight = 0.65f, mDark = -0.2f;
     float mColourTone = 0.5f, mPressure = 0.85f, mGrain = 0.12f;
-    bool mReflections = false; // generated textures shown (ShadingCommon::withGenerated)
-    SceneObject mReflected;    // an object with its generated texture as its own
+    // An object with its projected texture as its own (ShadingCommon::withGenerated): a
+    // decal's or cut-out's texture darkens its hatching.
+    SceneObject mReflected;
     int mLayers = 3;
     bool mFill = true, mOutlines = true;
 };
