@@ -416,13 +416,13 @@ void Compositor::tintBegin()
 {
     if (!mLeftNow) return;
     mLeftNow = false;
-    bool textured = false, sourceAlpha = false, material = false;
+    bool textured = false, sourceAlpha = false;
     if (!mTintLeft && mEnabled && mHasStyles && mChain.inksGlows() &&
-        mTracker.additiveGlow(textured, sourceAlpha, material)) {
+        mTracker.additiveGlow(textured, sourceAlpha)) {
         // On the chain's page a glow is drawn as ink of its colour (GlowInk); the attribute
         // stack gives the program's blending back, glowEnd its program binding (none).
         gRealGl.glPushAttrib(GL_COLOR_BUFFER_BIT);
-        mChain.glowBegin(textured, sourceAlpha, material, mTracker.fogMode());
+        mChain.glowBegin(textured, sourceAlpha, mTracker.fogMode());
         mGlowing = true;
         if (!mGlowSaid) {
             NPRGL_INFO("context %u: additive glows are drawn as ink of their colour on the page",

@@ -1058,7 +1058,7 @@ glm::vec3 StateTracker::litSideLight() const
     return top > 1e-6f ? all / top : glm::vec3(1.0f);
 }
 
-bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha, bool& materialColour) const
+bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha) const
 {
     const AttribState& a = mAttrib;
     if (!a.blend || a.blendDst != GL_ONE || (a.blendSrc != GL_ONE && a.blendSrc != GL_SRC_ALPHA) ||
@@ -1067,7 +1067,6 @@ bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha, bool& materia
     }
     textured = a.texture2D && sceneTexture(mBoundTexture) != 0;
     sourceAlpha = a.blendSrc == GL_SRC_ALPHA;
-    materialColour = a.lighting && !a.colorMaterial;
     return true;
 }
 

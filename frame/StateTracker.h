@@ -138,7 +138,7 @@ public:
     int lightmapUnit() const { return mAttrib.lighting ? -1 : lightUnit(); }
     // A draw issued now adds light (GL_ONE or GL_SRC_ALPHA onto GL_ONE) through the
     // fixed-function pipeline: a glow, a flare, a particle. With what it is drawn from.
-    bool additiveGlow(bool& textured, bool& sourceAlpha, bool& materialColour) const;
+    bool additiveGlow(bool& textured, bool& sourceAlpha) const;
     bool is3D() const;
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
     // The driver's attribute stack depths (GL_MAX_ATTRIB_STACK_DEPTH, ..._CLIENT_...).

@@ -31,15 +31,18 @@ bool ShaderProgram::build(const GlFunctions& gl, const char* vertexSource,
                           const char* secondColour)
 {
     destroy(gl);
-    GLuint vs = compile(gl, GL_VERTEX_SHADER, vertexSource, error);
-    if (!vs) return false;
+    GLuint vs = 0;
+    if (vertexSource) {
+        vs = compile(gl, GL_VERTEX_SHADER, vertexSource, error);
+        if (!vs) return false;
+    }
     GLuint fs = compile(gl, GL_FRAGMENT_SHADER, fragmentSource, error);
     if (!fs) {
-        gl.DeleteShader(vs);
+        if (vs) gl.DeleteShader(vs);
         return false;
     }
     GLuint program = gl.CreateProgram();
-    gl.AttachShader(program, vs);
+    if (vs) gl.AttachShader(program, vs);
     gl.AttachShader(program, fs);
     gl.BindAttribLocation(program, 0, "position");
     gl.BindAttribLocation(program, 1, "normal");
@@ -51,7 +54,7 @@ bool ShaderProgram::build(const GlFunctions& gl, const char* vertexSource,
         gl.BindFragDataLocationIndexed(program, 0, 1, secondColour);
     }
     gl.LinkProgram(program);
-    gl.DeleteShader(vs);
+    if (vs) gl.DeleteShader(vs);
     gl.DeleteShader(fs);
     GLint ok = GL_FALSE;
     gl.GetProgramiv(program, GL_LINK_STATUS, &ok);

@@ -14,7 +14,8 @@ public:
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;
 
-    // Compiles and links; on failure returns false with the driver's log in error.
+    // Compiles and links; on failure returns false with the driver's log in error. Without a
+    // vertex source (null) the fixed-function vertex stage feeds the fragment shader.
     // secondColour: the name of a second output blended as GL_SRC1_COLOR (dual-source
     // blending; the caller checked gl.BindFragDataLocationIndexed).
     bool build(const GlFunctions& gl, const char* vertexSource, const char* fragmentSource,

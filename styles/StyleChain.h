@@ -26,9 +26,9 @@ public:
     // The chain draws a page (a background style): additive glows of the program's would
     // wash out on it, so they are drawn as ink around their draws (GlowInk).
     bool inksGlows() const { return mGlowInkReady; }
-    void glowBegin(bool textured, bool sourceAlpha, bool materialColour, GLenum fogMode)
+    void glowBegin(bool textured, bool sourceAlpha, GLenum fogMode)
     {
-        mGlowInk.begin(mContext.gl, textured, sourceAlpha, materialColour, fogMode);
+        mGlowInk.begin(mContext.gl, textured, sourceAlpha, fogMode);
     }
     void glowEnd() { mGlowInk.end(mContext.gl); }
     StyleContext& context() { return mContext; }

@@ -340,8 +340,9 @@ namespace {
 
 // The program's own fixed-function drawing, as a glow (GlowInk): an orange quad over both
 // halves of a picture dark on the left and page-white on the right, in `fogMode` (0: no fog;
-// else the program's black fog, all of it at the quad's depth).
-PngImage glowOverDarkAndPage(StyleHarness& harness, GLenum fogMode)
+// else the program's black fog, all of it at the quad's depth). `lit`: its orange is the
+// program's lighting of an orange material set between glBegin and glEnd (blue before it).
+PngImage glowOverDarkAndPage(StyleHarness& harness, GLenum fogMode, bool lit = false)
 {
     styles::StyleChain chain;
     startChain(chain, "toon+paper", "paper.grain=0");
@@ -360,11 +361,25 @@ PngImage glowOverDarkAndPage(StyleHarness& harness, GLenum fogMode)
     using Color3f = void (*)(GLfloat, GLfloat, GLfloat);
     using NoArgs = void (*)();
     using Fogf = void (*)(GLenum, GLfloat);
+    using Parameters = void (*)(GLenum, GLenum, const GLfloat*);
     auto begin = reinterpret_cast<Begin>(getProc("glBegin"));
     auto vertex = reinterpret_cast<Vertex2f>(getProc("glVertex2f"));
     auto colour = reinterpret_cast<Color3f>(getProc("glColor3f"));
     auto end = reinterpret_cast<NoArgs>(getProc("glEnd"));
     auto fog = reinterpret_cast<Fogf>(getProc("glFogf"));
+    auto material = reinterpret_cast<Parameters>(getProc("glMaterialfv"));
+    auto light = reinterpret_cast<Parameters>(getProc("glLightfv"));
+    const GLfloat white[4] = {1, 1, 1, 1}, black[4] = {0, 0, 0, 1};
+    const GLfloat orange[4] = {1.0f, 0.5f, 0.0f, 1.0f}, blue[4] = {0.0f, 0.0f, 1.0f, 1.0f};
+    if (lit) {
+        // Ambient light only: the colour is the material's, whatever the normal.
+        light(GL_LIGHT0, GL_AMBIENT, white);
+        light(GL_LIGHT0, GL_DIFFUSE, black);
+        light(GL_LIGHT0, GL_SPECULAR, black);
+        material(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, blue);
+        gl.Enable(GL_LIGHTING);
+        gl.Enable(GL_LIGHT0);
+    }
     gl.Disable(GL_DEPTH_TEST);
     if (fogMode) {
         // Linear, ending before the quad (eye depth 0): the fog colour (black) everywhere.
@@ -373,9 +388,10 @@ PngImage glowOverDarkAndPage(StyleHarness& harness, GLenum fogMode)
         fog(GL_FOG_END, -1.0f);
         gl.Enable(GL_FOG);
     }
-    chain.glowBegin(false, false, false, fogMode);
+    chain.glowBegin(false, false, fogMode);
     colour(1.0f, 0.5f, 0.0f);
     begin(GL_QUADS);
+    if (lit) material(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, orange);
     vertex(-0.9f, -0.5f);
     vertex(0.9f, -0.5f);
     vertex(0.9f, 0.5f);
@@ -383,6 +399,7 @@ PngImage glowOverDarkAndPage(StyleHarness& harness, GLenum fogMode)
     end();
     chain.glowEnd();
     gl.Disable(GL_FOG);
+    gl.Disable(GL_LIGHTING);
     gl.Disable(GL_BLEND);
     const PngImage image = readBack(gl);
     chain.shutdown();
@@ -394,12 +411,14 @@ PngImage glowOverDarkAndPage(StyleHarness& harness, GLenum fogMode)
 // An additive glow (an orange flame, GL_ONE onto GL_ONE) around which the chain's glow ink is
 // on: over the light page it is orange ink, not white; over a dark surface of the scene it
 // still lights the surface up, as the program's addition would.
-TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
+class GlowInk : public ::testing::TestWithParam<bool> {};
+
+TEST_P(GlowInk, IsInkOnThePageAndLightOnDarkSurfaces)
 {
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
-    const PngImage image = glowOverDarkAndPage(harness, 0);
-    save(image, "glow");
+    const PngImage image = glowOverDarkAndPage(harness, 0, GetParam());
+    save(image, GetParam() ? "glow_lit" : "glow");
     // Left, over the dark surface: lit up orange (ink alone would leave it near black).
     const Rgb onDark = pixel(image, kSize / 4, kSize / 2);
     EXPECT_GT(onDark.r, 200) << onDark.r << " " << onDark.g << " " << onDark.b;
@@ -411,6 +430,12 @@ TEST(Paper, GlowsAreInkOnThePageAndLightOnDarkSurfaces)
     // Outside the quad both halves are as they were.
     EXPECT_EQ(pixel(image, kSize / 4, 5), (Rgb{26, 26, 26}));
 }
+
+// Lit: the colour is the program's lighting of its materials, also of those set between
+// glBegin and glEnd (gibson's floor took the material before its batch: the last glyph's red).
+INSTANTIATE_TEST_SUITE_P(Paper, GlowInk, ::testing::Bool(), [](const auto& p) {
+    return std::string(p.param ? "Lit" : "Coloured");
+});
 
 // A glow in the program's black fog adds nothing natively (gibson's glowing text far down
 // its floor): no ink on the page either, and nothing on the dark surface. The ink ignored the

@@ -8,27 +8,12 @@ namespace nprgl::styles {
 
 namespace {
 
-// The program's fixed-function attributes and matrices, as it set them (OUT: GLSL 1.20's
-// varying or 1.30's out).
-const char* kVertex = R"(
-OUT vec4 colour;
-OUT vec2 uv;
-OUT float fogDepth;
-uniform bool material;
-void main()
-{
-    gl_Position = ftransform();
-    colour = material ? gl_FrontMaterial.diffuse : gl_Color;
-    uv = (gl_TextureMatrix[0] * gl_MultiTexCoord0).xy;
-    fogDepth = abs((gl_ModelViewMatrix * gl_Vertex).z); // GL's fog coordinate
-}
-)";
-
 // What the program would add, and the ink standing for it on the page (IN: varying or in).
+// No vertex shader: the fixed-function vertex stage computes, from the program's own state,
+// the lit colour (every light, materials set per vertex), the texture coordinates (texgen,
+// texture matrix) and the fog coordinate, as for the program's draw. The fragment shader
+// then does what the fixed pipeline would: GL_MODULATE by unit 0's texture, the fog.
 const char* kFragmentCommon = R"(
-IN vec4 colour;
-IN vec2 uv;
-IN float fogDepth;
 uniform sampler2D tex;
 uniform bool textured;
 uniform bool sourceAlpha;
@@ -37,9 +22,10 @@ uniform int fogMode; // the program's: 0 none, 1 linear, 2 exp, 3 exp2 (gl_Fog h
 // fog with distance: they add nothing far away).
 vec4 fragment()
 {
-    vec4 c = textured ? colour * texture2D(tex, uv) : colour;
-    float d = gl_Fog.density * fogDepth;
-    float f = fogMode == 1   ? (gl_Fog.end - fogDepth) * gl_Fog.scale
+    vec4 c = textured ? gl_Color * texture2DProj(tex, gl_TexCoord[0]) : gl_Color;
+    float z = abs(gl_FogFragCoord);
+    float d = gl_Fog.density * z;
+    float f = fogMode == 1   ? (gl_Fog.end - z) * gl_Fog.scale
               : fogMode == 2 ? exp(-d)
               : fogMode == 3 ? exp(-d * d)
                              : 1.0;
@@ -79,25 +65,20 @@ void main()
 
 bool GlowInk::init(const GlFunctions& gl, std::string& error)
 {
-    const std::string v120 = std::string("#version 120\n#define OUT varying\n") + kVertex;
-    const std::string v130 = std::string("#version 130\n#define OUT out\n") + kVertex;
-    const std::string f120 =
-        std::string("#version 120\n#define IN varying\n") + kFragmentCommon + kInkMain;
-    const std::string f130 =
-        std::string("#version 130\n#define IN in\n") + kFragmentCommon + kDualMain;
+    const std::string f120 = std::string("#version 120\n") + kFragmentCommon + kInkMain;
+    const std::string f130 = std::string("#version 130\n") + kFragmentCommon + kDualMain;
     std::string dualError;
     mDual = gl.BindFragDataLocationIndexed &&
-            mProgram.build(gl, v130.c_str(), f130.c_str(), dualError, "inkColour");
+            mProgram.build(gl, nullptr, f130.c_str(), dualError, "inkColour");
     if (!mDual) {
         // Ink everywhere then: glows over the scene's dark parts darken instead of lighting.
         NPRGL_INFO("glow ink: %s; glows are ink everywhere, also over dark surfaces",
                    gl.BindFragDataLocationIndexed ? ("no dual-source program: " + dualError).c_str()
                                                   : "the driver has no dual-source blending");
-        if (!mProgram.build(gl, v120.c_str(), f120.c_str(), error)) return false;
+        if (!mProgram.build(gl, nullptr, f120.c_str(), error)) return false;
     }
     mTextured = mProgram.uniform(gl, "textured");
     mSourceAlpha = mProgram.uniform(gl, "sourceAlpha");
-    mMaterial = mProgram.uniform(gl, "material");
     mFogMode = mProgram.uniform(gl, "fogMode");
     gl.UseProgram(mProgram.id());
     gl.Uniform1i(mProgram.uniform(gl, "tex"), 0);
@@ -105,8 +86,7 @@ bool GlowInk::init(const GlFunctions& gl, std::string& error)
     return true;
 }
 
-void GlowInk::begin(const GlFunctions& gl, bool textured, bool sourceAlpha, bool materialColour,
-                    GLenum fogMode)
+void GlowInk::begin(const GlFunctions& gl, bool textured, bool sourceAlpha, GLenum fogMode)
 {
     gl.UseProgram(mProgram.id());
     gl.Uniform1i(mFogMode, fogMode == GL_LINEAR ? 1
@@ -115,7 +95,6 @@ void GlowInk::begin(const GlFunctions& gl, bool textured, bool sourceAlpha, bool
                                                 : 0);
     gl.Uniform1i(mTextured, textured ? 1 : 0);
     gl.Uniform1i(mSourceAlpha, sourceAlpha ? 1 : 0);
-    gl.Uniform1i(mMaterial, materialColour ? 1 : 0);
     gl.Enable(GL_BLEND);
     gl.BlendEquation(GL_FUNC_ADD);
     if (mDual) gl.BlendFuncSeparate(GL_ONE_MINUS_DST_COLOR, GL_SRC1_COLOR, GL_ZERO, GL_ONE);

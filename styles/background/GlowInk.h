@@ -13,22 +13,21 @@ namespace nprgl::styles {
 // orange flame becomes orange ink. Where the driver blends two source colours (GL 3.3's
 // dual-source blending), the pixel's own lightness weighs ink against addition, so over the
 // dark parts of a scene a glow still lights up; without it, ink everywhere. Fixed-function
-// draws only (it reads gl_Color, gl_MultiTexCoord0 and unit 0's texture as GL_MODULATE
-// would, and applies the program's fog).
+// draws only: the fixed-function vertex stage lights, texgens and fogs them as the program's
+// draw; the fragment shader modulates by unit 0's texture and applies the fog.
 class GlowInk {
 public:
     bool init(const GlFunctions& gl, std::string& error);
     // The caller has pushed GL_COLOR_BUFFER_BIT and checked that no program of the program's
     // is bound; end() unbinds ours.
     // fogMode: the program's (GL_LINEAR, GL_EXP, GL_EXP2), 0 when its fog is off.
-    void begin(const GlFunctions& gl, bool textured, bool sourceAlpha, bool materialColour,
-               GLenum fogMode);
+    void begin(const GlFunctions& gl, bool textured, bool sourceAlpha, GLenum fogMode);
     void end(const GlFunctions& gl);
     void shutdown(const GlFunctions& gl);
 
 private:
     ShaderProgram mProgram;
-    GLint mTextured = -1, mSourceAlpha = -1, mMaterial = -1, mFogMode = -1;
+    GLint mTextured = -1, mSourceAlpha = -1, mFogMode = -1;
     bool mDual = false; // dual-source blending: ink on light pixels, light on dark ones
 };
 
