@@ -72,7 +72,8 @@ struct AttribState {
     {
         std::array<glm::vec4, 16> p;
         for (size_t i = 0; i < p.size(); ++i) {
-            p[i] = i % 2 == 0 ? glm::vec4(1.0f, 0.0f, 0.0f, 0.0f) : glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+            p[i] = i % 2 == 0 ? glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)
+                              : glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
         }
         return p;
     }

@@ -1,6 +1,7 @@
 #include "styles/background/GlowInk.h"
 
 #include "common/Log.h"
+#include "styles/shading/ShadingCommon.h"
 
 #include <string>
 
@@ -8,28 +9,25 @@ namespace nprgl::styles {
 
 namespace {
 
-// What the program would add, and the ink standing for it on the page (IN: varying or in).
+// What the program would add, and the ink standing for it on the page.
 // No vertex shader: the fixed-function vertex stage computes, from the program's own state,
 // the lit colour (every light, materials set per vertex), the texture coordinates (texgen,
 // texture matrix) and the fog coordinate, as for the program's draw. The fragment shader
 // then does what the fixed pipeline would: GL_MODULATE by unit 0's texture, the fog.
+// (After ShadingCommon::fogFactorFunction().)
 const char* kFragmentCommon = R"(
 uniform sampler2D tex;
 uniform bool textured;
 uniform bool sourceAlpha;
-uniform int fogMode; // the program's: 0 none, 1 linear, 2 exp, 3 exp2 (gl_Fog has the rest)
+uniform float fogMode; // the program's, as ShadingCommon::fogModeCode (gl_Fog has the rest)
 // The program's fragment: its colour, texture and fog (additive effects fade into a black
 // fog with distance: they add nothing far away).
 vec4 fragment()
 {
     vec4 c = textured ? gl_Color * texture2DProj(tex, gl_TexCoord[0]) : gl_Color;
-    float z = abs(gl_FogFragCoord);
-    float d = gl_Fog.density * z;
-    float f = fogMode == 1   ? (gl_Fog.end - z) * gl_Fog.scale
-              : fogMode == 2 ? exp(-d)
-              : fogMode == 3 ? exp(-d * d)
-                             : 1.0;
-    return vec4(mix(gl_Fog.color.rgb, c.rgb, clamp(f, 0.0, 1.0)), c.a);
+    vec3 range = vec3(gl_Fog.start, gl_Fog.end, gl_Fog.density);
+    float f = fogFactor(fogMode, abs(gl_FogFragCoord), range);
+    return vec4(mix(gl_Fog.color.rgb, c.rgb, f), c.a);
 }
 vec3 added()
 {
@@ -65,8 +63,9 @@ void main()
 
 bool GlowInk::init(const GlFunctions& gl, std::string& error)
 {
-    const std::string f120 = std::string("#version 120\n") + kFragmentCommon + kInkMain;
-    const std::string f130 = std::string("#version 130\n") + kFragmentCommon + kDualMain;
+    const std::string common = std::string(ShadingCommon::fogFactorFunction()) + kFragmentCommon;
+    const std::string f120 = "#version 120\n" + common + kInkMain;
+    const std::string f130 = "#version 130\n" + common + kDualMain;
     std::string dualError;
     mDual = gl.BindFragDataLocationIndexed &&
             mProgram.build(gl, nullptr, f130.c_str(), dualError, "inkColour");
@@ -89,10 +88,7 @@ bool GlowInk::init(const GlFunctions& gl, std::string& error)
 void GlowInk::begin(const GlFunctions& gl, bool textured, bool sourceAlpha, GLenum fogMode)
 {
     gl.UseProgram(mProgram.id());
-    gl.Uniform1i(mFogMode, fogMode == GL_LINEAR ? 1
-                           : fogMode == GL_EXP  ? 2
-                           : fogMode == GL_EXP2 ? 3
-                                                : 0);
+    gl.Uniform1f(mFogMode, ShadingCommon::fogModeCode(fogMode));
     gl.Uniform1i(mTextured, textured ? 1 : 0);
     gl.Uniform1i(mSourceAlpha, sourceAlpha ? 1 : 0);
     gl.Enable(GL_BLEND);

@@ -124,27 +124,38 @@ float litDot(vec3 n, vec3 towardsLight)
 )";
 }
 
-const char* ShadingCommon::fogFunction()
+const char* ShadingCommon::fogFactorFunction()
 {
     return R"(
-uniform float fogMode;  // 0 none, 1 linear, 2 exp, 3 exp2
+float fogFactor(float mode, float z, vec3 range)
+{
+    float d = range.z * z;
+    float f = mode < 0.5   ? 1.0
+              : mode < 1.5 ? (range.y - z) / max(range.y - range.x, 1e-6)
+              : mode < 2.5 ? exp(-d)
+                           : exp(-d * d);
+    return clamp(f, 0.0, 1.0);
+}
+)";
+}
+
+std::string ShadingCommon::fogFunction()
+{
+    return std::string(fogFactorFunction()) + R"(
+uniform float fogMode;  // fogModeCode()
 uniform vec3 fogRange;  // start, end, density
 uniform vec3 fogColour;
 vec3 programFog(vec3 colour, vec3 eyePosition)
 {
-    if (fogMode < 0.5) return colour;
-    float z = abs(eyePosition.z); // GL's fog coordinate: the eye-space depth
-    float f;
-    if (fogMode < 1.5) {
-        f = (fogRange.y - z) / max(fogRange.y - fogRange.x, 1e-6);
-    } else if (fogMode < 2.5) {
-        f = exp(-fogRange.z * z);
-    } else {
-        f = exp(-(fogRange.z * z) * (fogRange.z * z));
-    }
-    return mix(fogColour, colour, clamp(f, 0.0, 1.0));
+    // GL's fog coordinate: the eye-space depth.
+    return mix(fogColour, colour, fogFactor(fogMode, abs(eyePosition.z), fogRange));
 }
 )";
+}
+
+float ShadingCommon::fogModeCode(GLenum mode)
+{
+    return mode == GL_LINEAR ? 1.0f : mode == GL_EXP ? 2.0f : mode == GL_EXP2 ? 3.0f : 0.0f;
 }
 
 void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
@@ -229,11 +240,7 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform1f(lightmapped, 0.0f); // drawTextured says where a lightmap is bound
     if (fogMode >= 0) {
         const SceneObject::Fog& f = object.fog;
-        const float mode = f.mode == GL_LINEAR ? 1.0f
-                           : f.mode == GL_EXP  ? 2.0f
-                           : f.mode == GL_EXP2 ? 3.0f
-                                               : 0.0f;
-        gl.Uniform1f(fogMode, mode);
+        gl.Uniform1f(fogMode, fogModeCode(f.mode));
         gl.Uniform3f(fogRange, f.start, f.end, f.density);
         gl.Uniform3fv(fogColour, 1, glm::value_ptr(f.colour));
     }

@@ -67,7 +67,12 @@ public:
     }
     // GLSL helper for fragment shaders: `vec3 programFog(vec3 colour, vec3 eyePosition)`, the
     // program's fog (SceneObject::fog) over a styled colour. Declare `in vec3 eyePosition`.
-    static const char* fogFunction();
+    static std::string fogFunction();
+    // GLSL helper: `float fogFactor(float mode, float z, vec3 range)`, GL's fog factor at eye
+    // distance z for fogModeCode(mode) and range (start, end, density), clamped to 0..1.
+    static const char* fogFactorFunction();
+    // GL_LINEAR, GL_EXP, GL_EXP2 as 1, 2, 3 for fogFactor(); 0 (no fog) for anything else.
+    static float fogModeCode(GLenum mode);
     // The per-object uniforms of vertexShader(), plus the fragment shaders' lightDir and fog.
     struct ObjectUniforms {
         GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
