@@ -215,6 +215,19 @@ TEST(StateTracker, NothingIsHeldWhileTheAttributeStacksHaveNoRoomForTheStyles)
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES));
 }
 
+// A call of two enums and a vector of values (glMaterialfv, glLightfv, glTexGenfv), written
+// as the recorder writes it: one payload.
+static void vectorCall(CallWriter& w, uint16_t opcode, GLenum a, GLenum b, const void* v,
+                       size_t bytes)
+{
+    w.op(opcode);
+    const size_t mark = w.beginPayload();
+    w.put<GLenum>(a);
+    w.put<GLenum>(b);
+    w.putBytes(v, bytes);
+    w.endPayload(mark);
+}
+
 // Feeds a tracker calls written on the spot: the state tests' building blocks.
 struct Feed {
     StateTracker& tracker;
@@ -257,12 +270,7 @@ TEST(StateTracker, MaterialsInsideABatchColourTheirOwnVertices)
     tracker.setHolding(true);
     Feed feed{tracker};
     auto material = [](CallWriter& w, glm::vec4 c) {
-        w.op(op::glMaterialfv);
-        const size_t mark = w.beginPayload();
-        w.put<GLenum>(GL_FRONT);
-        w.put<GLenum>(GL_AMBIENT_AND_DIFFUSE);
-        w.putBytes(&c, sizeof c);
-        w.endPayload(mark);
+        vectorCall(w, op::glMaterialfv, GL_FRONT, GL_AMBIENT_AND_DIFFUSE, &c, sizeof c);
     };
     const glm::vec4 red(1, 0, 0, 1), green(0, 1, 0, 1), blue(0, 0, 1, 1);
     // Blue before glBegin; red for the first triangle, green for the second.
@@ -326,14 +334,7 @@ TEST(StateTracker, GeneratedCoordinatesKeepTheirModesAndPlanes)
         });
     };
     auto plane = [&](GLenum coord, GLenum pname, glm::vec4 p) {
-        run([&](CallWriter& w) {
-            w.op(op::glTexGenfv);
-            const size_t mark = w.beginPayload();
-            w.put<GLenum>(coord);
-            w.put<GLenum>(pname);
-            w.putBytes(&p, sizeof p);
-            w.endPayload(mark);
-        });
+        run([&](CallWriter& w) { vectorCall(w, op::glTexGenfv, coord, pname, &p, sizeof p); });
     };
     auto translate = [&](float z) {
         run([&](CallWriter& w) {
@@ -591,14 +592,7 @@ TEST(StateTracker, TheBrightestEnabledLightAndTheLightsColoursReachTheBatch)
     auto run = [&](auto&& write) { feed.run(write); };
     auto enable = [&](GLenum cap, bool on) { feed.enable(cap, on); };
     auto lightfv = [&](GLenum light, GLenum pname, std::array<float, 4> v) {
-        run([&](CallWriter& w) {
-            w.op(op::glLightfv);
-            const size_t mark = w.beginPayload();
-            w.put<GLenum>(light);
-            w.put<GLenum>(pname);
-            w.putBytes(v.data(), sizeof(float) * v.size());
-            w.endPayload(mark);
-        });
+        run([&](CallWriter& w) { vectorCall(w, op::glLightfv, light, pname, v.data(), sizeof v); });
     };
     auto triangle = [&] { feed.triangle(); };
     enable(GL_DEPTH_TEST, true);
@@ -679,14 +673,8 @@ TEST(StateTracker, LightsPassingOneInEveryChannelLightWhite)
     tracker.setHolding(true);
     Feed feed{tracker};
     auto lightfv = [&](GLenum light, GLenum pname, std::array<float, 4> v) {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glLightfv);
-            const size_t mark = w.beginPayload();
-            w.put<GLenum>(light);
-            w.put<GLenum>(pname);
-            w.putBytes(v.data(), sizeof v);
-            w.endPayload(mark);
-        });
+        feed.run(
+            [&](CallWriter& w) { vectorCall(w, op::glLightfv, light, pname, v.data(), sizeof v); });
     };
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_LIGHTING, true);
