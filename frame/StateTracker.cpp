@@ -870,7 +870,7 @@ styles::GeneratedTexture StateTracker::generatedTexture() const
         g.plane[c] = mode == GL_OBJECT_LINEAR ? a.objectPlane[size_t(2 * u + c)]
                                               : a.eyePlane[size_t(2 * u + c)];
     }
-    g.texture = u == 0 ? (a.texture2D ? sceneTexture(mBoundTexture) : 0) : mUnitTextures[size_t(u)];
+    g.texture = unitTexture(u);
     if (g.texture == 0) return {};
     g.matrix = mMatrices.texture(u);
     return g;
@@ -883,8 +883,13 @@ GLuint StateTracker::detailTexture() const
     const AttribState& a = mAttrib;
     const int u = surfaceUnit();
     if (u < 0 || ((a.texGen >> (4 * u)) & 0xFu) != 0) return 0;
-    if (u == 0) return a.texture2D ? sceneTexture(mBoundTexture) : 0;
-    return mUnitTextures[size_t(u)];
+    return unitTexture(u);
+}
+
+GLuint StateTracker::unitTexture(int unit) const
+{
+    if (unit == 0) return mAttrib.texture2D ? sceneTexture(mBoundTexture) : 0;
+    return sceneTexture(mUnitTextures[size_t(unit)]);
 }
 
 void StateTracker::applyTextureMatrices(TrackedBatch& batch) const
@@ -909,8 +914,8 @@ void StateTracker::applyTextureMatrices(TrackedBatch& batch) const
 
 GLuint StateTracker::sceneTexture(GLuint name) const
 {
-    // Unit 0's default texture, once it has an image (enabled without one, GL draws
-    // untextured: so do the styles).
+    // The default texture, once it has an image (enabled without one, GL draws untextured:
+    // so do the styles). GL has one default 2D texture, whichever unit binds it.
     return name == 0 && mDefaultImage ? styles::kDefaultTexture : name;
 }
 
@@ -1428,7 +1433,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.texture = detailTexture();
     if (batch.texture == 0) batch.generated = generatedTexture();
     // Without GL lighting a lightmap is the surface's light (the styles' L·n).
-    batch.lightmap = mLightUnit >= 0 && !a.lighting ? mUnitTextures[size_t(mLightUnit)] : 0;
+    batch.lightmap = mLightUnit >= 0 && !a.lighting ? unitTexture(mLightUnit) : 0;
     // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
     // drawing (neverball does), and such surfaces are opaque ones (with outlines).
     const bool blends = translucent();
@@ -1705,7 +1710,7 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
         return;
     }
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
-    if (texture == 0 && mActiveUnit == 0) mDefaultImage = width > 0 && height > 0;
+    if (texture == 0) mDefaultImage = width > 0 && height > 0;
     mOpaqueTextures.erase(texture);
     mFilledLater.erase(texture);
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.

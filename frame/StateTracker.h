@@ -361,8 +361,10 @@ private:
     // coordinates.
     GLuint detailTexture() const;
     void applyTextureMatrices(TrackedBatch& batch) const;
-    // A bound name as the scene takes it: unit 0's default texture as styles::kDefaultTexture.
+    // A bound name as the scene takes it: the default texture as styles::kDefaultTexture.
     GLuint sceneTexture(GLuint name) const;
+    // The 2D texture a unit applies, as the scene takes it (unit 0's only while enabled).
+    GLuint unitTexture(int unit) const;
     styles::GeneratedTexture generatedTexture() const;
     void noteListArrays();
     bool runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error);
@@ -400,7 +402,7 @@ private:
     int mLightUnit = -1;  // mCurrent.lightcoord is this unit's (-1: no lightmap)
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
-    bool mDefaultImage = false;       // unit 0's texture object 0 has a level 0 image
+    bool mDefaultImage = false;       // texture object 0 (2D) has a level 0 image
     std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
     LeaveRules mRules;
     size_t mImageBytes = 0; // of the call being decoded

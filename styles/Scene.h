@@ -27,9 +27,9 @@ struct SceneLights {
     Light lights[8];
 };
 
-// The texture object 0 of unit 0 (GL's default texture), where a program that never names
-// its textures (glTexImage2D with none bound) keeps its image: in the scene by this name,
-// since 0 there means no texture. textureName() gives the name to bind.
+// Texture object 0 (GL's default 2D texture, one for all units), where a program that never
+// names its textures (glTexImage2D with none bound) keeps its image: in the scene by this
+// name, since 0 there means no texture. textureName() gives the name to bind.
 constexpr GLuint kDefaultTexture = ~0u;
 inline GLuint textureName(GLuint texture) { return texture == kDefaultTexture ? 0 : texture; }
 

@@ -770,6 +770,46 @@ TEST(StateTracker, TheDefaultTextureAndItsTextureMatrixReachTheBatch)
     EXPECT_EQ(batches[3].vertices[0].texcoord, glm::vec2(0.5f, 0.25f)) << "unit 1's applied";
 }
 
+// GL has one default 2D texture for all units (Mesa draws unit 0 with the image given to
+// unit 1's texture 0): an image uploaded with texture 0 bound on another unit is the default
+// texture of unit 0 too.
+TEST(StateTracker, TheDefaultTextureIsOneForAllUnits)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.run([](CallWriter& w) {
+        w.op(op::glActiveTexture);
+        w.put<GLenum>(GL_TEXTURE1);
+        const uint8_t pixel[4] = {255, 0, 0, 255};
+        w.op(op::glTexImage2D);
+        const size_t mark = w.beginPayload();
+        for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 1, 1, 0}) w.put<GLint>(v);
+        w.put<GLenum>(GL_RGBA);
+        w.put<GLenum>(GL_UNSIGNED_BYTE);
+        w.put<uint8_t>(1);
+        w.putBytes(pixel, sizeof pixel);
+        w.endPayload(mark);
+        w.op(op::glActiveTexture);
+        w.put<GLenum>(GL_TEXTURE0);
+    });
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true);
+    feed.run([](CallWriter& w) {
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        for (float x : {0.0f, 1.0f, 0.0f}) {
+            w.op(op::glVertex3f);
+            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+    });
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, styles::kDefaultTexture) << "unit 1's image not the default";
+}
+
 // Modes given as floats that name no mode (a hostile capture's 1.6e29, NaN) are refused, as
 // the driver refuses them, and never converted out of range (undefined behaviour: the
 // sanitizer build fails on it; a fuzzed capture found it).

@@ -337,7 +337,7 @@ void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
         gl.Uniform1f(u.lightmapped, lightmap != 0 ? 1.0f : 0.0f);
         if (lightmap == 0) return;
         gl.ActiveTexture(GL_TEXTURE3);
-        gl.BindTexture(GL_TEXTURE_2D, lightmap);
+        gl.BindTexture(GL_TEXTURE_2D, textureName(lightmap));
         gl.ActiveTexture(GL_TEXTURE0);
     };
     if (object.textureRuns.empty()) {
