@@ -412,13 +412,29 @@ void Compositor::setEnabled(bool enabled)
     NPRGL_INFO("context %u: styling %s", mContext.serial(), enabled ? "on" : "off");
 }
 
-void Compositor::tintBegin()
+void Compositor::tintBegin(GLuint list)
 {
     if (!mLeftNow) return;
     mLeftNow = false;
     bool textured = false, sourceAlpha = false;
     if (!mTintLeft && mEnabled && mHasStyles && mChain.inksGlows() &&
         mTracker.additiveGlow(textured, sourceAlpha)) {
+        if (list) {
+            // The ink's texturing is set once for the call, and a list may switch it
+            // (gibson's towers: untextured faces, then textured glyphs, in lists of their own).
+            const StateTracker::ListTexturing drawn = mTracker.listTexturing(list);
+            if (drawn.textured + drawn.untextured > 0) textured = drawn.textured > 0;
+            if (drawn.textured > 0 && drawn.untextured > 0) {
+                textured = drawn.textured >= drawn.untextured;
+                if (!mMixedGlowSaid) {
+                    NPRGL_INFO("context %u: a glowing display list draws both with and without "
+                               "its texture; its ink takes the texture of most of its vertices "
+                               "(%s)",
+                               mContext.serial(), textured ? "textured" : "untextured");
+                    mMixedGlowSaid = true;
+                }
+            }
+        }
         // On the chain's page a glow is drawn as ink of its colour (GlowInk); the attribute
         // stack gives the program's blending back, glowEnd its program binding (none).
         gRealGl.glPushAttrib(GL_COLOR_BUFFER_BIT);
@@ -465,9 +481,11 @@ void Compositor::noteLeft(const char* why)
 {
     // Say once per reason why 3D polygons are left as the program draws them: the picture
     // is then partly the program's own, and the user should know why.
-    if (!why || !mTracker.is3D()) return;
-    // The coverage style paints it red, unless the attribute stack has no room to do so.
-    mLeftNow = std::strcmp(why, "a full attribute stack") != 0;
+    // Compiled only (GL_COMPILE), nothing is drawn now: the list's calls count.
+    if (!why || !mTracker.is3D() || !mTracker.executing()) return;
+    // The coverage style paints it red, unless the attribute stack has no room to do so. Not
+    // while a list compiles: the tint's own commands would be compiled into it.
+    mLeftNow = std::strcmp(why, "a full attribute stack") != 0 && !mTracker.compiling();
     mFrameCounts.noteLeft(why);
     if (!mRunCounts.noteLeft(why)) return;
     NPRGL_INFO("context %u: 3D polygons drawn with %s are left as the program draws them",
@@ -568,7 +586,7 @@ void Compositor::callList(GLuint list)
             gRealGl.glCallList(list);
             unmask();
         } else if (settled == Settled::Draw) {
-            tintBegin();
+            tintBegin(list);
             gRealGl.glCallList(list); // recorded already
             tintEnd();
         }
@@ -576,7 +594,7 @@ void Compositor::callList(GLuint list)
     }
     const bool masked = placed == Placement::Held && mShading;
     if (masked) mask();
-    else tintBegin();
+    else tintBegin(list);
     mNext.glCallList(list);
     if (masked) unmask();
     else tintEnd();
@@ -735,7 +753,10 @@ GLint Compositor::renderMode(GLenum mode)
 
 void Compositor::flush()
 {
-    if (mInFlush || mHoldingBegin) return;
+    // While the program compiles a display list, every command the styles issued would be
+    // compiled into it (and, with GL_COMPILE, not drawn): what is held waits for the next
+    // barrier after glEndList.
+    if (mInFlush || mHoldingBegin || mTracker.compiling()) return;
     syncStream();
     if (!mHeld) {
         // Off or without styles nothing is held, and what the tracker kept is nobody's: it

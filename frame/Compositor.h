@@ -107,8 +107,9 @@ public:
     void barrier();
     // A clear of the colour buffer (colour) or of others: a barrier, counted.
     void clear(bool colour);
-    // Around a draw left as the program draws it: with the coverage style, paints it red.
-    void tintBegin();
+    // Around a draw left as the program draws it: with the coverage style, paints it red;
+    // on a page, a glow is drawn as ink. list: the display list the draw calls, if any.
+    void tintBegin(GLuint list = 0);
     void tintEnd();
     GLenum getError();
     GLint renderMode(GLenum mode);
@@ -156,6 +157,7 @@ private:
     bool mTinting = false;
     bool mGlowing = false; // a left glow is being drawn as ink on the chain's page
     bool mGlowSaid = false;
+    bool mMixedGlowSaid = false;
     uint32_t mLayersSaid = 0;    // texture units whose dropped layers were said
     uint32_t mLightmapsSaid = 0; // texture units whose lightmaps were said
     GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only

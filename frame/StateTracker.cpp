@@ -1075,6 +1075,62 @@ bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha) const
     return true;
 }
 
+StateTracker::ListTexturing StateTracker::listTexturing(GLuint list) const
+{
+    struct Unit0 {
+        bool enabled;
+        GLuint bound;
+    };
+    struct Walk {
+        const StateTracker& t;
+        ListTexturing out;
+        Unit0 now;
+        int unit;
+        std::vector<Unit0> saved; // glPushAttrib inside the lists
+        size_t work = 0;
+        void run(GLuint id, int depth)
+        {
+            auto it = t.mLists.find(id);
+            if (it == t.mLists.end() || depth >= 64) return;
+            for (const ListItem& item : it->second.items) {
+                if (++work > kListWorkLimit) return;
+                if (item.batch >= 0) {
+                    const size_t n = it->second.batches[size_t(item.batch)].vertices.size();
+                    const bool on = now.enabled && t.sceneTexture(now.bound) != 0;
+                    (on ? out.textured : out.untextured) += n;
+                    continue;
+                }
+                CallReader r(item.call.data(), item.call.size(), t.mBlobs, t.mOpcodes);
+                const uint16_t opcode = r.opcode();
+                if (opcode == op::glEnable || opcode == op::glDisable) {
+                    const GLenum cap = r.get<GLenum>();
+                    if (r.ok() && cap == GL_TEXTURE_2D && unit == 0) {
+                        now.enabled = opcode == op::glEnable;
+                    }
+                } else if (opcode == op::glBindTexture) {
+                    const GLenum target = r.get<GLenum>();
+                    const GLuint texture = r.get<GLuint>();
+                    if (r.ok() && target == GL_TEXTURE_2D && unit == 0) now.bound = texture;
+                } else if (opcode == op::glActiveTexture) {
+                    const GLenum u = r.get<GLenum>();
+                    if (r.ok()) unit = int(u) - int(GL_TEXTURE0);
+                } else if (opcode == op::glPushAttrib) {
+                    saved.push_back(now);
+                } else if (opcode == op::glPopAttrib && !saved.empty()) {
+                    now = saved.back();
+                    saved.pop_back();
+                } else if (opcode == op::glCallList) {
+                    const GLuint inner = r.get<GLuint>();
+                    if (r.ok()) run(inner, depth + 1);
+                }
+            }
+        }
+    };
+    Walk walk{*this, {}, {mAttrib.texture2D, mBoundTexture}, mActiveUnit, {}};
+    walk.run(list, 0);
+    return walk.out;
+}
+
 bool StateTracker::translucent() const
 {
     // Blending over what is behind by the fragment's alpha: a translucent surface, which the

@@ -139,6 +139,14 @@ public:
     // A draw issued now adds light (GL_ONE or GL_SRC_ALPHA onto GL_ONE) through the
     // fixed-function pipeline: a glow, a flare, a particle. With what it is drawn from.
     bool additiveGlow(bool& textured, bool& sourceAlpha) const;
+    // How many vertices a display list called now draws with unit 0's texture on and off:
+    // its own glEnable/glDisable(GL_TEXTURE_2D) and glBindTexture calls (and those of the
+    // lists it calls) decide, from the state at the call. For what must take one setting
+    // for the whole call (the glow ink's).
+    struct ListTexturing {
+        size_t textured = 0, untextured = 0;
+    };
+    ListTexturing listTexturing(GLuint list) const;
     bool is3D() const;
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
     // The driver's attribute stack depths (GL_MAX_ATTRIB_STACK_DEPTH, ..._CLIENT_...).
@@ -253,6 +261,7 @@ public:
     void arrayElement(GLint i);
     void rect(float x1, float y1, float x2, float y2);
     bool executing() const { return !mCompiling || mCompileAndExecute; }
+    bool compiling() const { return mCompiling; }
     void light(GLenum light, GLenum pname, const float* v);
     void lightModel(GLenum pname, const float* v);
     void blendFunc(GLenum src, GLenum dst);

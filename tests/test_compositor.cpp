@@ -734,6 +734,39 @@ INSTANTIATE_TEST_SUITE_P(Compositor, AdditiveGlows, ::testing::Bool(),
                              return std::string(p.param ? "AlphaTested" : "Plain");
                          });
 
+// A glow drawn from a display list that turns texturing off inside it (gibson's towers: their
+// faces plain, their glyphs textured, each in lists of their own) is inked in its own plain
+// colour. The ink's texturing is set once a call, from the state before the list, and sampled
+// the texture still bound there: the blue sphere came out in the orange and white stripes of
+// that texture, and on a dark floor as black. And nothing of nprgl's own is compiled into a
+// list the program compiles (the ink's set-up was, with every strip of the sphere).
+TEST(Compositor, AGlowListTurningItsTextureOffIsInkedPlain)
+{
+    const std::string dir = freshDir("glowlist");
+    ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"},
+                                       {demo("textured"), "--additive", "--glow-list-plain",
+                                        "--offscreen", "--size", "320x240", "--frames", "3",
+                                        "--save-frames", "3", "--save-dir", dir}));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_NE(r.err.find("drawn as ink"), std::string::npos) << r.err;
+    // Compiled in frame 1 under the glow's state: nprgl's ink set-up was compiled into the
+    // program's list with its 24 strips (each counted as a draw left, though GL_COMPILE draws
+    // nothing). Now one call a frame, the strips inside it as the list's.
+    EXPECT_NE(r.err.find("3D polygon draws: 6 styled, 3 left"), std::string::npos) << r.err;
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+    int blue = 0, all = 0;
+    for (int y = 115; y < 140; ++y) {
+        for (int x = 195; x < 220; ++x) {
+            const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+            blue += p[2] > p[0] + 60 && p[2] > p[1] + 40;
+            ++all;
+        }
+    }
+    EXPECT_GT(blue, all * 9 / 10) << blue << " of " << all << " pixels in the glow's blue";
+}
+
 // A scene drawn again under a scissor after a scissored clear (a rear-view mirror, a 3D pane
 // in a tool's window): the styled redraw stays inside the scissor box, so everything outside
 // it is the picture without the inset, and the page is laid again where the program cleared

@@ -155,6 +155,10 @@ public:
                 {"glow-alpha-test", demo::ExtraOption::Kind::Flag,
                  "with --additive: the alpha test on (GL_GREATER 0.01), as glowing text keeps "
                  "its glyphs' shape"},
+                {"glow-list-plain", demo::ExtraOption::Kind::Flag,
+                 "with --additive: the sphere is a display list that turns texturing (and "
+                 "lighting) off inside it and glows plain blue, as glowing parts of a scene "
+                 "compiled with their own state do"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
@@ -185,6 +189,7 @@ public:
         translucent_ = options.has("translucent");
         additive_ = options.has("additive");
         glowAlphaTest_ = options.has("glow-alpha-test");
+        glowListPlain_ = options.has("glow-list-plain");
         depthPrepass_ = options.has("depth-prepass");
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
@@ -371,7 +376,23 @@ public:
                 glAlphaFunc(GL_GREATER, 0.01f);
             }
         }
-        demo::drawSphere(0.95f, 24, 32, 2.0f);
+        if (additive_ && glowListPlain_) {
+            if (!glowList_) {
+                glowList_ = glGenLists(1);
+                glNewList(glowList_, GL_COMPILE);
+                glDisable(GL_TEXTURE_2D);
+                glDisable(GL_LIGHTING);
+                glColor3f(0.2f, 0.3f, 1.0f);
+                demo::drawSphere(0.95f, 24, 32, 2.0f);
+                glColor3f(1.0f, 1.0f, 1.0f);
+                glEnable(GL_LIGHTING);
+                glEnable(GL_TEXTURE_2D);
+                glEndList();
+            }
+            glCallList(glowList_);
+        } else {
+            demo::drawSphere(0.95f, 24, 32, 2.0f);
+        }
         if (translucent_ || additive_) {
             const float opaque[] = {1.0f, 1.0f, 1.0f, 1.0f};
             glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, opaque);
@@ -396,6 +417,7 @@ public:
         glDeleteTextures(3, textures);
         if (faceTextures_[0]) glDeleteTextures(6, faceTextures_);
         if (cutoutTexture_) glDeleteTextures(1, &cutoutTexture_);
+        if (glowList_) glDeleteLists(glowList_, 1);
     }
 
 private:
@@ -409,6 +431,8 @@ private:
     bool translucent_ = false;
     bool additive_ = false;
     bool glowAlphaTest_ = false;
+    bool glowListPlain_ = false;
+    GLuint glowList_ = 0;
     bool depthPrepass_ = false;
     bool decal_ = false;
     bool inset_ = false;
