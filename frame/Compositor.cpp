@@ -29,10 +29,13 @@ void APIENTRY c_glCallList(GLuint list) { C().callList(list); }
 void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
 {
     Compositor& c = C();
-    const bool masked = c.holdLists(n, type, lists) && c.shading();
+    const bool held = c.holdLists(n, type, lists);
+    const bool masked = held && c.shading();
     if (masked) c.mask();
+    else if (!held) c.tintBegin();
     c.next().glCallLists(n, type, lists);
     if (masked) c.unmask();
+    else if (!held) c.tintEnd();
 }
 
 // A draw that may be held back. With a shading style in the chain a held draw is only
@@ -623,6 +626,7 @@ bool Compositor::holdLists(GLsizei n, GLenum type, const void* lists)
     if (!ready()) return false;
     syncStream();
     if (!mTracker.wouldHoldLists(n, type, lists)) {
+        noteLeft(mTracker.listsUnstylable(n, type, lists));
         if (mHeld) flush(); // a barrier: what it draws goes over the finished scene
         return false;
     }

@@ -935,6 +935,24 @@ const char* StateTracker::listUnstylable(GLuint list) const
     return nullptr; // holdable, or no polygons at all (nothing to count)
 }
 
+const char* StateTracker::listsUnstylable(GLsizei n, GLenum type, const void* lists) const
+{
+    const uint8_t* p = static_cast<const uint8_t*>(lists);
+    if (!p || n <= 0) return nullptr;
+    bool anyBatch = false, holdable = true;
+    for (GLsizei i = 0; i < std::min<GLsizei>(n, 4096); ++i) {
+        const GLuint list = mListBase + listId(type, p, i);
+        bool batches = false;
+        holdable = listHoldable(list, batches) && holdable;
+        auto it = mLists.find(list);
+        anyBatch = anyBatch || batches || (it != mLists.end() && !it->second.batches.empty());
+    }
+    if (!anyBatch) return nullptr;
+    if (const char* why = unstylableState()) return why;
+    if (n > 4096) return "glCallLists of more than 4096 lists";
+    return holdable ? nullptr : "display lists that also draw lines, points, bitmaps or pixels";
+}
+
 bool StateTracker::listHoldable(GLuint list, bool& anyBatch) const
 {
     // Breadth-first over the lists it calls; cycles and depth bounded like the driver's.

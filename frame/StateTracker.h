@@ -107,6 +107,8 @@ public:
     // Why a list's polygons would be left as the program draws them (nullptr: they would
     // not, or it draws none).
     const char* listUnstylable(GLuint list) const;
+    // The same for the lists of a glCallLists: null when they draw no polygons.
+    const char* listsUnstylable(GLsizei n, GLenum type, const void* lists) const;
     bool wouldHoldList(GLuint list) const;
     // glCallLists is held as a whole when every list it calls would be (text drawn from
     // bitmap-font lists never is).

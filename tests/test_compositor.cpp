@@ -275,6 +275,31 @@ TEST(Compositor, ComicPresetDrawsInkBetweenTheBands)
     EXPECT_GE(darker * 10, differing * 9) << "the band lines are not ink";
 }
 
+// Lists called together and left (the plate added to the scene, GL_ONE, GL_ONE, by the one
+// glCallLists of demo_displaylist) are counted with their reason and painted red by the
+// coverage style, as a glCallList is: they were neither (a 3D draw nobody was told of).
+TEST(Compositor, ListsCalledTogetherAndLeftAreCountedAndTinted)
+{
+    const std::string dir = freshDir("lists_left");
+    ProcessResult r = runProcess(under({nprglCommand(), "--style", "coverage"},
+                                       {demo("displaylist"), "--glowing-plate", "--offscreen",
+                                        "--frames", "3", "--size", "256x192", "--save-frames",
+                                        "3", "--save-dir", dir}));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("3D polygon draws: 9 styled, 3 left as the program drew them "
+                         "(blending other than"),
+              std::string::npos)
+        << r.err;
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(dir + "/displaylist_3.png", image, error)) << error;
+    size_t red = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        red += image.rgba[i] >= 250 && image.rgba[i + 1] < 40 && image.rgba[i + 2] < 40;
+    }
+    EXPECT_GT(red, 256u * 192u / 10) << "the plate is not red";
+}
+
 // demo_displaylist draws its state and its plate with one glCallLists. The compositor and
 // the tracker must agree on holding it: when the tracker held the plate while the compositor
 // let the call through, the plate was drawn twice, the program's own grey fighting in depth

@@ -134,12 +134,16 @@ public:
     {
         return {{"shine", demo::ExtraOption::Kind::Flag,
                  "call the red gear's list a second time, adding light (GL_ONE, GL_ONE) over "
-                 "the same vertices, as multi-pass programs draw a surface's layers"}};
+                 "the same vertices, as multi-pass programs draw a surface's layers"},
+                {"glowing-plate", demo::ExtraOption::Kind::Flag,
+                 "the plate (called with the state list by one glCallLists) is added to the "
+                 "scene (GL_ONE, GL_ONE), as effects drawn from lists of lists are"}};
     }
 
     bool init(const demo::Options& options, std::string& error) override
     {
         shine_ = options.has("shine");
+        glowingPlate_ = options.has("glowing-plate");
         base_ = glGenLists(listCount);
         if (base_ == 0) {
             error = "glGenLists failed";
@@ -200,7 +204,12 @@ public:
 
         const GLubyte sceneLists[] = {stateList, plateList};
         glListBase(base_);
+        if (glowingPlate_) {
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE);
+        }
         glCallLists(2, GL_UNSIGNED_BYTE, sceneLists);
+        if (glowingPlate_) glDisable(GL_BLEND);
         glListBase(0);
 
         drawGearAt(gear1List, -3.0f, -2.0f, angle);
@@ -239,6 +248,7 @@ private:
 
     GLuint base_ = 0;
     bool shine_ = false;
+    bool glowingPlate_ = false;
 };
 
 } // namespace
