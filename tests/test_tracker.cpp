@@ -228,6 +228,19 @@ static void vectorCall(CallWriter& w, uint16_t opcode, GLenum a, GLenum b, const
     w.endPayload(mark);
 }
 
+// glTexImage2D of level 0 of the bound 2D texture, RGBA bytes, as the recorder writes it.
+static void rgbaImage(CallWriter& w, GLint width, GLint height, const uint8_t* pixels)
+{
+    w.op(op::glTexImage2D);
+    const size_t mark = w.beginPayload();
+    for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), width, height, 0}) w.put<GLint>(v);
+    w.put<GLenum>(GL_RGBA);
+    w.put<GLenum>(GL_UNSIGNED_BYTE);
+    w.put<uint8_t>(1);
+    w.putBytes(pixels, size_t(4 * width * height));
+    w.endPayload(mark);
+}
+
 // Feeds a tracker calls written on the spot: the state tests' building blocks.
 struct Feed {
     StateTracker& tracker;
@@ -738,14 +751,7 @@ TEST(StateTracker, TheDefaultTextureAndItsTextureMatrixReachTheBatch)
     feed.run([](CallWriter& w) {
         const uint8_t pixels[4 * 4] = {255, 0,   0, 255, 0, 255, 0, 255,
                                        0,   0, 255, 255, 9, 9,   9, 255};
-        w.op(op::glTexImage2D);
-        const size_t mark = w.beginPayload();
-        for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 2, 2, 0}) w.put<GLint>(v);
-        w.put<GLenum>(GL_RGBA);
-        w.put<GLenum>(GL_UNSIGNED_BYTE);
-        w.put<uint8_t>(1);
-        w.putBytes(pixels, sizeof pixels);
-        w.endPayload(mark);
+        rgbaImage(w, 2, 2, pixels);
     });
     texturedTriangle();
     texture(GL_MODELVIEW, [](CallWriter& w) {
@@ -782,14 +788,7 @@ TEST(StateTracker, TheDefaultTextureIsOneForAllUnits)
         w.op(op::glActiveTexture);
         w.put<GLenum>(GL_TEXTURE1);
         const uint8_t pixel[4] = {255, 0, 0, 255};
-        w.op(op::glTexImage2D);
-        const size_t mark = w.beginPayload();
-        for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 1, 1, 0}) w.put<GLint>(v);
-        w.put<GLenum>(GL_RGBA);
-        w.put<GLenum>(GL_UNSIGNED_BYTE);
-        w.put<uint8_t>(1);
-        w.putBytes(pixel, sizeof pixel);
-        w.endPayload(mark);
+        rgbaImage(w, 1, 1, pixel);
         w.op(op::glActiveTexture);
         w.put<GLenum>(GL_TEXTURE0);
     });
