@@ -25,8 +25,8 @@ namespace nprgl::styles {
     X(DeleteVertexArrays) X(DepthFunc) X(DepthMask) X(DepthRange) X(Disable)                    \
     X(DisableVertexAttribArray) X(DrawArrays) X(DrawBuffer) X(DrawBuffers) X(DrawElements)      \
     X(Enable) X(EnableVertexAttribArray) X(EndQuery) X(Finish) X(Flush)                         \
-    X(FramebufferRenderbuffer) X(FramebufferTexture2D) X(FrontFace) X(GenBuffers)               \
-    X(GenFramebuffers) X(GenQueries) X(GenRenderbuffers) X(GenTextures) X(GenVertexArrays)      \
+    X(FramebufferRenderbuffer) X(FramebufferTexture2D) X(FrontFace) X(GenVertexArrays)          \
+    X(IsBuffer) X(IsFramebuffer) X(IsQuery) X(IsRenderbuffer) X(IsTexture)                      \
     X(GenerateMipmap) X(GetBooleanv) X(GetError) X(GetFloatv) X(GetIntegerv) X(GetProgramInfoLog) \
     X(GetProgramiv) X(GetQueryObjectuiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString)        \
     X(GetTexLevelParameteriv) X(GetTexParameteriv) X(GetUniformLocation) X(Hint) X(IsEnabled)   \

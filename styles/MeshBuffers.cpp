@@ -1,5 +1,7 @@
 #include "styles/MeshBuffers.h"
 
+#include "styles/ObjectNames.h"
+
 #include <algorithm>
 #include <vector>
 
@@ -46,8 +48,8 @@ GLsizei MeshBuffers::bind(const GlFunctions& gl, const reconstruct::ObjectMesh& 
     const bool stale = !e.buffer || e.contentKey != mesh.contentKey ||
                        e.geometryVersion != mesh.geometryVersion;
     if (!e.buffer) {
-        gl.GenBuffers(1, &e.buffer);
-        gl.GenBuffers(1, &e.indexBuffer);
+        ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &e.buffer);
+        ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &e.indexBuffer);
     }
     gl.BindBuffer(GL_ARRAY_BUFFER, e.buffer);
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, e.indexBuffer); // into the styles' own VAO

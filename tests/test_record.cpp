@@ -101,6 +101,35 @@ INSTANTIATE_TEST_SUITE_P(
                       RecordCase{"dlopen", {}, true}, RecordCase{"dlopen", {}, false}),
     recordName);
 
+// A capture replayed in a style draws what the program drew under that style, also when the
+// program makes objects after the styles made theirs (a texture in frame 2). The styles took
+// their names from the driver's glGen*, which in the replay handed them the names the capture
+// goes on to bind (the program's own, given out before nprgl existed in the recorded run): the
+// demo's new floor texture and a style's shared one name, and the floor came out in the style's
+// texture, or the replay was refused (a game's vertex buffer, taken by a style's mesh buffer).
+TEST(RecordReplay, AStyledReplayDrawsWhatTheStyledProgramDrew)
+{
+    std::string dir = freshDir("rec_late"), live = dir + "/live", replay = dir + "/replay";
+    std::string file = dir + "/capture.nprgl";
+    const std::vector<std::string> app = {demo("textured"), "--late-floor", "--offscreen",
+                                          "--frames", "3", "--size", "160x120"};
+    std::vector<std::string> rec = {nprglCommand(), "record", "--style", "none", "-o", file, "--"};
+    rec.insert(rec.end(), app.begin(), app.end());
+    ProcessResult r = runProcess(rec);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<std::string> styled = {nprglCommand(), "--style", "toon+paper+edges", "--"};
+    styled.insert(styled.end(), app.begin(), app.end());
+    for (const char* a : {"--save-dir", live.c_str(), "--save-frames", "3"}) styled.push_back(a);
+    ProcessResult s = runProcess(styled);
+    ASSERT_EQ(s.exitCode, 0) << s.err;
+    ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "toon+paper+edges", file,
+                                  "-o", replay, "--frames", "3"});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    ImageDiff diff = compareImages(live + "/textured_3.png", framePng(replay, 3));
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_EQ(diff.differingPixels, 0u);
+}
+
 TEST(Fixtures, EveryDemoFixtureReplaysAsTheDemoDrawsToday)
 {
     const std::vector<std::pair<std::string, std::vector<std::string>>> fixtures = {

@@ -137,7 +137,7 @@ protected:
             }
         }
         GLuint id = 0;
-        gl.GenTextures(1, &id);
+        glGenTextures(1, &id);
         gl.BindTexture(GL_TEXTURE_2D, id);
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -160,7 +160,7 @@ protected:
     {
         const styles::GlFunctions& gl = harness.gl();
         GLuint id = 0;
-        gl.GenTextures(1, &id);
+        glGenTextures(1, &id);
         gl.BindTexture(GL_TEXTURE_2D, id);
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -159,6 +159,9 @@ public:
                  "with --additive: the sphere is a display list that turns texturing (and "
                  "lighting) off inside it and glows plain blue, as glowing parts of a scene "
                  "compiled with their own state do"},
+                {"late-floor", demo::ExtraOption::Kind::Flag,
+                 "the floor gets a texture of its own made in frame 2, after the first frame "
+                 "was drawn (games load textures as they go)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
@@ -190,6 +193,7 @@ public:
         additive_ = options.has("additive");
         glowAlphaTest_ = options.has("glow-alpha-test");
         glowListPlain_ = options.has("glow-list-plain");
+        lateFloor_ = options.has("late-floor");
         depthPrepass_ = options.has("depth-prepass");
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
@@ -282,8 +286,12 @@ public:
         glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
         glRotatef(frame * 0.5f, 0.0f, 1.0f, 0.0f);
 
+        if (lateFloor_ && frame >= 2 && !lateFloorTexture_) {
+            const uint8_t green[] = {40, 170, 60}, yellow[] = {230, 210, 40};
+            lateFloorTexture_ = uploadTexture(makeChecker(green, yellow, 2));
+        }
         // Floor with the texture repeated four times each way.
-        glBindTexture(GL_TEXTURE_2D, floorTexture_);
+        glBindTexture(GL_TEXTURE_2D, lateFloorTexture_ ? lateFloorTexture_ : floorTexture_);
         glNormal3f(0.0f, 1.0f, 0.0f);
         glBegin(GL_QUADS);
         glTexCoord2f(0.0f, 0.0f);
@@ -418,6 +426,7 @@ public:
         if (faceTextures_[0]) glDeleteTextures(6, faceTextures_);
         if (cutoutTexture_) glDeleteTextures(1, &cutoutTexture_);
         if (glowList_) glDeleteLists(glowList_, 1);
+        if (lateFloorTexture_) glDeleteTextures(1, &lateFloorTexture_);
     }
 
 private:
@@ -432,6 +441,8 @@ private:
     bool additive_ = false;
     bool glowAlphaTest_ = false;
     bool glowListPlain_ = false;
+    bool lateFloor_ = false;
+    GLuint lateFloorTexture_ = 0;
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;
     bool decal_ = false;

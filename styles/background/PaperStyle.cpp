@@ -1,6 +1,7 @@
 #include "styles/background/PaperStyle.h"
 
 #include "common/Log.h"
+#include "styles/ObjectNames.h"
 #include "styles/StyleRegistry.h"
 #include "styles/background/PaperGrain.h"
 
@@ -128,7 +129,7 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
     }
 
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    gl.GenBuffers(1, &mTriangle);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &mTriangle);
     gl.BindBuffer(GL_ARRAY_BUFFER, mTriangle);
     gl.BufferData(GL_ARRAY_BUFFER, sizeof(triangle), triangle, GL_STATIC_DRAW);
     gl.BindBuffer(GL_ARRAY_BUFFER, 0);

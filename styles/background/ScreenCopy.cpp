@@ -1,5 +1,6 @@
 #include "styles/background/ScreenCopy.h"
 
+#include "styles/ObjectNames.h"
 #include "styles/textures/GlTexture.h"
 
 #include <algorithm>
@@ -15,7 +16,7 @@ void ScreenCopy::ensure(const GlFunctions& gl, int width, int height)
     destroy(gl);
     mWidth = width;
     mHeight = height;
-    gl.GenTextures(1, &mColour);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Texture, 1, &mColour);
     GlTexture::allocateNearest(gl, mColour, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
 }
 

@@ -1,5 +1,6 @@
 #include "styles/outlines/BlueprintStyle.h"
 
+#include "styles/ObjectNames.h"
 #include "styles/StyleRegistry.h"
 #include "styles/outlines/EdgeView.h"
 
@@ -99,7 +100,7 @@ bool BlueprintStyle::init(StyleContext& ctx, std::string& error)
     mHidden = float(ctx.param(kStyle, "hidden"));
     mDashLength = float(ctx.param(kStyle, "dash"));
     gl.GetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, glm::value_ptr(mLineRange));
-    gl.GenBuffers(1, &mBuffer);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &mBuffer);
     return true;
 }
 

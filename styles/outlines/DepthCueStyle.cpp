@@ -1,5 +1,6 @@
 #include "styles/outlines/DepthCueStyle.h"
 
+#include "styles/ObjectNames.h"
 #include "styles/StyleRegistry.h"
 #include "styles/outlines/EdgeView.h"
 #include "styles/outlines/OutlineParams.h"
@@ -83,7 +84,7 @@ bool DepthCueStyle::init(StyleContext& ctx, std::string& error)
     mLevels = std::clamp(int(std::lround(ctx.param(kStyle, "levels"))), 1, kMaxLevels);
     mInkColour = inkColour(ctx, kStyle);
     gl.GetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, glm::value_ptr(mLineRange));
-    gl.GenBuffers(1, &mBuffer);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &mBuffer);
     return true;
 }
 

@@ -1,5 +1,7 @@
 #include "styles/outlines/EdgeLines.h"
 
+#include "styles/ObjectNames.h"
+
 namespace nprgl::styles {
 
 const EdgeLines::Lines& EdgeLines::bind(const GlFunctions& gl,
@@ -8,7 +10,7 @@ const EdgeLines::Lines& EdgeLines::bind(const GlFunctions& gl,
     Entry& e = mEntries[&mesh];
     const bool stale = !e.built || e.contentKey != mesh.contentKey ||
                        e.geometryVersion != mesh.geometryVersion;
-    if (!e.lines.buffer) gl.GenBuffers(1, &e.lines.buffer);
+    if (!e.lines.buffer) ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &e.lines.buffer);
     gl.BindBuffer(GL_ARRAY_BUFFER, e.lines.buffer);
     e.lastUsed = mFlush;
     if (!stale) return e.lines;

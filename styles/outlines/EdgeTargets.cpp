@@ -1,5 +1,6 @@
 #include "styles/outlines/EdgeTargets.h"
 
+#include "styles/ObjectNames.h"
 #include "styles/textures/GlTexture.h"
 
 #include <algorithm>
@@ -17,9 +18,9 @@ bool EdgeTargets::ensure(const GlFunctions& gl, int width, int height)
     destroy(gl);
     mWidth = width;
     mHeight = height;
-    gl.GenTextures(3, mTex);
-    gl.GenFramebuffers(3, mFbo);
-    gl.GenRenderbuffers(1, &mDepth);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Texture, 3, mTex);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Framebuffer, 3, mFbo);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Renderbuffer, 1, &mDepth);
     GlTexture::allocateNearest(gl, mTex[0], GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, width,
                                height);
     GlTexture::allocateNearest(gl, mTex[1], GL_RGBA32F, GL_RGBA, GL_FLOAT, width, height);

@@ -1,6 +1,7 @@
 #include "styles/outlines/EdgesStyle.h"
 
 #include "styles/FaceCulling.h"
+#include "styles/ObjectNames.h"
 #include "styles/StyleRegistry.h"
 #include "styles/outlines/OutlineParams.h"
 
@@ -349,7 +350,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mMargin = mRadius + 2;
 
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    gl.GenBuffers(1, &mTriangle);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &mTriangle);
     gl.BindBuffer(GL_ARRAY_BUFFER, mTriangle);
     gl.BufferData(GL_ARRAY_BUFFER, sizeof(triangle), triangle, GL_STATIC_DRAW);
     gl.BindBuffer(GL_ARRAY_BUFFER, 0);

@@ -1,6 +1,7 @@
 #include "styles/outlines/MotionStyle.h"
 
 #include "reconstruct/Silhouette.h"
+#include "styles/ObjectNames.h"
 #include "styles/StyleRegistry.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -113,7 +114,7 @@ bool MotionStyle::init(StyleContext& ctx, std::string& error)
     mWidth = float(ctx.param(kStyle, "width"));
     mGap = float(ctx.param(kStyle, "gap"));
     mOpacity = float(ctx.param(kStyle, "opacity"));
-    gl.GenBuffers(1, &mBuffer);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &mBuffer);
     return true;
 }
 

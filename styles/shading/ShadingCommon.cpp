@@ -1,6 +1,7 @@
 #include "styles/shading/ShadingCommon.h"
 
 #include "styles/FaceCulling.h"
+#include "styles/ObjectNames.h"
 #include "styles/textures/GlTexture.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -354,7 +355,7 @@ void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
             if (!ctx.blankTexture) {
                 // White: the textured shader then shows the faces' own colours.
                 GlTexture::resetUnpack(gl);
-                gl.GenTextures(1, &ctx.blankTexture);
+                ObjectNames::reserve(gl, ObjectNames::Kind::Texture, 1, &ctx.blankTexture);
                 gl.BindTexture(GL_TEXTURE_2D, ctx.blankTexture);
                 const uint8_t white[4] = {255, 255, 255, 255};
                 gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);

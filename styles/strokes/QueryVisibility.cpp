@@ -1,5 +1,7 @@
 #include "styles/strokes/QueryVisibility.h"
 
+#include "styles/ObjectNames.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -23,7 +25,7 @@ constexpr uint8_t kNoPixels = 3; // internal: the line covered no pixel at all
 bool QueryVisibility::init(const GlFunctions& gl, std::string& error)
 {
     if (!mProgram.build(gl, kVertex, kFragment, error)) return false;
-    gl.GenBuffers(1, &mBuffer);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &mBuffer);
     return true;
 }
 
@@ -56,7 +58,7 @@ void QueryVisibility::runQueries(const GlFunctions& gl, const glm::ivec4& viewpo
     if (mQueries.size() < count * 2) {
         const size_t old = mQueries.size();
         mQueries.resize(count * 2);
-        gl.GenQueries(GLsizei(count * 2 - old), mQueries.data() + old);
+        ObjectNames::reserve(gl, ObjectNames::Kind::Query, GLsizei(count * 2 - old), mQueries.data() + old);
     }
     const GLsizeiptr bytes = GLsizeiptr(mVertices.size() * sizeof(float));
     gl.BindBuffer(GL_ARRAY_BUFFER, mBuffer);

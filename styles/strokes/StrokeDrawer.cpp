@@ -1,5 +1,6 @@
 #include "styles/strokes/StrokeDrawer.h"
 
+#include "styles/ObjectNames.h"
 #include "styles/textures/GlTexture.h"
 
 #include <algorithm>
@@ -89,7 +90,7 @@ bool StrokeDrawer::init(const GlFunctions& gl, std::string& error)
 {
     if (!mSketchy.build(gl, kVertex, kSketchy, error)) return false;
     if (!mTextured.build(gl, kVertex, kTextured, error)) return false;
-    gl.GenBuffers(1, &mBuffer);
+    ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &mBuffer);
     return true;
 }
 
@@ -105,7 +106,7 @@ void StrokeDrawer::destroy(const GlFunctions& gl)
 
 void StrokeDrawer::setTexture(const GlFunctions& gl, const PngImage& image)
 {
-    if (!mTexture) gl.GenTextures(1, &mTexture);
+    if (!mTexture) ObjectNames::reserve(gl, ObjectNames::Kind::Texture, 1, &mTexture);
     gl.ActiveTexture(GL_TEXTURE0);
     gl.BindTexture(GL_TEXTURE_2D, mTexture);
     GlTexture::resetUnpack(gl);

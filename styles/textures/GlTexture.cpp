@@ -1,6 +1,7 @@
 #include "styles/textures/GlTexture.h"
 
 #include "common/PngImage.h"
+#include "styles/ObjectNames.h"
 
 #include <cmath>
 
@@ -8,7 +9,7 @@ namespace nprgl::styles {
 
 void GlTexture::upload(const GlFunctions& gl, const TextureImage& image, bool mipmaps)
 {
-    if (!mTexture) gl.GenTextures(1, &mTexture);
+    if (!mTexture) ObjectNames::reserve(gl, ObjectNames::Kind::Texture, 1, &mTexture);
     gl.BindTexture(GL_TEXTURE_2D, mTexture);
     resetUnpack(gl);
     const bool grey = image.channels == 1;
