@@ -19,9 +19,14 @@ void ObjectNames::reserve(const GlFunctions& gl, Kind kind, GLsizei n, GLuint* n
         return true;
     };
     for (GLsizei i = 0; i < n; ++i) {
-        GLuint name = next.fetch_add(1);
-        // A program that took a name this high keeps it; past the top the range starts over.
-        while (name == 0 || name < kFirst || inUse(name)) name = next.fetch_add(1);
+        GLuint name = next.fetch_sub(1);
+        while (name < kLast || name > kFirst || inUse(name)) {
+            if (name < kLast || name > kFirst) {
+                GLuint seen = name - 1;
+                next.compare_exchange_strong(seen, kFirst); // past the bottom: from the top
+            }
+            name = next.fetch_sub(1);
+        }
         names[i] = name;
     }
 }
