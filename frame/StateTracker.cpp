@@ -581,7 +581,7 @@ bool StateTracker::is3D() const
     // A perspective view, or a depth-tested one that writes depth. Orthographic drawing
     // that writes no depth is 2D even with the depth test on (ioquake3 draws its HUD so).
     const AttribState& a = mAttrib;
-    return mMatrices.projection()[3][3] == 0.0f || (a.depthTest && a.depthMask);
+    return styles::perspective(mMatrices.projection()) || (a.depthTest && a.depthMask);
 }
 
 const char* StateTracker::unstylableState() const
@@ -654,7 +654,7 @@ bool StateTracker::leftByRule() const
 {
     if (const uint32_t states = mRules.states) {
         const AttribState& a = mAttrib;
-        const bool backdrop = !a.depthTest && mMatrices.projection()[3][3] == 0.0f;
+        const bool backdrop = !a.depthTest && styles::perspective(mMatrices.projection());
         if (((states & kLeaveTranslucent) && translucent()) ||
             ((states & kLeaveCutout) && a.alphaTest) ||
             ((states & kLeaveDecal) && a.polygonOffsetFill) ||
@@ -1481,7 +1481,7 @@ bool StateTracker::keep(TrackedBatch& batch)
             for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
         }
     }
-    batch.is3D = batch.projection[3][3] == 0.0f || (a.depthTest && a.depthMask);
+    batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
     batch.culled = culledWinding();
     if (mHolding) {
         // Inside a list the driver draws itself (not masked by the compositor) nothing is

@@ -33,6 +33,14 @@ struct SceneLights {
 constexpr GLuint kDefaultTexture = ~0u;
 inline GLuint textureName(GLuint texture) { return texture == kDefaultTexture ? 0 : texture; }
 
+// Whether a projection divides by depth: its last row is not (0, 0, 0, w). Not the element w
+// alone: a program that puts its camera into the projection matrix (glFrustum, then the view
+// on GL_PROJECTION, the modelview left the identity) has the camera's translation there.
+inline bool perspective(const glm::mat4& projection)
+{
+    return projection[0][3] != 0.0f || projection[1][3] != 0.0f || projection[2][3] != 0.0f;
+}
+
 // A texture the program maps by coordinates GL generates (glTexGen on S and T): a reflection
 // (GL_SPHERE_MAP) or a projection (GL_OBJECT_LINEAR, GL_EYE_LINEAR planes). A projection is
 // the surface's texture; a reflection is dropped unless a style's parameter shows it
@@ -132,10 +140,7 @@ struct SceneObject {
         return false;
     }
     // A projection without a perspective row looks along -z everywhere.
-    bool orthographic() const
-    {
-        return projection[0][3] == 0.0f && projection[1][3] == 0.0f && projection[2][3] == 0.0f;
-    }
+    bool orthographic() const { return !perspective(projection); }
 };
 
 // What one flush of the compositor hands to the styles.

@@ -160,6 +160,12 @@ void StyleChain::render(const Scene& scene)
         part->takeFrameOf(scene);
     }
     const GlFunctions& gl = mContext.gl;
+    // The page under everything: a backdrop in the clear colour, drawn without depth (a dark
+    // floor), stays the program's and does not become page.
+    for (size_t i = 0; i < mStyles.size(); ++i) {
+        setBaseline(scene, i == 0 && mHasShading);
+        mStyles[i]->layBackground(scene, mContext);
+    }
     renderAsDrawn(mBackdrop);
     for (size_t i = 0; i < mStyles.size(); ++i) {
         const bool shading = mHasShading && i == 0; // the shading style is ordered first

@@ -275,6 +275,35 @@ TEST(Compositor, ComicPresetDrawsInkBetweenTheBands)
     EXPECT_GE(darker * 10, differing * 9) << "the band lines are not ink";
 }
 
+// A backdrop the program draws in its clear colour without depth (an arena's dark floor) is
+// a surface of the scene: the page goes under it, not over it. The page was laid after the
+// scene, where a pixel was still the clear colour at the far depth, which the floor was.
+TEST(Compositor, ABackdropInTheClearColourStaysOnThePage)
+{
+    const std::string dir = freshDir("backdrop_floor");
+    ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"},
+                                       {demo("textured"), "--backdrop-floor", "--offscreen",
+                                        "--size", "320x240", "--frames", "2", "--save-frames",
+                                        "2", "--save-dir", dir}));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
+    // The clear colour (0.15, 0.15, 0.18): the floor's, in the floor's middle near the bottom;
+    // the page above the scene.
+    auto at = [&](int x, int y) { return &image.rgba[(size_t(y) * image.width + x) * 4]; };
+    int floor = 0, all = 0;
+    for (int y = 200; y < 236; ++y) {
+        for (int x = 140; x < 180; ++x) {
+            const uint8_t* p = at(x, y);
+            floor += std::abs(p[0] - 38) <= 6 && std::abs(p[2] - 46) <= 6;
+            ++all;
+        }
+    }
+    EXPECT_GT(floor, all * 9 / 10) << floor << " of " << all << " floor pixels kept";
+    EXPECT_GT(at(160, 10)[0], 200) << "no page above the scene";
+}
+
 // Lists called together and left (the plate added to the scene, GL_ONE, GL_ONE, by the one
 // glCallLists of demo_displaylist) are counted with their reason and painted red by the
 // coverage style, as a glCallList is: they were neither (a 3D draw nobody was told of).

@@ -1021,6 +1021,33 @@ TEST(StateTracker, OrthographicDrawingWithoutDepthWritesIsTwoDimensional)
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
 }
 
+// A program that puts its camera into the projection matrix (glFrustum, then the view's
+// transforms on GL_PROJECTION, the modelview the identity: armagetronad) draws in perspective
+// though the matrix's w element is not 0: its floor, drawn without the depth test or depth
+// writes, is a 3D backdrop and styled, not 2D drawing left as it was (taken for 2D, it was
+// neither styled nor counted, and the page went over it).
+TEST(StateTracker, ACameraInTheProjectionMatrixIsStillAPerspective)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.run([](CallWriter& w) {
+        w.op(op::glMatrixMode);
+        w.put<GLenum>(GL_PROJECTION);
+        w.op(op::glFrustum);
+        for (double v : {-1.0, 1.0, -0.75, 0.75, 1.0, 100.0}) w.put<double>(v);
+        w.op(op::glTranslatef);
+        for (float c : {-13.0f, -19.0f, -16.7f}) w.put<float>(c);
+        w.op(op::glMatrixMode);
+        w.put<GLenum>(GL_MODELVIEW);
+        w.op(op::glDepthMask);
+        w.put<GLboolean>(GL_FALSE);
+    });
+    feed.enable(GL_DEPTH_TEST, false);
+    EXPECT_TRUE(tracker.is3D());
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+}
+
 // Blending by alpha and the alpha test where no alpha of the draw can be below 1 change no
 // pixel: such draws are opaque ones (extremetuxracer blends and alpha-tests all its drawing,
 // with material alphas of 0.99999994 and textures made by glTexImage2D without pixels and

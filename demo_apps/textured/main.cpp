@@ -162,6 +162,9 @@ public:
                 {"late-floor", demo::ExtraOption::Kind::Flag,
                  "the floor gets a texture of its own made in frame 2, after the first frame "
                  "was drawn (games load textures as they go)"},
+                {"backdrop-floor", demo::ExtraOption::Kind::Flag,
+                 "the floor is a backdrop in the clear colour: unlit, untextured, drawn first "
+                 "without the depth test or depth writes (a dark arena floor)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
@@ -194,6 +197,7 @@ public:
         glowAlphaTest_ = options.has("glow-alpha-test");
         glowListPlain_ = options.has("glow-list-plain");
         lateFloor_ = options.has("late-floor");
+        backdropFloor_ = options.has("backdrop-floor");
         depthPrepass_ = options.has("depth-prepass");
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
@@ -293,6 +297,14 @@ public:
         // Floor with the texture repeated four times each way.
         glBindTexture(GL_TEXTURE_2D, lateFloorTexture_ ? lateFloorTexture_ : floorTexture_);
         glNormal3f(0.0f, 1.0f, 0.0f);
+        if (backdropFloor_) {
+            glPushAttrib(GL_ENABLE_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
+            glDisable(GL_DEPTH_TEST);
+            glDepthMask(GL_FALSE);
+            glDisable(GL_LIGHTING);
+            glDisable(GL_TEXTURE_2D);
+            glColor3f(0.15f, 0.15f, 0.18f); // the clear colour
+        }
         glBegin(GL_QUADS);
         glTexCoord2f(0.0f, 0.0f);
         glVertex3f(-3.0f, -1.0f, 3.0f);
@@ -303,6 +315,7 @@ public:
         glTexCoord2f(0.0f, 4.0f);
         glVertex3f(-3.0f, -1.0f, -3.0f);
         glEnd();
+        if (backdropFloor_) glPopAttrib();
         if (decal_) {
             // In the floor's plane: only the offset keeps it in front of the floor.
             glDisable(GL_TEXTURE_2D);
@@ -442,6 +455,7 @@ private:
     bool glowAlphaTest_ = false;
     bool glowListPlain_ = false;
     bool lateFloor_ = false;
+    bool backdropFloor_ = false;
     GLuint lateFloorTexture_ = 0;
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;

@@ -136,7 +136,7 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
     return true;
 }
 
-bool PaperStyle::grainedThisFrame(const Scene& scene)
+bool PaperStyle::grainedThisFrame(const Scene& scene, bool mark)
 {
     if (scene.frame != mGrainFrame) {
         mGrainFrame = scene.frame;
@@ -146,7 +146,7 @@ bool PaperStyle::grainedThisFrame(const Scene& scene)
         mGrainedViewports.end()) {
         return true;
     }
-    mGrainedViewports.push_back(scene.viewport);
+    if (mark) mGrainedViewports.push_back(scene.viewport);
     return false;
 }
 
@@ -164,24 +164,10 @@ bool PaperStyle::filledAlready(const Scene& scene)
     return false;
 }
 
-void PaperStyle::render(const Scene& scene, StyleContext& ctx)
+void PaperStyle::beginPass(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
     const glm::ivec4 vp = scene.viewport;
-    // An empty flush drew nothing; its page is whatever the program left.
-    if (scene.objects.empty() || vp.z <= 0 || vp.w <= 0) return;
-    const bool grainScene = mGrainScene && mGrain > 0.0f && !grainedThisFrame(scene);
-    bool fill = mFill && !filledAlready(scene);
-    if (fill && !mCopy.capture(gl, vp)) {
-        if (!mWarnedCopy) {
-            NPRGL_WARN("paper: cannot copy a multisampled (or undrawn) framebuffer; the "
-                       "background is left as the program cleared it");
-        }
-        mWarnedCopy = true;
-        fill = false;
-    }
-    if (!fill && !grainScene) return;
-
     // Textures are uploaded here, where the program's state is saved (GlTexture::upload).
     if (!mGrainImage.empty() && !mGrainTexture.valid()) {
         mGrainTexture.upload(gl, mGrainImage, false);
@@ -219,34 +205,11 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     gl.EnableVertexAttribArray(0);
     for (GLuint a = 1; a < 4; ++a) gl.DisableVertexAttribArray(a);
-    if (grainScene) {
-        // Multiplied into colour only: the program's alpha over its scene stays.
-        gl.Disable(GL_DEPTH_TEST);
-        gl.Uniform1i(mU.pass, 0);
-        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
-        gl.Enable(GL_BLEND);
-        gl.BlendEquation(GL_FUNC_ADD);
-        gl.BlendFunc(GL_DST_COLOR, GL_ZERO);
-        gl.DrawArrays(GL_TRIANGLES, 0, 3);
-        gl.Disable(GL_BLEND);
-    }
-    if (fill) {
-        gl.Uniform1i(mU.pass, 1);
-        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        // Depth still at the far plane: nothing was drawn there (without a depth buffer
-        // every pixel passes and the colour alone decides).
-        gl.Enable(GL_DEPTH_TEST);
-        gl.DepthFunc(GL_LEQUAL);
-        gl.Disable(GL_POLYGON_OFFSET_FILL);
-        gl.DepthRange(0.0, 1.0);
-        // Paper where untouched (alpha 1, and the page's alpha becomes 1), else unchanged.
-        gl.Enable(GL_BLEND);
-        gl.BlendEquation(GL_FUNC_ADD);
-        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
-                             GL_ONE_MINUS_SRC_ALPHA);
-        gl.DrawArrays(GL_TRIANGLES, 0, 3);
-        gl.Disable(GL_BLEND);
-    }
+}
+
+void PaperStyle::endPass(const Scene& scene, StyleContext& ctx)
+{
+    const GlFunctions& gl = ctx.gl;
     gl.DisableVertexAttribArray(0);
     gl.BindBuffer(GL_ARRAY_BUFFER, 0);
     for (int i = 3; i >= 0; --i) {
@@ -260,6 +223,61 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthMask(GL_TRUE);
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void PaperStyle::layBackground(const Scene& scene, StyleContext& ctx)
+{
+    const GlFunctions& gl = ctx.gl;
+    const glm::ivec4 vp = scene.viewport;
+    // An empty flush drew nothing; its page is whatever the program left.
+    if (!mFill || scene.objects.empty() || vp.z <= 0 || vp.w <= 0 || filledAlready(scene)) {
+        return;
+    }
+    if (!mCopy.capture(gl, vp)) {
+        if (!mWarnedCopy) {
+            NPRGL_WARN("paper: cannot copy a multisampled (or undrawn) framebuffer; the "
+                       "background is left as the program cleared it");
+        }
+        mWarnedCopy = true;
+        return;
+    }
+    beginPass(scene, ctx);
+    // Grained here unless the grain goes over the whole viewport after the scene.
+    if (mGrainScene && !grainedThisFrame(scene, false)) gl.Uniform1f(mU.grain, 0.0f);
+    gl.Uniform1i(mU.pass, 1);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // Depth still at the far plane: nothing was drawn there (without a depth buffer every
+    // pixel passes and the colour alone decides).
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LEQUAL);
+    gl.Disable(GL_POLYGON_OFFSET_FILL);
+    gl.DepthRange(0.0, 1.0);
+    // Paper where untouched (alpha 1, and the page's alpha becomes 1), else unchanged.
+    gl.Enable(GL_BLEND);
+    gl.BlendEquation(GL_FUNC_ADD);
+    gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    endPass(scene, ctx);
+}
+
+void PaperStyle::render(const Scene& scene, StyleContext& ctx)
+{
+    const GlFunctions& gl = ctx.gl;
+    const glm::ivec4 vp = scene.viewport;
+    if (scene.objects.empty() || vp.z <= 0 || vp.w <= 0) return;
+    // Laid already when the chain called layBackground first in this flush.
+    layBackground(scene, ctx);
+    if (!mGrainScene || mGrain <= 0.0f || grainedThisFrame(scene, true)) return;
+    beginPass(scene, ctx);
+    // Multiplied into colour only: the program's alpha over its scene stays.
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Uniform1i(mU.pass, 0);
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    gl.Enable(GL_BLEND);
+    gl.BlendEquation(GL_FUNC_ADD);
+    gl.BlendFunc(GL_DST_COLOR, GL_ZERO);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    endPass(scene, ctx);
 }
 
 void PaperStyle::shutdown(StyleContext& ctx)

@@ -17,10 +17,13 @@ namespace nprgl::styles {
 // the frame, a paper structure blended over it after). Where the program left its cleared
 // background untouched - far depth and still the clear colour - the page shows paper (a flat
 // colour or a tiled scan); then a fine paper grain darkens the whole viewport, the scene
-// included, fixed to the screen like a real sheet. Runs after shading, before the ink.
+// included, fixed to the screen like a real sheet. The page is laid first in a flush, before
+// the scene is drawn (so a surface the program draws in its clear colour without depth stays
+// the program's); the grain after shading, before the ink.
 class PaperStyle : public Style {
 public:
     bool init(StyleContext& ctx, std::string& error) override;
+    void layBackground(const Scene& scene, StyleContext& ctx) override;
     void render(const Scene& scene, StyleContext& ctx) override;
     void shutdown(StyleContext& ctx) override;
 
@@ -31,8 +34,11 @@ private:
               grainSize = -1, paperSize = -1;
     };
     // Whether this frame's grain already lies over the viewport (a second flush in one
-    // frame must not darken the page twice).
-    bool grainedThisFrame(const Scene& scene);
+    // frame must not darken the page twice); mark: and it does from now on.
+    bool grainedThisFrame(const Scene& scene, bool mark);
+    // The shared set-up of both passes: program, uniforms, textures, the full-view triangle.
+    void beginPass(const Scene& scene, StyleContext& ctx);
+    void endPass(const Scene& scene, StyleContext& ctx);
     // True when this frame's page is already under the scene's viewport of its framebuffer
     // and the program cleared no colour since: the background left is paper already.
     bool filledAlready(const Scene& scene);

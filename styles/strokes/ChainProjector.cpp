@@ -1,5 +1,7 @@
 #include "styles/strokes/ChainProjector.h"
 
+#include "styles/Scene.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,7 +19,7 @@ void ChainProjector::project(const reconstruct::ObjectMesh& mesh, const EdgeChai
                              Polylines& out) const
 {
     out.clear();
-    const bool perspective = projection[2][3] != 0.0f;
+    const bool perspective = styles::perspective(projection);
     const glm::vec2 origin(viewport.x, viewport.y);
     const glm::vec2 halfSize(0.5f * float(viewport.z), 0.5f * float(viewport.w));
     const reconstruct::Mesh::Point* points = mesh.mesh.points();
