@@ -425,7 +425,7 @@ void Compositor::tintBegin(GLuint list)
         if (list) {
             // The ink's texturing is set once for the call, and a list may switch it
             // (gibson's towers: untextured faces, then textured glyphs, in lists of their own).
-            const StateTracker::ListTexturing drawn = mTracker.listTexturing(list);
+            const StateTracker::ListDraws drawn = mTracker.listDraws(list);
             if (drawn.textured + drawn.untextured > 0) textured = drawn.textured > 0;
             if (drawn.textured > 0 && drawn.untextured > 0) {
                 textured = drawn.textured >= drawn.untextured;

@@ -18,6 +18,10 @@ namespace nprgl {
 
 namespace {
 
+// The reason for a list left for the blending inside it.
+constexpr const char* kListBlendsLeft = "display lists that blend inside other than by "
+                                        "GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA (shadows, effects)";
+
 // An enum given as a float (glTexEnvf, glFogf, glTexGenf): 0, which names no mode, where the
 // value is none (NaN, negative, past 32 bits: converting those is undefined behaviour).
 GLenum enumOf(double value)
@@ -922,7 +926,8 @@ GLuint StateTracker::sceneTexture(GLuint name) const
 bool StateTracker::wouldHoldList(GLuint list) const
 {
     bool anyBatch = false;
-    return wouldHold(GL_TRIANGLES) && listHoldable(list, anyBatch) && anyBatch;
+    return wouldHold(GL_TRIANGLES) && listHoldable(list, anyBatch) && anyBatch &&
+           !listDraws(list).blendsLeft;
 }
 
 const char* StateTracker::listUnstylable(GLuint list) const
@@ -932,6 +937,7 @@ const char* StateTracker::listUnstylable(GLuint list) const
     if (!listHoldable(list, anyBatch)) {
         return "display lists that also draw lines, points, bitmaps or pixels";
     }
+    if (anyBatch && listDraws(list).blendsLeft) return kListBlendsLeft;
     return nullptr; // holdable, or no polygons at all (nothing to count)
 }
 
@@ -939,18 +945,20 @@ const char* StateTracker::listsUnstylable(GLsizei n, GLenum type, const void* li
 {
     const uint8_t* p = static_cast<const uint8_t*>(lists);
     if (!p || n <= 0) return nullptr;
-    bool anyBatch = false, holdable = true;
+    bool anyBatch = false, holdable = true, blendsLeft = false;
     for (GLsizei i = 0; i < std::min<GLsizei>(n, 4096); ++i) {
         const GLuint list = mListBase + listId(type, p, i);
         bool batches = false;
         holdable = listHoldable(list, batches) && holdable;
+        blendsLeft = blendsLeft || listDraws(list).blendsLeft;
         auto it = mLists.find(list);
         anyBatch = anyBatch || batches || (it != mLists.end() && !it->second.batches.empty());
     }
     if (!anyBatch) return nullptr;
     if (const char* why = unstylableState()) return why;
     if (n > 4096) return "glCallLists of more than 4096 lists";
-    return holdable ? nullptr : "display lists that also draw lines, points, bitmaps or pixels";
+    if (!holdable) return "display lists that also draw lines, points, bitmaps or pixels";
+    return blendsLeft ? kListBlendsLeft : nullptr;
 }
 
 bool StateTracker::listHoldable(GLuint list, bool& anyBatch) const
@@ -1093,18 +1101,20 @@ bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha) const
     return true;
 }
 
-StateTracker::ListTexturing StateTracker::listTexturing(GLuint list) const
+StateTracker::ListDraws StateTracker::listDraws(GLuint list) const
 {
-    struct Unit0 {
-        bool enabled;
-        GLuint bound;
+    struct State {
+        bool texture2D;
+        GLuint bound; // unit 0's 2D texture
+        bool blend;
+        GLenum src, dst;
     };
     struct Walk {
         const StateTracker& t;
-        ListTexturing out;
-        Unit0 now;
+        ListDraws out;
+        State now;
         int unit;
-        std::vector<Unit0> saved; // glPushAttrib inside the lists
+        std::vector<State> saved; // glPushAttrib inside the lists
         size_t work = 0;
         void run(GLuint id, int depth)
         {
@@ -1114,37 +1124,53 @@ StateTracker::ListTexturing StateTracker::listTexturing(GLuint list) const
                 if (++work > kListWorkLimit) return;
                 if (item.batch >= 0) {
                     const size_t n = it->second.batches[size_t(item.batch)].vertices.size();
-                    const bool on = now.enabled && t.sceneTexture(now.bound) != 0;
+                    const bool on = now.texture2D && t.sceneTexture(now.bound) != 0;
                     (on ? out.textured : out.untextured) += n;
+                    out.blendsLeft = out.blendsLeft ||
+                                     (now.blend && !(now.src == GL_SRC_ALPHA &&
+                                                     now.dst == GL_ONE_MINUS_SRC_ALPHA));
                     continue;
                 }
-                CallReader r(item.call.data(), item.call.size(), t.mBlobs, t.mOpcodes);
-                const uint16_t opcode = r.opcode();
-                if (opcode == op::glEnable || opcode == op::glDisable) {
-                    const GLenum cap = r.get<GLenum>();
-                    if (r.ok() && cap == GL_TEXTURE_2D && unit == 0) {
-                        now.enabled = opcode == op::glEnable;
-                    }
-                } else if (opcode == op::glBindTexture) {
-                    const GLenum target = r.get<GLenum>();
-                    const GLuint texture = r.get<GLuint>();
-                    if (r.ok() && target == GL_TEXTURE_2D && unit == 0) now.bound = texture;
-                } else if (opcode == op::glActiveTexture) {
-                    const GLenum u = r.get<GLenum>();
-                    if (r.ok()) unit = int(u) - int(GL_TEXTURE0);
-                } else if (opcode == op::glPushAttrib) {
-                    saved.push_back(now);
-                } else if (opcode == op::glPopAttrib && !saved.empty()) {
-                    now = saved.back();
-                    saved.pop_back();
-                } else if (opcode == op::glCallList) {
-                    const GLuint inner = r.get<GLuint>();
-                    if (r.ok()) run(inner, depth + 1);
+                step(item.call, depth);
+            }
+        }
+        void step(const std::vector<uint8_t>& call, int depth)
+        {
+            CallReader r(call.data(), call.size(), t.mBlobs, t.mOpcodes);
+            const uint16_t opcode = r.opcode();
+            if (opcode == op::glEnable || opcode == op::glDisable) {
+                const GLenum cap = r.get<GLenum>();
+                const bool on = opcode == op::glEnable;
+                if (r.ok() && cap == GL_TEXTURE_2D && unit == 0) now.texture2D = on;
+                if (r.ok() && cap == GL_BLEND) now.blend = on;
+            } else if (opcode == op::glBindTexture) {
+                const GLenum target = r.get<GLenum>();
+                const GLuint texture = r.get<GLuint>();
+                if (r.ok() && target == GL_TEXTURE_2D && unit == 0) now.bound = texture;
+            } else if (opcode == op::glActiveTexture) {
+                const GLenum u = r.get<GLenum>();
+                if (r.ok()) unit = int(u) - int(GL_TEXTURE0);
+            } else if (opcode == op::glBlendFunc || opcode == op::glBlendFuncSeparate) {
+                const GLenum src = r.get<GLenum>();
+                const GLenum dst = r.get<GLenum>();
+                if (r.ok()) {
+                    now.src = src;
+                    now.dst = dst;
                 }
+            } else if (opcode == op::glPushAttrib) {
+                saved.push_back(now);
+            } else if (opcode == op::glPopAttrib && !saved.empty()) {
+                now = saved.back();
+                saved.pop_back();
+            } else if (opcode == op::glCallList) {
+                const GLuint inner = r.get<GLuint>();
+                if (r.ok()) run(inner, depth + 1);
             }
         }
     };
-    Walk walk{*this, {}, {mAttrib.texture2D, mBoundTexture}, mActiveUnit, {}};
+    const AttribState& a = mAttrib;
+    Walk walk{*this, {}, {a.texture2D, mBoundTexture, a.blend, a.blendSrc, a.blendDst},
+              mActiveUnit, {}};
     walk.run(list, 0);
     return walk.out;
 }
@@ -1674,7 +1700,8 @@ bool StateTracker::wouldHoldLists(GLsizei n, GLenum type, const void* lists) con
     // Lists of state only (a material, a transform) go along with the ones that draw.
     bool anyBatch = false;
     for (GLsizei i = 0; i < n; ++i) {
-        if (!listHoldable(mListBase + listId(type, p, i), anyBatch)) return false;
+        const GLuint list = mListBase + listId(type, p, i);
+        if (!listHoldable(list, anyBatch) || listDraws(list).blendsLeft) return false;
     }
     return anyBatch;
 }

@@ -141,14 +141,15 @@ public:
     // A draw issued now adds light (GL_ONE or GL_SRC_ALPHA onto GL_ONE) through the
     // fixed-function pipeline: a glow, a flare, a particle. With what it is drawn from.
     bool additiveGlow(bool& textured, bool& sourceAlpha) const;
-    // How many vertices a display list called now draws with unit 0's texture on and off:
-    // its own glEnable/glDisable(GL_TEXTURE_2D) and glBindTexture calls (and those of the
-    // lists it calls) decide, from the state at the call. For what must take one setting
-    // for the whole call (the glow ink's).
-    struct ListTexturing {
-        size_t textured = 0, untextured = 0;
+    // What a display list called now draws, by its own state calls (glEnable/glDisable of
+    // GL_TEXTURE_2D and GL_BLEND, glBindTexture, glBlendFunc, and those of the lists it
+    // calls) from the state at the call: for what takes one setting for the whole call (the
+    // glow ink's texturing, whether the styles may hold it).
+    struct ListDraws {
+        size_t textured = 0, untextured = 0; // vertices with unit 0's texture on and off
+        bool blendsLeft = false; // a draw blended in a way the styles leave (additive...)
     };
-    ListTexturing listTexturing(GLuint list) const;
+    ListDraws listDraws(GLuint list) const;
     bool is3D() const;
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
     // The driver's attribute stack depths (GL_MAX_ATTRIB_STACK_DEPTH, ..._CLIENT_...).

@@ -329,6 +329,38 @@ TEST(Compositor, ListsCalledTogetherAndLeftAreCountedAndTinted)
     EXPECT_GT(red, 256u * 192u / 10) << "the plate is not red";
 }
 
+// A list that sets a blend the styles leave inside it (a pool game's ball shadows: white
+// with alpha, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA, called while blending by alpha is on) is left
+// as the program draws it, said and counted: held for the state at the call, its shadow was
+// styled as a white surface.
+TEST(Compositor, AListBlendingInsideAsTheStylesLeaveIsLeft)
+{
+    auto whitePixels = [](bool shadow, std::string* err) {
+        const std::string dir = freshDir(shadow ? "shadow_list" : "no_shadow_list");
+        std::vector<std::string> app = {demo("displaylist"), "--offscreen", "--frames", "3",
+                                        "--size", "256x192", "--save-frames", "3",
+                                        "--save-dir", dir};
+        if (shadow) app.push_back("--shadow-list");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon"}, app));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        if (err) *err = r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/displaylist_3.png", image, error)) << error;
+        size_t white = 0;
+        for (size_t i = 0; i < image.rgba.size(); i += 4) {
+            white += std::min({image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]}) > 200;
+        }
+        return white;
+    };
+    std::string err;
+    const size_t plain = whitePixels(false, nullptr), shadowed = whitePixels(true, &err);
+    EXPECT_LE(shadowed, plain + 20) << "the shadow is white";
+    EXPECT_NE(err.find("display lists that blend inside other than by GL_SRC_ALPHA"),
+              std::string::npos)
+        << err;
+}
+
 // demo_displaylist draws its state and its plate with one glCallLists. The compositor and
 // the tracker must agree on holding it: when the tracker held the plate while the compositor
 // let the call through, the plate was drawn twice, the program's own grey fighting in depth

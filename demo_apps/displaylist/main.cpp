@@ -135,6 +135,10 @@ public:
         return {{"shine", demo::ExtraOption::Kind::Flag,
                  "call the red gear's list a second time, adding light (GL_ONE, GL_ONE) over "
                  "the same vertices, as multi-pass programs draw a surface's layers"},
+                {"shadow-list", demo::ExtraOption::Kind::Flag,
+                 "a list darkens a corner of the plate (white, alpha 0.7, blended GL_ZERO, "
+                 "GL_ONE_MINUS_SRC_ALPHA, set inside the list), called while blending by "
+                 "alpha is on: a ball's shadow in a pool game"},
                 {"glowing-plate", demo::ExtraOption::Kind::Flag,
                  "the plate (called with the state list by one glCallLists) is added to the "
                  "scene (GL_ONE, GL_ONE), as effects drawn from lists of lists are"}};
@@ -144,6 +148,7 @@ public:
     {
         shine_ = options.has("shine");
         glowingPlate_ = options.has("glowing-plate");
+        shadowList_ = options.has("shadow-list");
         base_ = glGenLists(listCount);
         if (base_ == 0) {
             error = "glGenLists failed";
@@ -172,6 +177,22 @@ public:
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glEndList();
 
+        if (shadowList_) {
+            shadow_ = glGenLists(1);
+            glNewList(shadow_, GL_COMPILE);
+            glDisable(GL_LIGHTING);
+            glBlendFunc(GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            glColor4f(1.0f, 1.0f, 1.0f, 0.7f);
+            glBegin(GL_QUADS);
+            glVertex3f(2.5f, 3.0f, -1.9f);
+            glVertex3f(6.5f, 3.0f, -1.9f);
+            glVertex3f(6.5f, 7.0f, -1.9f);
+            glVertex3f(2.5f, 7.0f, -1.9f);
+            glEnd();
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glEnable(GL_LIGHTING);
+            glEndList();
+        }
         glNewList(base_ + plateList, GL_COMPILE);
         setMaterial(0.25f, 0.25f, 0.3f);
         glNormal3f(0.0f, 0.0f, 1.0f);
@@ -211,6 +232,12 @@ public:
         glCallLists(2, GL_UNSIGNED_BYTE, sceneLists);
         if (glowingPlate_) glDisable(GL_BLEND);
         glListBase(0);
+        if (shadow_) {
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glCallList(shadow_);
+            glDisable(GL_BLEND);
+        }
 
         drawGearAt(gear1List, -3.0f, -2.0f, angle);
         if (shine_) {
@@ -223,7 +250,11 @@ public:
         drawGearAt(gear3List, -3.1f, 4.2f, -2.0f * angle - 25.0f);
     }
 
-    void shutdown() override { glDeleteLists(base_, listCount); }
+    void shutdown() override
+    {
+        glDeleteLists(base_, listCount);
+        if (shadow_) glDeleteLists(shadow_, 1);
+    }
 
 private:
     void compileGear(GLuint offset, float r, float g, float b, float inner, float outer,
@@ -249,6 +280,8 @@ private:
     GLuint base_ = 0;
     bool shine_ = false;
     bool glowingPlate_ = false;
+    bool shadowList_ = false;
+    GLuint shadow_ = 0;
 };
 
 } // namespace
