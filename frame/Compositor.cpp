@@ -454,12 +454,16 @@ void Compositor::tintBegin(GLuint list)
     // Fog at an overwhelming density turns every fragment of the fixed-function pipeline into
     // the fog colour, whatever its colours, lighting and textures; the attribute stack gives
     // the program's fog back. A program's own shaders ignore it (their draws stay as drawn).
-    gRealGl.glPushAttrib(GL_FOG_BIT | GL_ENABLE_BIT);
+    // Blended, it is laid over what is behind by its alpha: added, the red of a glow over a
+    // light tint read white or pink, and the draw was not seen as left.
+    gRealGl.glPushAttrib(GL_FOG_BIT | GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT);
     const float red[4] = {1.0f, 0.0f, 0.0f, 1.0f};
     gRealGl.glEnable(GL_FOG);
     gRealGl.glFogi(GL_FOG_MODE, GL_EXP);
     gRealGl.glFogf(GL_FOG_DENSITY, 1.0e6f);
     gRealGl.glFogfv(GL_FOG_COLOR, red);
+    gRealGl.glBlendEquation(GL_FUNC_ADD);
+    gRealGl.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     mTinting = true;
 }
 

@@ -736,8 +736,8 @@ TEST(Compositor, ListsCompiledFromArraysKeepTheArraysColoursAndNormals)
 }
 
 // The coverage style: styled objects in colours of their own, never red; a 3D draw left as
-// the program draws it (here a sphere added to the scene, GL_ONE, GL_ONE) all red, and
-// counted with its reason.
+// the program draws it (here a sphere added to the scene, GL_ONE, GL_ONE) all red, also over
+// the light tint of a styled object, and counted with its reason.
 TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
 {
     const std::string dir = freshDir("coverage");
@@ -756,15 +756,16 @@ TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
-                // Added to the scene, the tint saturates red over whatever is behind; no
-                // colour of the styled objects reaches 250 in red.
-                red += p[0] >= 250;
+                // Laid over what is behind by its alpha (added, it read pink over the floor's
+                // light tint); no colour of the styled objects reaches 250 in red.
+                red += p[0] >= 250 && p[1] < 60 && p[2] < 60;
                 ++all;
             }
         }
         return float(red) / float(all);
     };
     EXPECT_GT(redIn(190, 110, 225, 145), 0.95f) << "the glowing sphere is not red";
+    EXPECT_GT(redIn(195, 130, 220, 155), 0.95f) << "the glow is not red over the floor";
     EXPECT_LT(redIn(85, 110, 135, 160), 0.01f) << "the styled cube is red";
     EXPECT_LT(redIn(20, 200, 300, 235), 0.01f) << "the styled floor is red";
 }
