@@ -944,7 +944,8 @@ const char* StateTracker::listUnstylable(GLuint list) const
 const char* StateTracker::listsUnstylable(GLsizei n, GLenum type, const void* lists) const
 {
     const uint8_t* p = static_cast<const uint8_t*>(lists);
-    if (!p || n <= 0) return nullptr;
+    // 2D drawing (text from font lists, most often) is not counted: no walk over its lists.
+    if (!p || n <= 0 || !is3D()) return nullptr;
     bool anyBatch = false, holdable = true, blendsLeft = false;
     for (GLsizei i = 0; i < std::min<GLsizei>(n, 4096); ++i) {
         const GLuint list = mListBase + listId(type, p, i);
