@@ -590,13 +590,12 @@ bool StateTracker::is3D() const
 
 const char* StateTracker::unstylableState() const
 {
-    const AttribState& a = mAttrib;
     // Drawn now and kept in the list: the list's later calls are styled, this first one not.
     if (mCompiling && mCompileAndExecute) return "glNewList(GL_COMPILE_AND_EXECUTE)";
     if (leftByRule()) return "a rule of the program's configuration (leave_texture, leave_state)";
     // The program's shaders decide colour and position; a style would draw something else.
     if (ownShaders()) return "the program's own shaders";
-    if (a.blend && !translucent()) {
+    if (blending() && !translucent()) {
         return "blending other than GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA (additive, effects)";
     }
     if (const char* why = pipelineLimit()) return why;
@@ -634,7 +633,7 @@ bool StateTracker::mayLayer(GLenum mode) const
     // it draws over.
     const AttribState& a = mAttrib;
     if (!mHolding || !isPolygonMode(mode) || mCompiling || mRenderMode != GL_RENDER ||
-        !is3D() || !a.blend || !a.colorMaskAll) {
+        !is3D() || !blending() || !a.colorMaskAll) {
         return false;
     }
     if (ownShaders() || pipelineLimit() || leftByRule()) return false;
@@ -1127,9 +1126,10 @@ StateTracker::ListDraws StateTracker::listDraws(GLuint list) const
                     const size_t n = it->second.batches[size_t(item.batch)].vertices.size();
                     const bool on = now.texture2D && t.sceneTexture(now.bound) != 0;
                     (on ? out.textured : out.untextured) += n;
-                    out.blendsLeft = out.blendsLeft ||
-                                     (now.blend && !(now.src == GL_SRC_ALPHA &&
-                                                     now.dst == GL_ONE_MINUS_SRC_ALPHA));
+                    const bool replaces = now.src == GL_ONE && now.dst == GL_ZERO;
+                    const bool byAlpha = now.src == GL_SRC_ALPHA &&
+                                         now.dst == GL_ONE_MINUS_SRC_ALPHA;
+                    out.blendsLeft = out.blendsLeft || (now.blend && !replaces && !byAlpha);
                     continue;
                 }
                 step(item.call, depth);
@@ -1174,6 +1174,14 @@ StateTracker::ListDraws StateTracker::listDraws(GLuint list) const
               mActiveUnit, {}};
     walk.run(list, 0);
     return walk.out;
+}
+
+bool StateTracker::blending() const
+{
+    // GL_ONE, GL_ZERO (the default functions) replaces what is behind: no blending at all
+    // (trigger-rally leaves GL_BLEND on for the whole frame and draws its opaque parts so).
+    const AttribState& a = mAttrib;
+    return a.blend && !(a.blendSrc == GL_ONE && a.blendDst == GL_ZERO);
 }
 
 bool StateTracker::translucent() const
@@ -1521,7 +1529,7 @@ bool StateTracker::keep(TrackedBatch& batch)
         // start arrow on its floor tile), whose picture is its own.
         const bool layer = translucent();
         const bool lifted = a.polygonOffsetFill && (a.offsetFactor < 0.0f || a.offsetUnits < 0.0f);
-        if (a.blend && !(layer && lifted) && repeatsHeld(batch, layer)) {
+        if (blending() && !(layer && lifted) && repeatsHeld(batch, layer)) {
             if (mWatch.on) ++mWatch.repeated;
             else ++mMergedPasses;
             return false;

@@ -280,6 +280,8 @@ public:
     void fog(GLenum pname, const float* v, size_t count);
     // GL_FOG_MODE while GL_FOG is on, else 0.
     GLenum fogMode() const { return mAttrib.fog ? mAttrib.fogMode : 0; }
+    // Blending that changes a pixel (GL_BLEND on, functions other than GL_ONE, GL_ZERO).
+    bool blending() const;
     // Blending on with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.
     bool translucent() const;
     // The enabled light with the brightest diffuse colour (0 when none is on).

@@ -1048,6 +1048,30 @@ TEST(StateTracker, ACameraInTheProjectionMatrixIsStillAPerspective)
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
 }
 
+// GL_ONE, GL_ZERO replaces what is behind: blending on with the default functions is no
+// blending (trigger-rally leaves GL_BLEND on all frame and draws its car and terrain so; all
+// of it was left as 'blending other than ...').
+TEST(StateTracker, BlendingThatReplacesIsNoBlending)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_BLEND, true);
+    auto blendFunc = [&](GLenum src, GLenum dst) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBlendFunc);
+            w.put<GLenum>(src);
+            w.put<GLenum>(dst);
+        });
+    };
+    blendFunc(GL_ONE, GL_ZERO);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    EXPECT_FALSE(tracker.translucent());
+    blendFunc(GL_ONE, GL_ONE);
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES)) << "additive blending held";
+}
+
 // Blending by alpha and the alpha test where no alpha of the draw can be below 1 change no
 // pixel: such draws are opaque ones (extremetuxracer blends and alpha-tests all its drawing,
 // with material alphas of 0.99999994 and textures made by glTexImage2D without pixels and
