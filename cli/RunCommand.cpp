@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace nprgl::cli {
@@ -18,6 +19,42 @@ namespace nprgl::cli {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The program as execvp finds it: a name with a slash as it is, else the first executable
+// of that name on PATH.
+std::string findProgram(const std::string& name)
+{
+    if (name.find('/') != std::string::npos) return name;
+    const char* path = std::getenv("PATH");
+    std::string dirs = path && *path ? path : "/usr/local/bin:/usr/bin:/bin";
+    for (size_t start = 0; start <= dirs.size();) {
+        size_t end = dirs.find(':', start);
+        if (end == std::string::npos) end = dirs.size();
+        const std::string dir = end > start ? dirs.substr(start, end - start) : ".";
+        const std::string candidate = dir + "/" + name;
+        if (access(candidate.c_str(), X_OK) == 0) return candidate;
+        start = end + 1;
+    }
+    return {};
+}
+
+// A set-user-ID or set-group-ID program that changes the ids runs in secure-execution mode,
+// where the dynamic loader ignores LD_PRELOAD: nprgl would silently not be there.
+void warnIfSecureExecution(const std::string& name)
+{
+    const std::string program = findProgram(name);
+    struct stat st {};
+    if (program.empty() || stat(program.c_str(), &st) != 0) return;
+    const bool uid = (st.st_mode & S_ISUID) && st.st_uid != getuid();
+    const bool gid = (st.st_mode & S_ISGID) && st.st_gid != getgid();
+    if (!uid && !gid) return;
+    std::fprintf(stderr,
+                 "nprgl: warning: %s is set-%s-ID: the dynamic loader ignores LD_PRELOAD for "
+                 "it, so nprgl cannot reach its GL calls and it runs as it is (no style, no "
+                 "capture). Run a copy without the bit: cp %s ./%s && chmod u-s,g-s ./%s\n",
+                 program.c_str(), uid ? "user" : "group", program.c_str(),
+                 fs::path(program).filename().c_str(), fs::path(program).filename().c_str());
+}
 
 int fail(const std::string& message)
 {
@@ -129,6 +166,7 @@ int runProgram(const RunOptions& options)
 #endif
     setenv("LD_PRELOAD", preload.c_str(), 1);
 
+    warnIfSecureExecution(options.command.front());
     std::vector<char*> argv;
     for (const std::string& arg : options.command) argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);

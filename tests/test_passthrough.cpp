@@ -7,12 +7,18 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
 using namespace nprgl;
 using namespace nprgl::test;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -161,6 +167,25 @@ TEST(OddPrograms, ProgramsWithoutGlSeeNoDifference)
     ProcessResult preload = runProcess({"ls", "-l", quiet}, {{"LD_PRELOAD", preloadValue()}});
     EXPECT_EQ(preload.out, lsNative.out);
     EXPECT_EQ(preload.err, "");
+}
+
+// A set-group-ID program that changes the group runs in secure-execution mode, where the
+// dynamic loader ignores LD_PRELOAD: nprgl cannot be there, and says so instead of running
+// the program silently as it is (/usr/games/pinball is one).
+TEST(OddPrograms, ASetGroupIdProgramIsNamedAsOneNprglCannotReach)
+{
+    if (geteuid() != 0) GTEST_SKIP() << "needs root to give a copy another group";
+    const std::string dir = freshDir("setgid");
+    const std::string program = dir + "/demo_immediate";
+    fs::copy_file(demo("immediate"), program);
+    ASSERT_EQ(chown(program.c_str(), 0, 65534), 0) << std::strerror(errno);
+    ASSERT_EQ(chmod(program.c_str(), 02755), 0) << std::strerror(errno);
+    ProcessResult r = runProcess({nprglCommand(), "--style", "none", "--", program,
+                                  "--offscreen", "--frames", "1", "--size", "64x48"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find(program + " is set-group-ID: the dynamic loader ignores LD_PRELOAD"),
+              std::string::npos)
+        << r.err;
 }
 
 TEST(OddPrograms, CallsWithoutAContextBehaveAsNative)
