@@ -1,5 +1,6 @@
 #include "replay/ReplaySink.h"
 
+#include "common/Log.h"
 #include "frame/ClientArrays.h"
 #include "shim/RealGl.h"
 #include "stream/CallDecoder.h"
@@ -9,6 +10,7 @@
 #include <cctype>
 #include <limits>
 #include <string_view>
+#include <utility>
 
 namespace nprgl {
 
@@ -467,10 +469,28 @@ bool ReplaySink::check_glDrawRangeElements(GLenum, GLuint start, GLuint end, GLs
     if (!chargeWork(mWork)) return false;
     uint64_t maxIndex = 0;
     if (!checkIndices("glDrawRangeElements", count, type, image, indices, maxIndex)) return false;
-    // The driver may read the whole declared range: it must not fault; the indices must
-    // find data.
-    return checkVertices("glDrawRangeElements", start, uint64_t(end) + 1, true) &&
-           checkVertices("glDrawRangeElements", 0, maxIndex + 1);
+    if (!checkVertices("glDrawRangeElements", 0, maxIndex + 1)) return false;
+    // The driver may read the whole declared range, which must not fault. A range past the
+    // arrays whose indices all find data (trigger-rally gives `end` one past its last vertex;
+    // GL does not check the hint, and the program draws fine) is drawn without the range.
+    mDropRange = readableVertices(true) < uint64_t(end) + 1;
+    if (mDropRange && !mDropRangeSaid) {
+        mDropRangeSaid = true;
+        NPRGL_INFO("glDrawRangeElements with a range past its arrays (end %u) but indices "
+                   "within them: drawn as glDrawElements (the range is only a hint)",
+                   end);
+    }
+    return true;
+}
+
+void ReplaySink::issue_glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                           GLenum type, const void* indices)
+{
+    if (std::exchange(mDropRange, false)) {
+        gl().glDrawElements(mode, count, type, indices);
+    } else {
+        gl().glDrawRangeElements(mode, start, end, count, type, indices);
+    }
 }
 
 bool ReplaySink::check_glMultiDrawArrays(GLenum, const GLint* first, const GLsizei* count,

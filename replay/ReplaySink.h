@@ -63,6 +63,9 @@ public:
                               const Image& image);
     bool check_glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
                                    GLenum type, const void* indices, const Image& image);
+    // Issued as glDrawElements when the check found its range past the arrays.
+    void issue_glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                   GLenum type, const void* indices);
     bool check_glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
                                  GLsizei drawcount);
     bool check_glArrayElement(GLint i);
@@ -130,6 +133,8 @@ private:
     std::string mError;
     std::vector<ArrayUse> mUses;
     bool mUsesValid = false;
+    bool mDropRange = false;     // the next glDrawRangeElements is issued without its range
+    bool mDropRangeSaid = false;
     bool mListBegun = false; // a glBegin compiled into the list being defined, not yet ended
     uint64_t mWork = 1; // of the current call, for a list being compiled
     uint64_t mTotalWork = 0;

@@ -87,6 +87,10 @@ CHECKED = {
     "glGenFramebuffers", "glGenRenderbuffers", "glGenProgramsARB",
 }
 
+# Calls a replaying sink may issue itself, in another form: when it has issue_<name>(the
+# driver's arguments), that is called instead of the driver's entry point.
+ISSUED = {"glDrawRangeElements"}
+
 
 class Param:
     def __init__(self, ctype, name, length, group):
@@ -417,7 +421,15 @@ def emitDecode(cmds, groups):
         out.append("        if constexpr (Sink::kReplays) {")
         out.append(f"            if (!sink.before({op})) return false;")
         out += checkLines(op, name, params)
-        out.append(f"            sink.gl().{name}({', '.join(cargs)});")
+        if name in ISSUED:
+            call = ", ".join(cargs)
+            out.append(f"            if constexpr (requires {{ sink.issue_{name}({call}); }}) {{")
+            out.append(f"                sink.issue_{name}({call});")
+            out.append("            } else {")
+            out.append(f"                sink.gl().{name}({call});")
+            out.append("            }")
+        else:
+            out.append(f"            sink.gl().{name}({', '.join(cargs)});")
         out.append(f"            sink.after({op});")
         out.append("        } else {")
         out.append(f'            sink.begin("{name}");')

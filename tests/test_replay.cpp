@@ -219,6 +219,37 @@ TEST(Replay, PointerIntoDeletedBufferIsRefused)
     EXPECT_NE(replayError(path).find("call 5 (glDrawArrays)"), std::string::npos);
 }
 
+// glDrawRangeElements' range is a hint GL does not check: trigger-rally gives `end` one past
+// its last vertex (of a vertex buffer), its indices all within. The replay refused every race
+// frame ("reads vertices 0..3 of arrays holding 3"); it now draws such a call without the
+// range, and still refuses indices past the arrays.
+TEST(Replay, ARangeHintOnePastTheArraysIsDrawnWithoutIt)
+{
+    auto frame = [](uint16_t last) {
+        return [last](CallWriter& w) {
+            call(w, op::glBindBuffer, GLenum(GL_ARRAY_BUFFER), GLuint(7));
+            size_t mark = beginCall(w, op::glBufferData, GLenum(GL_ARRAY_BUFFER),
+                                    GLsizeiptr(sizeof kTriangle), GLenum(GL_STATIC_DRAW));
+            w.putBytes(kTriangle, sizeof kTriangle);
+            w.endPayload(mark);
+            call(w, op::glEnableClientState, GLenum(GL_VERTEX_ARRAY));
+            w.endPayload(beginCall(w, op::glVertexPointer, GLint(3), GLenum(GL_FLOAT),
+                                   GLsizei(0), uint64_t(0)));
+            const uint16_t indices[] = {0, 1, last};
+            mark = beginCall(w, op::glDrawRangeElements, GLenum(GL_TRIANGLES), GLuint(0),
+                             GLuint(3), GLsizei(3), GLenum(GL_UNSIGNED_SHORT), uint8_t(1));
+            w.putBytes(indices, sizeof indices);
+            w.endPayload(mark);
+        };
+    };
+    std::string error;
+    EXPECT_TRUE(Replayer::run(writeCapture("range_hint", {frame(2)}), ReplayOptions{}, error))
+        << error;
+    EXPECT_NE(replayError(writeCapture("range_index", {frame(3)}))
+                  .find("reads vertices 0..3 of arrays holding 3"),
+              std::string::npos);
+}
+
 TEST(Replay, ShortImageIsRefused)
 {
     std::string path = writeCapture("image", {[](CallWriter& w) {
