@@ -259,6 +259,33 @@ struct Feed {
             w.put<GLenum>(cap);
         });
     }
+    void depthMask(bool on)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glDepthMask);
+            w.put<GLboolean>(on ? GL_TRUE : GL_FALSE);
+        });
+    }
+    void blendFunc(GLenum src, GLenum dst)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glBlendFunc);
+            w.put<GLenum>(src);
+            w.put<GLenum>(dst);
+        });
+    }
+    // Calls on GL_PROJECTION, then back to GL_MODELVIEW.
+    template <typename Write>
+    void projection(Write&& write)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glMatrixMode);
+            w.put<GLenum>(GL_PROJECTION);
+            write(w);
+            w.op(op::glMatrixMode);
+            w.put<GLenum>(GL_MODELVIEW);
+        });
+    }
     // One triangle in immediate mode.
     void triangle()
     {
@@ -1000,23 +1027,15 @@ TEST(StateTracker, OrthographicDrawingWithoutDepthWritesIsTwoDimensional)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    feed.run([](CallWriter& w) {
-        w.op(op::glMatrixMode);
-        w.put<GLenum>(GL_PROJECTION);
+    feed.projection([](CallWriter& w) {
         w.op(op::glOrtho);
         for (double v : {0.0, 640.0, 480.0, 0.0, 0.0, 1.0}) w.put<double>(v);
-        w.op(op::glMatrixMode);
-        w.put<GLenum>(GL_MODELVIEW);
-        w.op(op::glDepthMask);
-        w.put<GLboolean>(GL_FALSE);
     });
+    feed.depthMask(false);
     feed.enable(GL_DEPTH_TEST, true);
     EXPECT_FALSE(tracker.is3D());
     EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES));
-    feed.run([](CallWriter& w) {
-        w.op(op::glDepthMask);
-        w.put<GLboolean>(GL_TRUE);
-    });
+    feed.depthMask(true);
     EXPECT_TRUE(tracker.is3D());
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
 }
@@ -1031,18 +1050,13 @@ TEST(StateTracker, ACameraInTheProjectionMatrixIsStillAPerspective)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    feed.run([](CallWriter& w) {
-        w.op(op::glMatrixMode);
-        w.put<GLenum>(GL_PROJECTION);
+    feed.projection([](CallWriter& w) {
         w.op(op::glFrustum);
         for (double v : {-1.0, 1.0, -0.75, 0.75, 1.0, 100.0}) w.put<double>(v);
         w.op(op::glTranslatef);
         for (float c : {-13.0f, -19.0f, -16.7f}) w.put<float>(c);
-        w.op(op::glMatrixMode);
-        w.put<GLenum>(GL_MODELVIEW);
-        w.op(op::glDepthMask);
-        w.put<GLboolean>(GL_FALSE);
     });
+    feed.depthMask(false);
     feed.enable(GL_DEPTH_TEST, false);
     EXPECT_TRUE(tracker.is3D());
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
@@ -1058,17 +1072,10 @@ TEST(StateTracker, BlendingThatReplacesIsNoBlending)
     Feed feed{tracker};
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_BLEND, true);
-    auto blendFunc = [&](GLenum src, GLenum dst) {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glBlendFunc);
-            w.put<GLenum>(src);
-            w.put<GLenum>(dst);
-        });
-    };
-    blendFunc(GL_ONE, GL_ZERO);
+    feed.blendFunc(GL_ONE, GL_ZERO);
     EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
     EXPECT_FALSE(tracker.translucent());
-    blendFunc(GL_ONE, GL_ONE);
+    feed.blendFunc(GL_ONE, GL_ONE);
     EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES)) << "additive blending held";
 }
 
@@ -1167,13 +1174,7 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
             w.op(op::glEnd);
         });
     };
-    auto blend = [&](GLenum src, GLenum dst) {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glBlendFunc);
-            w.put<GLenum>(src);
-            w.put<GLenum>(dst);
-        });
-    };
+    auto blend = [&](GLenum src, GLenum dst) { feed.blendFunc(src, dst); };
     // Asks as the compositor does before the driver sees the draw.
     auto pass = [&](float dx) {
         EXPECT_TRUE(tracker.mayLayer(GL_TRIANGLES));
