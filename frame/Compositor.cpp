@@ -798,15 +798,18 @@ void Compositor::buildScene()
         b.mode = t.mode;
         b.modelview = t.modelview;
         b.materialId = t.materialId;
-        // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render).
+        // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render),
+        // also among those drawn without the depth test or depth writes (bzflag's cloud layer,
+        // blended, joined the opaque ground drawn before it and covered its sky in white).
         const bool offset = t.offsetFactor != 0.0f || t.offsetUnits != 0.0f;
-        b.pass = !t.depthTest      ? 5
-                 : t.depthOnly     ? 3
-                 : !t.depthWrite && !t.translucent ? 6
-                 : t.translucent   ? 1
-                 : t.alphaFunc != GL_ALWAYS ? 2
-                 : offset          ? 4
-                                   : 0;
+        const int look = t.translucent               ? 1
+                         : t.alphaFunc != GL_ALWAYS ? 2
+                         : offset                   ? 4
+                                                    : 0;
+        b.pass = !t.depthTest                       ? 5 + 10 * look
+                 : t.depthOnly                      ? 3
+                 : !t.depthWrite && !t.translucent ? 6 + 10 * look
+                                                    : look;
         b.vertices.swap(t.vertices);
         b.contentHash = t.contentHash != 0 ? t.contentHash : reconstruct::hashBatch(b);
     }

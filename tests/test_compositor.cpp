@@ -304,6 +304,31 @@ TEST(Compositor, ABackdropInTheClearColourStaysOnThePage)
     EXPECT_GT(at(160, 10)[0], 200) << "no page above the scene";
 }
 
+// A translucent layer drawn without the depth test over an opaque backdrop drawn the same way
+// (a sky's clouds over its ground: bzflag) stays translucent: the two were one object, opaque
+// as the first, and the haze came out white over the floor (and bzflag's whole sky).
+TEST(Compositor, ATranslucentBackdropOverAnOpaqueOneStaysTranslucent)
+{
+    auto hazeAt = [](const std::string& style) {
+        const std::string dir = freshDir("backdrop_haze");
+        ProcessResult r = runProcess(
+            under({nprglCommand(), "--style", style},
+                  {demo("textured"), "--backdrop-floor", "--backdrop-haze", "--offscreen",
+                   "--size", "320x240", "--frames", "2", "--save-frames", "2", "--save-dir",
+                   dir}));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
+        // The haze over the floor's far half, left of the cube.
+        return int(image.rgba.empty() ? 0 : image.rgba[(size_t(150) * image.width + 160) * 4]);
+    };
+    const int native = hazeAt("none"), styled = hazeAt("toon+paper");
+    EXPECT_GT(native, 60) << "no haze: no test";
+    EXPECT_LT(native, 160) << "no haze: no test";
+    EXPECT_NEAR(styled, native, 20) << "the haze is not translucent";
+}
+
 // Lists called together and left (the plate added to the scene, GL_ONE, GL_ONE, by the one
 // glCallLists of demo_displaylist) are counted with their reason and painted red by the
 // coverage style, as a glCallList is: they were neither (a 3D draw nobody was told of).

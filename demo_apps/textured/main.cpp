@@ -165,6 +165,9 @@ public:
                 {"backdrop-floor", demo::ExtraOption::Kind::Flag,
                  "the floor is a backdrop in the clear colour: unlit, untextured, drawn first "
                  "without the depth test or depth writes (a dark arena floor)"},
+                {"backdrop-haze", demo::ExtraOption::Kind::Flag,
+                 "with --backdrop-floor: a haze over the floor's far half, white at 25% "
+                 "opacity, blended by alpha, also without the depth test (a sky's clouds)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
@@ -198,6 +201,7 @@ public:
         glowListPlain_ = options.has("glow-list-plain");
         lateFloor_ = options.has("late-floor");
         backdropFloor_ = options.has("backdrop-floor");
+        backdropHaze_ = options.has("backdrop-haze");
         depthPrepass_ = options.has("depth-prepass");
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
@@ -315,6 +319,18 @@ public:
         glTexCoord2f(0.0f, 4.0f);
         glVertex3f(-3.0f, -1.0f, -3.0f);
         glEnd();
+        if (backdropFloor_ && backdropHaze_) {
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glColor4f(1.0f, 1.0f, 1.0f, 0.25f);
+            glBegin(GL_QUADS);
+            glVertex3f(-3.0f, -0.99f, 0.0f);
+            glVertex3f(3.0f, -0.99f, 0.0f);
+            glVertex3f(3.0f, -0.99f, -3.0f);
+            glVertex3f(-3.0f, -0.99f, -3.0f);
+            glEnd();
+            glDisable(GL_BLEND);
+        }
         if (backdropFloor_) glPopAttrib();
         if (decal_) {
             // In the floor's plane: only the offset keeps it in front of the floor.
@@ -456,6 +472,7 @@ private:
     bool glowListPlain_ = false;
     bool lateFloor_ = false;
     bool backdropFloor_ = false;
+    bool backdropHaze_ = false;
     GLuint lateFloorTexture_ = 0;
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;
