@@ -799,7 +799,11 @@ uint32_t StateTracker::droppedLayers() const
 {
     uint32_t layers = 0;
     texturedUnits(layers);
-    if (surfaceUnit() < 0) return 0;
+    const int surface = surfaceUnit();
+    if (surface < 0) return 0;
+    // A surface on generated coordinates comes from among the layers (texturedUnits finds no
+    // plain one): it is drawn, not dropped.
+    layers &= ~(1u << surface);
     const int light = mAttrib.lighting ? -1 : lightUnit();
     return light < 0 ? layers : layers & ~(1u << light);
 }
