@@ -22,6 +22,21 @@ namespace {
 constexpr const char* kListBlendsLeft = "display lists that blend inside other than by "
                                         "GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA (shadows, effects)";
 
+// Blending that changes a pixel: GL_BLEND on, with functions other than GL_ONE, GL_ZERO (the
+// defaults, which replace what is behind: trigger-rally leaves GL_BLEND on all frame and draws
+// its opaque parts so).
+bool changesPixels(bool blend, GLenum src, GLenum dst)
+{
+    return blend && !(src == GL_ONE && dst == GL_ZERO);
+}
+
+// Blending by the fragment's alpha: a translucent surface, which the styles draw after the
+// opaque scene with the program's blending.
+bool byAlpha(bool blend, GLenum src, GLenum dst)
+{
+    return blend && src == GL_SRC_ALPHA && dst == GL_ONE_MINUS_SRC_ALPHA;
+}
+
 // An enum given as a float (glTexEnvf, glFogf, glTexGenf): 0, which names no mode, where the
 // value is none (NaN, negative, past 32 bits: converting those is undefined behaviour).
 GLenum enumOf(double value)
@@ -952,11 +967,11 @@ const char* StateTracker::listsUnstylable(GLsizei n, GLenum type, const void* li
     bool anyBatch = false, holdable = true, blendsLeft = false;
     for (GLsizei i = 0; i < std::min<GLsizei>(n, 4096); ++i) {
         const GLuint list = mListBase + listId(type, p, i);
-        bool batches = false;
-        holdable = listHoldable(list, batches) && holdable;
-        blendsLeft = blendsLeft || listDraws(list).blendsLeft;
-        auto it = mLists.find(list);
-        anyBatch = anyBatch || batches || (it != mLists.end() && !it->second.batches.empty());
+        bool ignored = false;
+        holdable = listHoldable(list, ignored) && holdable;
+        const ListDraws drawn = listDraws(list); // its batches and those of the lists it calls
+        anyBatch = anyBatch || drawn.textured + drawn.untextured > 0;
+        blendsLeft = blendsLeft || drawn.blendsLeft;
     }
     if (!anyBatch) return nullptr;
     if (const char* why = unstylableState()) return why;
@@ -1130,10 +1145,9 @@ StateTracker::ListDraws StateTracker::listDraws(GLuint list) const
                     const size_t n = it->second.batches[size_t(item.batch)].vertices.size();
                     const bool on = now.texture2D && t.sceneTexture(now.bound) != 0;
                     (on ? out.textured : out.untextured) += n;
-                    const bool replaces = now.src == GL_ONE && now.dst == GL_ZERO;
-                    const bool byAlpha = now.src == GL_SRC_ALPHA &&
-                                         now.dst == GL_ONE_MINUS_SRC_ALPHA;
-                    out.blendsLeft = out.blendsLeft || (now.blend && !replaces && !byAlpha);
+                    out.blendsLeft = out.blendsLeft ||
+                                     (changesPixels(now.blend, now.src, now.dst) &&
+                                      !byAlpha(now.blend, now.src, now.dst));
                     continue;
                 }
                 step(item.call, depth);
@@ -1182,18 +1196,12 @@ StateTracker::ListDraws StateTracker::listDraws(GLuint list) const
 
 bool StateTracker::blending() const
 {
-    // GL_ONE, GL_ZERO (the default functions) replaces what is behind: no blending at all
-    // (trigger-rally leaves GL_BLEND on for the whole frame and draws its opaque parts so).
-    const AttribState& a = mAttrib;
-    return a.blend && !(a.blendSrc == GL_ONE && a.blendDst == GL_ZERO);
+    return changesPixels(mAttrib.blend, mAttrib.blendSrc, mAttrib.blendDst);
 }
 
 bool StateTracker::translucent() const
 {
-    // Blending over what is behind by the fragment's alpha: a translucent surface, which the
-    // styles draw after the opaque scene with the program's blending.
-    const AttribState& a = mAttrib;
-    return a.blend && a.blendSrc == GL_SRC_ALPHA && a.blendDst == GL_ONE_MINUS_SRC_ALPHA;
+    return byAlpha(mAttrib.blend, mAttrib.blendSrc, mAttrib.blendDst);
 }
 
 void StateTracker::blendFunc(GLenum src, GLenum dst)
