@@ -62,8 +62,9 @@ public:
     // False with a message when the style cannot run here (the chain then skips it).
     virtual bool init(StyleContext& ctx, std::string& error) = 0;
     virtual void render(const Scene& scene, StyleContext& ctx) = 0;
-    // First in a flush, before anything of it is drawn (with the baseline of the styles after
-    // shading): what goes behind all of the program's drawing (the page).
+    // A background style's, first in a flush, before anything of it is drawn (with the
+    // baseline of the styles after shading): what goes behind all of the program's drawing
+    // (the page).
     virtual void layBackground(const Scene&, StyleContext&) {}
     virtual void shutdown(StyleContext& ctx) = 0;
 };

@@ -38,6 +38,7 @@ bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getPro
             continue;
         }
         mHasShading = mHasShading || info->role == StyleRole::Shading;
+        if (info->role == StyleRole::Background) mBackgrounds.push_back(mStyles.size());
         mStyles.push_back(std::move(style));
         if (info->role == StyleRole::Background && !mGlowInkReady) {
             std::string inkError;
@@ -162,7 +163,7 @@ void StyleChain::render(const Scene& scene)
     const GlFunctions& gl = mContext.gl;
     // The page under everything: a backdrop in the clear colour, drawn without depth (a dark
     // floor), stays the program's and does not become page.
-    for (size_t i = 0; i < mStyles.size(); ++i) {
+    for (size_t i : mBackgrounds) {
         setBaseline(scene, i == 0 && mHasShading);
         mStyles[i]->layBackground(scene, mContext);
     }
@@ -230,6 +231,7 @@ void StyleChain::shutdown()
 {
     for (const std::unique_ptr<Style>& style : mStyles) style->shutdown(mContext);
     mStyles.clear();
+    mBackgrounds.clear();
     if (mGlowInkReady) mGlowInk.shutdown(mContext.gl);
     mGlowInkReady = false;
     if (mContext.gl.DeleteVertexArrays) {

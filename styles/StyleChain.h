@@ -40,6 +40,7 @@ private:
     StyleSettings mSettings;
     StyleContext mContext;
     std::vector<std::unique_ptr<Style>> mStyles;
+    std::vector<size_t> mBackgrounds; // indices in mStyles of the background styles
     bool mHasShading = false;
     GlowInk mGlowInk;
     bool mGlowInkReady = false;
