@@ -72,9 +72,14 @@ void AttribStack::pop()
     if (mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
         a.texture2D = saved.texture2D;
         a.textureUnits = saved.textureUnits;
+        a.texture2DUnits = saved.texture2DUnits;
         a.texGen = saved.texGen;
     }
     if (mask & GL_TEXTURE_BIT) {
+        a.envMode = saved.envMode;
+        a.combineRgb = saved.combineRgb;
+        a.rgbScale = saved.rgbScale;
+        a.combineArgs = saved.combineArgs;
         a.texGenMode = saved.texGenMode;
         a.objectPlane = saved.objectPlane;
         a.eyePlane = saved.eyePlane;

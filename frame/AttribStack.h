@@ -21,6 +21,12 @@ struct AttribState {
     // the surface's and which layer light or effects over it.
     std::array<GLenum, 8> envMode{GL_MODULATE, GL_MODULATE, GL_MODULATE, GL_MODULATE,
                                   GL_MODULATE, GL_MODULATE, GL_MODULATE, GL_MODULATE};
+    // GL_COMBINE's colour function, GL_RGB_SCALE, and its first two colour sources and
+    // operands (at 4u: GL_SOURCE0_RGB, GL_SOURCE1_RGB, GL_OPERAND0_RGB, GL_OPERAND1_RGB) per
+    // unit: what a layer the styles do not draw does to the colour on average.
+    std::array<GLenum, 8> combineRgb = filled<GLenum>(GL_MODULATE);
+    std::array<float, 8> rgbScale = filled(1.0f);
+    std::array<GLenum, 32> combineArgs = defaultCombineArgs();
     uint32_t texGen = 0;       // bit 4u + c: coordinate c (S, T, R, Q) generated on unit u < 8
     // glTexGen's mode (GL's default GL_EYE_LINEAR) of coordinate c on unit u at 4u + c, and
     // the object and eye planes of S and T at 2u + c (GL's defaults; the eye planes in eye
@@ -66,6 +72,16 @@ struct AttribState {
     {
         std::array<T, N> a;
         a.fill(value);
+        return a;
+    }
+    static std::array<GLenum, 32> defaultCombineArgs()
+    {
+        std::array<GLenum, 32> a;
+        for (size_t u = 0; u < 8; ++u) {
+            a[4 * u] = GL_TEXTURE;
+            a[4 * u + 1] = GL_PREVIOUS;
+            a[4 * u + 2] = a[4 * u + 3] = GL_SRC_COLOR;
+        }
         return a;
     }
     static std::array<glm::vec4, 16> defaultPlanes()

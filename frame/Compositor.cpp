@@ -839,6 +839,8 @@ void Compositor::buildScene()
         s.lights = t.lights;
         s.texture = t.texture;
         s.lightmap = t.lightmap;
+        s.layerScale = t.layerScale;
+        s.layerOffset = t.layerOffset;
         s.translucent = t.translucent;
         s.depthWrite = t.depthWrite;
         s.depthTest = t.depthTest;

@@ -208,7 +208,9 @@ void APIENTRY tTexEnviv(GLenum target, GLenum pname, const GLint* params)
 void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* params)
 {
     // GL_TEXTURE_ENV_COLOR is four floats; the mode is one.
-    if (params && pname == GL_TEXTURE_ENV_MODE) T().texEnv(target, pname, enumOf(params[0]));
+    if (params && (pname == GL_TEXTURE_ENV_MODE || pname == GL_RGB_SCALE)) {
+        T().texEnv(target, pname, enumOf(params[0]));
+    }
 }
 void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsizei height, GLint,
                           GLenum format, GLenum type, const void* pixels)
@@ -914,6 +916,21 @@ GLuint StateTracker::unitTexture(int unit) const
     return sceneTexture(mUnitTextures[size_t(unit)]);
 }
 
+void StateTracker::bakeObjectLinear(TrackedBatch& batch) const
+{
+    // Coordinates on object planes are fixed to the vertices like the program's own: made
+    // here, per batch, they stay right when batches with planes of their own (a terrain's
+    // tiles, each its texture and its planes) are welded into one object.
+    styles::GeneratedTexture& g = batch.generated;
+    if (g.texture == 0 || g.mode[0] != GL_OBJECT_LINEAR || g.mode[1] != GL_OBJECT_LINEAR) return;
+    for (TrackedVertex& v : batch.vertices) {
+        const glm::vec4 p(v.position, 1.0f);
+        v.texcoord = {glm::dot(g.plane[0], p), glm::dot(g.plane[1], p)};
+    }
+    batch.texture = g.texture; // the texture matrix follows (applyTextureMatrices)
+    g = {};
+}
+
 void StateTracker::applyTextureMatrices(TrackedBatch& batch) const
 {
     // The texture and lightmap coordinates as the units' texture matrices move them (a
@@ -1395,7 +1412,7 @@ void StateTracker::attrib(Attrib kind, float x, float y, float z, float w)
     switch (kind) {
     case Attrib::Normal:
         mCurrent.normal = {x, y, z};
-        mCurrent.hasNormal = mNormalSet = true;
+        mCurrent.hasNormal = mNormalSet = mNormalFresh = true;
         mListSetsNormal = mListSetsNormal || mCompiling;
         break;
     case Attrib::Color:
@@ -1438,18 +1455,20 @@ void StateTracker::begin(GLenum mode)
     mBatch = TrackedBatch();
     mBatch.vertices = takeVertices();
     mBatch.mode = mode;
-    mBatch.hasNormals = mNormalSet;
+    mBatch.hasNormals = currentNormalCounts();
     mBatch.beginMaterial = mAttrib.materialDiffuse;
+    mNormalFresh = false; // from here: whether the batch sets normals itself
 }
 
 void StateTracker::end()
 {
     if (!mInBegin) return;
     mInBegin = false;
-    if (!mBatch.hasNormals && mNormalSet) {
-        // The first glNormal came inside this batch: the vertices before it count as well.
-        mBatch.hasNormals = true;
-        for (TrackedVertex& v : mBatch.vertices) v.hasNormal = true;
+    if (!mBatch.hasNormals) {
+        // A glNormal inside the batch: the vertices before it count as well. None: the
+        // vertices carry no normal of their own (see currentNormalCounts).
+        mBatch.hasNormals = mNormalFresh;
+        for (TrackedVertex& v : mBatch.vertices) v.hasNormal = mNormalFresh;
     }
     emit(std::move(mBatch));
     mBatch = TrackedBatch();
@@ -1476,8 +1495,17 @@ uint32_t StateTracker::currentMaterialId()
     return id;
 }
 
+bool StateTracker::currentNormalCounts() const
+{
+    // Unlit, the program's picture never sees the current normal, and one set for an earlier
+    // object is no normal of this one: the styles then take the geometry's own. A list being
+    // compiled is lit or not where it is called: its normals count as before.
+    return mNormalSet && (mNormalFresh || mAttrib.lighting || mCompiling);
+}
+
 void StateTracker::emit(TrackedBatch&& batch)
 {
+    mNormalFresh = false;
     if (keep(batch)) {
         indexBatch(batch);
         mFrameBatches.push_back(std::move(batch));
@@ -1552,9 +1580,13 @@ bool StateTracker::keep(TrackedBatch& batch)
     if (a.lighting) litBy(batch.lights);
     else batch.lights.count = 0;
     batch.texture = detailTexture();
-    if (batch.texture == 0) batch.generated = generatedTexture();
+    if (batch.texture == 0) {
+        batch.generated = generatedTexture();
+        bakeObjectLinear(batch);
+    }
     // Without GL lighting a lightmap is the surface's light (the styles' L·n).
     batch.lightmap = mLightUnit >= 0 && !a.lighting ? unitTexture(mLightUnit) : 0;
+    layerEffects(batch);
     // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
     // drawing (neverball does), and such surfaces are opaque ones (with outlines).
     const bool blends = translucent();
@@ -1745,6 +1777,7 @@ void StateTracker::callListBody(GLuint list)
         return;
     }
     ++mCallDepth;
+    const bool callerNormal = currentNormalCounts(); // before the list's draws clear it
     for (const ListItem& item : body.items) {
         if (item.batch >= 0) {
             const TrackedBatch& compiled = body.batches[size_t(item.batch)];
@@ -1756,7 +1789,7 @@ void StateTracker::callListBody(GLuint list)
             batch.materials = compiled.materials;
             batch.beginMaterial = compiled.beginMaterial;
             const List::Inherits& from = body.inherits[size_t(item.batch)];
-            if (from.normal) batch.hasNormals = batch.hasNormals || mNormalSet;
+            if (from.normal) batch.hasNormals = batch.hasNormals || callerNormal;
             // What the list did not set itself comes from the state at this call.
             if (from.color || from.normal || from.texcoord ||
                 batch.hasNormals != compiled.hasNormals) {
@@ -1817,12 +1850,111 @@ bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
 
 void StateTracker::texEnv(GLenum target, GLenum pname, GLenum mode)
 {
-    // Another value is refused by the driver (GL_INVALID_ENUM), which keeps the mode it had.
-    const bool known = mode == GL_MODULATE || mode == GL_REPLACE || mode == GL_DECAL ||
-                       mode == GL_BLEND || mode == GL_ADD || mode == GL_COMBINE;
-    if (target == GL_TEXTURE_ENV && pname == GL_TEXTURE_ENV_MODE && mActiveUnit < 8 && known) {
-        mAttrib.envMode[size_t(mActiveUnit)] = mode;
+    if (target != GL_TEXTURE_ENV || mActiveUnit >= 8) return;
+    const size_t u = size_t(mActiveUnit);
+    AttribState& a = mAttrib;
+    // Another value is refused by the driver (GL_INVALID_ENUM), which keeps the one it had.
+    switch (pname) {
+    case GL_TEXTURE_ENV_MODE:
+        if (mode == GL_MODULATE || mode == GL_REPLACE || mode == GL_DECAL || mode == GL_BLEND ||
+            mode == GL_ADD || mode == GL_COMBINE) {
+            a.envMode[u] = mode;
+        }
+        break;
+    case GL_COMBINE_RGB:
+        if (mode == GL_REPLACE || mode == GL_MODULATE || mode == GL_ADD ||
+            mode == GL_ADD_SIGNED || mode == GL_INTERPOLATE || mode == GL_SUBTRACT ||
+            mode == GL_DOT3_RGB || mode == GL_DOT3_RGBA) {
+            a.combineRgb[u] = mode;
+        }
+        break;
+    case GL_RGB_SCALE:
+        if (mode == 1 || mode == 2 || mode == 4) a.rgbScale[u] = float(mode);
+        break;
+    case GL_SOURCE0_RGB:
+    case GL_SOURCE1_RGB:
+        a.combineArgs[4 * u + (pname - GL_SOURCE0_RGB)] = mode;
+        break;
+    case GL_OPERAND0_RGB:
+    case GL_OPERAND1_RGB:
+        a.combineArgs[4 * u + 2 + (pname - GL_OPERAND0_RGB)] = mode;
+        break;
+    default:
+        break;
     }
+}
+
+bool StateTracker::layerEffect(int unit, glm::vec3& scale, glm::vec3& offset) const
+{
+    const AttribState& a = mAttrib;
+    const size_t u = size_t(unit);
+    auto mean = mTextureMeans.find(mUnitTextures[u]);
+    if (mean == mTextureMeans.end()) return false;
+    const glm::vec3 m = mean->second;
+    GLenum function = a.envMode[u];
+    float k = 1.0f;
+    if (function == GL_COMBINE) {
+        // The texture with the colour so far, either way round, each as its colour.
+        const GLenum* args = &a.combineArgs[4 * u];
+        const bool plain = ((args[0] == GL_TEXTURE && args[1] == GL_PREVIOUS) ||
+                            (args[0] == GL_PREVIOUS && args[1] == GL_TEXTURE)) &&
+                           args[2] == GL_SRC_COLOR && args[3] == GL_SRC_COLOR;
+        if (!plain) return false;
+        function = a.combineRgb[u];
+        k = a.rgbScale[u];
+    }
+    // As an affine map of the colour so far: c' = scale c + offset, with the texel's mean.
+    switch (function) {
+    case GL_MODULATE: scale = k * m; offset = glm::vec3(0.0f); return true;
+    case GL_ADD: scale = glm::vec3(k); offset = k * m; return true;
+    case GL_ADD_SIGNED: scale = glm::vec3(k); offset = k * (m - 0.5f); return true;
+    default: return false; // replacing, interpolating, subtracting, dot products: not followed
+    }
+}
+
+void StateTracker::layerEffects(TrackedBatch& batch) const
+{
+    const uint32_t layers = droppedLayers();
+    for (int u = 0; u < 8; ++u) {
+        glm::vec3 scale, offset;
+        if (!(layers & (1u << u)) || !layerEffect(u, scale, offset)) continue;
+        // GL applies the units in order: this one to what the ones before it made.
+        batch.layerScale *= scale;
+        batch.layerOffset = scale * batch.layerOffset + offset;
+    }
+}
+
+void StateTracker::noteTextureMean(GLuint texture, GLsizei width, GLsizei height, GLenum format,
+                                   GLenum type, const void* pixels)
+{
+    mTextureMeans.erase(texture);
+    int channels = 0;
+    switch (format) {
+    case GL_RGBA: case GL_BGRA: channels = 4; break;
+    case GL_RGB: case GL_BGR: channels = 3; break;
+    case GL_LUMINANCE_ALPHA: channels = 2; break;
+    case GL_LUMINANCE: channels = 1; break;
+    default: return;
+    }
+    if (type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0) return;
+    // Rows as the recorder laid them out (the unpack alignment's padding included).
+    const size_t row = mImageBytes / size_t(height);
+    if (row < size_t(width) * size_t(channels)) return;
+    // A sample of at most 64 x 64 texels: a mean, taken once at upload.
+    const int stepX = std::max(1, int(width) / 64), stepY = std::max(1, int(height) / 64);
+    const uint8_t* p = static_cast<const uint8_t*>(pixels);
+    glm::dvec3 sum(0.0);
+    size_t n = 0;
+    for (int y = 0; y < height; y += stepY) {
+        for (int x = 0; x < width; x += stepX) {
+            const uint8_t* t = p + size_t(y) * row + size_t(x) * size_t(channels);
+            glm::dvec3 c = channels >= 3 ? glm::dvec3(t[0], t[1], t[2]) : glm::dvec3(t[0]);
+            if (format == GL_BGRA || format == GL_BGR) std::swap(c.r, c.b);
+            sum += c;
+            ++n;
+        }
+    }
+    mTextureMeans[texture] = glm::vec3(sum / (255.0 * double(n)));
 }
 
 void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
@@ -1839,10 +1971,12 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     // Storage alone is filled by glTexSubImage2D next (SFML's way): those decide.
     if (!pixels || mImageBytes == 0) {
         mTextureHashes.erase(texture);
+        mTextureMeans.erase(texture);
         if (!pixels) mFilledLater.insert(texture);
         return;
     }
     if (opaqueImage(width, height, format, type, pixels)) mOpaqueTextures.insert(texture);
+    noteTextureMean(texture, width, height, format, type, pixels);
     const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
     uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
     mTextureHashes[texture] = hash == 0 ? 1 : hash;
@@ -1861,6 +1995,7 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
     const bool opaque = pixels && mImageBytes != 0 &&
                         opaqueImage(width, height, format, type, pixels);
     mTextureHashes.erase(texture); // its content is no longer the hashed upload
+    mTextureMeans.erase(texture);
     if (!opaque) {
         mOpaqueTextures.erase(texture);
         mFilledLater.erase(texture);
@@ -2071,7 +2206,7 @@ void StateTracker::drawArrays(GLenum mode, GLint first, GLsizei count)
     if (first < 0 || count <= 0 || !mArrayState[kVertexArray].array.enabled) return;
     TrackedBatch batch;
     batch.mode = mode;
-    batch.hasNormals = mNormalSet || mArrayState[kNormalArray].array.enabled;
+    batch.hasNormals = currentNormalCounts() || mArrayState[kNormalArray].array.enabled;
     batch.vertices = takeVertices();
     batch.vertices.reserve(size_t(count));
     const DrawSources from = drawSources();
@@ -2096,7 +2231,7 @@ void StateTracker::drawElements(GLenum mode, GLsizei count, GLenum type, const v
     if (!data) return;
     TrackedBatch batch;
     batch.mode = mode;
-    batch.hasNormals = mNormalSet || mArrayState[kNormalArray].array.enabled;
+    batch.hasNormals = currentNormalCounts() || mArrayState[kNormalArray].array.enabled;
     batch.vertices = takeVertices();
     batch.vertices.reserve(size_t(count));
     const DrawSources from = drawSources();
@@ -2112,6 +2247,8 @@ void StateTracker::drawElements(GLenum mode, GLsizei count, GLenum type, const v
 void StateTracker::arrayElement(GLint i)
 {
     if (!mInBegin || i < 0) return;
+    // A normal array gives this batch its normals (see end()).
+    if (mArrayState[kNormalArray].array.enabled) mNormalFresh = true;
     mBatch.vertices.push_back(arrayVertex(drawSources(), size_t(i), mCurrent.hasNormal));
     noteListArrays();
 }

@@ -57,6 +57,11 @@ struct TrackedBatch {
     // A texture on coordinates GL generates on the surface unit (texture is then 0).
     styles::GeneratedTexture generated;
     GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none
+    // What the layers the styles do not draw (droppedLayers) do to its colour on average:
+    // c scale + offset, from each layer's texture mean (a detail texture added signed over
+    // a terrain keeps the terrain's brightness). Identity where a layer is not followed.
+    glm::vec3 layerScale{1.0f};
+    glm::vec3 layerOffset{0.0f};
     // Blended by its alpha over what is behind (StateTracker::translucent).
     bool translucent = false;
     bool depthWrite = true;
@@ -385,6 +390,16 @@ private:
     bool isVertexCall(uint16_t opcode) const;
     static bool runsWhileCompiling(uint16_t opcode);
     void emit(TrackedBatch&& batch);
+    // Whether a draw issued now takes the current normal as its own (see mNormalFresh).
+    bool currentNormalCounts() const;
+    // A dropped layer's texture env on unit as c scale + offset; false when not followed.
+    bool layerEffect(int unit, glm::vec3& scale, glm::vec3& offset) const;
+    void layerEffects(TrackedBatch& batch) const;
+    // A generated texture on GL_OBJECT_LINEAR planes becomes the batch's texture on
+    // coordinates made from its vertices.
+    void bakeObjectLinear(TrackedBatch& batch) const;
+    void noteTextureMean(GLuint texture, GLsizei width, GLsizei height, GLenum format,
+                         GLenum type, const void* pixels);
     bool keep(TrackedBatch& batch);
     std::vector<TrackedVertex> takeVertices();
     void recycle(std::vector<TrackedVertex>&& vertices);
@@ -407,6 +422,9 @@ private:
     MatrixStacks mMatrices;
     TrackedVertex mCurrent{{0, 0, 0}, {0, 0, 1}, {1, 1, 1, 1}, {0, 0}, {0, 0}};
     bool mNormalSet = false;
+    // glNormal was called since the last draw (or inside the open glBegin): the current
+    // normal was set for the next draw, not left over from another object's.
+    bool mNormalFresh = false;
     AttribStack mAttribs;
     AttribState& mAttrib = mAttribs.current(); // the state the calls change
     GLuint mBoundTexture = 0; // unit 0's GL_TEXTURE_2D
@@ -416,6 +434,7 @@ private:
     int mLightUnit = -1;  // mCurrent.lightcoord is this unit's (-1: no lightmap)
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
+    std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
     bool mDefaultImage = false;       // texture object 0 (2D) has a level 0 image
     std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
     LeaveRules mRules;

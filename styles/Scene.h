@@ -78,6 +78,10 @@ struct SceneObject {
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
     // GL lighting, the shading styles take their light from it instead of L·n. 0: none.
     GLuint lightmap = 0;
+    // What the program's layers over the texture that the styles do not draw do to the colour
+    // on average (c scale + offset, before fog; TrackedBatch::layerScale).
+    glm::vec3 layerScale{1.0f};
+    glm::vec3 layerOffset{0.0f};
     // Faces drawn with another texture than `texture` (a cube with a texture per face is one
     // object): runs of consecutive faces, in the mesh's face order, covering all of them.
     // Empty when every face has `texture`.

@@ -177,6 +177,50 @@ TEST(StateTracker, TheFirstNormalInsideABatchCountsForItsEarlierVertices)
     for (const TrackedVertex& v : b.vertices) EXPECT_TRUE(v.hasNormal);
 }
 
+TEST(StateTracker, AnUnlitDrawDoesNotTakeANormalLeftByAnotherObject)
+{
+    // Lit: glNormal, a triangle. Then unlit: a triangle without a normal of its own (the
+    // terrain of a game whose light is baked into its texture), one with glNormal just before
+    // it, and one lit again without one.
+    CallWriter w;
+    auto cap = [&](uint16_t opcode, GLenum c) {
+        w.op(opcode);
+        w.put<GLenum>(c);
+    };
+    auto triangle = [&](bool normal) {
+        if (normal) {
+            w.op(op::glNormal3f);
+            for (float c : {0.0f, 0.0f, -1.0f}) w.put<float>(c);
+        }
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        for (float x : {0.0f, 1.0f, 0.0f}) {
+            w.op(op::glVertex3f);
+            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, -2.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+    };
+    cap(op::glEnable, GL_LIGHTING);
+    triangle(true);
+    cap(op::glDisable, GL_LIGHTING);
+    triangle(false);
+    triangle(true);
+    cap(op::glEnable, GL_LIGHTING);
+    triangle(false);
+    w.op(op::kFrameEnd);
+    w.put<uint64_t>(1);
+    StateTracker tracker;
+    std::string error;
+    ASSERT_TRUE(tracker.runFrame(w.data(), w.size(), nullptr, error)) << error;
+    const std::vector<TrackedBatch>& batches = tracker.frameBatches();
+    ASSERT_EQ(batches.size(), 4u);
+    const bool expected[4] = {true, false, true, true};
+    for (size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(batches[i].hasNormals, expected[i]) << i;
+        for (const TrackedVertex& v : batches[i].vertices) EXPECT_EQ(v.hasNormal, expected[i]) << i;
+    }
+}
+
 TEST(StateTracker, NothingIsHeldWhileTheAttributeStacksHaveNoRoomForTheStyles)
 {
     StateTracker tracker;
@@ -538,6 +582,116 @@ TEST(StateTracker, AnEnvironmentMapUnderCombinedLayersIsStyledWithoutThem)
     tracker.takeBatches(batches);
     ASSERT_EQ(batches.size(), 1u);
     EXPECT_EQ(batches[0].texture, 0u) << "the sphere map taken for the surface's texture";
+}
+
+// Textures on object planes are the surface's own, per batch: a terrain drawn in tiles, each
+// with its texture and planes of its own, welded into one object, took the first tile's
+// planes for every tile (trigger-rally's terrain: one brown smear).
+TEST(StateTracker, ObjectPlanesGiveEachBatchItsOwnCoordinates)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    auto bind = [&](GLuint texture) {
+        run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(texture);
+        });
+    };
+    auto planes = [&](float sOffset) {
+        for (GLenum coord : {GLenum(GL_S), GLenum(GL_T)}) {
+            run([&](CallWriter& w) {
+                w.op(op::glTexGeni);
+                w.put<GLenum>(coord);
+                w.put<GLenum>(GL_TEXTURE_GEN_MODE);
+                w.put<GLint>(GL_OBJECT_LINEAR);
+            });
+            const glm::vec4 p = coord == GL_S ? glm::vec4(0.5f, 0, 0, sOffset)
+                                              : glm::vec4(0, 0.25f, 0, 0);
+            run([&](CallWriter& w) {
+                vectorCall(w, op::glTexGenfv, coord, GL_OBJECT_PLANE, &p, sizeof p);
+            });
+        }
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true);
+    feed.enable(GL_TEXTURE_GEN_S, true);
+    feed.enable(GL_TEXTURE_GEN_T, true);
+    bind(7);
+    planes(0.0f);
+    feed.triangle();
+    bind(8);
+    planes(-1.0f);
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 2u);
+    for (size_t i = 0; i < 2; ++i) {
+        const TrackedBatch& b = batches[i];
+        EXPECT_EQ(b.texture, GLuint(7 + i)) << i;
+        EXPECT_EQ(b.generated.texture, 0u) << i;
+        for (const TrackedVertex& v : b.vertices) {
+            EXPECT_FLOAT_EQ(v.texcoord.x, 0.5f * v.position.x - float(i)) << i;
+            EXPECT_FLOAT_EQ(v.texcoord.y, 0.25f * v.position.y) << i;
+        }
+    }
+}
+
+// A layer the styles do not draw keeps its average effect: a detail texture added signed over
+// a terrain (trigger-rally) brightens it by its mean above one half; scaled by GL_RGB_SCALE;
+// a combiner reading other sources is not followed (no effect assumed).
+TEST(StateTracker, ALayerNotDrawnKeepsItsMeanEffect)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    auto env = [&](GLenum pname, GLint value) {
+        run([&](CallWriter& w) {
+            w.op(op::glTexEnvi);
+            w.put<GLenum>(GL_TEXTURE_ENV);
+            w.put<GLenum>(pname);
+            w.put<GLint>(value);
+        });
+    };
+    auto unit = [&](GLenum u) {
+        run([&](CallWriter& w) {
+            w.op(op::glActiveTexture);
+            w.put<GLenum>(u);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true); // unit 0: the surface (texture 0's image, below)
+    unit(GL_TEXTURE1);
+    feed.enable(GL_TEXTURE_2D, true);
+    run([](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLuint>(9);
+        // Half 0.5 grey, half white: mean 0.75.
+        std::vector<uint8_t> texels(4 * 4 * 4, 255);
+        for (size_t i = 0; i < 8; ++i) texels[4 * i] = texels[4 * i + 1] = texels[4 * i + 2] = 128;
+        rgbaImage(w, 4, 4, texels.data());
+    });
+    env(GL_TEXTURE_ENV_MODE, GL_COMBINE);
+    env(GL_COMBINE_RGB, GL_ADD_SIGNED);
+    feed.triangle();
+    env(GL_RGB_SCALE, 2);
+    feed.triangle();
+    env(GL_SOURCE1_RGB, GL_CONSTANT);
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    const float mean = (8 * 128.0f / 255.0f + 8 * 1.0f) / 16.0f;
+    EXPECT_EQ(batches[0].layerScale, glm::vec3(1.0f));
+    EXPECT_NEAR(batches[0].layerOffset.r, mean - 0.5f, 1e-5f);
+    EXPECT_EQ(batches[1].layerScale, glm::vec3(2.0f));
+    EXPECT_NEAR(batches[1].layerOffset.g, 2.0f * (mean - 0.5f), 1e-5f);
+    EXPECT_EQ(batches[2].layerScale, glm::vec3(1.0f));
+    EXPECT_EQ(batches[2].layerOffset, glm::vec3(0.0f));
 }
 
 // A draw textured by one unit other than 0 alone (units 0 and 1 off, 2 on: neverball draws

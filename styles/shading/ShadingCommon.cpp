@@ -146,8 +146,13 @@ std::string ShadingCommon::fogFunction()
 uniform float fogMode;  // fogModeCode()
 uniform vec3 fogRange;  // start, end, density
 uniform vec3 fogColour;
+uniform vec3 layerScale;  // SceneObject::layerScale, layerOffset
+uniform vec3 layerOffset;
+// What GL does after the surface's texture: the layers the styles do not draw (on average),
+// then fog.
 vec3 programFog(vec3 colour, vec3 eyePosition)
 {
+    colour = clamp(colour * layerScale + layerOffset, 0.0, 1.0);
     // GL's fog coordinate: the eye-space depth.
     return mix(fogColour, colour, fogFactor(fogMode, abs(eyePosition.z), fogRange));
 }
@@ -164,6 +169,8 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     fogMode = gl.GetUniformLocation(program, "fogMode");
     fogRange = gl.GetUniformLocation(program, "fogRange");
     fogColour = gl.GetUniformLocation(program, "fogColour");
+    layerScale = gl.GetUniformLocation(program, "layerScale");
+    layerOffset = gl.GetUniformLocation(program, "layerOffset");
     modelview = gl.GetUniformLocation(program, "modelview");
     projection = gl.GetUniformLocation(program, "projection");
     normalMatrix = gl.GetUniformLocation(program, "normalMatrix");
@@ -244,6 +251,8 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
         gl.Uniform1f(fogMode, fogModeCode(f.mode));
         gl.Uniform3f(fogRange, f.start, f.end, f.density);
         gl.Uniform3fv(fogColour, 1, glm::value_ptr(f.colour));
+        gl.Uniform3fv(layerScale, 1, glm::value_ptr(object.layerScale));
+        gl.Uniform3fv(layerOffset, 1, glm::value_ptr(object.layerOffset));
     }
 }
 
