@@ -1132,6 +1132,33 @@ TEST_F(Shading, LightmapsGiveTheLightOfUnlitSurfaces)
     gl.DeleteTextures(1, &lightmap);
 }
 
+// A texture layer the styles do not draw keeps its average effect (SceneObject::layerScale,
+// layerOffset, from its texture's mean): a detail texture added signed over a terrain left it
+// darker than the program's. The shading styles apply the layer before fog.
+TEST_F(Shading, ALayerNotDrawnKeepsItsMeanEffect)
+{
+    ASSERT_TRUE(harness.ok());
+    const reconstruct::Batch quad = facingQuad(glm::vec4(0.4f, 0.4f, 0.4f, 1.0f), true);
+    auto centre = [&](const std::string& chain, glm::vec3 scale, glm::vec3 offset) {
+        auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+        for (auto& o : scene.objects) {
+            o.layerScale = scale;
+            o.layerOffset = offset;
+        }
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, chain, "", image, error)) << error;
+        return meanLuminance(image, kSize / 2 - 6, kSize / 2 - 6, 12);
+    };
+    for (const std::string chain : {"toon", "textured", "xtoon"}) {
+        const float plain = centre(chain, glm::vec3(1.0f), glm::vec3(0.0f));
+        const float added = centre(chain, glm::vec3(1.0f), glm::vec3(0.3f));
+        const float halved = centre(chain, glm::vec3(0.5f), glm::vec3(0.0f));
+        EXPECT_NEAR(added - plain, 0.3f, 0.03f) << chain;
+        EXPECT_NEAR(halved, 0.5f * plain, 0.03f) << chain;
+    }
+}
+
 // A decal's or cut-out's texture is its drawing: pencil hatches its dark parts darker, as it
 // does a darker colour. A translucent quad whose texture is black on the left and white on
 // the right, lit evenly: the left half is hatched darker (before, the tone took the vertex
