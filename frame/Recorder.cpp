@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <string>
 
 namespace nprgl {
@@ -101,6 +102,17 @@ void Recorder::endFrame(uint64_t frame)
     }
     mWriter.op(op::kFrameEnd);
     mWriter.put<uint64_t>(frame);
+    const uint64_t unfollowed = std::accumulate(mUnfollowed.begin(), mUnfollowed.end(),
+                                                uint64_t(0));
+    if (mKeep == Keep::This) {
+        mKept.assign(mWriter.data(), mWriter.data() + mWriter.size());
+        mKeptWhole = unfollowed == mKeptUnfollowed;
+        mKeep = Keep::Kept;
+    } else if (mKeep == Keep::Next) {
+        mKeptStart = mState;
+        mKeep = Keep::This;
+        mKeptUnfollowed = unfollowed;
+    }
     Compositor* compositor = mContext.compositor();
     if (compositor) compositor->syncStream();
     if (mSession) {
@@ -347,7 +359,8 @@ void Recorder::emitArrays(size_t first, size_t end)
 void Recorder::sendArray(int slot, const uint8_t* base, size_t offset, size_t bytes)
 {
     Mirror& m = mMirrors[slot];
-    if (m.base != base) m = Mirror{base, 0, 0, {}};
+    // A kept frame is replayed on its own: no data from before it.
+    if (m.base != base || mKeep == Keep::This) m = Mirror{base, 0, 0, {}};
     const size_t end = offset + bytes;
     if (m.hi <= m.lo || offset > m.hi || end < m.lo) {
         // Nothing known near this range: send it all and remember only it.
@@ -384,6 +397,21 @@ void Recorder::sendArray(int slot, const uint8_t* base, size_t offset, size_t by
     }
 }
 
+void Recorder::keepNextFrame()
+{
+    if (mKeep == Keep::None || mKeep == Keep::Kept) mKeep = Keep::Next;
+}
+
+bool Recorder::takeKeptFrame(std::vector<uint8_t>& calls, ClientArrayState& start)
+{
+    if (mKeep != Keep::Kept) return false;
+    mKeep = Keep::None;
+    calls.swap(mKept);
+    mKept = {};
+    start = mKeptStart;
+    return mKeptWhole;
+}
+
 void Recorder::emitArrayRange(int slot, const uint8_t* base, size_t offset, size_t bytes)
 {
     mWriter.op(op::kArrayData);
@@ -408,7 +436,7 @@ void Recorder::after_glEnd()
     mBatchStart = SIZE_MAX;
     if (start == SIZE_MAX || start > mWriter.size()) return;
     const size_t bytes = mWriter.size() - start;
-    if (bytes < kBatchBlobBytes || mStopped || !mSession) return;
+    if (bytes < kBatchBlobBytes || mStopped || !mSession || mKeep == Keep::This) return;
     // The compositor follows the batch before it becomes a reference it could not resolve.
     Compositor* compositor = mContext.compositor();
     if (compositor) compositor->syncStream();

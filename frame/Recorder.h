@@ -46,6 +46,16 @@ public:
     void takeUncaptured(Fn&& report);
     // Closes the frame: marks its end and hands it to the capture file.
     void endFrame(uint64_t frame);
+    // The screenshot key's pair: the frame after the one ending now is kept whole (every
+    // client array a draw reads sent in full, no batch blobs), with the client arrays as it
+    // starts, for FrameReplay.
+    void keepNextFrame();
+    // Hands over the kept frame once it has ended; false before, and for a frame with draws
+    // the recorder could not follow (its calls would not draw the same picture).
+    bool takeKeptFrame(std::vector<uint8_t>& calls, ClientArrayState& start);
+    bool frameKept() const { return mKeep == Keep::Kept; }
+    // The client arrays as the program set them last.
+    const ClientArrayState& clientArrays() const { return mState; }
 
     // Encodes an image or bitmap argument laid out by the current unpack state.
     void putImage(CallWriter& w, const void* pixels, GLenum format, GLenum type, GLsizei width,
@@ -170,6 +180,11 @@ private:
     std::vector<std::pair<const char*, uint64_t>> mFrameUncaptured; // endFrame's scratch
     bool mStopped = false;
     size_t mBatchStart = SIZE_MAX; // writer offset of the open glBegin
+    enum class Keep { None, Next, This, Kept } mKeep = Keep::None;
+    std::vector<uint8_t> mKept;
+    ClientArrayState mKeptStart;
+    uint64_t mKeptUnfollowed = 0; // draws not followed before the kept frame
+    bool mKeptWhole = false;
 };
 
 template <typename Fn>

@@ -15,7 +15,7 @@ bool SavedGlState::resolve()
     return mBindFramebuffer && mBindVertexArray && mBindRenderbuffer;
 }
 
-bool SavedGlState::save()
+bool SavedGlState::save(bool pixelDefaults)
 {
     const GlDispatch& gl = gRealGl;
     GLint depth = 0, max = 0, clientDepth = 0, clientMax = 0;
@@ -40,6 +40,10 @@ bool SavedGlState::save()
         gl.glGetIntegerv(GL_TEXTURE_BINDING_2D, &mTextures[i]);
     }
     gl.glActiveTexture(GL_TEXTURE0);
+    if (!pixelDefaults) {
+        gl.glActiveTexture(GLenum(mActiveTexture)); // all as the program left it
+        return true;
+    }
     if (mPackBuffer) gl.glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     if (mUnpackBuffer) gl.glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     // What nprgl draws uploads and reads pixels with the default pixel store.

@@ -15,8 +15,10 @@ public:
     // Looks up the entry points GL 1.x lacks; false when the driver has no framebuffer
     // objects or vertex arrays (then nothing can be saved).
     bool resolve();
-    // False (and nothing changed) when an attribute stack is full.
-    bool save();
+    // False (and nothing changed) when an attribute stack is full. pixelDefaults: the pixel
+    // store reset and the pixel buffers unbound for nprgl's uploads and reads; without, they
+    // stay the program's (what a replay of its calls needs).
+    bool save(bool pixelDefaults = true);
     void restore();
 
 private:

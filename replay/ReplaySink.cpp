@@ -101,8 +101,15 @@ void ReplaySink::after(uint16_t opcode)
     case op::glDisableClientState:
     case op::glEnableVertexAttribArray:
     case op::glDisableVertexAttribArray:
+    case op::glPopClientAttrib: {
+        // It puts back the unit active at its push too.
+        GLint unit = GL_TEXTURE0;
+        gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);
+        mClientActiveTexture = unit - GL_TEXTURE0;
+        mUsesValid = false;
+        break;
+    }
     case op::glPushClientAttrib:
-    case op::glPopClientAttrib:
     case op::glBindBuffer:
     case op::glBufferData:
     case op::glDeleteBuffers:

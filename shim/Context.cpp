@@ -4,6 +4,7 @@
 #include "frame/CaptureSession.h"
 #include "frame/Compositor.h"
 #include "frame/FrameGrabber.h"
+#include "frame/FrameReplay.h"
 #include "frame/LiveExport.h"
 #include "frame/Recorder.h"
 #include "shim/ConfigWatcher.h"
@@ -142,7 +143,7 @@ bool Context::endFrame()
     ++mFrame;
     if (mRecorder) mRecorder->endFrame(mFrame);
     return (mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame)) ||
-           !mShotNow.empty();
+           !mShotNow.empty() || (mRecorder && mRecorder->frameKept());
 }
 
 void Context::pollKeys(_XDisplay* display)
@@ -158,7 +159,7 @@ void Context::pollKeys(_XDisplay* display)
 void Context::applyKeys()
 {
     if (!mShotNext.empty()) {
-        // The pair's second picture is this frame, drawn the other way.
+        // The fallback pair's second picture is this frame, drawn unstyled.
         mShotNow = std::exchange(mShotNext, std::string());
         if (mCompositor) mCompositor->setEnabled(mShotRestore);
     }
@@ -239,14 +240,44 @@ void Context::startScreenshotPair()
     std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", &local);
     char tail[16];
     std::snprintf(tail, sizeof tail, "_%03d", int(ms));
-    const std::string stem = dir + "/" + mConfig.programName + "_" + stamp + tail;
-    const bool styled = mCompositor->enabled();
-    mShotNow = stem + (styled ? "_styled.png" : "_unstyled.png");
-    mShotNext = stem + (styled ? "_unstyled.png" : "_styled.png");
-    mShotRestore = styled;
-    mCompositor->setEnabled(!styled);
-    NPRGL_INFO("context %u: screenshot key: %s and the next frame %s", mSerial,
-               mShotNow.c_str(), styled ? "unstyled" : "styled");
+    if (!mShotStem.empty() || !mShotNext.empty() || !mRecorder) return; // a pair under way
+    mShotStem = dir + "/" + mConfig.programName + "_" + stamp + tail;
+    mShotRestore = mCompositor->enabled();
+    mCompositor->setEnabled(true);
+    mRecorder->keepNextFrame();
+    NPRGL_INFO("context %u: screenshot key: the next frame, styled and unstyled, to %s_*.png",
+               mSerial, mShotStem.c_str());
+}
+
+void Context::writeScreenshotPair(int width, int height)
+{
+    std::vector<uint8_t> calls;
+    ClientArrayState start;
+    const bool whole = mRecorder->takeKeptFrame(calls, start);
+    const std::string stem = std::exchange(mShotStem, std::string());
+    if (stem.empty()) return;
+    FrameGrabber::writeFrame(mCaps, width, height, stem + "_styled.png");
+    // The same frame again as the program draws it, over the styled one, in its own context.
+    std::string why = "draws nprgl could not follow";
+    bool drawn = false;
+    if (whole) {
+        const GLenum programError = gRealGl.glGetError();
+        drawn = FrameReplay::run(calls.data(), calls.size(), start, mRecorder->clientArrays(),
+                                 why);
+        while (gRealGl.glGetError() != GL_NO_ERROR) {
+        }
+        mCompositor->keepProgramError(programError);
+    }
+    if (drawn) {
+        FrameGrabber::writeFrame(mCaps, width, height, stem + "_unstyled.png");
+        mCompositor->setEnabled(mShotRestore);
+        return;
+    }
+    NPRGL_WARN("context %u: screenshot key: the frame cannot be drawn again unstyled (%s); "
+               "the unstyled picture is of the next frame",
+               mSerial, why.c_str());
+    mShotNext = stem + "_unstyled.png";
+    mCompositor->setEnabled(false);
 }
 
 void Context::followConfig()
@@ -290,6 +321,7 @@ void Context::writeFrameScreenshot(int width, int height)
 
 void Context::writeHotkeyScreenshot(int width, int height)
 {
+    if (mRecorder && mRecorder->frameKept()) writeScreenshotPair(width, height);
     if (mShotNow.empty()) return;
     FrameGrabber::writeFrame(mCaps, width, height, mShotNow);
     mShotNow.clear();

@@ -91,6 +91,7 @@ private:
     void applyKeys();
     void cycleStyle();
     void startScreenshotPair();
+    void writeScreenshotPair(int width, int height);
     void makeOverlay();
 
     const Config& mConfig; // the process's (Config::process), which outlives every context
@@ -109,8 +110,13 @@ private:
     Hotkeys mHotkeys;
     uint64_t mKeysGeneration = UINT64_MAX; // the configuration generation the keys are from
     uint32_t mActions = 0;                 // pressed since the last frame end
+    // The screenshot key: the next frame is drawn styled and kept (Recorder::keepNextFrame),
+    // written at its swap, then drawn again unstyled from its calls (FrameReplay) and
+    // written: mShotStem_styled.png and _unstyled.png. Where it cannot be drawn again, the
+    // unstyled picture is of the frame after it (mShotNext, then mShotNow at its swap).
+    std::string mShotStem;
     std::string mShotNow;    // a hotkey screenshot of this frame, written at this swap
-    std::string mShotNext;   // its pair, of the next frame, drawn the other way
+    std::string mShotNext;   // the fallback's unstyled picture, of the next frame
     bool mShotRestore = true; // styling on or off after the pair
     std::string mCycled;      // the cycle list's entry running now
     std::unique_ptr<Overlay> mOverlay; // made when first opened

@@ -98,7 +98,11 @@ INSTANTIATE_TEST_SUITE_P(
                       RecordCase{"displaylist", {}, true},
                       RecordCase{"displaylist", {}, false}, RecordCase{"textured", {}, true},
                       RecordCase{"overlay", {}, true}, RecordCase{"overlay", {}, false},
-                      RecordCase{"dlopen", {}, true}, RecordCase{"dlopen", {}, false}),
+                      RecordCase{"dlopen", {}, true}, RecordCase{"dlopen", {}, false},
+                      // Pops the client state of the previous frame first, which puts back
+                      // another client texture unit: the replay set the next glTexCoordPointer
+                      // on the unit it had seen chosen last, and refused frame 2.
+                      RecordCase{"state", {}, true}),
     recordName);
 
 // A capture replayed in a style draws what the program drew under that style, also when the

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <regex>
@@ -153,6 +154,45 @@ TEST(StateUnderNprglOverlay, EveryQueryAnswersWhatWasSetWithTheOverlayOpen)
     EXPECT_NE(r.err.find("nprgl: overlay open"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("nprgl: error"), std::string::npos) << r.err;
     EXPECT_EQ(reportedItems(r.out, 5), reportedItems(native.out, 5)) << r.out;
+}
+
+// The screenshot key's pair: the frame after the press is written styled, then drawn again
+// from its calls as the program draws it, in the program's context, between the swap and the
+// program's next query. demo_state pops the state it pushed at the end of the previous frame
+// (so its calls run from the state they left) and changes state all over: every piece of it
+// must survive, and the unstyled picture must be the program's own frame 4.
+TEST(StateUnderNprglScreenshot, EveryQueryAnswersWhatWasSetAcrossAScreenshotPair)
+{
+    ASSERT_TRUE(haveDisplay()) << "no DISPLAY: run the tests through scripts/test.sh";
+    const std::string nativeDir = freshDir("pair_state_native");
+    std::vector<std::string> native = stateArgs(false);
+    native.insert(native.end(), {"--save-dir", nativeDir, "--save-frames", "4"});
+    ProcessResult n = runProcess(native);
+    ASSERT_EQ(n.exitCode, 0) << n.err;
+    const std::string home = freshDir("pair_state_home"), pictures = home + "/pictures";
+    {
+        std::ofstream(home + "/keys.conf") << "screenshot_dir=" << pictures << "\n";
+    }
+    std::vector<std::string> args = {binDir() + "/nprgl", "--style", "toon+edges", "--"};
+    std::vector<std::string> app = stateArgs(false);
+    args.insert(args.end(), app.begin(), app.end());
+    args.insert(args.end(), {"--press", "3", "Shift_R+F11"});
+    ProcessResult r = runProcess(args, {{"XDG_CONFIG_HOME", home},
+                                        {"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(reportedItems(r.out, 5), reportedItems(n.out, 5)) << r.out << r.err;
+    EXPECT_EQ(r.err.find("cannot be drawn again"), std::string::npos) << r.err;
+    std::vector<std::string> unstyled;
+    for (const auto& entry : std::filesystem::directory_iterator(pictures)) {
+        const std::string name = entry.path().string();
+        if (name.size() > 13 && name.substr(name.size() - 13) == "_unstyled.png") {
+            unstyled.push_back(name);
+        }
+    }
+    ASSERT_EQ(unstyled.size(), 1u) << r.err;
+    ImageDiff diff = compareImages(unstyled[0], nativeDir + "/state_4.png");
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_EQ(diff.differingPixels, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Styles, StateUnderNprgl,

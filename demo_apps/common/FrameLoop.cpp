@@ -56,6 +56,8 @@ int runFrames(const Options& options, const GlApi& gl, Scene& scene)
             break;
         }
         if (frame == options.growAt) surface->resize(2 * options.width, 2 * options.height);
+        const bool press = frame == options.pressAt;
+        if (press) surface->pressKeys(options.pressKeys, true);
         scene.draw(frame);
         surface->finishFrame();
         if (options.shouldSave(frame)) {
@@ -68,6 +70,7 @@ int runFrames(const Options& options, const GlApi& gl, Scene& scene)
             }
         }
         surface->present();
+        if (press) surface->pressKeys(options.pressKeys, false);
         ++framesDone;
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

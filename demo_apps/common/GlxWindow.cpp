@@ -1,11 +1,13 @@
 #include "GlxWindow.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <unistd.h>
 
 #include "Readback.h"
 
 #include <X11/Xutil.h>
+#include <X11/extensions/XTest.h>
 #include <X11/keysym.h>
 
 namespace demo {
@@ -124,6 +126,21 @@ void GlxWindow::fixSize()
     hints.min_width = hints.max_width = width_;
     hints.min_height = hints.max_height = height_;
     XSetWMNormalHints(display_, window_, &hints);
+}
+
+void GlxWindow::pressKeys(const std::string& keys, bool down)
+{
+    // XTEST, as the X server sees a user's keys (nprgl polls the keyboard state at the swap).
+    for (size_t at = 0; at <= keys.size();) {
+        const size_t plus = std::min(keys.find('+', at), keys.size());
+        const KeySym sym = XStringToKeysym(keys.substr(at, plus - at).c_str());
+        if (sym != NoSymbol) {
+            XTestFakeKeyEvent(display_, XKeysymToKeycode(display_, sym), down ? True : False,
+                              CurrentTime);
+        }
+        at = plus + 1;
+    }
+    XSync(display_, False);
 }
 
 void GlxWindow::resize(int width, int height)

@@ -19,6 +19,7 @@ public:
     void readPixels(Image& image) override;
     void present() override;
     void resize(int width, int height) override;
+    void pressKeys(const std::string& keys, bool down) override;
 
 private:
     void fixSize();

@@ -39,6 +39,7 @@ void printHelp(const Options& options, const std::vector<ExtraOption>& extraOpti
                 "  --save-frames LIST frames to save, 1-based, e.g. 1,5,10 or 1-3,7\n"
                 "  --report           print 'frames=N seconds=S fps=F' at exit\n"
                 "  --grow-at N        window: resize it to twice --size before frame N\n"
+                "  --press N KEYS     window: hold KEYS (e.g. Shift_R+F11) down during frame N\n"
                 "  --help             show this help\n",
                 options.appName.c_str(), options.shortName.c_str());
     for (const ExtraOption& extra : extraOptions) {
@@ -132,6 +133,11 @@ int parseOptions(int argc, char** argv, const std::string& shortName,
             if (!takeValue() || !parseInt(value, 1, INT_MAX, options.growAt)) {
                 return usageError(options, "--grow-at needs a frame number from 1");
             }
+        } else if (arg == "--press") {
+            if (!takeValue() || !parseInt(value, 1, INT_MAX, options.pressAt) || i + 1 >= argc) {
+                return usageError(options, "--press needs a frame number from 1 and keys");
+            }
+            options.pressKeys = argv[++i];
         } else if (arg == "--size") {
             if (!takeValue() || !parseSize(value, options.width, options.height)) {
                 return usageError(options, "--size needs WxH, e.g. 640x480");

@@ -31,6 +31,10 @@ struct Options {
     bool saveFramesGiven = false;
     bool report = false;
     int growAt = 0; // GLX: the window doubles its size before this frame (0: never)
+    // GLX: keys (X keysym names joined by '+') held down with XTEST during this frame, as a
+    // user presses a hotkey (0: never).
+    int pressAt = 0;
+    std::string pressKeys;
     std::map<std::string, std::string> extras; // flags are stored with an empty value
 
     bool shouldSave(int frame) const;

@@ -23,6 +23,8 @@ public:
     virtual void present() = 0;
     // Resizes a window (what the program draws keeps its own viewport); nothing offscreen.
     virtual void resize(int /*width*/, int /*height*/) {}
+    // Holds keys ('+'-joined X keysym names) down or lets them go (a window; offscreen none).
+    virtual void pressKeys(const std::string& /*keys*/, bool /*down*/) {}
 };
 
 } // namespace demo
