@@ -326,6 +326,23 @@ TEST_P(Occlusion, HiddenEdgesStayHidden)
 
 INSTANTIATE_TEST_SUITE_P(Styles, Occlusion, ::testing::Values("wireframe", "perpixel", "edges"));
 
+// The program's fog covers the ink as it covers the surface: a sphere beyond the fog's end is
+// the fog's colour, and so is its outline (gl-117's and trigger-rally's fogged horizons were
+// drawn as hard black lines across the sky); in a fog that ends far behind it, it is inked.
+TEST(Edges, InkFadesIntoTheProgramsFog)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto inked = [&](float fogEnd, const std::string& name) {
+        auto scene = harness.makeScene({sphereBatch(sphereModelview(), kRadius, 48, 24, kRed)},
+                                       perspective());
+        for (auto& o : scene.objects) o.fog = {GL_LINEAR, 0.0f, fogEnd, 1.0f, glm::vec3(0.8f)};
+        return countInk(render(harness, scene, "toon+edges", "", name));
+    };
+    EXPECT_EQ(inked(0.5f * kDistance, "edges_fogged"), 0);
+    EXPECT_GT(inked(100.0f * kDistance, "edges_fog_far"), 500);
+}
+
 TEST(Wireframe, StencilKeepsLinesOffTheInterior)
 {
     StyleHarness harness(kSize, kSize);

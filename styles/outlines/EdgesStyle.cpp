@@ -4,6 +4,7 @@
 #include "styles/ObjectNames.h"
 #include "styles/StyleRegistry.h"
 #include "styles/outlines/OutlineParams.h"
+#include "styles/shading/ShadingCommon.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -172,6 +173,26 @@ void main()
 }
 )";
 
+// The program's fog over the ink, as GL fogs what it draws: a line on a surface far into the
+// fog fades into it with the surface (a horizon the fog hides keeps no line). The line's
+// window depth back to the eye distance by the fogged objects' projection (P[2][2], P[3][2]).
+const char* kInkFog = R"(
+uniform float fogMode;  // ShadingCommon::fogModeCode(); 0: no fog
+uniform vec3 fogRange;  // start, end, density
+uniform vec3 fogColour;
+uniform vec3 fogDepth;  // P[2][2], P[3][2], 1 for an orthographic projection
+uniform vec2 windowRange; // glDepthRange
+vec3 inkFog(vec3 ink, float windowDepth)
+{
+    if (fogMode < 0.5) return ink;
+    float ndc = 2.0 * (windowDepth - windowRange.x) / max(windowRange.y - windowRange.x, 1e-6)
+                - 1.0;
+    float z = fogDepth.z > 0.5 ? (ndc - fogDepth.y) / fogDepth.x
+                               : fogDepth.y / (fogDepth.x + ndc);
+    return mix(fogColour, ink, fogFactor(fogMode, abs(z), fogRange));
+}
+)";
+
 // Lines of up to two pixels: a pixel d >= 1 from the marked band gets clamp(w/2 - d) = 0
 // (see kCompositeFragment), so the coverage is min(w/2, 1) on the band and none elsewhere,
 // and the operator feeds the composite directly.
@@ -193,8 +214,9 @@ void main()
     colour = colours[0] * c.r + colour * (1.0 - c.r);
     alpha = c.r + alpha * (1.0 - c.r);
     if (alpha <= 0.0) discard;
-    gl_FragDepth = max((own < 1.0 ? own : e.a) - depthBias, 0.0);
-    fragColor = vec4(colour / alpha, alpha);
+    float depth = own < 1.0 ? own : e.a;
+    gl_FragDepth = max(depth - depthBias, 0.0);
+    fragColor = vec4(inkFog(colour / alpha, depth), alpha);
 }
 )";
 
@@ -226,7 +248,7 @@ void main()
 // important on top), like cels. A pixel of the scene keeps its own depth; one over the
 // background (outside the silhouette) takes the depth of the nearest edge that reaches it,
 // so it covers the background but not what the program drew in front.
-const char* kCompositeFragment = R"(#version 130
+const char* kCompositeFragment = R"(
 uniform sampler2D dilated;
 uniform usampler2D attributes;
 uniform ivec4 rect;
@@ -255,8 +277,9 @@ void main()
     alpha = cover.r + alpha * (1.0 - cover.r);
     if (alpha <= 0.0) discard;
     float own = float(texelFetch(attributes, p, 0).y & 0xffffffu) * (1.0 / 16777215.0);
-    gl_FragDepth = max((own < 1.0 ? own : nearest) - depthBias, 0.0);
-    fragColor = vec4(colour / alpha, alpha);
+    float depth = own < 1.0 ? own : nearest;
+    gl_FragDepth = max(depth - depthBias, 0.0);
+    fragColor = vec4(inkFog(colour / alpha, depth), alpha);
 }
 )";
 
@@ -307,13 +330,15 @@ StyleInfo edgesStyleInfo()
 bool EdgesStyle::init(StyleContext& ctx, std::string& error)
 {
     const GlFunctions& gl = ctx.gl;
+    const std::string fog = std::string(ShadingCommon::fogFactorFunction()) + kInkFog;
     const std::string detect = std::string(kOperator) + kDetectMain;
-    const std::string direct = std::string(kOperator) + kDirectMain;
+    const std::string direct = std::string(kOperator) + fog + kDirectMain;
+    const std::string composite = "#version 130\n" + fog + kCompositeFragment;
     if (!mGeometry.build(gl, kGeometryVertex, kGeometryFragment, error) ||
         !mDetect.build(gl, kFullscreenVertex, detect.c_str(), error) ||
         !mDirect.build(gl, kFullscreenVertex, direct.c_str(), error) ||
         !mDilate.build(gl, kFullscreenVertex, kDilateFragment, error) ||
-        !mComposite.build(gl, kFullscreenVertex, kCompositeFragment, error)) {
+        !mComposite.build(gl, kFullscreenVertex, composite.c_str(), error)) {
         return false;
     }
     mGeo = {mGeometry.uniform(gl, "modelview"),    mGeometry.uniform(gl, "projection"),
@@ -326,6 +351,11 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     }
     mDirU = {mDirect.uniform(gl, "origin"), mDirect.uniform(gl, "cover"),
              mDirect.uniform(gl, "colours"), mDirect.uniform(gl, "depthBias")};
+    for (auto [program, u] : {std::pair{&mDirect, &mDirFog}, std::pair{&mComposite, &mComFog}}) {
+        *u = {program->uniform(gl, "fogMode"), program->uniform(gl, "fogRange"),
+                program->uniform(gl, "fogColour"), program->uniform(gl, "fogDepth"),
+                program->uniform(gl, "windowRange")};
+    }
     mDil = {mDilate.uniform(gl, "edges"), mDilate.uniform(gl, "rect"),
             mDilate.uniform(gl, "radius")};
     mCom = {mComposite.uniform(gl, "dilated"), mComposite.uniform(gl, "attributes"),
@@ -565,8 +595,29 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     // Two steps of the program's depth format: its rounding must not hide the ink.
     const int bits = std::clamp(int(depthBits), 8, 24);
     const float depthBias = 2.0f / float(1 << bits);
+    // The fog most of the flush's objects are drawn in (lines of unfogged ones, a HUD's 3D
+    // icons, are near the eye or few).
+    const SceneObject* fogged = nullptr;
+    size_t foggedCount = 0;
+    for (const SceneObject& o : scene.objects) {
+        if (o.fog.mode == 0) continue;
+        if (!fogged) fogged = &o;
+        ++foggedCount;
+    }
+    if (2 * foggedCount <= scene.objects.size()) fogged = nullptr;
+    auto setFog = [&](const InkFog& u) {
+        gl.Uniform1f(u.mode, fogged ? ShadingCommon::fogModeCode(fogged->fog.mode) : 0.0f);
+        if (!fogged) return;
+        const SceneObject::Fog& f = fogged->fog;
+        gl.Uniform3f(u.range, f.start, f.end, f.density);
+        gl.Uniform3fv(u.colour, 1, glm::value_ptr(f.colour));
+        const glm::mat4& p = fogged->projection;
+        gl.Uniform3f(u.depth, p[2][2], p[3][2], fogged->orthographic() ? 1.0f : 0.0f);
+        gl.Uniform2f(u.windowRange, scene.depthRange.x, scene.depthRange.y);
+    };
     if (direct) {
         gl.UseProgram(mDirect.id());
+        setFog(mDirFog);
         gl.ActiveTexture(GL_TEXTURE0);
         gl.BindTexture(GL_TEXTURE_2D, mTargets.attributes());
         setOperator(mDir);
@@ -577,6 +628,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform1f(mDirU.depthBias, depthBias);
     } else {
         gl.UseProgram(mComposite.id());
+        setFog(mComFog);
         gl.ActiveTexture(GL_TEXTURE0);
         gl.BindTexture(GL_TEXTURE_2D, mTargets.dilated());
         gl.ActiveTexture(GL_TEXTURE1);

@@ -79,6 +79,11 @@ private:
     struct {
         GLint origin = -1, cover = -1, colours = -1, depthBias = -1;
     } mDirU;
+    // The ink's fog (kInkFog), in both programs that composite.
+    struct InkFog {
+        GLint mode = -1, range = -1, colour = -1, depth = -1, windowRange = -1;
+    };
+    InkFog mDirFog, mComFog;
 };
 
 } // namespace nprgl::styles
