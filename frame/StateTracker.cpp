@@ -632,7 +632,13 @@ const char* StateTracker::pipelineLimit() const
 {
     const AttribState& a = mAttrib;
     if (a.stencilTest) return "the stencil test";
-    if (!a.fillFront || !a.fillBack) return "glPolygonMode lines or points";
+    // A side's mode matters only where that side is drawn: programs set lines for the back
+    // faces they cull (foobillardplus's filled table).
+    const bool frontDrawn = !a.cullFace || a.cullMode == GL_BACK;
+    const bool backDrawn = !a.cullFace || a.cullMode == GL_FRONT;
+    if ((!a.fillFront && frontDrawn) || (!a.fillBack && backDrawn)) {
+        return "glPolygonMode lines or points";
+    }
     // A depth-only pass (no colour channel) is held: the styles supply its depth.
     if (!a.colorMaskAll && !a.colorMaskNone) return "a partial colour mask";
     // The styles run inside one more glPushAttrib/glPushClientAttrib: a full stack would

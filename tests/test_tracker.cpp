@@ -345,6 +345,32 @@ struct Feed {
     }
 };
 
+// A side's polygon mode counts only where that side is drawn: lines for the back faces a
+// program culls leave its filled front as it is (foobillardplus sets GL_BACK to GL_LINE and
+// culls the back; all its table was left for "lines or points").
+TEST(StateTracker, LinesForCulledFacesDoNotLeaveTheFilledSide)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto call = [&](uint16_t opcode, std::initializer_list<GLenum> args) {
+        feed.run([&](CallWriter& w) {
+            w.op(opcode);
+            for (GLenum a : args) w.put<GLenum>(a);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    call(op::glPolygonMode, {GL_BACK, GL_LINE});
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES)) << "back faces drawn as lines";
+    feed.enable(GL_CULL_FACE, true);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    call(op::glCullFace, {GL_FRONT});
+    EXPECT_FALSE(tracker.wouldHold(GL_TRIANGLES)) << "the back, drawn as lines, is shown";
+    call(op::glPolygonMode, {GL_FRONT_AND_BACK, GL_FILL});
+    call(op::glPolygonMode, {GL_FRONT, GL_POINT});
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+}
+
 // Materials set between glBegin and glEnd colour their own vertices (xscreensaver's cityflow
 // sets one per box face inside one GL_QUADS batch; every box came out in the last one's
 // colour), drawn directly and from a display list compiled so.
