@@ -451,9 +451,20 @@ void Compositor::tintBegin(GLuint list)
         return;
     }
     if (!mTintLeft) return;
+    if (mTracker.ownShaders()) {
+        // A program's own shaders ignore the fixed pipeline's fog: blending keeps their red
+        // alone (dark red where they draw little red), over nothing behind.
+        gRealGl.glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT);
+        gRealGl.glEnable(GL_BLEND);
+        gRealGl.glBlendColor(1.0f, 0.0f, 0.0f, 1.0f);
+        gRealGl.glBlendEquation(GL_FUNC_ADD);
+        gRealGl.glBlendFuncSeparate(GL_CONSTANT_COLOR, GL_ZERO, GL_ONE, GL_ZERO);
+        mTinting = true;
+        return;
+    }
     // Fog at an overwhelming density turns every fragment of the fixed-function pipeline into
     // the fog colour, whatever its colours, lighting and textures; the attribute stack gives
-    // the program's fog back. A program's own shaders ignore it (their draws stay as drawn).
+    // the program's fog back.
     // Blended, it is laid over what is behind by its alpha: added, the red of a glow over a
     // light tint read white or pink, and the draw was not seen as left.
     gRealGl.glPushAttrib(GL_FOG_BIT | GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT);

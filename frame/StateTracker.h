@@ -141,6 +141,8 @@ public:
     // Texture units (bits) a draw issued now layers over its surface's texture, which the
     // styles do not draw (see surfaceUnit).
     uint32_t droppedLayers() const;
+    // The program's shaders (GLSL or ARB programs) draw what is issued now.
+    bool ownShaders() const;
     // The unit whose lightmap gives a draw issued now its light (no GL lighting), or -1.
     int lightmapUnit() const { return mAttrib.lighting ? -1 : lightUnit(); }
     // A draw issued now adds light (GL_ONE or GL_SRC_ALPHA onto GL_ONE) through the
@@ -367,8 +369,6 @@ private:
                      const void* pixels) const;
     // Why surfaceUnit() is -1.
     const char* multitexturing() const;
-    // The program's shaders (GLSL or ARB programs) draw what is issued now.
-    bool ownShaders() const;
     // What of the fixed pipeline's state the styles cannot follow (stencil, lines or points,
     // a partial colour mask, a full attribute stack), or null.
     const char* pipelineLimit() const;

@@ -176,6 +176,26 @@ TEST_P(ProcAddress, DrawsWithTheProgramsOwnShadersAreLeftAsTheyAre)
     EXPECT_EQ(differing[4], 0);
     EXPECT_GT(differing[0], 100); // while the cube of cell 0 is styled
     EXPECT_GT(differing[1], 100); // and the lightmapped quad of cell 1
+
+    // The coverage style shows it left: red alone where the cube was (the fixed pipeline's
+    // fog that tints the other left draws red is no part of a shader's picture).
+    ProcessResult coverage =
+        runProcess(under({nprglCommand(), "--style", "coverage"},
+                         probe(GetParam(), {"--save", dir + "/coverage.rgba"})));
+    ASSERT_EQ(coverage.exitCode, 0) << coverage.err;
+    const std::vector<uint8_t> tinted = readRgba(dir + "/coverage.rgba");
+    const std::vector<uint8_t> nativeImage = readRgba(dir + "/native.rgba");
+    const std::array<int, 6> nativeCells = cells(native.out);
+    ASSERT_EQ(tinted.size(), size_t(kWidth) * kHeight * 4);
+    int red = 0;
+    for (int y = 0; y < kHeight / 2; ++y) { // cell 4 (rows bottom first)
+        for (int x = kWidth / 3; x < 2 * kWidth / 3; ++x) {
+            const size_t i = (size_t(y) * kWidth + x) * 4;
+            const bool object = nativeImage[i] != tinted[i] || nativeImage[i + 1] != tinted[i + 1];
+            red += object && tinted[i] > 20 && tinted[i + 1] == 0 && tinted[i + 2] == 0;
+        }
+    }
+    EXPECT_GT(red, nativeCells[4] * 3 / 4) << "of " << nativeCells[4];
 }
 
 INSTANTIATE_TEST_SUITE_P(Context, ProcAddress, ::testing::Values("osmesa", "glx", "egl"),
