@@ -903,6 +903,8 @@ styles::GeneratedTexture StateTracker::generatedTexture() const
     g.texture = unitTexture(u);
     if (g.texture == 0) return {};
     g.matrix = mMatrices.texture(u);
+    auto mean = mTextureMeans.find(mUnitTextures[size_t(u)]);
+    if (mean != mTextureMeans.end()) g.mean = mean->second;
     return g;
 }
 

@@ -52,6 +52,10 @@ struct GeneratedTexture {
     // glTexGen transformed it by the modelview of its call) for GL_EYE_LINEAR.
     glm::vec4 plane[2]{glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)};
     glm::mat4 matrix{1.0f}; // the unit's texture matrix, which GL applies after generating
+    // The texture's mean colour (1 where unknown): where the styles drop the texture (a
+    // reflection, see ShadingCommon::reflectionsParam) the surface keeps its average tint, as
+    // a chrome or crystal object whose only colour is its reflection keeps its hue.
+    glm::vec3 mean{1.0f};
 };
 
 // One object the compositor held back: a welded mesh and the state it was drawn with.

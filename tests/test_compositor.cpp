@@ -602,8 +602,9 @@ INSTANTIATE_TEST_SUITE_P(
 // no draw is left, and the draws after it (texgen off again) keep their own textures. Stripes
 // projected on GL_OBJECT_LINEAR or GL_EYE_LINEAR planes are the sphere's own texture, on
 // coordinates the style generates as GL does: where the program has them. Stripes reflected
-// by GL_SPHERE_MAP are dropped (the surface's colour alone) unless toon.reflections asks for
-// them: then they are back, where the program has them.
+// by GL_SPHERE_MAP are dropped (the surface's colour tinted by the texture's mean, no
+// stripes) unless toon.reflections asks for them: then they are back, where the program has
+// them.
 class GeneratedCoordinates : public ::testing::TestWithParam<std::vector<std::string>> {};
 
 TEST_P(GeneratedCoordinates, AreStyledWithoutTheirTextureUnlessAsked)
@@ -637,6 +638,10 @@ TEST_P(GeneratedCoordinates, AreStyledWithoutTheirTextureUnlessAsked)
     // The sphere's middle (right half of the frame, above the floor's far edge): orange
     // stripes natively, the white material's tones styled.
     int orangeNative = 0, orangeStyled = 0, orangeShown = 0, orangeBoth = 0;
+    // The styled picture's blue where the program's stripes are orange, and where not: alike
+    // when the styled sphere has no stripes.
+    double blueOnStripes = 0.0, blueOff = 0.0;
+    double warmth = 0.0; // red over blue, styled
     for (int y = 100; y < 150; ++y) {
         for (int x = 190; x < 230; ++x) {
             const size_t i = (size_t(y) * a.width + x) * 4;
@@ -647,11 +652,18 @@ TEST_P(GeneratedCoordinates, AreStyledWithoutTheirTextureUnlessAsked)
             orangeStyled += orange(b);
             orangeShown += orange(c);
             orangeBoth += orange(a) && orange(c);
+            (orange(a) ? blueOnStripes : blueOff) += b.rgba[i + 2];
+            warmth += int(b.rgba[i]) - int(b.rgba[i + 2]);
         }
     }
     EXPECT_GT(orangeNative, 300) << "the demo's sphere is not where the test looks";
     if (GetParam().front() == "--sphere-map") {
-        EXPECT_EQ(orangeStyled, 0) << "the reflection was taken for the sphere's own texture";
+        const int off = 50 * 40 - orangeNative;
+        ASSERT_GT(off, 100);
+        EXPECT_NEAR(blueOnStripes / orangeNative, blueOff / off, 12.0)
+            << "the reflection's stripes were taken for the sphere's own texture";
+        // Its average tint stays: the white sphere is as warm as its orange and white stripes.
+        EXPECT_GT(warmth / (50 * 40), 30.0) << "the reflection's mean tint was dropped";
     } else {
         EXPECT_GT(orangeStyled, 300) << "the projected texture was dropped";
     }

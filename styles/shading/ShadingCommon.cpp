@@ -251,7 +251,10 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
         gl.Uniform1f(fogMode, fogModeCode(f.mode));
         gl.Uniform3f(fogRange, f.start, f.end, f.density);
         gl.Uniform3fv(fogColour, 1, glm::value_ptr(f.colour));
-        gl.Uniform3fv(layerScale, 1, glm::value_ptr(object.layerScale));
+        // A generated texture the styles drop keeps its average tint (GeneratedTexture::mean).
+        const glm::vec3 scale = g.texture != 0 && !generates ? object.layerScale * g.mean
+                                                              : object.layerScale;
+        gl.Uniform3fv(layerScale, 1, glm::value_ptr(scale));
         gl.Uniform3fv(layerOffset, 1, glm::value_ptr(object.layerOffset));
     }
 }
