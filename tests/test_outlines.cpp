@@ -343,6 +343,40 @@ TEST(Edges, InkFadesIntoTheProgramsFog)
     EXPECT_GT(inked(100.0f * kDistance, "edges_fog_far"), 500);
 }
 
+// An object small on screen keeps its creases (a small box stays a box) but gets no lines
+// where its colours change: at a few pixels across those lines are most of it (criticalmass's
+// small enemy ships, purple legs on white, came out as blots of ink). edges.detail_size=0
+// draws them as before.
+TEST(Edges, ASmallObjectKeepsItsCreasesButNotItsColourLines)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    // Half-unit boxes about 35 pixels across: one turned to show three faces, one a plate
+    // facing the eye whose front face is two colours split along its diagonal.
+    const glm::mat4 at = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -15.0f));
+    const glm::mat4 turned = glm::rotate(glm::rotate(at, 0.6f, glm::vec3(1.0f, 0.0f, 0.0f)),
+                                         0.7f, glm::vec3(0.0f, 1.0f, 0.0f));
+    reconstruct::Batch plate = boxBatch(at, glm::vec3(0.5f, 0.5f, 0.05f), kPale);
+    for (size_t k = 30; k < 33; ++k) plate.vertices[k].color = glm::vec4(0.2f, 0.3f, 0.9f, 1.0f);
+    auto inkInside = [](const PngImage& image) {
+        int n = 0; // 6 pixels around the centre: inside either box
+        for (int y = kSize / 2 - 6; y <= kSize / 2 + 6; ++y) {
+            for (int x = kSize / 2 - 6; x <= kSize / 2 + 6; ++x) n += isInk(image, x, y);
+        }
+        return n;
+    };
+    auto inked = [&](const reconstruct::Batch& b, const std::string& config,
+                     const std::string& name) {
+        return inkInside(render(harness, harness.makeScene({b}, perspective()), "toon+edges",
+                                config, name));
+    };
+    const reconstruct::Batch box = boxBatch(turned, glm::vec3(0.5f), kPale);
+    EXPECT_GT(inked(box, "", "edges_small_box"), 10) << "a small box lost its creases";
+    EXPECT_GT(inked(plate, "edges.detail_size=0", "edges_plate_all"), 5)
+        << "no line between the colours to begin with";
+    EXPECT_EQ(inked(plate, "", "edges_plate_small"), 0);
+}
+
 TEST(Wireframe, StencilKeepsLinesOffTheInterior)
 {
     StyleHarness harness(kSize, kSize);
@@ -489,9 +523,11 @@ TEST(Edges, SeamsBetweenPiecesOfOneSurfaceAreNotInked)
         }
         return n;
     };
-    const PngImage joined = render(harness, scene, "toon+edges", "", "edges_seam_off");
-    const PngImage seams =
-        render(harness, scene, "toon+edges", "edges.object_seams=on", "edges_seam_on");
+    // (The boxes are small enough on screen to lose lines between objects: detail_size=0.)
+    const PngImage joined =
+        render(harness, scene, "toon+edges", "edges.detail_size=0", "edges_seam_off");
+    const PngImage seams = render(harness, scene, "toon+edges",
+                                  "edges.object_seams=on,edges.detail_size=0", "edges_seam_on");
     EXPECT_EQ(seamInk(joined), 0);
     EXPECT_GT(seamInk(seams), 40);
     // The outer outline: ink on the left and right borders in both.
