@@ -1140,7 +1140,8 @@ TEST_F(Shading, ALayerNotDrawnKeepsItsMeanEffect)
     ASSERT_TRUE(harness.ok());
     const reconstruct::Batch quad = facingQuad(glm::vec4(0.4f, 0.4f, 0.4f, 1.0f), true);
     auto centre = [&](const std::string& chain, glm::vec3 scale, glm::vec3 offset) {
-        auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+        // Lit from 53 degrees: toon's diffuse band (its highlight mixes in white).
+        auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.8f, 0.6f));
         for (auto& o : scene.objects) {
             o.layerScale = scale;
             o.layerOffset = offset;

@@ -188,21 +188,26 @@ void main()
 // The program's fog over the ink, as GL fogs what it draws: a line on a surface far into the
 // fog fades into it with the surface (a horizon the fog hides keeps no line). The line's
 // window depth back to the eye distance by the fogged objects' projection (P[2][2], P[3][2]).
+// A variant without it (INK_FOG 0) for flushes without fog: llvmpipe runs both sides of a
+// branch, and a full-window pass pays for every instruction.
 const char* kInkFog = R"(
-uniform float fogMode;  // ShadingCommon::fogModeCode(); 0: no fog
+#if INK_FOG
+uniform float fogMode;  // ShadingCommon::fogModeCode()
 uniform vec3 fogRange;  // start, end, density
 uniform vec3 fogColour;
 uniform vec3 fogDepth;  // P[2][2], P[3][2], 1 for an orthographic projection
 uniform vec2 windowRange; // glDepthRange
 vec3 inkFog(vec3 ink, float windowDepth)
 {
-    if (fogMode < 0.5) return ink;
     float ndc = 2.0 * (windowDepth - windowRange.x) / max(windowRange.y - windowRange.x, 1e-6)
                 - 1.0;
     float z = fogDepth.z > 0.5 ? (ndc - fogDepth.y) / fogDepth.x
                                : fogDepth.y / (fogDepth.x + ndc);
     return mix(fogColour, ink, fogFactor(fogMode, abs(z), fogRange));
 }
+#else
+vec3 inkFog(vec3 ink, float windowDepth) { return ink; }
+#endif
 )";
 
 // Lines of up to two pixels: a pixel d >= 1 from the marked band gets clamp(w/2 - d) = 0
@@ -353,39 +358,53 @@ StyleInfo edgesStyleInfo()
 bool EdgesStyle::init(StyleContext& ctx, std::string& error)
 {
     const GlFunctions& gl = ctx.gl;
-    const std::string fog = std::string(ShadingCommon::fogFactorFunction()) + kInkFog;
     const std::string detect = std::string(kOperator) + kDetectMain;
-    const std::string direct = std::string(kOperator) + fog + kDirectMain;
-    const std::string composite = "#version 130\n" + fog + kCompositeFragment;
+    std::string direct[2], composite[2];
+    for (int fogged = 0; fogged < 2; ++fogged) {
+        const std::string fog = std::string("#define INK_FOG ") + (fogged ? "1\n" : "0\n") +
+                                ShadingCommon::fogFactorFunction() + kInkFog;
+        direct[fogged] = std::string(kOperator) + fog + kDirectMain;
+        composite[fogged] = "#version 130\n" + fog + kCompositeFragment;
+    }
     if (!mGeometry.build(gl, kGeometryVertex, kGeometryFragment, error) ||
         !mDetect.build(gl, kFullscreenVertex, detect.c_str(), error) ||
-        !mDirect.build(gl, kFullscreenVertex, direct.c_str(), error) ||
+        !mDirect[0].build(gl, kFullscreenVertex, direct[0].c_str(), error) ||
+        !mDirect[1].build(gl, kFullscreenVertex, direct[1].c_str(), error) ||
         !mDilate.build(gl, kFullscreenVertex, kDilateFragment, error) ||
-        !mComposite.build(gl, kFullscreenVertex, composite.c_str(), error)) {
+        !mComposite[0].build(gl, kFullscreenVertex, composite[0].c_str(), error) ||
+        !mComposite[1].build(gl, kFullscreenVertex, composite[1].c_str(), error)) {
         return false;
     }
     mGeo = {mGeometry.uniform(gl, "modelview"),    mGeometry.uniform(gl, "projection"),
             mGeometry.uniform(gl, "normalMatrix"), mGeometry.uniform(gl, "objectId"),
             mGeometry.uniform(gl, "orthographic"), mGeometry.uniform(gl, "depthRange"),
             mGeometry.uniform(gl, "lineClasses")};
-    for (auto [program, op] : {std::pair{&mDetect, &mDet}, std::pair{&mDirect, &mDir}}) {
-        *op = {program->uniform(gl, "attributes"), program->uniform(gl, "rect"),
-               program->uniform(gl, "depthStep"), program->uniform(gl, "creaseCosine"),
-               program->uniform(gl, "colourThreshold"), program->uniform(gl, "objectSeams")};
-    }
-    mDirU = {mDirect.uniform(gl, "origin"), mDirect.uniform(gl, "cover"),
-             mDirect.uniform(gl, "colours"), mDirect.uniform(gl, "depthBias")};
-    for (auto [program, u] : {std::pair{&mDirect, &mDirFog}, std::pair{&mComposite, &mComFog}}) {
-        *u = {program->uniform(gl, "fogMode"), program->uniform(gl, "fogRange"),
-                program->uniform(gl, "fogColour"), program->uniform(gl, "fogDepth"),
-                program->uniform(gl, "windowRange")};
+    auto findOperator = [&](ShaderProgram& program, Operator& op) {
+        op = {program.uniform(gl, "attributes"), program.uniform(gl, "rect"),
+              program.uniform(gl, "depthStep"), program.uniform(gl, "creaseCosine"),
+              program.uniform(gl, "colourThreshold"), program.uniform(gl, "objectSeams")};
+    };
+    auto findFog = [&](ShaderProgram& program, InkFog& u) {
+        u = {program.uniform(gl, "fogMode"), program.uniform(gl, "fogRange"),
+             program.uniform(gl, "fogColour"), program.uniform(gl, "fogDepth"),
+             program.uniform(gl, "windowRange")};
+    };
+    findOperator(mDetect, mDet);
+    for (int f = 0; f < 2; ++f) {
+        ShaderProgram& d = mDirect[f];
+        ShaderProgram& c = mComposite[f];
+        findOperator(d, mDir[f]);
+        findFog(d, mDirFog[f]);
+        findFog(c, mComFog[f]);
+        mDirU[f] = {d.uniform(gl, "origin"), d.uniform(gl, "cover"), d.uniform(gl, "colours"),
+                    d.uniform(gl, "depthBias")};
+        mCom[f] = {c.uniform(gl, "dilated"), c.uniform(gl, "attributes"),
+                   c.uniform(gl, "rect"),    c.uniform(gl, "origin"),
+                   c.uniform(gl, "radius"),  c.uniform(gl, "widths"),
+                   c.uniform(gl, "colours"), c.uniform(gl, "depthBias")};
     }
     mDil = {mDilate.uniform(gl, "edges"), mDilate.uniform(gl, "rect"),
             mDilate.uniform(gl, "radius")};
-    mCom = {mComposite.uniform(gl, "dilated"), mComposite.uniform(gl, "attributes"),
-            mComposite.uniform(gl, "rect"),    mComposite.uniform(gl, "origin"),
-            mComposite.uniform(gl, "radius"),  mComposite.uniform(gl, "widths"),
-            mComposite.uniform(gl, "colours"), mComposite.uniform(gl, "depthBias")};
 
     mWidths = {float(ctx.param(kStyle, "silhouette_width")),
                float(ctx.param(kStyle, "crease_width")),
@@ -660,42 +679,44 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         ++foggedCount;
     }
     if (2 * foggedCount <= scene.objects.size()) fogged = nullptr;
+    const int f = fogged ? 1 : 0; // the programs with the ink's fog, or without
     auto setFog = [&](const InkFog& u) {
-        gl.Uniform1f(u.mode, fogged ? ShadingCommon::fogModeCode(fogged->fog.mode) : 0.0f);
         if (!fogged) return;
-        const SceneObject::Fog& f = fogged->fog;
-        gl.Uniform3f(u.range, f.start, f.end, f.density);
-        gl.Uniform3fv(u.colour, 1, glm::value_ptr(f.colour));
+        const SceneObject::Fog& fog = fogged->fog;
+        gl.Uniform1f(u.mode, ShadingCommon::fogModeCode(fog.mode));
+        gl.Uniform3f(u.range, fog.start, fog.end, fog.density);
+        gl.Uniform3fv(u.colour, 1, glm::value_ptr(fog.colour));
         const glm::mat4& p = fogged->projection;
         gl.Uniform3f(u.depth, p[2][2], p[3][2], fogged->orthographic() ? 1.0f : 0.0f);
         gl.Uniform2f(u.windowRange, scene.depthRange.x, scene.depthRange.y);
     };
     if (direct) {
-        gl.UseProgram(mDirect.id());
-        setFog(mDirFog);
+        gl.UseProgram(mDirect[f].id());
+        setFog(mDirFog[f]);
         gl.ActiveTexture(GL_TEXTURE0);
         gl.BindTexture(GL_TEXTURE_2D, mTargets.attributes());
-        setOperator(mDir);
-        gl.Uniform2i(mDirU.origin, scene.viewport.x, scene.viewport.y);
+        setOperator(mDir[f]);
+        gl.Uniform2i(mDirU[f].origin, scene.viewport.x, scene.viewport.y);
         const glm::vec3 cover = glm::min(0.5f * mWidths, glm::vec3(1.0f));
-        gl.Uniform3fv(mDirU.cover, 1, glm::value_ptr(cover));
-        gl.Uniform3fv(mDirU.colours, 3, glm::value_ptr(mColours[0]));
-        gl.Uniform1f(mDirU.depthBias, depthBias);
+        gl.Uniform3fv(mDirU[f].cover, 1, glm::value_ptr(cover));
+        gl.Uniform3fv(mDirU[f].colours, 3, glm::value_ptr(mColours[0]));
+        gl.Uniform1f(mDirU[f].depthBias, depthBias);
     } else {
-        gl.UseProgram(mComposite.id());
-        setFog(mComFog);
+        const auto& u = mCom[f];
+        gl.UseProgram(mComposite[f].id());
+        setFog(mComFog[f]);
         gl.ActiveTexture(GL_TEXTURE0);
         gl.BindTexture(GL_TEXTURE_2D, mTargets.dilated());
         gl.ActiveTexture(GL_TEXTURE1);
         gl.BindTexture(GL_TEXTURE_2D, mTargets.attributes());
-        gl.Uniform1i(mCom.dilated, 0);
-        gl.Uniform1i(mCom.attributes, 1);
-        gl.Uniform4i(mCom.rect, inclusive.x, inclusive.y, inclusive.z, inclusive.w);
-        gl.Uniform2i(mCom.origin, scene.viewport.x, scene.viewport.y);
-        gl.Uniform1i(mCom.radius, mRadius);
-        gl.Uniform3fv(mCom.widths, 1, glm::value_ptr(mWidths));
-        gl.Uniform3fv(mCom.colours, 3, glm::value_ptr(mColours[0]));
-        gl.Uniform1f(mCom.depthBias, depthBias);
+        gl.Uniform1i(u.dilated, 0);
+        gl.Uniform1i(u.attributes, 1);
+        gl.Uniform4i(u.rect, inclusive.x, inclusive.y, inclusive.z, inclusive.w);
+        gl.Uniform2i(u.origin, scene.viewport.x, scene.viewport.y);
+        gl.Uniform1i(u.radius, mRadius);
+        gl.Uniform3fv(u.widths, 1, glm::value_ptr(mWidths));
+        gl.Uniform3fv(u.colours, 3, glm::value_ptr(mColours[0]));
+        gl.Uniform1f(u.depthBias, depthBias);
     }
     drawFullscreen(gl);
 
@@ -712,7 +733,8 @@ void EdgesStyle::shutdown(StyleContext& ctx)
     mTargets.destroy(gl);
     if (mTriangle) gl.DeleteBuffers(1, &mTriangle);
     mTriangle = 0;
-    for (ShaderProgram* p : {&mGeometry, &mDetect, &mDirect, &mDilate, &mComposite}) {
+    for (ShaderProgram* p : {&mGeometry, &mDetect, &mDirect[0], &mDirect[1], &mDilate,
+                             &mComposite[0], &mComposite[1]}) {
         p->destroy(gl);
     }
     mBounds.clear();

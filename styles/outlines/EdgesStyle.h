@@ -51,7 +51,9 @@ private:
     // line_ink; 1, no material lines, where it is smaller than detail_size; else 2, all.
     int lineClasses(const SceneObject& o, int width, int height);
 
-    ShaderProgram mGeometry, mDetect, mDilate, mComposite, mDirect;
+    ShaderProgram mGeometry, mDetect, mDilate;
+    // Without and with the program's fog on the ink ([1]: kInkFog's INK_FOG).
+    ShaderProgram mComposite[2], mDirect[2];
     EdgeTargets mTargets;
     GLuint mTriangle = 0; // one triangle covering the viewport
     glm::vec3 mWidths{2.0f};
@@ -72,7 +74,7 @@ private:
         GLint attributes = -1, rect = -1, depthStep = -1, creaseCosine = -1,
               colourThreshold = -1, objectSeams = -1;
     };
-    Operator mDet, mDir;
+    Operator mDet, mDir[2];
     bool mObjectSeams = false;
     float mLineInk = 1.0f;     // of the object's screen area
     float mDetailSize = 64.0f; // pixels
@@ -83,15 +85,15 @@ private:
     struct {
         GLint dilated = -1, attributes = -1, rect = -1, origin = -1, radius = -1, widths = -1,
               colours = -1, depthBias = -1;
-    } mCom;
+    } mCom[2];
     struct {
         GLint origin = -1, cover = -1, colours = -1, depthBias = -1;
-    } mDirU;
+    } mDirU[2];
     // The ink's fog (kInkFog), in both programs that composite.
     struct InkFog {
         GLint mode = -1, range = -1, colour = -1, depth = -1, windowRange = -1;
     };
-    InkFog mDirFog, mComFog;
+    InkFog mDirFog[2], mComFog[2];
 };
 
 } // namespace nprgl::styles

@@ -33,6 +33,9 @@ uniform vec2 genMode;
 uniform vec4 genPlaneS;
 uniform vec4 genPlaneT;
 uniform mat4 genMatrix; // the unit's texture matrix, applied to generated coordinates
+// What the program's layers the styles do not draw multiply the colour by (SceneObject::
+// layerScale), per vertex: it commutes with the texture's modulation.
+uniform vec3 layerScale;
 float generated(float mode, vec4 plane, float own, float sphere, vec4 eye)
 {
     return mode < 0.5   ? own
@@ -43,7 +46,7 @@ float generated(float mode, vec4 plane, float own, float sphere, vec4 eye)
 void main()
 {
     eyeNormal = normalMatrix * normal;
-    baseColor = color;
+    baseColor = vec4(color.rgb * layerScale, color.a);
     lightUv = lightcoord;
     vec4 eye = modelview * vec4(position, 1.0);
     eyePosition = eye.xyz / eye.w;
@@ -146,13 +149,12 @@ std::string ShadingCommon::fogFunction()
 uniform float fogMode;  // fogModeCode()
 uniform vec3 fogRange;  // start, end, density
 uniform vec3 fogColour;
-uniform vec3 layerScale;  // SceneObject::layerScale, layerOffset
-uniform vec3 layerOffset;
+uniform vec3 layerOffset; // SceneObject::layerOffset (the layers' scale is the vertices')
 // What GL does after the surface's texture: the layers the styles do not draw (on average),
 // then fog.
 vec3 programFog(vec3 colour, vec3 eyePosition)
 {
-    colour = clamp(colour * layerScale + layerOffset, 0.0, 1.0);
+    colour += layerOffset;
     // GL's fog coordinate: the eye-space depth.
     return mix(fogColour, colour, fogFactor(fogMode, abs(eyePosition.z), fogRange));
 }
@@ -246,15 +248,15 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     gl.Uniform1i(lightmapSampler, 3);
     gl.Uniform1f(lightmapped, 0.0f); // drawTextured says where a lightmap is bound
+    // A generated texture the styles drop keeps its average tint (GeneratedTexture::mean).
+    const glm::vec3 scale =
+        g.texture != 0 && !generates ? object.layerScale * g.mean : object.layerScale;
+    gl.Uniform3fv(layerScale, 1, glm::value_ptr(scale));
     if (fogMode >= 0) {
         const SceneObject::Fog& f = object.fog;
         gl.Uniform1f(fogMode, fogModeCode(f.mode));
         gl.Uniform3f(fogRange, f.start, f.end, f.density);
         gl.Uniform3fv(fogColour, 1, glm::value_ptr(f.colour));
-        // A generated texture the styles drop keeps its average tint (GeneratedTexture::mean).
-        const glm::vec3 scale = g.texture != 0 && !generates ? object.layerScale * g.mean
-                                                              : object.layerScale;
-        gl.Uniform3fv(layerScale, 1, glm::value_ptr(scale));
         gl.Uniform3fv(layerOffset, 1, glm::value_ptr(object.layerOffset));
     }
 }
