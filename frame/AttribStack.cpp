@@ -73,6 +73,7 @@ void AttribStack::pop()
         a.texture2D = saved.texture2D;
         a.textureUnits = saved.textureUnits;
         a.texture2DUnits = saved.texture2DUnits;
+        a.cubeUnits = saved.cubeUnits;
         a.texGen = saved.texGen;
     }
     if (mask & GL_TEXTURE_BIT) {

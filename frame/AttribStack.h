@@ -17,6 +17,7 @@ struct AttribState {
     bool lighting = false, colorMaterial = false, depthTest = false, texture2D = false;
     uint32_t textureUnits = 0; // bit u: a texture target is enabled on unit u (not unit 0's 2D)
     uint32_t texture2DUnits = 0; // bit u: GL_TEXTURE_2D is enabled on unit u >= 1
+    uint32_t cubeUnits = 0;      // bit u: GL_TEXTURE_CUBE_MAP is enabled on unit u
     // GL_TEXTURE_ENV_MODE per unit < 8 (GL_MODULATE, GL_COMBINE...): which unit's texture is
     // the surface's and which layer light or effects over it.
     std::array<GLenum, 8> envMode{GL_MODULATE, GL_MODULATE, GL_MODULATE, GL_MODULATE,

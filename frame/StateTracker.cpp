@@ -1646,6 +1646,10 @@ void StateTracker::setEnabled(GLenum cap, bool on)
         // styled with it (surfaceUnit); several units are multitexturing.
         if (on) a.textureUnits |= 1u << std::min(mActiveUnit, 31);
         else a.textureUnits &= ~(1u << std::min(mActiveUnit, 31));
+        if (cap == GL_TEXTURE_CUBE_MAP) {
+            if (on) a.cubeUnits |= 1u << std::min(mActiveUnit, 31);
+            else a.cubeUnits &= ~(1u << std::min(mActiveUnit, 31));
+        }
         if (cap == GL_TEXTURE_2D) {
             if (on) a.texture2DUnits |= 1u << std::min(mActiveUnit, 31);
             else a.texture2DUnits &= ~(1u << std::min(mActiveUnit, 31));
@@ -1830,6 +1834,9 @@ void StateTracker::activeTexture(GLenum unit)
 
 void StateTracker::bindTexture(GLenum target, GLuint texture)
 {
+    if (target == GL_TEXTURE_CUBE_MAP && size_t(mActiveUnit) < mUnitCubeTextures.size()) {
+        mUnitCubeTextures[size_t(mActiveUnit)] = texture;
+    }
     if (target == GL_TEXTURE_2D && mActiveUnit == 0) mBoundTexture = texture;
     if (target == GL_TEXTURE_2D && size_t(mActiveUnit) < mUnitTextures.size()) {
         mUnitTextures[size_t(mActiveUnit)] = texture;
@@ -1896,9 +1903,15 @@ bool StateTracker::layerEffect(int unit, glm::vec3& scale, glm::vec3& offset) co
 {
     const AttribState& a = mAttrib;
     const size_t u = size_t(unit);
-    auto mean = mTextureMeans.find(mUnitTextures[u]);
-    if (mean == mTextureMeans.end()) return false;
-    const glm::vec3 m = mean->second;
+    // The unit's texture: a cube map where one is enabled (GL takes it over a 2D one).
+    glm::vec3 m;
+    if (a.cubeUnits & (1u << u)) {
+        if (!cubeMean(mUnitCubeTextures[u], m)) return false;
+    } else {
+        auto mean = mTextureMeans.find(mUnitTextures[u]);
+        if (mean == mTextureMeans.end()) return false;
+        m = mean->second;
+    }
     GLenum function = a.envMode[u];
     float k = 1.0f;
     if (function == GL_COMBINE) {
@@ -1922,7 +1935,14 @@ bool StateTracker::layerEffect(int unit, glm::vec3& scale, glm::vec3& offset) co
 
 void StateTracker::layerEffects(TrackedBatch& batch) const
 {
-    const uint32_t layers = droppedLayers();
+    uint32_t layers = droppedLayers();
+    // A surface textured by a cube map alone (an environment on reflection coordinates, the
+    // styles draw none) is dropped as a layer is: its mean tint stays.
+    const int surface = surfaceUnit();
+    if (surface >= 0 && batch.texture == 0 && batch.generated.texture == 0 &&
+        (mAttrib.cubeUnits & (1u << surface))) {
+        layers |= 1u << surface;
+    }
     for (int u = 0; u < 8; ++u) {
         glm::vec3 scale, offset;
         if (!(layers & (1u << u)) || !layerEffect(u, scale, offset)) continue;
@@ -1932,22 +1952,21 @@ void StateTracker::layerEffects(TrackedBatch& batch) const
     }
 }
 
-void StateTracker::noteTextureMean(GLuint texture, GLsizei width, GLsizei height, GLenum format,
-                                   GLenum type, const void* pixels)
+bool StateTracker::imageMean(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                             const void* pixels, glm::vec3& mean) const
 {
-    mTextureMeans.erase(texture);
     int channels = 0;
     switch (format) {
     case GL_RGBA: case GL_BGRA: channels = 4; break;
     case GL_RGB: case GL_BGR: channels = 3; break;
     case GL_LUMINANCE_ALPHA: channels = 2; break;
     case GL_LUMINANCE: channels = 1; break;
-    default: return;
+    default: return false;
     }
-    if (type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0) return;
+    if (!pixels || type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0) return false;
     // Rows as the recorder laid them out (the unpack alignment's padding included).
     const size_t row = mImageBytes / size_t(height);
-    if (row < size_t(width) * size_t(channels)) return;
+    if (row < size_t(width) * size_t(channels)) return false;
     // A sample of at most 64 x 64 texels: a mean, taken once at upload.
     const int stepX = std::max(1, int(width) / 64), stepY = std::max(1, int(height) / 64);
     const uint8_t* p = static_cast<const uint8_t*>(pixels);
@@ -1962,12 +1981,43 @@ void StateTracker::noteTextureMean(GLuint texture, GLsizei width, GLsizei height
             ++n;
         }
     }
-    mTextureMeans[texture] = glm::vec3(sum / (255.0 * double(n)));
+    mean = glm::vec3(sum / (255.0 * double(n)));
+    return true;
+}
+
+void StateTracker::noteTextureMean(GLuint texture, GLsizei width, GLsizei height, GLenum format,
+                                   GLenum type, const void* pixels)
+{
+    glm::vec3 mean;
+    if (imageMean(width, height, format, type, pixels, mean)) mTextureMeans[texture] = mean;
+    else mTextureMeans.erase(texture);
+}
+
+bool StateTracker::cubeMean(GLuint texture, glm::vec3& mean) const
+{
+    auto it = mCubeFaceMeans.find(texture);
+    if (it == mCubeFaceMeans.end()) return false;
+    glm::vec4 sum(0.0f);
+    for (const glm::vec4& face : it->second) sum += face;
+    if (sum.w == 0.0f) return false;
+    mean = glm::vec3(sum) / sum.w;
+    return true;
 }
 
 void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
                               GLenum format, GLenum type, const void* pixels)
 {
+    if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z &&
+        level == 0 && size_t(mActiveUnit) < mUnitCubeTextures.size()) {
+        // A face of the bound cube map: its mean joins the others' (an environment the
+        // styles drop keeps its tint).
+        glm::vec3 mean;
+        glm::vec4& face = mCubeFaceMeans[mUnitCubeTextures[size_t(mActiveUnit)]]
+                                        [target - GL_TEXTURE_CUBE_MAP_POSITIVE_X];
+        face = imageMean(width, height, format, type, pixels, mean) ? glm::vec4(mean, 1.0f)
+                                                                    : glm::vec4(0.0f);
+        return;
+    }
     if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
         return;
     }

@@ -400,6 +400,10 @@ private:
     void bakeObjectLinear(TrackedBatch& batch) const;
     void noteTextureMean(GLuint texture, GLsizei width, GLsizei height, GLenum format,
                          GLenum type, const void* pixels);
+    // The mean colour of an image of the call being decoded (8-bit formats); false: unknown.
+    bool imageMean(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                   const void* pixels, glm::vec3& mean) const;
+    bool cubeMean(GLuint texture, glm::vec3& mean) const;
     bool keep(TrackedBatch& batch);
     std::vector<TrackedVertex> takeVertices();
     void recycle(std::vector<TrackedVertex>&& vertices);
@@ -435,6 +439,9 @@ private:
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
     std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
+    std::array<GLuint, 8> mUnitCubeTextures{}; // every unit's GL_TEXTURE_CUBE_MAP
+    // Each cube map's faces' level-0 means (w 1 where known), +X -X +Y -Y +Z -Z.
+    std::map<GLuint, std::array<glm::vec4, 6>> mCubeFaceMeans;
     bool mDefaultImage = false;       // texture object 0 (2D) has a level 0 image
     std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
     LeaveRules mRules;

@@ -720,6 +720,56 @@ TEST(StateTracker, ALayerNotDrawnKeepsItsMeanEffect)
     EXPECT_EQ(batches[2].layerOffset, glm::vec3(0.0f));
 }
 
+// A surface coloured by a cube map alone on reflection coordinates (criticalmass's crystal
+// ship), which the styles do not draw, keeps its faces' mean tint instead of turning white.
+TEST(StateTracker, ADroppedCubeMapKeepsItsMeanTint)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto run = [&](auto&& write) { feed.run(write); };
+    run([](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_CUBE_MAP);
+        w.put<GLuint>(11);
+        for (GLenum face = 0; face < 6; ++face) {
+            // Faces of blue (0, 0, 255) and white: mean (0.5, 0.5, 1).
+            const uint8_t c = face % 2 ? 255 : 0;
+            std::vector<uint8_t> texels(2 * 2 * 4, 255);
+            for (size_t i = 0; i < 4; ++i) texels[4 * i] = texels[4 * i + 1] = c;
+            w.op(op::glTexImage2D);
+            const size_t mark = w.beginPayload();
+            for (GLint v : {GLint(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GLint(GL_RGBA), 2,
+                            2, 0}) {
+                w.put<GLint>(v);
+            }
+            w.put<GLenum>(GL_RGBA);
+            w.put<GLenum>(GL_UNSIGNED_BYTE);
+            w.put<uint8_t>(1);
+            w.putBytes(texels.data(), texels.size());
+            w.endPayload(mark);
+        }
+    });
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_CUBE_MAP, true);
+    for (GLenum coord : {GLenum(GL_S), GLenum(GL_T), GLenum(GL_R)}) {
+        run([&](CallWriter& w) {
+            w.op(op::glTexGeni);
+            w.put<GLenum>(coord);
+            w.put<GLenum>(GL_TEXTURE_GEN_MODE);
+            w.put<GLint>(GL_REFLECTION_MAP);
+        });
+        feed.enable(GL_TEXTURE_GEN_S + (coord - GL_S), true);
+    }
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, 0u);
+    EXPECT_NEAR(batches[0].layerScale.r, 0.5f, 1e-3f);
+    EXPECT_NEAR(batches[0].layerScale.b, 1.0f, 1e-3f);
+}
+
 // A draw textured by one unit other than 0 alone (units 0 and 1 off, 2 on: neverball draws
 // its backgrounds so) is styled with that unit's texture and coordinates (glMultiTexCoord of
 // that unit; array draws take its coordinate array, seen on neverball).
