@@ -29,14 +29,7 @@ public:
     bool pseudo(CallReader& r, uint16_t opcode)
     {
         // The array data glArrayElement read is the program's own, still in its arrays.
-        if (opcode == op::kArrayData) {
-            CallReader::Payload payload(r);
-            r.get<uint8_t>();
-            r.get<uint64_t>();
-            size_t size = 0;
-            r.getBytes(size);
-            return payload.finish();
-        }
+        if (opcode == op::kArrayData) return CallReader::Payload(r).skip();
         if (opcode == op::kUncaptured) {
             CallReader::Uncaptured ignored;
             return r.getUncaptured(ignored);

@@ -98,14 +98,8 @@ public:
         case op::kFrameEnd:
             r.get<uint64_t>();
             return r.ok();
-        case op::kArrayData: {
-            CallReader::Payload payload(r);
-            r.get<uint8_t>();
-            r.get<uint64_t>();
-            size_t size = 0;
-            r.getBytes(size);
-            return payload.finish();
-        }
+        case op::kArrayData:
+            return CallReader::Payload(r).skip();
         case op::kUncaptured: {
             CallReader::Uncaptured ignored;
             return r.getUncaptured(ignored);

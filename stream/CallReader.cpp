@@ -193,4 +193,11 @@ bool CallReader::Payload::finish()
     return true;
 }
 
+bool CallReader::Payload::skip()
+{
+    if (!mReader.ok()) return false;
+    mReader.mPos = mEnd;
+    return finish();
+}
+
 } // namespace nprgl

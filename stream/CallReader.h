@@ -101,6 +101,8 @@ public:
     public:
         explicit Payload(CallReader& r);
         bool finish();
+        // Passes over what is left of it unread (a pseudo-call the reader has no use for).
+        bool skip();
 
     private:
         CallReader& mReader;

@@ -318,6 +318,23 @@ struct Feed {
             w.put<GLenum>(dst);
         });
     }
+    void activeTexture(GLenum unit)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glActiveTexture);
+            w.put<GLenum>(unit);
+        });
+    }
+    // glTexEnvi(GL_TEXTURE_ENV, pname, value) on the active unit.
+    void texEnv(GLenum pname, GLint value)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glTexEnvi);
+            w.put<GLenum>(GL_TEXTURE_ENV);
+            w.put<GLenum>(pname);
+            w.put<GLint>(value);
+        });
+    }
     // Calls on GL_PROJECTION, then back to GL_MODELVIEW.
     template <typename Write>
     void projection(Write&& write)
@@ -574,21 +591,8 @@ TEST(StateTracker, AnEnvironmentMapUnderCombinedLayersIsStyledWithoutThem)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    auto run = [&](auto&& write) { feed.run(write); };
-    auto unit = [&](GLenum u) {
-        run([&](CallWriter& w) {
-            w.op(op::glActiveTexture);
-            w.put<GLenum>(u);
-        });
-    };
-    auto envMode = [&](GLint mode) {
-        run([&](CallWriter& w) {
-            w.op(op::glTexEnvi);
-            w.put<GLenum>(GL_TEXTURE_ENV);
-            w.put<GLenum>(GL_TEXTURE_ENV_MODE);
-            w.put<GLint>(mode);
-        });
-    };
+    auto unit = [&](GLenum u) { feed.activeTexture(u); };
+    auto envMode = [&](GLint mode) { feed.texEnv(GL_TEXTURE_ENV_MODE, mode); };
     feed.enable(GL_DEPTH_TEST, true);
     envMode(GL_COMBINE);
     feed.enable(GL_TEXTURE_2D, true);
@@ -674,23 +678,10 @@ TEST(StateTracker, ALayerNotDrawnKeepsItsMeanEffect)
     tracker.setHolding(true);
     Feed feed{tracker};
     auto run = [&](auto&& write) { feed.run(write); };
-    auto env = [&](GLenum pname, GLint value) {
-        run([&](CallWriter& w) {
-            w.op(op::glTexEnvi);
-            w.put<GLenum>(GL_TEXTURE_ENV);
-            w.put<GLenum>(pname);
-            w.put<GLint>(value);
-        });
-    };
-    auto unit = [&](GLenum u) {
-        run([&](CallWriter& w) {
-            w.op(op::glActiveTexture);
-            w.put<GLenum>(u);
-        });
-    };
+    auto env = [&](GLenum pname, GLint value) { feed.texEnv(pname, value); };
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_TEXTURE_2D, true); // unit 0: the surface (texture 0's image, below)
-    unit(GL_TEXTURE1);
+    feed.activeTexture(GL_TEXTURE1);
     feed.enable(GL_TEXTURE_2D, true);
     run([](CallWriter& w) {
         w.op(op::glBindTexture);
