@@ -44,17 +44,16 @@ void main()
 //      0 for the background;
 //   y: window depth (24 bits; the background is cleared to 1) | id bits 0-7 << 24;
 //   z: colour, 8 bits a channel | id bits 8-15 << 24;
-//   w: the unit eye normal facing the viewer, 10 bits a component; bit 30: the object has no
-//      room on screen for its crease and material lines and gets its silhouette alone, drawn
-//      outside it; bit 31: it is small on screen and gets no material lines (its colours show
-//      the change; lines between them made a small ship a blot of ink).
+//   w: the unit eye normal facing the viewer, 10 bits a component; bit 31: the object is
+//      small on screen and gets no material lines (its colours show the change; lines
+//      between them made a small ship a blot of ink).
 // An orthographic view may put the eye anywhere, so there the depth is measured from one
 // depth range in front of the near plane (relative jumps are then relative to the range).
 const char* kGeometryFragment = R"(#version 130
 uniform float objectId;
 uniform bool orthographic;
 uniform float depthRange;
-uniform int lineClasses; // 2: all; 1: no material lines (w bit 31); 0: silhouette alone (bit 30)
+uniform bool noMaterial; // small on screen: no material lines (w bit 31)
 in vec3 eyeNormal;
 in float viewDepth;
 in vec4 baseColor;
@@ -71,8 +70,7 @@ void main()
     uint id = uint(objectId) & 0xffffu;
     fragColor = uvec4(logDepth, window | (id << 24),
                       (c.r << 16) | (c.g << 8) | c.b | ((id >> 8) << 24),
-                      q.x | (q.y << 10) | (q.z << 20) |
-                          (lineClasses == 0 ? 0x40000000u : lineClasses == 1 ? 0x80000000u : 0u));
+                      q.x | (q.y << 10) | (q.z << 20) | (noMaterial ? 0x80000000u : 0u));
 }
 )";
 
@@ -111,15 +109,11 @@ vec3 classify(uvec4 c, uvec4 s)
 {
     if (c.x == 0u && s.x == 0u) return vec3(0.0);
     if (c.x == 0u || s.x == 0u || float(max(s.x, c.x) - min(s.x, c.x)) > depthStep) {
-        // A small object's silhouette lies outside it, on what is behind: its own few pixels
-        // keep their colour.
-        bool smallInFront = (c.w & 0x40000000u) != 0u && c.x != 0u && (s.x == 0u || s.x > c.x);
-        return smallInFront ? vec3(0.0) : vec3(1.0, 0.0, 0.0);
+        return vec3(1.0, 0.0, 0.0);
     }
     // Another object continuing the same surface in the same colour (a tube drawn in
     // segments, a floor in tiles) is no edge unless seams are asked for; where it turns or
     // changes colour it is a material edge.
-    if (((c.w | s.w) & 0x40000000u) != 0u) return vec3(0.0);
     bool otherObject = (((s.y ^ c.y) | (s.z ^ c.z)) >> 24) != 0u;
     bool otherColour = ((c.w | s.w) & 0x80000000u) == 0u &&
         any(greaterThan(abs(unpackColour(s.z) - unpackColour(c.z)), vec3(colourThreshold)));
@@ -344,12 +338,6 @@ StyleInfo edgesStyleInfo()
         "objects smaller than this on screen (pixels, their larger side) get no material "
         "lines (their colours show the change); 0: none",
         64.0, 0.0, 4096.0));
-    p.push_back(ParamInfo::number(
-        "line_ink",
-        "how much of an object's screen area its crease and material lines may cover; one "
-        "whose lines would cover more (small on screen, or dense with creases) gets its "
-        "silhouette alone, drawn outside it; 0: every object gets all its lines",
-        1.0, 0.0, 100.0));
     addInkParams(p);
     for (const char* c : {"silhouette", "crease", "material"}) addLightnessParam(p, c, 0.0);
     return info;
@@ -378,7 +366,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mGeo = {mGeometry.uniform(gl, "modelview"),    mGeometry.uniform(gl, "projection"),
             mGeometry.uniform(gl, "normalMatrix"), mGeometry.uniform(gl, "objectId"),
             mGeometry.uniform(gl, "orthographic"), mGeometry.uniform(gl, "depthRange"),
-            mGeometry.uniform(gl, "lineClasses")};
+            mGeometry.uniform(gl, "noMaterial")};
     auto findOperator = [&](ShaderProgram& program, Operator& op) {
         op = {program.uniform(gl, "attributes"), program.uniform(gl, "rect"),
               program.uniform(gl, "depthStep"), program.uniform(gl, "creaseCosine"),
@@ -416,7 +404,6 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mCreaseCosine = float(std::cos(glm::radians(ctx.param(kStyle, "crease_angle"))));
     mColourThreshold = float(ctx.param(kStyle, "colour_threshold"));
     mObjectSeams = ctx.param(kStyle, "object_seams") >= 0.5;
-    mLineInk = float(ctx.param(kStyle, "line_ink"));
     mDetailSize = float(ctx.param(kStyle, "detail_size"));
     // Far enough for the widest class (see the composite's coverage).
     const float widest = std::max({mWidths.x, mWidths.y, mWidths.z});
@@ -455,15 +442,6 @@ const EdgesStyle::Bounds& EdgesStyle::bounds(const reconstruct::ObjectMesh& mesh
     b.empty = true;
     b.lo = glm::vec3(INFINITY);
     b.hi = glm::vec3(-INFINITY);
-    b.lineLength = 0.0f;
-    for (uint32_t e = 0; e < mesh.edgeCount() && e < mesh.edgeClasses.size(); ++e) {
-        if (!(mesh.edgeClasses[e] & (reconstruct::kEdgeCrease | reconstruct::kEdgeMaterial))) {
-            continue;
-        }
-        const float l = glm::length(mesh.position(mesh.edges[e].v1) -
-                                    mesh.position(mesh.edges[e].v0));
-        if (std::isfinite(l)) b.lineLength += l;
-    }
     // The corners drawn (MeshBuffers draws faces' source vertices).
     for (uint32_t corner : mesh.faceCorners) {
         const glm::vec3& p = mesh.sourceVertices[corner].position;
@@ -509,23 +487,16 @@ bool EdgesStyle::boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo,
     return true;
 }
 
-int EdgesStyle::lineClasses(const SceneObject& o, int width, int height)
+bool EdgesStyle::small(const SceneObject& o, int width, int height)
 {
-    if ((mLineInk <= 0.0f && mDetailSize <= 0.0f) || !o.mesh) return 2;
+    if (mDetailSize <= 0.0f || !o.mesh) return false;
     const Bounds& b = bounds(*o.mesh);
     glm::vec2 lo(INFINITY), hi(-INFINITY);
-    if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return 2;
-    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return 2;
+    if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return false;
+    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return false;
     const glm::vec2 size = 0.5f * (glm::min(hi, 2.0f) - glm::max(lo, -2.0f)) *
                            glm::vec2(float(width), float(height));
-    // The crease and material lines' length on screen, by the box's diagonal there (each as
-    // long, in box diagonals, as in the object), each as wide as a crease line.
-    const float diagonal = glm::length(b.hi - b.lo);
-    if (mLineInk > 0.0f && b.lineLength > 0.0f && diagonal > 0.0f) {
-        const float ink = b.lineLength / diagonal * glm::length(size) * std::max(mWidths.y, 1.0f);
-        if (ink > mLineInk * size.x * size.y) return 0;
-    }
-    return std::max(size.x, size.y) < mDetailSize ? 1 : 2;
+    return std::max(size.x, size.y) < mDetailSize;
 }
 
 bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect)
@@ -616,7 +587,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         const bool ortho = o.orthographic();
         gl.Uniform1i(mGeo.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(mGeo.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
-        gl.Uniform1i(mGeo.lineClasses, lineClasses(o, width, height));
+        gl.Uniform1i(mGeo.noMaterial, small(o, width, height) ? 1 : 0);
         // What the program culls is not on screen: no line may come from it.
         if (!FaceCulling::begin(gl, o)) continue;
         ctx.meshes.draw(gl, *o.mesh);

@@ -36,7 +36,6 @@ private:
         bool cached = false;
         bool empty = true;
         glm::vec3 lo{0.0f}, hi{0.0f};
-        float lineLength = 0.0f; // of the crease and material edges, in object space
     };
 
     void drawFullscreen(const GlFunctions& gl);
@@ -46,10 +45,8 @@ private:
     // Widens [lo, hi] (NDC) by the box's visible part; false if it cannot say.
     static bool boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi);
     const Bounds& bounds(const reconstruct::ObjectMesh& mesh);
-    // The line classes an object gets (the geometry pass's lineClasses): 0, its silhouette
-    // alone, where its crease and material lines would cover more of its screen area than
-    // line_ink; 1, no material lines, where it is smaller than detail_size; else 2, all.
-    int lineClasses(const SceneObject& o, int width, int height);
+    // Smaller on screen than detail_size (its larger side): no material lines.
+    bool small(const SceneObject& o, int width, int height);
 
     ShaderProgram mGeometry, mDetect, mDilate;
     // Without and with the program's fog on the ink ([1]: kInkFog's INK_FOG).
@@ -67,7 +64,7 @@ private:
     uint64_t mFlush = 0;
     struct {
         GLint modelview = -1, projection = -1, normalMatrix = -1, objectId = -1,
-              orthographic = -1, depthRange = -1, lineClasses = -1;
+              orthographic = -1, depthRange = -1, noMaterial = -1;
     } mGeo;
     // The edge operator's uniforms, in both programs that run it.
     struct Operator {
@@ -76,7 +73,6 @@ private:
     };
     Operator mDet, mDir[2];
     bool mObjectSeams = false;
-    float mLineInk = 1.0f;     // of the object's screen area
     float mDetailSize = 64.0f; // pixels
 
     struct {
