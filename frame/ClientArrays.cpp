@@ -1,6 +1,7 @@
 #include "frame/ClientArrays.h"
 
 #include "stream/GlSizes.h"
+#include "stream/Opcodes.h"
 
 namespace nprgl {
 
@@ -25,6 +26,22 @@ int arraySlotForCap(GLenum cap, int clientActiveTexture)
         return clientActiveTexture >= 0 && clientActiveTexture < 8
                    ? kTexCoordArray0 + clientActiveTexture
                    : -1;
+    default: return -1;
+    }
+}
+
+int arraySlotForPointerCall(uint16_t opcode, int attribIndex, int clientActiveTexture)
+{
+    if (attribIndex >= 0) return attribIndex < 16 ? kAttribArray0 + attribIndex : -1;
+    switch (opcode) {
+    case op::glVertexPointer: return kVertexArray;
+    case op::glNormalPointer: return kNormalArray;
+    case op::glColorPointer: return kColorArray;
+    case op::glSecondaryColorPointer: return kSecondaryColorArray;
+    case op::glFogCoordPointer: return kFogCoordArray;
+    case op::glIndexPointer: return kIndexArray;
+    case op::glEdgeFlagPointer: return kEdgeFlagArray;
+    case op::glTexCoordPointer: return arraySlotForCap(GL_TEXTURE_COORD_ARRAY, clientActiveTexture);
     default: return -1;
     }
 }

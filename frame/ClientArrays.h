@@ -45,5 +45,8 @@ struct ClientArrayState {
 
 // The slot of a glEnableClientState/glDisableClientState array name, or -1.
 int arraySlotForCap(GLenum cap, int clientActiveTexture);
+// The slot a recorded pointer call sets (its opcode; attribIndex >= 0: glVertexAttribPointer's
+// index, as the decoder hands it to a sink's clientPointer), or -1.
+int arraySlotForPointerCall(uint16_t opcode, int attribIndex, int clientActiveTexture);
 
 } // namespace nprgl

@@ -296,8 +296,7 @@ public:
         GLint buffer = 0;
         gRealGl.glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &buffer);
         if (buffer) return reinterpret_cast<const void*>(uintptr_t(value));
-        const int slot = attribIndex >= 0 ? (attribIndex < 16 ? kAttribArray0 + attribIndex : -1)
-                                          : slotOf(mOpcode);
+        const int slot = arraySlotForPointerCall(mOpcode, attribIndex, mClientActiveTexture);
         return slot >= 0 ? mArrays.base(slot) : nullptr;
     }
     bool pseudo(CallReader& r, uint16_t opcode)
@@ -307,24 +306,6 @@ public:
     }
 
 private:
-    int slotOf(uint16_t opcode) const
-    {
-        switch (opcode) {
-        case op::glVertexPointer: return kVertexArray;
-        case op::glNormalPointer: return kNormalArray;
-        case op::glColorPointer: return kColorArray;
-        case op::glSecondaryColorPointer: return kSecondaryColorArray;
-        case op::glFogCoordPointer: return kFogCoordArray;
-        case op::glIndexPointer: return kIndexArray;
-        case op::glEdgeFlagPointer: return kEdgeFlagArray;
-        case op::glTexCoordPointer:
-            return mClientActiveTexture >= 0 && mClientActiveTexture < 8
-                       ? kTexCoordArray0 + mClientActiveTexture
-                       : -1;
-        default: return -1;
-        }
-    }
-
     ShadowArrays& mArrays;
     GlDispatch mGl;
     uint16_t mOpcode = 0;

@@ -102,16 +102,19 @@ void Recorder::endFrame(uint64_t frame)
     }
     mWriter.op(op::kFrameEnd);
     mWriter.put<uint64_t>(frame);
-    const uint64_t unfollowed = std::accumulate(mUnfollowed.begin(), mUnfollowed.end(),
-                                                uint64_t(0));
-    if (mKeep == Keep::This) {
-        mKept.assign(mWriter.data(), mWriter.data() + mWriter.size());
-        mKeptWhole = unfollowed == mKeptUnfollowed;
-        mKeep = Keep::Kept;
-    } else if (mKeep == Keep::Next) {
-        mKeptStart = mState;
-        mKeep = Keep::This;
-        mKeptUnfollowed = unfollowed;
+    if (mKeep == Keep::This || mKeep == Keep::Next) {
+        // Draws not followed in the kept frame: its calls would not draw the same picture.
+        const uint64_t unfollowed =
+            std::accumulate(mUnfollowed.begin(), mUnfollowed.end(), uint64_t(0));
+        if (mKeep == Keep::This) {
+            mKept.assign(mWriter.data(), mWriter.data() + mWriter.size());
+            mKeptWhole = unfollowed == mKeptUnfollowed;
+            mKeep = Keep::Kept;
+        } else {
+            mKeptStart = mState;
+            mKeptUnfollowed = unfollowed;
+            mKeep = Keep::This;
+        }
     }
     Compositor* compositor = mContext.compositor();
     if (compositor) compositor->syncStream();

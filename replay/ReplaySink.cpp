@@ -73,6 +73,12 @@ bool ReplaySink::before(uint16_t opcode)
 void ReplaySink::after(uint16_t opcode)
 {
     mLists.addWork(mWork);
+    // glPopClientAttrib puts back the client unit that was active at its push.
+    if (opcode == op::glClientActiveTexture || opcode == op::glPopClientAttrib) {
+        GLint unit = GL_TEXTURE0;
+        gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);
+        mClientActiveTexture = unit - GL_TEXTURE0;
+    }
     switch (opcode) {
     case op::glBegin:
         mListBegun = mLists.compiling();
@@ -81,12 +87,6 @@ void ReplaySink::after(uint16_t opcode)
     case op::glEndList:
         mListBegun = false;
         break;
-    case op::glClientActiveTexture: {
-        GLint unit = GL_TEXTURE0;
-        gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);
-        mClientActiveTexture = unit - GL_TEXTURE0;
-        break;
-    }
     // What decides where a draw's vertices come from and how many there are.
     case op::glVertexPointer:
     case op::glNormalPointer:
@@ -101,15 +101,8 @@ void ReplaySink::after(uint16_t opcode)
     case op::glDisableClientState:
     case op::glEnableVertexAttribArray:
     case op::glDisableVertexAttribArray:
-    case op::glPopClientAttrib: {
-        // It puts back the unit active at its push too.
-        GLint unit = GL_TEXTURE0;
-        gRealGl.glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &unit);
-        mClientActiveTexture = unit - GL_TEXTURE0;
-        mUsesValid = false;
-        break;
-    }
     case op::glPushClientAttrib:
+    case op::glPopClientAttrib:
     case op::glBindBuffer:
     case op::glBufferData:
     case op::glDeleteBuffers:
@@ -125,8 +118,7 @@ const void* ReplaySink::clientPointer(uint64_t value, int attribIndex)
     GLint buffer = 0;
     gRealGl.glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &buffer);
     if (buffer) return reinterpret_cast<const void*>(uintptr_t(value));
-    int slot = attribIndex >= 0 ? (attribIndex < 16 ? kAttribArray0 + attribIndex : -1)
-                                : slotForPointerOp(mOpcode);
+    const int slot = arraySlotForPointerCall(mOpcode, attribIndex, mClientActiveTexture);
     return slot >= 0 ? mArrays.base(slot) : nullptr;
 }
 
@@ -153,32 +145,6 @@ bool ReplaySink::pseudo(CallReader& r, uint16_t opcode)
     }
     r.fail("unknown opcode " + std::to_string(opcode));
     return false;
-}
-
-int ReplaySink::slotForPointerOp(uint16_t opcode) const
-{
-    switch (opcode) {
-    case op::glVertexPointer:
-        return kVertexArray;
-    case op::glNormalPointer:
-        return kNormalArray;
-    case op::glColorPointer:
-        return kColorArray;
-    case op::glSecondaryColorPointer:
-        return kSecondaryColorArray;
-    case op::glFogCoordPointer:
-        return kFogCoordArray;
-    case op::glIndexPointer:
-        return kIndexArray;
-    case op::glEdgeFlagPointer:
-        return kEdgeFlagArray;
-    case op::glTexCoordPointer:
-        return mClientActiveTexture >= 0 && mClientActiveTexture < 8
-                   ? kTexCoordArray0 + mClientActiveTexture
-                   : -1;
-    default:
-        return -1;
-    }
 }
 
 bool ReplaySink::idle() const

@@ -118,7 +118,6 @@ private:
     bool checkNames(GLsizei n, const void* names);
     bool chargeWork(uint64_t work);
     bool chargeBytes(uint64_t bytes);
-    int slotForPointerOp(uint16_t opcode) const;
 
     ShadowArrays& mArrays;
     ReplayLimits mLimits;

@@ -216,6 +216,7 @@ void Context::cycleStyle()
 
 void Context::startScreenshotPair()
 {
+    if (!mShotStem.empty() || !mShotNext.empty() || !mRecorder) return; // a pair under way
     const std::shared_ptr<const Config> config = Config::current();
     std::string dir = config->hotkeyScreenshotDir;
     if (dir.empty()) dir = mConfig.screenshotDir;
@@ -240,7 +241,6 @@ void Context::startScreenshotPair()
     std::strftime(stamp, sizeof stamp, "%Y%m%d_%H%M%S", &local);
     char tail[16];
     std::snprintf(tail, sizeof tail, "_%03d", int(ms));
-    if (!mShotStem.empty() || !mShotNext.empty() || !mRecorder) return; // a pair under way
     mShotStem = dir + "/" + mConfig.programName + "_" + stamp + tail;
     mShotRestore = mCompositor->enabled();
     mCompositor->setEnabled(true);

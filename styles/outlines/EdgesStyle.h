@@ -74,7 +74,6 @@ private:
     Operator mDet, mDir[2];
     bool mObjectSeams = false;
     float mDetailSize = 64.0f; // pixels
-
     struct {
         GLint edges = -1, rect = -1, radius = -1;
     } mDil;
