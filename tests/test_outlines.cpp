@@ -377,6 +377,52 @@ TEST(Edges, ASmallObjectKeepsItsCreasesButNotItsColourLines)
     EXPECT_EQ(inked(plate, "", "edges_plate_small"), 0);
 }
 
+// An object under edges.thin_size is outlined by one pixel drawn around it, on what lies
+// behind it, and keeps every pixel of its own: lines two pixels wide on both sides of its rim
+// had left neverball's coins, a few pixels across, as blots of ink.
+TEST(Edges, ATinyObjectIsOutlinedAroundItNotOverIt)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    // A plate facing the eye, about 12 pixels across on a white background.
+    const glm::mat4 at = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -15.0f));
+    const auto scene = harness.makeScene(
+        {boxBatch(at, glm::vec3(0.25f, 0.25f, 0.05f), kPale)}, perspective());
+    const PngImage plain = render(harness, scene, "toon", "", "edges_tiny_plain");
+    auto own = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= plain.width || y >= plain.height) return false;
+        const uint8_t* p = &plain.rgba[(size_t(y) * plain.width + x) * 4];
+        return p[0] < 250 || p[1] < 250 || p[2] < 250;
+    };
+    int area = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) area += own(x, y);
+    }
+    ASSERT_GT(area, 80);
+    ASSERT_LT(area, 400);
+    // Ink on the plate's pixels; ink on the ring of pixels just outside, and that ring's size.
+    auto inked = [&](const std::string& config, const std::string& name) {
+        const PngImage image = render(harness, scene, "toon+edges", config, name);
+        glm::ivec3 n(0);
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                if (own(x, y)) {
+                    n.x += isInk(image, x, y);
+                } else if (own(x + 1, y) || own(x - 1, y) || own(x, y + 1) || own(x, y - 1)) {
+                    n.y += isInk(image, x, y);
+                    ++n.z;
+                }
+            }
+        }
+        return n;
+    };
+    const glm::ivec3 tiny = inked("", "edges_tiny");
+    EXPECT_EQ(tiny.x, 0) << "ink over the tiny plate's own pixels";
+    EXPECT_GE(tiny.y, tiny.z * 9 / 10) << "the outline around it is broken";
+    const glm::ivec3 wide = inked("edges.thin_size=0", "edges_tiny_wide");
+    EXPECT_GT(wide.x, area / 4) << "with two-pixel lines its rim was inked to begin with";
+}
+
 TEST(Wireframe, StencilKeepsLinesOffTheInterior)
 {
     StyleHarness harness(kSize, kSize);

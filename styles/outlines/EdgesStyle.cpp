@@ -46,7 +46,8 @@ void main()
 //   z: colour, 8 bits a channel | id bits 8-15 << 24;
 //   w: the unit eye normal facing the viewer, 10 bits a component; bit 31: the object is
 //      small on screen and gets no material lines (its colours show the change; lines
-//      between them made a small ship a blot of ink).
+//      between them made a small ship a blot of ink); bit 30: smaller still, its lines are
+//      one pixel wide (see the operator).
 // An orthographic view may put the eye anywhere, so there the depth is measured from one
 // depth range in front of the near plane (relative jumps are then relative to the range).
 const char* kGeometryFragment = R"(#version 130
@@ -54,6 +55,7 @@ uniform float objectId;
 uniform bool orthographic;
 uniform float depthRange;
 uniform bool noMaterial; // small on screen: no material lines (w bit 31)
+uniform bool thinLines;  // smaller still: lines of one pixel (w bit 30)
 in vec3 eyeNormal;
 in float viewDepth;
 in vec4 baseColor;
@@ -70,7 +72,8 @@ void main()
     uint id = uint(objectId) & 0xffffu;
     fragColor = uvec4(logDepth, window | (id << 24),
                       (c.r << 16) | (c.g << 8) | c.b | ((id >> 8) << 24),
-                      q.x | (q.y << 10) | (q.z << 20) | (noMaterial ? 0x80000000u : 0u));
+                      q.x | (q.y << 10) | (q.z << 20) | (noMaterial ? 0x80000000u : 0u) |
+                          (thinLines ? 0x40000000u : 0u));
 }
 )";
 
@@ -136,6 +139,14 @@ uvec4 at(ivec2 q) { return texelFetch(attributes, clamp(q, rect.xy, rect.zw), 0)
 // Whether a and b belong to different objects (the background is object 0): the speck test
 // below. Not by depth: at a grazing silhouette one surface's neighbouring pixels jump in depth.
 bool apart(uvec4 a, uvec4 b) { return (((a.y ^ b.y) | (a.z ^ b.z)) >> 24) != 0u; }
+bool thin(uvec4 a) { return (a.w & 0x40000000u) != 0u; }
+// Whether the line between thin-lined object c and its neighbour s is drawn on s: s is of
+// another object, and not a thin-lined one in front of c (between two such objects the
+// farther takes it).
+bool outside(uvec4 c, uvec4 s)
+{
+    return apart(c, s) && (!thin(s) || windowDepth(s.y) >= windowDepth(c.y));
+}
 
 vec4 detect(ivec2 p, out float own)
 {
@@ -161,6 +172,16 @@ vec4 detect(ivec2 p, out float own)
     bool toE = apart(c, e), toW = apart(c, w), toN = apart(c, n), toS = apart(c, s);
     if ((toE && toW) || (toW && apart(c, e2)) || (toE && apart(c, w2))) ce = cw = vec3(0.0);
     if ((toN && toS) || (toS && apart(c, n2)) || (toN && apart(c, s2))) cn = cs = vec3(0.0);
+    // A tiny object (w bit 30) gets lines of one pixel: its outline on the pixels around it
+    // (those of what lies behind it, or of the background), not on its own, and its creases
+    // on one side. Drawn on both sides, lines of two pixels leave a thing a few pixels
+    // across (a coin seen edge-on) a blot of ink.
+    if (thin(c)) {
+        if (outside(c, e)) ce = vec3(0.0);
+        if (outside(c, w) || !toW) cw = vec3(0.0);
+        if (outside(c, n)) cn = vec3(0.0);
+        if (outside(c, s) || !toS) cs = vec3(0.0);
+    }
     float nearest = own;
     if (ce.r > 0.0) nearest = min(nearest, windowDepth(e.y));
     if (cw.r > 0.0) nearest = min(nearest, windowDepth(w.y));
@@ -338,6 +359,11 @@ StyleInfo edgesStyleInfo()
         "objects smaller than this on screen (pixels, their larger side) get no material "
         "lines (their colours show the change); 0: none",
         64.0, 0.0, 4096.0));
+    p.push_back(ParamInfo::number(
+        "thin_size",
+        "objects smaller than this on screen (pixels, their larger side) get lines of one "
+        "pixel, their outline drawn around them, not over them; 0: none",
+        32.0, 0.0, 4096.0));
     addInkParams(p);
     for (const char* c : {"silhouette", "crease", "material"}) addLightnessParam(p, c, 0.0);
     return info;
@@ -366,7 +392,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mGeo = {mGeometry.uniform(gl, "modelview"),    mGeometry.uniform(gl, "projection"),
             mGeometry.uniform(gl, "normalMatrix"), mGeometry.uniform(gl, "objectId"),
             mGeometry.uniform(gl, "orthographic"), mGeometry.uniform(gl, "depthRange"),
-            mGeometry.uniform(gl, "noMaterial")};
+            mGeometry.uniform(gl, "noMaterial"), mGeometry.uniform(gl, "thinLines")};
     auto findOperator = [&](ShaderProgram& program, Operator& op) {
         op = {program.uniform(gl, "attributes"), program.uniform(gl, "rect"),
               program.uniform(gl, "depthStep"), program.uniform(gl, "creaseCosine"),
@@ -405,6 +431,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mColourThreshold = float(ctx.param(kStyle, "colour_threshold"));
     mObjectSeams = ctx.param(kStyle, "object_seams") >= 0.5;
     mDetailSize = float(ctx.param(kStyle, "detail_size"));
+    mThinSize = float(ctx.param(kStyle, "thin_size"));
     // Far enough for the widest class (see the composite's coverage).
     const float widest = std::max({mWidths.x, mWidths.y, mWidths.z});
     mRadius = int(std::ceil(0.5f * widest));
@@ -487,16 +514,16 @@ bool EdgesStyle::boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo,
     return true;
 }
 
-bool EdgesStyle::small(const SceneObject& o, int width, int height)
+float EdgesStyle::screenSize(const SceneObject& o, int width, int height)
 {
-    if (mDetailSize <= 0.0f || !o.mesh) return false;
+    if (!o.mesh) return INFINITY;
     const Bounds& b = bounds(*o.mesh);
     glm::vec2 lo(INFINITY), hi(-INFINITY);
-    if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return false;
-    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return false;
+    if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return INFINITY;
+    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return INFINITY;
     const glm::vec2 size = 0.5f * (glm::min(hi, 2.0f) - glm::max(lo, -2.0f)) *
                            glm::vec2(float(width), float(height));
-    return std::max(size.x, size.y) < mDetailSize;
+    return std::max(size.x, size.y);
 }
 
 bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect)
@@ -587,7 +614,10 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         const bool ortho = o.orthographic();
         gl.Uniform1i(mGeo.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(mGeo.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
-        gl.Uniform1i(mGeo.noMaterial, small(o, width, height) ? 1 : 0);
+        const float size =
+            mDetailSize > 0.0f || mThinSize > 0.0f ? screenSize(o, width, height) : INFINITY;
+        gl.Uniform1i(mGeo.noMaterial, size < mDetailSize ? 1 : 0);
+        gl.Uniform1i(mGeo.thinLines, size < mThinSize ? 1 : 0);
         // What the program culls is not on screen: no line may come from it.
         if (!FaceCulling::begin(gl, o)) continue;
         ctx.meshes.draw(gl, *o.mesh);

@@ -45,8 +45,8 @@ private:
     // Widens [lo, hi] (NDC) by the box's visible part; false if it cannot say.
     static bool boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi);
     const Bounds& bounds(const reconstruct::ObjectMesh& mesh);
-    // Smaller on screen than detail_size (its larger side): no material lines.
-    bool small(const SceneObject& o, int width, int height);
+    // The larger side of the object's box on screen in pixels; infinite if it cannot say.
+    float screenSize(const SceneObject& o, int width, int height);
 
     ShaderProgram mGeometry, mDetect, mDilate;
     // Without and with the program's fog on the ink ([1]: kInkFog's INK_FOG).
@@ -64,7 +64,8 @@ private:
     uint64_t mFlush = 0;
     struct {
         GLint modelview = -1, projection = -1, normalMatrix = -1, objectId = -1,
-              orthographic = -1, depthRange = -1, noMaterial = -1;
+              orthographic = -1, depthRange = -1, noMaterial = -1,
+              thinLines = -1;
     } mGeo;
     // The edge operator's uniforms, in both programs that run it.
     struct Operator {
@@ -73,7 +74,8 @@ private:
     };
     Operator mDet, mDir[2];
     bool mObjectSeams = false;
-    float mDetailSize = 64.0f; // pixels
+    float mDetailSize = 64.0f; // pixels: smaller objects get no material lines
+    float mThinSize = 32.0f;   // pixels: smaller objects get lines of one pixel
     struct {
         GLint edges = -1, rect = -1, radius = -1;
     } mDil;
