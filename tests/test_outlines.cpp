@@ -5,6 +5,7 @@
 
 #include "styles/StyleChain.h"
 #include "styles/StyleSettings.h"
+#include "styles/outlines/FeatureLines.h"
 #include "styles/outlines/MotionHistory.h"
 
 #include <GL/osmesa.h>
@@ -421,6 +422,99 @@ TEST(Edges, ATinyObjectIsOutlinedAroundItNotOverIt)
     EXPECT_GE(tiny.y, tiny.z * 9 / 10) << "the outline around it is broken";
     const glm::ivec3 wide = inked("edges.thin_size=0", "edges_tiny_wide");
     EXPECT_GT(wide.x, area / 4) << "with two-pixel lines its rim was inked to begin with";
+}
+
+// A flat grid of quads, n x n, facing the eye at depth z, one colour (GL_TRIANGLES).
+reconstruct::Batch gridBatch(int n, float z, glm::vec4 color)
+{
+    reconstruct::Batch b;
+    b.mode = GL_TRIANGLES;
+    b.materialId = 1;
+    auto at = [&](int i, int j) {
+        reconstruct::Vertex v{};
+        v.position = glm::vec3(float(i) / n - 0.5f, float(j) / n - 0.5f, z);
+        v.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+        v.color = color;
+        v.hasNormal = true;
+        return v;
+    };
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            b.vertices.insert(b.vertices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1),
+                                                 at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    return b;
+}
+
+size_t featureLineCount(StyleHarness& harness, const reconstruct::Batch& batch)
+{
+    const styles::Scene scene = harness.makeScene({batch}, perspective());
+    EXPECT_EQ(scene.objects.size(), 1u);
+    std::vector<uint32_t> pairs;
+    if (!scene.objects.empty()) styles::FeatureLines::collect(*scene.objects[0].mesh, pairs);
+    return pairs.size() / 2;
+}
+
+// The edge operator can find a line only along a border, a fold, or an edge across which the
+// corners' colours or normals change; the edges inside a flat, even surface are skipped.
+TEST(FeatureLines, BordersFoldsAndChangesButNotTheInsideOfAFlatSurface)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    EXPECT_EQ(featureLineCount(harness, boxBatch(boxModelview(), glm::vec3(1.0f), kPale)), 12u)
+        << "a box: its 12 edges, not its faces' diagonals";
+    reconstruct::Batch two = boxBatch(boxModelview(), glm::vec3(1.0f), kPale);
+    for (size_t k = 30; k < 33; ++k) two.vertices[k].color = glm::vec4(0.2f, 0.3f, 0.9f, 1.0f);
+    EXPECT_EQ(featureLineCount(harness, two), 13u) << "a face of two colours: and its diagonal";
+    reconstruct::Batch grid = gridBatch(4, -5.0f, kPale);
+    grid.modelview = glm::mat4(1.0f);
+    EXPECT_EQ(featureLineCount(harness, grid), 16u) << "a flat grid: its border alone";
+    for (size_t k = 0; k < 6; ++k) grid.vertices[k].normal = glm::normalize(glm::vec3(0, 1, 1));
+    EXPECT_GT(featureLineCount(harness, grid), 16u) << "normals that turn within the plane";
+    const reconstruct::Batch sphere = sphereBatch(sphereModelview(), kRadius, 12, 6, kRed);
+    const styles::Scene round = harness.makeScene({sphere}, perspective());
+    ASSERT_EQ(round.objects.size(), 1u);
+    // Each of its quads between two rings is planar and smooth: its diagonal draws nothing.
+    EXPECT_EQ(featureLineCount(harness, sphere), round.objects[0].mesh->edgeCount() - 12 * 4)
+        << "a curved surface: every edge but its quads' diagonals may be a silhouette";
+}
+
+// The direct pass run on the pixels near the feature lines finds the lines the pass over the
+// whole rectangle finds: silhouettes against the background and against other objects,
+// creases, a colour change, a tiny object's outline and a thin plate's.
+TEST(Edges, ThePassNearTheFeatureLinesDrawsWhatTheFullPassDraws)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 far = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -12.0f));
+    reconstruct::Batch floor = gridBatch(6, 0.0f, glm::vec4(0.4f, 0.7f, 0.4f, 1.0f));
+    floor.modelview = glm::scale(glm::rotate(far, -1.1f, glm::vec3(1, 0, 0)), glm::vec3(12.0f));
+    reconstruct::Batch plate = boxBatch(glm::translate(far, glm::vec3(-2.0f, 1.5f, 3.0f)),
+                                        glm::vec3(0.8f, 0.8f, 0.05f), kPale);
+    for (size_t k = 30; k < 33; ++k) plate.vertices[k].color = glm::vec4(0.2f, 0.3f, 0.9f, 1.0f);
+    const auto scene = harness.makeScene(
+        {floor, sphereBatch(glm::translate(far, glm::vec3(1.5f, 0.5f, 2.0f)), 1.2f, 16, 8, kRed),
+         boxBatch(boxModelview(), glm::vec3(0.6f), kPale), plate,
+         boxBatch(glm::translate(far, glm::vec3(0.5f, -2.5f, 4.0f)), glm::vec3(0.15f), kRed)},
+        perspective());
+    const PngImage full = render(harness, scene, "toon+edges", "edges.pass=full", "pass_full");
+    const PngImage near = render(harness, scene, "toon+edges", "edges.pass=lines", "pass_lines");
+    const PngImage chosen = render(harness, scene, "toon+edges", "", "pass_auto");
+    ASSERT_EQ(full.rgba.size(), near.rgba.size());
+    const int ink = countInk(full);
+    EXPECT_GT(ink, 500);
+    int differing = 0;
+    for (size_t i = 0; i < full.rgba.size(); i += 4) {
+        for (size_t c = 0; c < 3; ++c) {
+            if (std::abs(int(full.rgba[i + c]) - int(near.rgba[i + c])) > 16) {
+                ++differing;
+                break;
+            }
+        }
+    }
+    EXPECT_LE(differing, 4) << "of " << ink << " ink pixels";
+    EXPECT_EQ(chosen.rgba, near.rgba) << "this scene's lines are fewer than its pixels";
 }
 
 TEST(Wireframe, StencilKeepsLinesOffTheInterior)

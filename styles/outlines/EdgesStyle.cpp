@@ -1,8 +1,10 @@
 #include "styles/outlines/EdgesStyle.h"
 
+#include "common/Log.h"
 #include "styles/FaceCulling.h"
 #include "styles/ObjectNames.h"
 #include "styles/StyleRegistry.h"
+#include "styles/outlines/FeatureLines.h"
 #include "styles/outlines/OutlineParams.h"
 #include "styles/shading/ShadingCommon.h"
 
@@ -75,6 +77,15 @@ void main()
                       q.x | (q.y << 10) | (q.z << 20) | (noMaterial ? 0x80000000u : 0u) |
                           (thinLines ? 0x40000000u : 0u));
 }
+)";
+
+// The direct pass, drawn over the feature lines of each object, or (identity matrices) over
+// the one triangle covering the viewport.
+const char* kPlacedVertex = R"(#version 130
+uniform mat4 modelview;
+uniform mat4 projection;
+in vec3 position;
+void main() { gl_Position = projection * (modelview * vec4(position, 1.0)); }
 )";
 
 const char* kFullscreenVertex = R"(#version 130
@@ -315,6 +326,11 @@ void main()
 }
 )";
 
+// The band the direct pass runs on around each feature line: the operator marks the pixel on
+// each side of an edge, both within 1.5 pixels of it; points as wide cover the lines' ends.
+constexpr float kNearWidth = 3.0f;
+constexpr double kLineSetup = 48.0; // fragments (see linesPay)
+
 std::unique_ptr<Style> create() { return std::make_unique<EdgesStyle>(); }
 
 } // namespace
@@ -364,6 +380,13 @@ StyleInfo edgesStyleInfo()
         "objects smaller than this on screen (pixels, their larger side) get lines of one "
         "pixel, their outline drawn around them, not over them; 0: none",
         32.0, 0.0, 4096.0));
+    p.push_back(ParamInfo::choice(
+        "pass",
+        "where the edge operator runs for lines of up to 2 pixels: auto (on the pixels near the "
+        "objects' feature edges when those are fewer than the scene's rectangle), full (the "
+        "whole rectangle: also finds where surfaces cut through each other) or lines (always "
+        "near the feature edges)",
+        {"auto", "full", "lines"}, 0));
     addInkParams(p);
     for (const char* c : {"silhouette", "crease", "material"}) addLightnessParam(p, c, 0.0);
     return info;
@@ -382,8 +405,8 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     }
     if (!mGeometry.build(gl, kGeometryVertex, kGeometryFragment, error) ||
         !mDetect.build(gl, kFullscreenVertex, detect.c_str(), error) ||
-        !mDirect[0].build(gl, kFullscreenVertex, direct[0].c_str(), error) ||
-        !mDirect[1].build(gl, kFullscreenVertex, direct[1].c_str(), error) ||
+        !mDirect[0].build(gl, kPlacedVertex, direct[0].c_str(), error) ||
+        !mDirect[1].build(gl, kPlacedVertex, direct[1].c_str(), error) ||
         !mDilate.build(gl, kFullscreenVertex, kDilateFragment, error) ||
         !mComposite[0].build(gl, kFullscreenVertex, composite[0].c_str(), error) ||
         !mComposite[1].build(gl, kFullscreenVertex, composite[1].c_str(), error)) {
@@ -410,8 +433,9 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
         findOperator(d, mDir[f]);
         findFog(d, mDirFog[f]);
         findFog(c, mComFog[f]);
-        mDirU[f] = {d.uniform(gl, "origin"), d.uniform(gl, "cover"), d.uniform(gl, "colours"),
-                    d.uniform(gl, "depthBias")};
+        mDirU[f] = {d.uniform(gl, "origin"),    d.uniform(gl, "cover"),
+                    d.uniform(gl, "colours"),   d.uniform(gl, "depthBias"),
+                    d.uniform(gl, "modelview"), d.uniform(gl, "projection")};
         mCom[f] = {c.uniform(gl, "dilated"), c.uniform(gl, "attributes"),
                    c.uniform(gl, "rect"),    c.uniform(gl, "origin"),
                    c.uniform(gl, "radius"),  c.uniform(gl, "widths"),
@@ -432,6 +456,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mObjectSeams = ctx.param(kStyle, "object_seams") >= 0.5;
     mDetailSize = float(ctx.param(kStyle, "detail_size"));
     mThinSize = float(ctx.param(kStyle, "thin_size"));
+    mPass = Pass(std::clamp(int(std::lround(ctx.param(kStyle, "pass"))), 0, 2));
     // Far enough for the widest class (see the composite's coverage).
     const float widest = std::max({mWidths.x, mWidths.y, mWidths.z});
     mRadius = int(std::ceil(0.5f * widest));
@@ -443,8 +468,61 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     gl.BindBuffer(GL_ARRAY_BUFFER, mTriangle);
     gl.BufferData(GL_ARRAY_BUFFER, sizeof(triangle), triangle, GL_STATIC_DRAW);
     gl.BindBuffer(GL_ARRAY_BUFFER, 0);
+    GLfloat lineWidths[2] = {1.0f, 1.0f}, pointSizes[2] = {1.0f, 1.0f};
+    gl.GetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, lineWidths);
+    gl.GetFloatv(GL_ALIASED_POINT_SIZE_RANGE, pointSizes);
+    mWideLines = lineWidths[1] >= kNearWidth && pointSizes[1] >= kNearWidth;
     return true;
 }
+
+GLsizei EdgesStyle::featureLines(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh)
+{
+    Lines& l = mLines[&mesh];
+    l.lastUsed = mFlush;
+    if (l.buffer && l.contentKey == mesh.contentKey &&
+        l.geometryVersion == mesh.geometryVersion) {
+        return l.indices;
+    }
+    if (!l.buffer) ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &l.buffer);
+    mPairs.clear();
+    FeatureLines::collect(mesh, mPairs);
+    // Into the styles' VAO for the upload; MeshBuffers::bind binds the mesh's own again.
+    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, l.buffer);
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mPairs.size() * sizeof(uint32_t)),
+                  mPairs.data(), GL_STREAM_DRAW);
+    l.indices = GLsizei(mPairs.size());
+    l.contentKey = mesh.contentKey;
+    l.geometryVersion = mesh.geometryVersion;
+    return l.indices;
+}
+
+bool EdgesStyle::linesPay(const Scene& scene, const GlFunctions& gl, const glm::ivec4& rect)
+{
+    // Drawn more than once, a pixel must come out the same: ink of full coverage (widths of 2
+    // and more; thinner lines blend a fraction of their colour).
+    if (mPass == Pass::Full || !mWideLines) return false;
+    for (int c = 0; c < 3; ++c) {
+        if (mWidths[c] > 0.0f && mWidths[c] < 2.0f) return false;
+    }
+    // The band's fragments, hidden parts included: n lines spread over an object s pixels
+    // across are together about 2 s sqrt(n) long (a grid's are; one box's 12 edges too), and
+    // each line's two end points add a square each. Setting up a wide line and its points
+    // costs llvmpipe about as much as kLineSetup fragments (measured on neverball's level:
+    // 8,174 lines took longer than the 448,800 pixels they lay in).
+    const glm::vec2 extent(rect.z - rect.x, rect.w - rect.y);
+    const float widest = glm::length(extent);
+    double fragments = 0.0;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& o = scene.objects[i];
+        if (!o.mesh) continue;
+        const double n = 0.5 * double(featureLines(gl, *o.mesh));
+        const double across = std::min(mSizes[i], widest);
+        fragments += kNearWidth * (2.0 * across * std::sqrt(n) + 2.0 * kNearWidth * n) +
+                     kLineSetup * n;
+    }
+    return mPass == Pass::Lines || fragments < double(extent.x) * double(extent.y);
+}
+
 
 void EdgesStyle::drawFullscreen(const GlFunctions& gl)
 {
@@ -603,6 +681,8 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Clear(GL_DEPTH_BUFFER_BIT);
     gl.DepthFunc(GL_LESS);
     gl.PolygonOffset(-2.0f, -4.0f);
+    mSizes.clear();
+    for (const SceneObject& o : scene.objects) mSizes.push_back(screenSize(o, width, height));
     gl.UseProgram(mGeometry.id());
     for (const SceneObject& o : scene.objects) {
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
@@ -614,8 +694,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         const bool ortho = o.orthographic();
         gl.Uniform1i(mGeo.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(mGeo.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
-        const float size =
-            mDetailSize > 0.0f || mThinSize > 0.0f ? screenSize(o, width, height) : INFINITY;
+        const float size = mSizes[&o - scene.objects.data()];
         gl.Uniform1i(mGeo.noMaterial, size < mDetailSize ? 1 : 0);
         gl.Uniform1i(mGeo.thinLines, size < mThinSize ? 1 : 0);
         // What the program culls is not on screen: no line may come from it.
@@ -719,12 +798,59 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform3fv(u.colours, 3, glm::value_ptr(mColours[0]));
         gl.Uniform1f(u.depthBias, depthBias);
     }
-    drawFullscreen(gl);
+    const bool nearLines = direct && linesPay(scene, gl, rect);
+    ++mPasses[nearLines ? 1 : 0];
+    if (nearLines) {
+        // The operator on the pixels near each object's feature lines, hidden or not (it
+        // reads the attributes, not the line); the lines' own depth plays no part.
+        gl.LineWidth(kNearWidth);
+        gl.PointSize(kNearWidth);
+        for (const SceneObject& o : scene.objects) {
+            if (!o.mesh) continue;
+            const GLsizei n = featureLines(gl, *o.mesh);
+            if (n <= 0 || ctx.meshes.bind(gl, *o.mesh) <= 0) continue;
+            gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mLines[o.mesh.get()].buffer);
+            gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));
+            gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(o.projection));
+            gl.DrawElements(GL_LINES, n, GL_UNSIGNED_INT, nullptr);
+            gl.DrawElements(GL_POINTS, n, GL_UNSIGNED_INT, nullptr);
+            gl.DisableVertexAttribArray(4); // MeshBuffers::draw's rule
+        }
+        gl.LineWidth(1.0f);
+        gl.PointSize(1.0f);
+    } else {
+        if (direct) {
+            const glm::mat4 identity(1.0f);
+            gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(identity));
+            gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(identity));
+        }
+        drawFullscreen(gl);
+    }
+    // Forget the lines of meshes no longer drawn (MeshBuffers keeps theirs as long).
+    if (mLines.size() > 2 * scene.objects.size() + 64) {
+        for (auto it = mLines.begin(); it != mLines.end();) {
+            if (mFlush - it->second.lastUsed > 8) {
+                gl.DeleteBuffers(1, &it->second.buffer);
+                it = mLines.erase(it);
+            } else {
+                ++it;
+            }
+        }
+    }
 
     ctx.endScissor(scene);
     for (GLenum unit : {GL_TEXTURE1, GL_TEXTURE0}) {
         gl.ActiveTexture(unit);
         gl.BindTexture(GL_TEXTURE_2D, 0);
+    }
+}
+
+EdgesStyle::~EdgesStyle()
+{
+    if (mPasses[0] + mPasses[1] > 0) {
+        NPRGL_DEBUG("edges: %llu passes near the feature lines, %llu over the whole rectangle",
+                    static_cast<unsigned long long>(mPasses[1]),
+                    static_cast<unsigned long long>(mPasses[0]));
     }
 }
 
@@ -734,6 +860,8 @@ void EdgesStyle::shutdown(StyleContext& ctx)
     mTargets.destroy(gl);
     if (mTriangle) gl.DeleteBuffers(1, &mTriangle);
     mTriangle = 0;
+    for (auto& [mesh, lines] : mLines) gl.DeleteBuffers(1, &lines.buffer);
+    mLines.clear();
     for (ShaderProgram* p : {&mGeometry, &mDetect, &mDirect[0], &mDirect[1], &mDilate,
                              &mComposite[0], &mComposite[1]}) {
         p->destroy(gl);

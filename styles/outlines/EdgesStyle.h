@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 namespace nprgl::styles {
 
@@ -21,9 +22,12 @@ namespace nprgl::styles {
 // Cost on a software rasteriser is per pixel, so every pass is scissored to the window
 // rectangle the scene's bounding boxes cover, the attributes are packed into one target,
 // and lines of up to two pixels (the default) take a single pass from attributes to the
-// composite: their coverage depends only on the pixel's own edge classes.
+// composite: their coverage depends only on the pixel's own edge classes. That pass runs on
+// the pixels near the scene's feature edges (FeatureLines) rather than the whole rectangle
+// where those are fewer.
 class EdgesStyle : public Style {
 public:
+    ~EdgesStyle() override;
     bool init(StyleContext& ctx, std::string& error) override;
     void render(const Scene& scene, StyleContext& ctx) override;
     void shutdown(StyleContext& ctx) override;
@@ -38,7 +42,20 @@ private:
         glm::vec3 lo{0.0f}, hi{0.0f};
     };
 
+    struct Lines {
+        GLuint buffer = 0;
+        GLsizei indices = 0;
+        uint64_t contentKey = 0;
+        uint32_t geometryVersion = 0;
+        uint64_t lastUsed = 0;
+    };
+
     void drawFullscreen(const GlFunctions& gl);
+    // The mesh's feature lines (FeatureLines) in its Lines buffer, made when stale; returns
+    // their index count.
+    GLsizei featureLines(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
+    // Whether the direct pass is to run on the feature lines rather than the whole rectangle.
+    bool linesPay(const Scene& scene, const GlFunctions& gl, const glm::ivec4& rect);
     // The pixels [lo, hi) of the width x height target the scene (grown by the lines) can
     // touch; false when none.
     bool coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect);
@@ -53,6 +70,12 @@ private:
     ShaderProgram mComposite[2], mDirect[2];
     EdgeTargets mTargets;
     GLuint mTriangle = 0; // one triangle covering the viewport
+    std::unordered_map<const reconstruct::ObjectMesh*, Lines> mLines;
+    std::vector<uint32_t> mPairs; // upload staging
+    bool mWideLines = false;      // lines and points 3 pixels wide can be drawn
+    enum class Pass { Auto, Full, Lines } mPass = Pass::Auto; // edges.pass
+    std::vector<float> mSizes;    // per object of the flush: screenSize()
+    uint64_t mPasses[2] = {0, 0}; // direct or composite passes: [0] whole rectangle, [1] near
     glm::vec3 mWidths{2.0f};
     glm::vec3 mColours[3];
     float mDepthThreshold = 0.05f;
@@ -84,7 +107,8 @@ private:
               colours = -1, depthBias = -1;
     } mCom[2];
     struct {
-        GLint origin = -1, cover = -1, colours = -1, depthBias = -1;
+        GLint origin = -1, cover = -1, colours = -1, depthBias = -1, modelview = -1,
+              projection = -1;
     } mDirU[2];
     // The ink's fog (kInkFog), in both programs that composite.
     struct InkFog {
