@@ -45,7 +45,9 @@ void APIENTRY osmesaFinish()
 } // namespace
 
 Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Config& config)
-    : mConfig(config), mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial)
+    : mConfig(config), mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial),
+      mConfigLook(config.style.chainName() + "|" + config.style.configText()),
+      mConfigRules(config.rules)
 {
     // Recording to a file wins over a live export (both need the Stream).
     StreamSink* sink = CaptureSession::instance();
@@ -168,7 +170,7 @@ void Context::applyKeys()
     if (actions & Hotkeys::Reload) {
         NPRGL_INFO("reload key: reading the configuration again");
         Config::reload();
-        followConfig();
+        followConfig(true);
     }
     if (!mCompositor) {
         NPRGL_WARN("context %u: the hotkeys need a style or a configuration file at start-up",
@@ -280,7 +282,7 @@ void Context::writeScreenshotPair(int width, int height)
     mCompositor->setEnabled(false);
 }
 
-void Context::followConfig()
+void Context::followConfig(bool asked)
 {
     if (ConfigWatcher::instance().changed()) {
         NPRGL_DEBUG("a configuration file changed; reading it again");
@@ -295,8 +297,22 @@ void Context::followConfig()
                    mSerial);
         return;
     }
-    mCompositor->restyle(current->style);
+    // A file written with what it had, or a folder made empty: the look is not touched (nor
+    // what the overlay or the cycle key made of it), unless the reload key asked for it.
+    const std::string look = current->style.chainName() + "|" + current->style.configText();
+    const bool same = look == mConfigLook && current->rules == mConfigRules;
+    if (same && !asked) {
+        NPRGL_DEBUG("context %u: configuration read again: unchanged", mSerial);
+        return;
+    }
+    mConfigLook = look;
+    mConfigRules = current->rules;
+    mCompositor->restyle(current->style, !same);
     mCompositor->setRules(current->rules);
+    if (same) {
+        NPRGL_INFO("context %u: configuration unchanged: style %s", mSerial,
+                   current->style.chainName().c_str());
+    }
 }
 
 void Context::writeScreenshot(int width, int height)

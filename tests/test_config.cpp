@@ -200,6 +200,48 @@ TEST(Config, AChangedFileRestylesTheRunningProgram)
     EXPECT_NE(r.err.find("configuration changed: style now none"), std::string::npos) << r.err;
 }
 
+// Occurrences of `text` in `log`.
+size_t countOf(const std::string& log, const std::string& text)
+{
+    size_t n = 0;
+    for (size_t at = log.find(text); at != std::string::npos; at = log.find(text, at + 1)) ++n;
+    return n;
+}
+
+// The config folder (and XDG_CONFIG_HOME itself) is missing at start-up, as for most users:
+// the default look runs. Made after frame 2 with style=none in it, frames 4-6 are the
+// program's own; removed after frame 5, the default look from frame 7; made again after
+// frame 7, the program's own from frame 9. One line says each change; the file written again
+// after frame 8 with what it had is no change and says nothing.
+TEST(Config, AConfigFolderMadeOrRemovedWhileRunningIsFollowed)
+{
+    const std::string home = freshDir("config_folder"), native = freshDir("folder_native"),
+                      styled = freshDir("folder_styled"), live = freshDir("folder_live");
+    const std::string file = home + "/config/nprgl/nprgl.conf";
+    ProcessResult n = runProcess({probe(), "--frames", "9", "--save-dir", native});
+    ASSERT_EQ(n.exitCode, 0) << n.err;
+    ProcessResult s = runProcess(
+        under({nprglCommand()}, {probe(), "--frames", "9", "--save-dir", styled}),
+        filesIn(home + "/none"));
+    ASSERT_EQ(s.exitCode, 0) << s.err;
+    ProcessResult r = runProcess(
+        under({nprglCommand()},
+              {probe(), "--frames", "9", "--save-dir", live, "--file", file, "--at", "2",
+               "--text", "style=none", "--remove-folder", "5", "--at", "7", "--text",
+               "style=none", "--at", "8", "--text", "style=none"}),
+        filesIn(home + "/config"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_GT(differing(frame(native, 1), frame(styled, 1)), 200) << "the default look is none";
+    for (int f : {1, 2, 3, 7, 8}) {
+        EXPECT_EQ(differing(frame(styled, f), frame(live, f)), 0) << "frame " << f;
+    }
+    for (int f : {4, 5, 6, 9}) {
+        EXPECT_EQ(differing(frame(native, f), frame(live, f)), 0) << "frame " << f;
+    }
+    EXPECT_EQ(countOf(r.err, "configuration changed: style now none"), 2u) << r.err;
+    EXPECT_EQ(countOf(r.err, "configuration changed: style now toon+paper+edges"), 1u) << r.err;
+}
+
 namespace {
 
 std::string hotkeyProbe() { return binDir() + "/probe_hotkeys"; }
