@@ -145,6 +145,7 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
                 skip(key + " is empty (to unbind a key, write " + key + "=none)");
             } else {
                 out.keys[action] = value;
+                out.keyLines[action] = origin + ":" + std::to_string(number);
             }
         } else {
             const ParamInfo* param = nullptr;

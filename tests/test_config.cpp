@@ -359,6 +359,51 @@ TEST(Hotkeys, TheCycleKeyStepsThroughTheConfiguredStyles)
     EXPECT_EQ(differing(shot(keyed, 6), shot(pencil, 6)), 0);
 }
 
+// A held key acts once, however long it is held and whatever happens meanwhile: F9 (toggle)
+// held from frame 3 to 10 turns styling off once, though F7 (reload) held from frame 5 to 8
+// reads the configuration again (which binds the keys again), once.
+TEST(Hotkeys, AHeldKeyActsOnceEvenAcrossAReload)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon+edges"};
+    const std::string native =
+        runHotkeys("held_native", {nprglCommand(), "--style", "none"}, {"--frames", "10"}, "9");
+    const std::string styled = runHotkeys("held_styled", nprgl, {"--frames", "10"}, "2,9");
+    const std::string home = freshDir("held_config");
+    writeFile(home + "/keys.conf", "toggle_key=F9\nreload_key=F7\n");
+    const std::string keyed = runHotkeys(
+        "held_keyed", nprgl,
+        {"--frames", "10", "--hold", "3", "10", "F9", "--hold", "5", "8", "F7"}, "2,9",
+        {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    EXPECT_EQ(differing(shot(keyed, 2), shot(styled, 2)), 0);
+    EXPECT_EQ(differing(shot(keyed, 9), shot(native, 9)), 0) << "styling not off";
+    EXPECT_EQ(countOf(stderrOf(keyed), "reload key"), 1u) << stderrOf(keyed);
+}
+
+// A key name the keyboard does not have is reported at its file and line, as other bad lines.
+TEST(Hotkeys, AnUnknownKeyIsNamedAtItsFileAndLine)
+{
+    const std::string home = freshDir("unknown_key_config");
+    writeFile(home + "/keys.conf", "# keys\ncycle_key=NoSuchKey\n");
+    const std::string run = runHotkeys("unknown_key", {nprglCommand(), "--style", "toon"},
+                                       {"--frames", "2"}, "2",
+                                       {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    EXPECT_NE(stderrOf(run).find(" " + home + "/keys.conf:2: cycle_key=NoSuchKey: no key "
+                                 "'NoSuchKey' on this keyboard; cycle is unbound\n"),
+              std::string::npos)
+        << stderrOf(run);
+}
+
+// With the default cycle list, whose first entry is the configured look, the first press
+// shows the next one (preset:cartoon), not the look already running.
+TEST(Hotkeys, TheFirstCyclePressChangesTheLook)
+{
+    const std::string keyed = runHotkeys("cycle_first", {nprglCommand(), "--style", "toon"},
+                                         {"--frames", "5", "--press", "3", "Shift_R+F10"}, "5");
+    const std::string cartoon = runHotkeys(
+        "cycle_cartoon", {nprglCommand(), "--preset", "cartoon"}, {"--frames", "5"}, "5");
+    EXPECT_EQ(differing(shot(keyed, 5), shot(cartoon, 5)), 0) << stderrOf(keyed);
+}
+
 namespace {
 
 // Pixels that differ inside the rectangle [x0, x1) x [y0, y1).
