@@ -207,9 +207,24 @@ bool OverlayPanel::chainRows()
     if (addable.empty()) return edited;
     mAdd = std::clamp(mAdd, 0, int(addable.size()) - 1);
     ImGui::SetNextItemWidth(140.0f);
-    ImGui::Combo("##add", &mAdd, &nameAt, &addable, int(addable.size()));
+    if (ImGui::BeginCombo("##add", addable[size_t(mAdd)].c_str())) {
+        // The list's items are noted on its second frame open, when it has its final layout.
+        const bool noting = mNoteItems;
+        mNoteItems = mNoteItems || ++mAddOpenFrames == 2;
+        for (size_t i = 0; i < addable.size(); ++i) {
+            if (ImGui::Selectable(addable[i].c_str(), int(i) == mAdd)) mAdd = int(i);
+            noteItem("add " + addable[i]);
+        }
+        mNoteItems = noting;
+        ImGui::EndCombo();
+    } else {
+        mAddOpenFrames = 0;
+        noteItem("add");
+    }
     ImGui::SameLine();
-    if (ImGui::Button("add style")) {
+    const bool add = ImGui::Button("add style");
+    noteItem("add style");
+    if (add) {
         NPRGL_INFO("overlay: added %s", addable[size_t(mAdd)].c_str());
         mChain.push_back(addable[size_t(mAdd)]);
         edited = true;

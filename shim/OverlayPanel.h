@@ -71,6 +71,7 @@ private:
     std::string mError;                         // the registry's answer to the last edit
     std::string mSaved;                         // the last save's outcome
     int mAdd = 0;                               // the style chosen to add
+    int mAddOpenFrames = 0;                     // how long its list has been open
     int mPreset = 0;                            // the preset chosen to apply
     bool mNoteItems = false;
     bool mPicking = false;
