@@ -119,6 +119,28 @@ TEST(ConfigFile, SavedRulesReadBackAndReplaceTheOldOnes)
     EXPECT_EQ(f.chain, "toon");
 }
 
+// A look the next start would skip (two shading styles) is not written: the file keeps what
+// it had, and the error says why.
+TEST(ConfigFile, ALookTheRegistryRefusesIsNotSaved)
+{
+    const std::string path = freshDir("write_bad_look") + "/p.conf";
+    std::ofstream(path) << "style=toon+edges\n";
+    std::string error;
+    EXPECT_FALSE(ConfigFile::writeLook(path, "toon+paper+edges+halftone", "", {}, error));
+    EXPECT_NE(error.find("a chain takes one shading style"), std::string::npos) << error;
+    EXPECT_EQ(ConfigFile::read(path).chain, "toon+edges");
+}
+
+// A file that cannot be written says why (here its temporary name is taken by a folder).
+TEST(ConfigFile, AFailedSaveSaysWhy)
+{
+    const std::string path = freshDir("write_blocked") + "/p.conf";
+    std::filesystem::create_directories(path + ".nprgl-new");
+    std::string error;
+    EXPECT_FALSE(ConfigFile::writeLook(path, "toon", "", {}, error));
+    EXPECT_NE(error.find(".nprgl-new: Is a directory"), std::string::npos) << error;
+}
+
 TEST(ConfigFile, APresetLineGivesItsChainAndValuesUnderTheFilesOwn)
 {
     const ConfigFile f = ConfigFile::parse("paper.grain=0.5\npreset=pencil\n", "p.conf");
@@ -664,4 +686,68 @@ TEST(Overlay, KeysTypeAValueIntoASlider)
         "12", {{"NPRGL_OVERLAY", "open"}});
     EXPECT_NE(stderrOf(typed).find("overlay: toon.diffuse_threshold=0.75\n"), std::string::npos)
         << stderrOf(typed);
+}
+
+// With toon+paper+edges running, the 'add style' list offers a shading style as a replacement
+// of toon (a chain takes one): choosing halftone there and 'add style' runs halftone+paper+edges
+// from the next frame, and 'save' writes that chain, which the next start reads without a
+// skipped line.
+TEST(Overlay, AShadingStyleFromTheAddListReplacesTheChainsOne)
+{
+    const std::vector<std::string> chain = {nprglCommand(), "--style", "toon+paper+edges"};
+    // The list opened (a click on it at frames 4-5) for the places of its entries.
+    const std::vector<std::string> open = {"--size", kOverlaySize, "--pointer", "3", "", "",
+                                           "--button", "4", "down", "--button", "5", "up"};
+    auto openAt = [&](const ItemRect& list, int frames) {
+        std::vector<std::string> args = open;
+        args[4] = std::to_string(list.x + list.w / 2);
+        args[5] = std::to_string(list.y + list.h / 2);
+        args.insert(args.end(), {"--frames", std::to_string(frames)});
+        return args;
+    };
+    std::vector<std::string> debug = chain;
+    debug.insert(debug.end(), {"--log-level", "debug"});
+    const std::string closed = runHotkeys("add_closed", debug,
+                                          {"--size", kOverlaySize, "--frames", "3"}, "3",
+                                          {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect list = itemAt(stderrOf(closed), "add");
+    const ItemRect add = itemAt(stderrOf(closed), "add style");
+    const ItemRect save = itemAt(stderrOf(closed), "save");
+    ASSERT_GT(list.w * add.w * save.w, 0) << stderrOf(closed);
+    const std::string opened =
+        runHotkeys("add_opened", debug, openAt(list, 8), "8", {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect halftone = itemAt(stderrOf(opened), "add halftone");
+    ASSERT_GT(halftone.w, 0) << stderrOf(opened);
+
+    const std::string home = freshDir("add_home");
+    std::vector<std::string> args = openAt(list, 18);
+    auto clickAt = [&](int frame, const ItemRect& r) {
+        args.insert(args.end(), {"--pointer", std::to_string(frame), std::to_string(r.x + r.w / 2),
+                                 std::to_string(r.y + r.h / 2), "--button",
+                                 std::to_string(frame + 1), "down", "--button",
+                                 std::to_string(frame + 2), "up"});
+    };
+    clickAt(7, halftone);
+    clickAt(10, add);
+    clickAt(13, save);
+    args.insert(args.end(), {"--pointer", "16", "590", "590"});
+    const std::string added = runHotkeys("add_run", chain, args, "17",
+                                         {{"NPRGL_OVERLAY", "open"}, {"XDG_CONFIG_HOME", home}});
+    const std::string saved = savedRules(home);
+    EXPECT_NE(saved.find("style=halftone+paper+edges\n"), std::string::npos)
+        << saved << stderrOf(added);
+
+    // Right of the overlay the program runs halftone+paper+edges, as a start with it does.
+    const std::vector<std::string> plain = {"--size", kOverlaySize, "--frames", "18"};
+    const std::string toon = runHotkeys("add_toon", chain, plain, "17");
+    const std::string expected = runHotkeys(
+        "add_halftone", {nprglCommand(), "--style", "halftone+paper+edges"}, plain, "17");
+    EXPECT_GT(differingIn(shot(toon, 17), shot(expected, 17), 372, 0, 600, 600), 100);
+    EXPECT_EQ(differingIn(shot(added, 17), shot(expected, 17), 372, 0, 600, 600), 0);
+    const std::string next = runHotkeys("add_next", {nprglCommand()}, plain, "17",
+                                        {{"XDG_CONFIG_HOME", home}});
+    EXPECT_EQ(stderrOf(next).find("skipped"), std::string::npos) << stderrOf(next);
+    EXPECT_NE(stderrOf(next).find("probe_hotkeys: style halftone+paper+edges"),
+              std::string::npos)
+        << stderrOf(next);
 }
