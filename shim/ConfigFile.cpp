@@ -225,8 +225,8 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
         out << text;
         if (!out.flush()) {
             const int err = errno;
-            error = "cannot write " + temporary + ": " +
-                    (err ? std::strerror(err) : "write failed");
+            error =
+                "cannot write " + temporary + ": " + (err ? std::strerror(err) : "write failed");
             if (out.is_open()) {
                 out.close();
                 std::remove(temporary.c_str()); // half written

@@ -112,9 +112,8 @@ bool ConfigWatcher::addWatch(const std::string& path, const std::string& child)
                    path.c_str(), std::strerror(errno));
         return true;
     }
-    auto it = std::find_if(mWatches.begin(), mWatches.end(), [&](const Watch& w) {
-        return w.wd == wd;
-    });
+    auto it =
+        std::find_if(mWatches.begin(), mWatches.end(), [&](const Watch& w) { return w.wd == wd; });
     if (it == mWatches.end()) it = mWatches.insert(mWatches.end(), Watch{wd, path, {}, false});
     if (child.empty()) {
         it->files = true;
@@ -141,9 +140,8 @@ bool ConfigWatcher::changed()
                 rearm = true; // events were lost: look at everything again
                 continue;
             }
-            const auto w = std::find_if(mWatches.begin(), mWatches.end(), [&](const Watch& x) {
-                return x.wd == event->wd;
-            });
+            const auto w = std::find_if(mWatches.begin(), mWatches.end(),
+                                        [&](const Watch& x) { return x.wd == event->wd; });
             if (w == mWatches.end()) continue; // a watch dropped by arm()
             if (event->mask & (IN_DELETE_SELF | IN_MOVE_SELF | IN_IGNORED)) rearm = true;
             if (event->len == 0) continue;

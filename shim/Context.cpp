@@ -194,8 +194,8 @@ void Context::cycleStyle()
     const std::string configured = "(configured)";
     std::vector<std::string> list = config->cycle;
     if (list.empty()) {
-        list = {configured, "preset:cartoon", "preset:pencil", "preset:blueprint",
-                "preset:technical", "preset:newspaper"};
+        list = {configured,         "preset:cartoon",   "preset:pencil",
+                "preset:blueprint", "preset:technical", "preset:newspaper"};
     }
     // An entry's look: the configured one, a chain, or a preset's chain and values.
     auto resolve = [&](const std::string& entry, StyleSettings& settings, std::string& error) {
@@ -204,8 +204,8 @@ void Context::cycleStyle()
             return true;
         }
         std::string chain = entry, values;
-        if (entry.rfind("preset:", 0) == 0 && !Presets::load(entry.substr(7), chain, values,
-                                                             error)) {
+        if (entry.rfind("preset:", 0) == 0 &&
+            !Presets::load(entry.substr(7), chain, values, error)) {
             return false;
         }
         return StyleSettings::parse(chain, values, settings, error);

@@ -226,7 +226,8 @@ TEST(Config, AChangedFileRestylesTheRunningProgram)
 size_t countOf(const std::string& log, const std::string& text)
 {
     size_t n = 0;
-    for (size_t at = log.find(text); at != std::string::npos; at = log.find(text, at + 1)) ++n;
+    for (size_t at = log.find(text); at != std::string::npos; at = log.find(text, at + 1))
+        ++n;
     return n;
 }
 
@@ -242,15 +243,16 @@ TEST(Config, AConfigFolderMadeOrRemovedWhileRunningIsFollowed)
     const std::string file = home + "/config/nprgl/nprgl.conf";
     ProcessResult n = runProcess({probe(), "--frames", "9", "--save-dir", native});
     ASSERT_EQ(n.exitCode, 0) << n.err;
-    ProcessResult s = runProcess(
-        under({nprglCommand()}, {probe(), "--frames", "9", "--save-dir", styled}),
-        filesIn(home + "/none"));
+    ProcessResult s =
+        runProcess(under({nprglCommand()}, {probe(), "--frames", "9", "--save-dir", styled}),
+                   filesIn(home + "/none"));
     ASSERT_EQ(s.exitCode, 0) << s.err;
     ProcessResult r = runProcess(
         under({nprglCommand()},
-              {probe(), "--frames", "9", "--save-dir", live, "--file", file, "--at", "2",
-               "--text", "style=none", "--remove-folder", "5", "--at", "7", "--text",
-               "style=none", "--at", "8", "--text", "style=none"}),
+              {probe(), "--frames", "9",         "--save-dir", live,         "--file",
+               file,    "--at",     "2",         "--text",     "style=none", "--remove-folder",
+               "5",     "--at",     "7",         "--text",     "style=none", "--at",
+               "8",     "--text",   "style=none"}),
         filesIn(home + "/config"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_GT(differing(frame(native, 1), frame(styled, 1)), 200) << "the default look is none";
@@ -392,10 +394,10 @@ TEST(Hotkeys, AHeldKeyActsOnceEvenAcrossAReload)
     const std::string styled = runHotkeys("held_styled", nprgl, {"--frames", "10"}, "2,9");
     const std::string home = freshDir("held_config");
     writeFile(home + "/keys.conf", "toggle_key=F9\nreload_key=F7\n");
-    const std::string keyed = runHotkeys(
-        "held_keyed", nprgl,
-        {"--frames", "10", "--hold", "3", "10", "F9", "--hold", "5", "8", "F7"}, "2,9",
-        {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    const std::string keyed =
+        runHotkeys("held_keyed", nprgl,
+                   {"--frames", "10", "--hold", "3", "10", "F9", "--hold", "5", "8", "F7"}, "2,9",
+                   {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
     EXPECT_EQ(differing(shot(keyed, 2), shot(styled, 2)), 0);
     EXPECT_EQ(differing(shot(keyed, 9), shot(native, 9)), 0) << "styling not off";
     EXPECT_EQ(countOf(stderrOf(keyed), "reload key"), 1u) << stderrOf(keyed);
@@ -406,10 +408,11 @@ TEST(Hotkeys, AnUnknownKeyIsNamedAtItsFileAndLine)
 {
     const std::string home = freshDir("unknown_key_config");
     writeFile(home + "/keys.conf", "# keys\ncycle_key=NoSuchKey\n");
-    const std::string run = runHotkeys("unknown_key", {nprglCommand(), "--style", "toon"},
-                                       {"--frames", "2"}, "2",
-                                       {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
-    EXPECT_NE(stderrOf(run).find(" " + home + "/keys.conf:2: cycle_key=NoSuchKey: no key "
+    const std::string run =
+        runHotkeys("unknown_key", {nprglCommand(), "--style", "toon"}, {"--frames", "2"}, "2",
+                   {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    EXPECT_NE(stderrOf(run).find(" " + home +
+                                 "/keys.conf:2: cycle_key=NoSuchKey: no key "
                                  "'NoSuchKey' on this keyboard; cycle is unbound\n"),
               std::string::npos)
         << stderrOf(run);
@@ -421,8 +424,8 @@ TEST(Hotkeys, TheFirstCyclePressChangesTheLook)
 {
     const std::string keyed = runHotkeys("cycle_first", {nprglCommand(), "--style", "toon"},
                                          {"--frames", "5", "--press", "3", "Shift_R+F10"}, "5");
-    const std::string cartoon = runHotkeys(
-        "cycle_cartoon", {nprglCommand(), "--preset", "cartoon"}, {"--frames", "5"}, "5");
+    const std::string cartoon = runHotkeys("cycle_cartoon", {nprglCommand(), "--preset", "cartoon"},
+                                           {"--frames", "5"}, "5");
     EXPECT_EQ(differing(shot(keyed, 5), shot(cartoon, 5)), 0) << stderrOf(keyed);
 }
 
@@ -696,8 +699,9 @@ TEST(Overlay, AShadingStyleFromTheAddListReplacesTheChainsOne)
 {
     const std::vector<std::string> chain = {nprglCommand(), "--style", "toon+paper+edges"};
     // The list opened (a click on it at frames 4-5) for the places of its entries.
-    const std::vector<std::string> open = {"--size", kOverlaySize, "--pointer", "3", "", "",
-                                           "--button", "4", "down", "--button", "5", "up"};
+    const std::vector<std::string> open = {"--size", kOverlaySize, "--pointer", "3",
+                                           "",       "",           "--button",  "4",
+                                           "down",   "--button",   "5",         "up"};
     auto openAt = [&](const ItemRect& list, int frames) {
         std::vector<std::string> args = open;
         args[4] = std::to_string(list.x + list.w / 2);
@@ -707,9 +711,9 @@ TEST(Overlay, AShadingStyleFromTheAddListReplacesTheChainsOne)
     };
     std::vector<std::string> debug = chain;
     debug.insert(debug.end(), {"--log-level", "debug"});
-    const std::string closed = runHotkeys("add_closed", debug,
-                                          {"--size", kOverlaySize, "--frames", "3"}, "3",
-                                          {{"NPRGL_OVERLAY", "open"}});
+    const std::string closed =
+        runHotkeys("add_closed", debug, {"--size", kOverlaySize, "--frames", "3"}, "3",
+                   {{"NPRGL_OVERLAY", "open"}});
     const ItemRect list = itemAt(stderrOf(closed), "add");
     const ItemRect add = itemAt(stderrOf(closed), "add style");
     const ItemRect save = itemAt(stderrOf(closed), "save");
@@ -722,10 +726,10 @@ TEST(Overlay, AShadingStyleFromTheAddListReplacesTheChainsOne)
     const std::string home = freshDir("add_home");
     std::vector<std::string> args = openAt(list, 18);
     auto clickAt = [&](int frame, const ItemRect& r) {
-        args.insert(args.end(), {"--pointer", std::to_string(frame), std::to_string(r.x + r.w / 2),
-                                 std::to_string(r.y + r.h / 2), "--button",
-                                 std::to_string(frame + 1), "down", "--button",
-                                 std::to_string(frame + 2), "up"});
+        args.insert(args.end(),
+                    {"--pointer", std::to_string(frame), std::to_string(r.x + r.w / 2),
+                     std::to_string(r.y + r.h / 2), "--button", std::to_string(frame + 1), "down",
+                     "--button", std::to_string(frame + 2), "up"});
     };
     clickAt(7, halftone);
     clickAt(10, add);
@@ -744,10 +748,9 @@ TEST(Overlay, AShadingStyleFromTheAddListReplacesTheChainsOne)
         "add_halftone", {nprglCommand(), "--style", "halftone+paper+edges"}, plain, "17");
     EXPECT_GT(differingIn(shot(toon, 17), shot(expected, 17), 372, 0, 600, 600), 100);
     EXPECT_EQ(differingIn(shot(added, 17), shot(expected, 17), 372, 0, 600, 600), 0);
-    const std::string next = runHotkeys("add_next", {nprglCommand()}, plain, "17",
-                                        {{"XDG_CONFIG_HOME", home}});
+    const std::string next =
+        runHotkeys("add_next", {nprglCommand()}, plain, "17", {{"XDG_CONFIG_HOME", home}});
     EXPECT_EQ(stderrOf(next).find("skipped"), std::string::npos) << stderrOf(next);
-    EXPECT_NE(stderrOf(next).find("probe_hotkeys: style halftone+paper+edges"),
-              std::string::npos)
+    EXPECT_NE(stderrOf(next).find("probe_hotkeys: style halftone+paper+edges"), std::string::npos)
         << stderrOf(next);
 }
