@@ -16,7 +16,7 @@ struct ReplayCommandOptions {
     std::string outDir;
     unsigned context = 0;
     bool stats = false;
-    std::string rules; // a configuration file whose leave_texture rules apply
+    std::string rules; // a configuration file whose leave_texture and leave_state rules apply
 };
 
 int replayCommand(const ReplayCommandOptions& options);

@@ -87,7 +87,7 @@ int replayMain(int argc, char** argv)
     app.add_option("--context", o.context, "which context's stream (default: the longest)");
     app.add_option("--rules", o.rules,
                    "a configuration file (the program's, ~/.config/nprgl/PROGRAM.conf) whose "
-                   "leave_texture rules apply");
+                   "leave_texture and leave_state rules apply");
     CLI11_PARSE(app, argc, argv);
     return nprgl::cli::replayCommand(o);
 }

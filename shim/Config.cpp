@@ -111,6 +111,8 @@ Config Config::fromEnvironment(bool reloading)
         if (!file.screenshotDir.empty()) s.hotkeyScreenshotDir = file.screenshotDir;
         if (!file.logLevel.empty()) logLevel = file.logLevel;
         for (const auto& [action, key] : file.keys) s.keys[action] = key;
+        for (const auto& [action, line] : file.keyLines)
+            s.keyLines[action] = line;
         if (!file.cycle.empty()) s.cycle = file.cycle;
         if (!file.overlay.empty()) s.overlayOpen = file.overlay == "open";
         s.rules.textures.insert(s.rules.textures.end(), file.rules.textures.begin(),

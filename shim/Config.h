@@ -24,6 +24,7 @@ struct Config {
     // Hotkeys' screenshots (styled and unstyled pairs) go here.
     std::string hotkeyScreenshotDir;
     std::map<std::string, std::string> keys; // action -> key combination ("none": unbound)
+    std::map<std::string, std::string> keyLines; // action -> "file:line" it was set at
     std::vector<std::string> cycle;           // chains and "preset:NAME"s the cycle key steps
     LeaveRules rules;         // leave_texture and leave_state rules of the files read
     bool overlayOpen = false; // the overlay shows from the first frame (overlay=open, NPRGL_OVERLAY)

@@ -6,8 +6,10 @@
 #include "styles/StyleRegistry.h"
 #include "styles/StyleSettings.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -145,6 +147,7 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
                 skip(key + " is empty (to unbind a key, write " + key + "=none)");
             } else {
                 out.keys[action] = value;
+                out.keyLines[action] = origin + ":" + std::to_string(number);
             }
         } else {
             const ParamInfo* param = nullptr;
@@ -174,6 +177,11 @@ std::string ConfigFile::hashText(uint64_t hash)
 bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
                            const std::string& config, const LeaveRules& rules, std::string& error)
 {
+    // A look the next start would skip is not written.
+    if (StyleSettings settings; !StyleSettings::parse(chain, config, settings, error)) {
+        error = "not saved: " + error;
+        return false;
+    }
     // Keep every line that is not the look (comments, keys, screenshot folder...).
     std::string kept;
     if (std::ifstream in(path); in) {
@@ -202,20 +210,33 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
         }
     }
 
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     std::error_code ec;
-    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+    if (ec) {
+        error = "cannot create " + folder.string() + ": " + ec.message();
+        return false;
+    }
     // Written beside and renamed over: a reader (this process's reload) never sees half a file.
     const std::string temporary = path + ".nprgl-new";
     {
+        errno = 0;
         std::ofstream out(temporary, std::ios::trunc);
         out << text;
         if (!out.flush()) {
-            error = "cannot write " + temporary;
+            const int err = errno;
+            error =
+                "cannot write " + temporary + ": " + (err ? std::strerror(err) : "write failed");
+            if (out.is_open()) {
+                out.close();
+                std::remove(temporary.c_str()); // half written
+            }
             return false;
         }
     }
     if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        error = "cannot replace " + path;
+        const int err = errno;
+        error = "cannot replace " + path + ": " + std::strerror(err);
         std::remove(temporary.c_str());
         return false;
     }

@@ -32,6 +32,7 @@ struct ConfigFile {
     std::string screenshotDir;
     std::string logLevel;
     std::map<std::string, std::string> keys; // "toggle", "cycle", ... -> key combination
+    std::map<std::string, std::string> keyLines; // the same actions -> "file:line" of the line
     std::vector<std::string> cycle;
     std::string overlay; // overlay=open|closed: the overlay's state at start-up (empty: closed)
     LeaveRules rules;    // leave_texture=HASH (16 hex digits, in order) and leave_state= lines

@@ -45,7 +45,9 @@ void APIENTRY osmesaFinish()
 } // namespace
 
 Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Config& config)
-    : mConfig(config), mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial)
+    : mConfig(config), mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial),
+      mConfigLook(config.style.chainName() + "|" + config.style.configText()),
+      mConfigRules(config.rules)
 {
     // Recording to a file wins over a live export (both need the Stream).
     StreamSink* sink = CaptureSession::instance();
@@ -150,7 +152,7 @@ void Context::pollKeys(_XDisplay* display)
 {
     const std::shared_ptr<const Config> config = Config::current();
     if (!mHotkeys.boundTo(display) || mKeysGeneration != config->generation) {
-        mHotkeys.bind(config->keys, display);
+        mHotkeys.bind(config->keys, config->keyLines, display);
         mKeysGeneration = config->generation;
     }
     mActions |= mHotkeys.poll(display);
@@ -168,7 +170,7 @@ void Context::applyKeys()
     if (actions & Hotkeys::Reload) {
         NPRGL_INFO("reload key: reading the configuration again");
         Config::reload();
-        followConfig();
+        followConfig(true);
     }
     if (!mCompositor) {
         NPRGL_WARN("context %u: the hotkeys need a style or a configuration file at start-up",
@@ -187,31 +189,58 @@ void Context::applyKeys()
 void Context::cycleStyle()
 {
     const std::shared_ptr<const Config> config = Config::current();
+    // The default list starts with the configured look, with its values (a chain's name
+    // alone would drop them).
+    const std::string configured = "(configured)";
     std::vector<std::string> list = config->cycle;
     if (list.empty()) {
-        list = {config->style.chainName(), "preset:cartoon", "preset:pencil",
+        list = {configured,         "preset:cartoon",   "preset:pencil",
                 "preset:blueprint", "preset:technical", "preset:newspaper"};
     }
-    // The entry after the one running now (the first when the running one is not listed).
-    size_t next = 0;
+    // An entry's look: the configured one, a chain, or a preset's chain and values.
+    auto resolve = [&](const std::string& entry, StyleSettings& settings, std::string& error) {
+        if (entry == configured) {
+            settings = config->style;
+            return true;
+        }
+        std::string chain = entry, values;
+        if (entry.rfind("preset:", 0) == 0 &&
+            !Presets::load(entry.substr(7), chain, values, error)) {
+            return false;
+        }
+        return StyleSettings::parse(chain, values, settings, error);
+    };
+    auto lookOf = [](const StyleSettings& s) { return s.chainName() + "|" + s.configText(); };
+    const std::string running = lookOf(mCompositor->settings());
+    // From the entry the key chose last, else the one that looks as the running look (the
+    // default list starts with it), else from before the first.
+    size_t from = list.size();
     for (size_t i = 0; i < list.size(); ++i) {
-        if (list[i] == mCycled) next = (i + 1) % list.size();
+        StyleSettings settings;
+        std::string error;
+        if (mCycled.empty() ? resolve(list[i], settings, error) && lookOf(settings) == running
+                            : list[i] == mCycled) {
+            from = i;
+            break;
+        }
     }
-    std::string chain = list[next], values, error;
-    if (chain.rfind("preset:", 0) == 0 && !Presets::load(list[next].substr(7), chain, values,
-                                                         error)) {
-        NPRGL_ERROR("cycle key: %s", error.c_str());
+    // The next entry that changes what is seen: a press that changes nothing looks broken.
+    for (size_t step = 1; step <= list.size(); ++step) {
+        const size_t next = (from == list.size() ? step - 1 : from + step) % list.size();
+        StyleSettings settings;
+        std::string error;
+        if (!resolve(list[next], settings, error)) {
+            NPRGL_ERROR("cycle key: %s", error.c_str());
+            return;
+        }
+        if (lookOf(settings) == running) continue;
+        mCycled = list[next];
+        NPRGL_INFO("context %u: cycle key: %s", mSerial,
+                   mCycled == configured ? settings.chainName().c_str() : mCycled.c_str());
+        mCompositor->restyle(settings);
+        mCompositor->setEnabled(true);
         return;
     }
-    StyleSettings settings;
-    if (!StyleSettings::parse(chain, values, settings, error)) {
-        NPRGL_ERROR("cycle key: %s", error.c_str());
-        return;
-    }
-    mCycled = list[next];
-    NPRGL_INFO("context %u: cycle key: %s", mSerial, mCycled.c_str());
-    mCompositor->restyle(settings);
-    mCompositor->setEnabled(true);
 }
 
 void Context::startScreenshotPair()
@@ -280,7 +309,7 @@ void Context::writeScreenshotPair(int width, int height)
     mCompositor->setEnabled(false);
 }
 
-void Context::followConfig()
+void Context::followConfig(bool asked)
 {
     if (ConfigWatcher::instance().changed()) {
         NPRGL_DEBUG("a configuration file changed; reading it again");
@@ -295,8 +324,22 @@ void Context::followConfig()
                    mSerial);
         return;
     }
-    mCompositor->restyle(current->style);
+    // A file written with what it had, or a folder made empty: the look is not touched (nor
+    // what the overlay or the cycle key made of it), unless the reload key asked for it.
+    const std::string look = current->style.chainName() + "|" + current->style.configText();
+    const bool same = look == mConfigLook && current->rules == mConfigRules;
+    if (same && !asked) {
+        NPRGL_DEBUG("context %u: configuration read again: unchanged", mSerial);
+        return;
+    }
+    mConfigLook = look;
+    mConfigRules = current->rules;
+    mCompositor->restyle(current->style, !same);
     mCompositor->setRules(current->rules);
+    if (same) {
+        NPRGL_INFO("context %u: configuration unchanged: style %s", mSerial,
+                   current->style.chainName().c_str());
+    }
 }
 
 void Context::writeScreenshot(int width, int height)

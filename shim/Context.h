@@ -86,7 +86,8 @@ public:
 private:
     void queryCaps();
     // At a frame end: picks up a changed configuration file (the next frame runs it).
-    void followConfig();
+    // `asked`: by the reload key, which applies the files' look even when unchanged.
+    void followConfig(bool asked = false);
     // At a frame end: does what the hotkeys pressed since the last one ask.
     void applyKeys();
     void cycleStyle();
@@ -107,6 +108,8 @@ private:
     uint32_t mSerial; // 1 for the program's first context, 2 for the next...
     uint64_t mFrame = 0;
     uint64_t mConfigGeneration = 0; // the Config::current() generation this context runs
+    std::string mConfigLook;        // its style, "chain|values", and its rules
+    LeaveRules mConfigRules;
     Hotkeys mHotkeys;
     uint64_t mKeysGeneration = UINT64_MAX; // the configuration generation the keys are from
     uint32_t mActions = 0;                 // pressed since the last frame end

@@ -5,7 +5,9 @@
 #include <X11/Xlib.h>
 #include <dlfcn.h>
 
+#include <bit>
 #include <string_view>
+#include <utility>
 
 namespace nprgl {
 
@@ -45,11 +47,13 @@ uint32_t actionBit(const std::string& name)
 
 } // namespace
 
-void Hotkeys::bind(const std::map<std::string, std::string>& keys, _XDisplay* display)
+void Hotkeys::bind(const std::map<std::string, std::string>& keys,
+                   const std::map<std::string, std::string>& lines, _XDisplay* display)
 {
-    mBindings.clear();
+    const std::vector<Binding> old = std::exchange(mBindings, {});
+    const bool sameDisplay = display == mDisplay;
     mDisplay = display;
-    mDown = 0;
+    const uint32_t wasDown = std::exchange(mDown, 0u);
     const Xlib& x = xlib();
     if (!display || !x.ok()) return;
     for (const auto& [action, combination] : keys) {
@@ -66,27 +70,47 @@ void Hotkeys::bind(const std::map<std::string, std::string>& keys, _XDisplay* di
             const KeySym sym = x.stringToKeysym(name.c_str());
             const KeyCode code = sym == NoSymbol ? 0 : x.keysymToKeycode(display, sym);
             if (code == 0) {
-                NPRGL_ERROR("%s_key=%s: no key '%s' on this keyboard; %s is unbound",
-                            action.c_str(), combination.c_str(), name.c_str(), action.c_str());
+                const auto line = lines.find(action);
+                const std::string where = line == lines.end() ? "" : line->second + ": ";
+                NPRGL_ERROR("%s%s_key=%s: no key '%s' on this keyboard; %s is unbound",
+                            where.c_str(), action.c_str(), combination.c_str(), name.c_str(),
+                            action.c_str());
                 ok = false;
             }
             binding.keycodes.push_back(code);
         }
         if (ok && !binding.keycodes.empty()) mBindings.push_back(std::move(binding));
     }
+    // A press is a combination going down: one held across a rebinding (a reload, the reload
+    // key itself) is not pressed again. Kept as last polled where the combination is the
+    // same, else as held now.
+    uint32_t kept = 0;
+    for (const Binding& b : mBindings) {
+        for (const Binding& o : old) {
+            if (sameDisplay && o.action == b.action && o.keycodes == b.keycodes) kept |= b.action;
+        }
+    }
+    mDown = wasDown & kept;
+    if (mBindings.size() != size_t(std::popcount(kept))) mDown |= held() & ~kept;
 }
 
-uint32_t Hotkeys::poll(_XDisplay* display)
+uint32_t Hotkeys::held() const
 {
-    if (mBindings.empty() || display != mDisplay) return 0;
     char keymap[32] = {};
-    xlib().queryKeymap(display, keymap);
+    xlib().queryKeymap(mDisplay, keymap);
     uint32_t down = 0;
     for (const Binding& b : mBindings) {
         bool all = true;
         for (uint8_t code : b.keycodes) all = all && (keymap[code >> 3] & (1 << (code & 7)));
         if (all) down |= b.action;
     }
+    return down;
+}
+
+uint32_t Hotkeys::poll(_XDisplay* display)
+{
+    if (mBindings.empty() || display != mDisplay) return 0;
+    const uint32_t down = held();
     const uint32_t pressed = down & ~mDown;
     mDown = down;
     return pressed;

@@ -25,8 +25,11 @@ public:
     };
 
     // Binds action names ("toggle", ...) to combinations ("Shift_R+F9"; "none" unbinds) on
-    // this display. A combination naming an unknown key is reported and left unbound.
-    void bind(const std::map<std::string, std::string>& keys, _XDisplay* display);
+    // this display. A combination naming an unknown key is reported (at its "file:line" of
+    // `lines`, when there) and left unbound. One held while it is bound again (a reload)
+    // does not count as pressed.
+    void bind(const std::map<std::string, std::string>& keys,
+              const std::map<std::string, std::string>& lines, _XDisplay* display);
     bool boundTo(_XDisplay* display) const { return display && display == mDisplay; }
     // The actions whose whole combination went down since the last poll.
     uint32_t poll(_XDisplay* display);
@@ -36,6 +39,8 @@ private:
         uint32_t action = 0;
         std::vector<uint8_t> keycodes;
     };
+    // The actions whose whole combination is down now (a round trip to the X server).
+    uint32_t held() const;
     std::vector<Binding> mBindings;
     _XDisplay* mDisplay = nullptr;
     uint32_t mDown = 0; // actions whose combination was held at the last poll

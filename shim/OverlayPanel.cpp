@@ -4,6 +4,7 @@
 #include "common/Log.h"
 #include "shim/ConfigFile.h"
 #include "styles/Presets.h"
+#include "styles/Style.h"
 #include "styles/StyleRegistry.h"
 
 #include <imgui.h>
@@ -33,6 +34,15 @@ std::string hexColour(const float rgb[3])
     std::snprintf(text, sizeof text, "%02x%02x%02x", int(std::lround(rgb[0] * 255.0f)),
                   int(std::lround(rgb[1] * 255.0f)), int(std::lround(rgb[2] * 255.0f)));
     return text;
+}
+
+// A chain as the registry reads it ("none" when empty).
+std::string joinChain(const std::vector<std::string>& chain)
+{
+    std::string text;
+    for (const std::string& s : chain)
+        text += (text.empty() ? "" : "+") + s;
+    return text.empty() ? "none" : text;
 }
 
 std::string numberText(double value)
@@ -68,14 +78,23 @@ void OverlayPanel::follow(const StyleSettings& running)
             mValues[key] = value;
     }
     mError.clear();
+    mErrorAt.clear();
 }
 
-std::string OverlayPanel::chainText() const
+std::string OverlayPanel::chainText() const { return joinChain(mChain); }
+
+void OverlayPanel::setError(const std::string& at, const std::string& error)
 {
-    std::string chain;
-    for (const std::string& s : mChain)
-        chain += (chain.empty() ? "" : "+") + s;
-    return chain.empty() ? "none" : chain;
+    mError = error;
+    mErrorAt = at;
+}
+
+void OverlayPanel::errorRow(const std::string& at) const
+{
+    if (mError.empty() || mErrorAt != at) return;
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", mError.c_str());
+    ImGui::PopTextWrapPos();
 }
 
 std::string OverlayPanel::configText() const
@@ -114,6 +133,7 @@ OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool sty
     ImGui::SameLine();
     saveButton(changes.rules ? changes.leave : rules);
     if (!mSaved.empty()) ImGui::TextWrapped("%s", mSaved.c_str());
+    errorRow("preset");
     if (figures.counts) {
         ImGui::TextWrapped("3D draws: %s", figures.counts->describe().c_str());
     }
@@ -123,7 +143,6 @@ OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool sty
         const StyleInfo* style = StyleRegistry::instance().find(name);
         if (style && !style->params.empty()) edited = paramRows(*style) || edited;
     }
-    if (!mError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", mError.c_str());
     ImGui::End();
     mNoteItems = false;
 
@@ -132,11 +151,13 @@ OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool sty
         StyleSettings settings;
         if (StyleSettings::parse(chainText(), configText(), settings, error)) {
             mError.clear();
+            mErrorAt.clear();
             mFollowed = settings.chainName() + "|" + settings.configText();
             changes.restyle = true;
             changes.settings = std::move(settings);
         } else {
-            mError = error;
+            // Not reached: each edit was checked before it was made. Said at the chain.
+            setError("chain", error);
         }
     }
     return changes;
@@ -157,12 +178,12 @@ bool OverlayPanel::presetRow()
     if (!ImGui::Button("apply")) return false;
     std::string chain, config, error;
     if (!Presets::load(names[size_t(mPreset)], chain, config, error)) {
-        mError = error;
+        setError("preset", error);
         return false;
     }
     StyleSettings settings;
     if (!StyleSettings::parse(chain, config, settings, error)) {
-        mError = error;
+        setError("preset", error);
         return false;
     }
     mFollowed.clear();
@@ -173,48 +194,104 @@ bool OverlayPanel::presetRow()
 
 bool OverlayPanel::chainRows()
 {
-    bool edited = false;
+    // Every edit is a whole new chain, made only when the registry takes it: the header,
+    // the running look and 'save' never see a chain it refuses.
+    std::vector<std::string> next;
+    std::string said;
     ImGui::TextUnformatted("chain");
     for (size_t i = 0; i < mChain.size(); ++i) {
         ImGui::PushID(int(i));
         ImGui::BulletText("%s", mChain[i].c_str());
         ImGui::SameLine(150.0f);
         if (ImGui::SmallButton("up") && i > 0) {
-            std::swap(mChain[i], mChain[i - 1]);
-            edited = true;
+            next = mChain;
+            std::swap(next[i], next[i - 1]);
         }
         ImGui::SameLine();
         if (ImGui::SmallButton("down") && i + 1 < mChain.size()) {
-            std::swap(mChain[i], mChain[i + 1]);
-            edited = true;
+            next = mChain;
+            std::swap(next[i], next[i + 1]);
         }
         ImGui::SameLine();
         if (ImGui::SmallButton("remove")) {
-            NPRGL_INFO("overlay: removed %s", mChain[i].c_str());
-            mChain.erase(mChain.begin() + long(i));
-            edited = true;
-            ImGui::PopID();
-            break;
+            next = mChain;
+            next.erase(next.begin() + long(i));
+            said = "removed " + mChain[i];
         }
         ImGui::PopID();
     }
-    std::vector<std::string> addable;
-    for (const StyleInfo& s : StyleRegistry::instance().styles()) {
-        if (s.create && std::find(mChain.begin(), mChain.end(), s.name) == mChain.end()) {
-            addable.push_back(s.name);
+    // What may be added: a style that makes a chain the registry takes. A chain takes one
+    // shading style, so another one is offered in its place.
+    const StyleRegistry& registry = StyleRegistry::instance();
+    auto shading = std::find_if(mChain.begin(), mChain.end(), [&](const std::string& name) {
+        const StyleInfo* style = registry.find(name);
+        return style && style->role == styles::StyleRole::Shading;
+    });
+    struct Addition {
+        std::string name, label;
+        std::vector<std::string> chain; // the chain with it
+    };
+    std::vector<Addition> addable;
+    for (const StyleInfo& s : registry.styles()) {
+        if (!s.create || std::find(mChain.begin(), mChain.end(), s.name) != mChain.end()) {
+            continue;
+        }
+        Addition a;
+        a.name = s.name;
+        a.label = s.name;
+        a.chain = mChain;
+        if (s.role == styles::StyleRole::Shading && shading != mChain.end()) {
+            a.chain[size_t(shading - mChain.begin())] = s.name;
+            a.label += " (for " + *shading + ")";
+        } else {
+            a.chain.push_back(s.name);
+        }
+        std::vector<const StyleInfo*> checked;
+        std::string error;
+        if (registry.parseChain(joinChain(a.chain), checked, error)) addable.push_back(a);
+    }
+    if (!addable.empty()) {
+        mAdd = std::clamp(mAdd, 0, int(addable.size()) - 1);
+        ImGui::SetNextItemWidth(140.0f);
+        if (ImGui::BeginCombo("##add", addable[size_t(mAdd)].label.c_str())) {
+            // The list's items are noted on its second frame open, when it has its final
+            // layout.
+            const bool noting = mNoteItems;
+            mNoteItems = mNoteItems || ++mAddOpenFrames == 2;
+            for (size_t i = 0; i < addable.size(); ++i) {
+                if (ImGui::Selectable(addable[i].label.c_str(), int(i) == mAdd)) mAdd = int(i);
+                noteItem("add " + addable[i].name);
+            }
+            mNoteItems = noting;
+            ImGui::EndCombo();
+        } else {
+            mAddOpenFrames = 0;
+            noteItem("add");
+        }
+        ImGui::SameLine();
+        const bool add = ImGui::Button("add style");
+        noteItem("add style");
+        if (add) {
+            const Addition& a = addable[size_t(mAdd)];
+            next = a.chain;
+            said = a.label == a.name ? "added " + a.name : "put " + a.label;
         }
     }
-    if (addable.empty()) return edited;
-    mAdd = std::clamp(mAdd, 0, int(addable.size()) - 1);
-    ImGui::SetNextItemWidth(140.0f);
-    ImGui::Combo("##add", &mAdd, &nameAt, &addable, int(addable.size()));
-    ImGui::SameLine();
-    if (ImGui::Button("add style")) {
-        NPRGL_INFO("overlay: added %s", addable[size_t(mAdd)].c_str());
-        mChain.push_back(addable[size_t(mAdd)]);
-        edited = true;
+    if (next.empty() && said.empty()) {
+        errorRow("chain");
+        return false;
     }
-    return edited;
+    std::vector<const StyleInfo*> checked;
+    std::string error;
+    if (!registry.parseChain(joinChain(next), checked, error)) {
+        setError("chain", error);
+        errorRow("chain");
+        return false;
+    }
+    if (!said.empty()) NPRGL_INFO("overlay: %s", said.c_str());
+    mChain = std::move(next);
+    mAdd = 0;
+    return true;
 }
 
 bool OverlayPanel::paramRows(const StyleInfo& style)
@@ -296,12 +373,28 @@ bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param)
     }
     if (ImGui::IsItemHovered() && !param.help.empty()) ImGui::SetTooltip("%s", param.help.c_str());
     noteItem(key);
-    const bool changed = !next.empty() && next != text;
-    if (changed) mValues[key] = next;
+    bool changed = !next.empty() && next != text;
+    if (changed) {
+        // Checked with the rest of the look before it is taken (a typed file name may hold
+        // the ',' that separates values).
+        mValues[key] = next;
+        StyleSettings settings;
+        std::string error;
+        if (!StyleSettings::parse(chainText(), configText(), settings, error)) {
+            if (configured) {
+                mValues[key] = text;
+            } else {
+                mValues.erase(key);
+            }
+            setError(key, error);
+            changed = false;
+        }
+    }
     // One line per edit: a slider says its value when let go, not at every frame of the drag.
     if (ImGui::IsItemDeactivatedAfterEdit()) {
         NPRGL_INFO("overlay: %s=%s", key.c_str(), mValues.count(key) ? mValues[key].c_str() : "");
     }
+    errorRow(key);
     return changed;
 }
 

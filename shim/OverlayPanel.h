@@ -24,9 +24,10 @@ struct OverlayFigures {
 };
 
 // Builds the ImGui widgets of one frame (an ImGui frame must be open) from the look the
-// compositor runs, and says what the user changed. Parameters are edited within their
-// registered ranges, so what the panel asks for always parses; a chain the registry refuses
-// (an order it does not allow) is shown with the registry's message and not applied.
+// compositor runs, and says what the user changed. Every edit is checked (StyleSettings, the
+// registry) before it is made: a refused one changes nothing, and its message shows under the
+// control that made it. The add list offers only styles that make a chain the registry takes
+// (a second shading style is offered in place of the chain's).
 class OverlayPanel {
 public:
     // `programFile`: where "save" writes (the per-program configuration file).
@@ -60,6 +61,10 @@ private:
     // With noteLayout(): logs (debug) where an item is, for tests that click it with XTEST.
     void noteItem(const std::string& id) const;
     std::string chainText() const;
+    // An edit refused: the message shows under the control `at` ("preset", "chain", a
+    // "style.param") until the next accepted edit.
+    void setError(const std::string& at, const std::string& error);
+    void errorRow(const std::string& at) const;
     std::string configText() const;
 
     std::string mProgramName;
@@ -69,8 +74,10 @@ private:
     std::map<std::string, std::string> mTyped;  // text parameters as typed so far
     std::string mFollowed;                      // the running look last taken in
     std::string mError;                         // the registry's answer to the last edit
+    std::string mErrorAt;                       // the control it is shown at
     std::string mSaved;                         // the last save's outcome
     int mAdd = 0;                               // the style chosen to add
+    int mAddOpenFrames = 0;                     // how long its list has been open
     int mPreset = 0;                            // the preset chosen to apply
     bool mNoteItems = false;
     bool mPicking = false;

@@ -119,6 +119,28 @@ TEST(ConfigFile, SavedRulesReadBackAndReplaceTheOldOnes)
     EXPECT_EQ(f.chain, "toon");
 }
 
+// A look the next start would skip (two shading styles) is not written: the file keeps what
+// it had, and the error says why.
+TEST(ConfigFile, ALookTheRegistryRefusesIsNotSaved)
+{
+    const std::string path = freshDir("write_bad_look") + "/p.conf";
+    std::ofstream(path) << "style=toon+edges\n";
+    std::string error;
+    EXPECT_FALSE(ConfigFile::writeLook(path, "toon+paper+edges+halftone", "", {}, error));
+    EXPECT_NE(error.find("a chain takes one shading style"), std::string::npos) << error;
+    EXPECT_EQ(ConfigFile::read(path).chain, "toon+edges");
+}
+
+// A file that cannot be written says why (here its temporary name is taken by a folder).
+TEST(ConfigFile, AFailedSaveSaysWhy)
+{
+    const std::string path = freshDir("write_blocked") + "/p.conf";
+    std::filesystem::create_directories(path + ".nprgl-new");
+    std::string error;
+    EXPECT_FALSE(ConfigFile::writeLook(path, "toon", "", {}, error));
+    EXPECT_NE(error.find(".nprgl-new: Is a directory"), std::string::npos) << error;
+}
+
 TEST(ConfigFile, APresetLineGivesItsChainAndValuesUnderTheFilesOwn)
 {
     const ConfigFile f = ConfigFile::parse("paper.grain=0.5\npreset=pencil\n", "p.conf");
@@ -198,6 +220,50 @@ TEST(Config, AChangedFileRestylesTheRunningProgram)
     EXPECT_NE(r.err.find("configuration changed: style now toon+edges"), std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find("configuration changed: style now none"), std::string::npos) << r.err;
+}
+
+// Occurrences of `text` in `log`.
+size_t countOf(const std::string& log, const std::string& text)
+{
+    size_t n = 0;
+    for (size_t at = log.find(text); at != std::string::npos; at = log.find(text, at + 1))
+        ++n;
+    return n;
+}
+
+// The config folder (and XDG_CONFIG_HOME itself) is missing at start-up, as for most users:
+// the default look runs. Made after frame 2 with style=none in it, frames 4-6 are the
+// program's own; removed after frame 5, the default look from frame 7; made again after
+// frame 7, the program's own from frame 9. One line says each change; the file written again
+// after frame 8 with what it had is no change and says nothing.
+TEST(Config, AConfigFolderMadeOrRemovedWhileRunningIsFollowed)
+{
+    const std::string home = freshDir("config_folder"), native = freshDir("folder_native"),
+                      styled = freshDir("folder_styled"), live = freshDir("folder_live");
+    const std::string file = home + "/config/nprgl/nprgl.conf";
+    ProcessResult n = runProcess({probe(), "--frames", "9", "--save-dir", native});
+    ASSERT_EQ(n.exitCode, 0) << n.err;
+    ProcessResult s =
+        runProcess(under({nprglCommand()}, {probe(), "--frames", "9", "--save-dir", styled}),
+                   filesIn(home + "/none"));
+    ASSERT_EQ(s.exitCode, 0) << s.err;
+    ProcessResult r = runProcess(
+        under({nprglCommand()},
+              {probe(), "--frames", "9",         "--save-dir", live,         "--file",
+               file,    "--at",     "2",         "--text",     "style=none", "--remove-folder",
+               "5",     "--at",     "7",         "--text",     "style=none", "--at",
+               "8",     "--text",   "style=none"}),
+        filesIn(home + "/config"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_GT(differing(frame(native, 1), frame(styled, 1)), 200) << "the default look is none";
+    for (int f : {1, 2, 3, 7, 8}) {
+        EXPECT_EQ(differing(frame(styled, f), frame(live, f)), 0) << "frame " << f;
+    }
+    for (int f : {4, 5, 6, 9}) {
+        EXPECT_EQ(differing(frame(native, f), frame(live, f)), 0) << "frame " << f;
+    }
+    EXPECT_EQ(countOf(r.err, "configuration changed: style now none"), 2u) << r.err;
+    EXPECT_EQ(countOf(r.err, "configuration changed: style now toon+paper+edges"), 1u) << r.err;
 }
 
 namespace {
@@ -315,6 +381,52 @@ TEST(Hotkeys, TheCycleKeyStepsThroughTheConfiguredStyles)
                                           {"--frames", "6"}, "6");
     EXPECT_EQ(differing(shot(keyed, 4), shot(halftone, 4)), 0);
     EXPECT_EQ(differing(shot(keyed, 6), shot(pencil, 6)), 0);
+}
+
+// A held key acts once, however long it is held and whatever happens meanwhile: F9 (toggle)
+// held from frame 3 to 10 turns styling off once, though F7 (reload) held from frame 5 to 8
+// reads the configuration again (which binds the keys again), once.
+TEST(Hotkeys, AHeldKeyActsOnceEvenAcrossAReload)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon+edges"};
+    const std::string native =
+        runHotkeys("held_native", {nprglCommand(), "--style", "none"}, {"--frames", "10"}, "9");
+    const std::string styled = runHotkeys("held_styled", nprgl, {"--frames", "10"}, "2,9");
+    const std::string home = freshDir("held_config");
+    writeFile(home + "/keys.conf", "toggle_key=F9\nreload_key=F7\n");
+    const std::string keyed =
+        runHotkeys("held_keyed", nprgl,
+                   {"--frames", "10", "--hold", "3", "10", "F9", "--hold", "5", "8", "F7"}, "2,9",
+                   {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    EXPECT_EQ(differing(shot(keyed, 2), shot(styled, 2)), 0);
+    EXPECT_EQ(differing(shot(keyed, 9), shot(native, 9)), 0) << "styling not off";
+    EXPECT_EQ(countOf(stderrOf(keyed), "reload key"), 1u) << stderrOf(keyed);
+}
+
+// A key name the keyboard does not have is reported at its file and line, as other bad lines.
+TEST(Hotkeys, AnUnknownKeyIsNamedAtItsFileAndLine)
+{
+    const std::string home = freshDir("unknown_key_config");
+    writeFile(home + "/keys.conf", "# keys\ncycle_key=NoSuchKey\n");
+    const std::string run =
+        runHotkeys("unknown_key", {nprglCommand(), "--style", "toon"}, {"--frames", "2"}, "2",
+                   {{"NPRGL_CONFIG_FILE", home + "/keys.conf"}});
+    EXPECT_NE(stderrOf(run).find(" " + home +
+                                 "/keys.conf:2: cycle_key=NoSuchKey: no key "
+                                 "'NoSuchKey' on this keyboard; cycle is unbound\n"),
+              std::string::npos)
+        << stderrOf(run);
+}
+
+// With the default cycle list, whose first entry is the configured look, the first press
+// shows the next one (preset:cartoon), not the look already running.
+TEST(Hotkeys, TheFirstCyclePressChangesTheLook)
+{
+    const std::string keyed = runHotkeys("cycle_first", {nprglCommand(), "--style", "toon"},
+                                         {"--frames", "5", "--press", "3", "Shift_R+F10"}, "5");
+    const std::string cartoon = runHotkeys("cycle_cartoon", {nprglCommand(), "--preset", "cartoon"},
+                                           {"--frames", "5"}, "5");
+    EXPECT_EQ(differing(shot(keyed, 5), shot(cartoon, 5)), 0) << stderrOf(keyed);
 }
 
 namespace {
@@ -577,4 +689,68 @@ TEST(Overlay, KeysTypeAValueIntoASlider)
         "12", {{"NPRGL_OVERLAY", "open"}});
     EXPECT_NE(stderrOf(typed).find("overlay: toon.diffuse_threshold=0.75\n"), std::string::npos)
         << stderrOf(typed);
+}
+
+// With toon+paper+edges running, the 'add style' list offers a shading style as a replacement
+// of toon (a chain takes one): choosing halftone there and 'add style' runs halftone+paper+edges
+// from the next frame, and 'save' writes that chain, which the next start reads without a
+// skipped line.
+TEST(Overlay, AShadingStyleFromTheAddListReplacesTheChainsOne)
+{
+    const std::vector<std::string> chain = {nprglCommand(), "--style", "toon+paper+edges"};
+    // The list opened (a click on it at frames 4-5) for the places of its entries.
+    const std::vector<std::string> open = {"--size", kOverlaySize, "--pointer", "3",
+                                           "",       "",           "--button",  "4",
+                                           "down",   "--button",   "5",         "up"};
+    auto openAt = [&](const ItemRect& list, int frames) {
+        std::vector<std::string> args = open;
+        args[4] = std::to_string(list.x + list.w / 2);
+        args[5] = std::to_string(list.y + list.h / 2);
+        args.insert(args.end(), {"--frames", std::to_string(frames)});
+        return args;
+    };
+    std::vector<std::string> debug = chain;
+    debug.insert(debug.end(), {"--log-level", "debug"});
+    const std::string closed =
+        runHotkeys("add_closed", debug, {"--size", kOverlaySize, "--frames", "3"}, "3",
+                   {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect list = itemAt(stderrOf(closed), "add");
+    const ItemRect add = itemAt(stderrOf(closed), "add style");
+    const ItemRect save = itemAt(stderrOf(closed), "save");
+    ASSERT_GT(list.w * add.w * save.w, 0) << stderrOf(closed);
+    const std::string opened =
+        runHotkeys("add_opened", debug, openAt(list, 8), "8", {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect halftone = itemAt(stderrOf(opened), "add halftone");
+    ASSERT_GT(halftone.w, 0) << stderrOf(opened);
+
+    const std::string home = freshDir("add_home");
+    std::vector<std::string> args = openAt(list, 18);
+    auto clickAt = [&](int frame, const ItemRect& r) {
+        args.insert(args.end(),
+                    {"--pointer", std::to_string(frame), std::to_string(r.x + r.w / 2),
+                     std::to_string(r.y + r.h / 2), "--button", std::to_string(frame + 1), "down",
+                     "--button", std::to_string(frame + 2), "up"});
+    };
+    clickAt(7, halftone);
+    clickAt(10, add);
+    clickAt(13, save);
+    args.insert(args.end(), {"--pointer", "16", "590", "590"});
+    const std::string added = runHotkeys("add_run", chain, args, "17",
+                                         {{"NPRGL_OVERLAY", "open"}, {"XDG_CONFIG_HOME", home}});
+    const std::string saved = savedRules(home);
+    EXPECT_NE(saved.find("style=halftone+paper+edges\n"), std::string::npos)
+        << saved << stderrOf(added);
+
+    // Right of the overlay the program runs halftone+paper+edges, as a start with it does.
+    const std::vector<std::string> plain = {"--size", kOverlaySize, "--frames", "18"};
+    const std::string toon = runHotkeys("add_toon", chain, plain, "17");
+    const std::string expected = runHotkeys(
+        "add_halftone", {nprglCommand(), "--style", "halftone+paper+edges"}, plain, "17");
+    EXPECT_GT(differingIn(shot(toon, 17), shot(expected, 17), 372, 0, 600, 600), 100);
+    EXPECT_EQ(differingIn(shot(added, 17), shot(expected, 17), 372, 0, 600, 600), 0);
+    const std::string next =
+        runHotkeys("add_next", {nprglCommand()}, plain, "17", {{"XDG_CONFIG_HOME", home}});
+    EXPECT_EQ(stderrOf(next).find("skipped"), std::string::npos) << stderrOf(next);
+    EXPECT_NE(stderrOf(next).find("probe_hotkeys: style halftone+paper+edges"), std::string::npos)
+        << stderrOf(next);
 }

@@ -1,6 +1,7 @@
 // A GLX window drawing the lit, turning cube for a number of frames, pressing key
 // combinations with XTEST at given frames (--press K Shift_R+F9: down at the start of frame K,
-// up at the start of frame K+1), moving the pointer (--pointer K X Y, window pixels) and
+// up at the start of frame K+1; --hold K L F9: down at the start of frame K, up at the start
+// of frame L), moving the pointer (--pointer K X Y, window pixels) and
 // pressing or letting go of the left button (--button K down|up) at the start of frame K,
 // as a user would: the hotkey and overlay tests, counted in frames. --textured adds a
 // textured poster in front of the cube, in the window's lower right corner; --decal draws it
@@ -96,7 +97,8 @@ int main(int argc, char** argv)
     int size = 128;
     bool textured = false;
     bool decal = false;
-    std::map<int, std::string> presses;
+    // Key combinations going up (false) or down (true) at the start of a frame.
+    std::map<int, std::vector<std::pair<std::string, bool>>> keys;
     std::map<int, std::pair<int, int>> pointer;
     std::map<int, bool> buttons;
     for (int i = 1; i < argc; i += 2) {
@@ -113,8 +115,14 @@ int main(int argc, char** argv)
         } else if (option == "--size") {
             size = std::atoi(argv[i + 1]);
         } else if (option == "--press" && i + 2 < argc) {
-            presses[std::atoi(argv[i + 1])] = argv[i + 2];
+            const int frame = std::atoi(argv[i + 1]);
+            keys[frame].emplace_back(argv[i + 2], true);
+            keys[frame + 1].emplace_back(argv[i + 2], false);
             ++i;
+        } else if (option == "--hold" && i + 3 < argc) {
+            keys[std::atoi(argv[i + 1])].emplace_back(argv[i + 3], true);
+            keys[std::atoi(argv[i + 2])].emplace_back(argv[i + 3], false);
+            i += 2;
         } else if (option == "--pointer" && i + 3 < argc) {
             pointer[std::atoi(argv[i + 1])] = {std::atoi(argv[i + 2]), std::atoi(argv[i + 3])};
             i += 2;
@@ -149,15 +157,17 @@ int main(int argc, char** argv)
     glViewport(0, 0, size, size);
     XSync(dpy, False);
     const GLuint poster = textured ? makePosterTexture() : 0;
-    std::vector<KeyCode> held;
+    std::map<std::string, int> held; // combinations down, and how many times
     for (int frame = 1; frame <= frames; ++frame) {
-        if (!held.empty()) {
-            setKeys(dpy, held, false);
-            held.clear();
-        }
-        if (auto p = presses.find(frame); p != presses.end()) {
-            held = keycodes(dpy, p->second);
-            setKeys(dpy, held, true);
+        if (auto k = keys.find(frame); k != keys.end()) {
+            // Up first: a combination pressed in two frames in a row goes up between them.
+            for (bool down : {false, true}) {
+                for (const auto& [combination, d] : k->second) {
+                    if (d != down) continue;
+                    setKeys(dpy, keycodes(dpy, combination), down);
+                    held[combination] += down ? 1 : -1;
+                }
+            }
         }
         if (auto p = pointer.find(frame); p != pointer.end()) {
             // Window pixels to the screen's: there is no window manager to move it, but ask.
@@ -176,7 +186,9 @@ int main(int argc, char** argv)
         if (textured) drawPoster(poster, decal);
         glXSwapBuffers(dpy, window);
     }
-    if (!held.empty()) setKeys(dpy, held, false);
+    for (const auto& [combination, n] : held) {
+        if (n > 0) setKeys(dpy, keycodes(dpy, combination), false);
+    }
     glXMakeCurrent(dpy, None, nullptr);
     glXDestroyContext(dpy, context);
     XDestroyWindow(dpy, window);

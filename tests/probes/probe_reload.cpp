@@ -1,5 +1,6 @@
 // Draws a lit cube on OSMesa for a number of frames and rewrites a file between two frames
-// (--at K --text T: after frame K, T replaces --file, by a rename as editors do): the
+// (--at K --text T: after frame K, T replaces --file, by a rename as editors do, its folder
+// made when missing) or removes the file's folder (--remove-folder K, after frame K): the
 // configuration-reload tests change nprgl's configuration at a known frame, no clock.
 // Every frame is saved as DIR/reload_<frame>.png.
 #include "common/PngImage.h"
@@ -10,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -26,12 +28,15 @@ int main(int argc, char** argv)
     int frames = 4;
     std::string file, dir = ".";
     std::map<int, std::string> rewrites;
+    std::map<int, bool> removals;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string option = argv[i];
         if (option == "--frames") {
             frames = std::atoi(argv[i + 1]);
         } else if (option == "--file") {
             file = argv[i + 1];
+        } else if (option == "--remove-folder") {
+            removals[std::atoi(argv[i + 1])] = true;
         } else if (option == "--save-dir") {
             dir = argv[i + 1];
         } else if (option == "--at" && i + 3 < argc && std::strcmp(argv[i + 2], "--text") == 0) {
@@ -62,7 +67,10 @@ int main(int argc, char** argv)
             std::fprintf(stderr, "probe_reload: %s\n", error.c_str());
             return 1;
         }
+        const std::filesystem::path folder = std::filesystem::path(file).parent_path();
+        if (removals.count(frame) && !folder.empty()) std::filesystem::remove_all(folder);
         if (auto r = rewrites.find(frame); r != rewrites.end() && !file.empty()) {
+            if (!folder.empty()) std::filesystem::create_directories(folder);
             const std::string temp = file + ".new";
             std::ofstream(temp) << r->second << "\n";
             std::rename(temp.c_str(), file.c_str());
