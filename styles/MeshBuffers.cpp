@@ -60,6 +60,7 @@ GLsizei MeshBuffers::bind(const GlFunctions& gl, const reconstruct::ObjectMesh& 
         gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mIndices.size() * sizeof(uint32_t)),
                       mIndices.data(), GL_STREAM_DRAW);
         e.indices = GLsizei(mIndices.size());
+        e.derivedStale = true;
         e.contentKey = mesh.contentKey;
         e.geometryVersion = mesh.geometryVersion;
     }
@@ -76,6 +77,26 @@ GLsizei MeshBuffers::bind(const GlFunctions& gl, const reconstruct::ObjectMesh& 
     // Arrays another style left enabled in the shared VAO would be read past their end.
     for (GLuint i = 5; i < 8; ++i) gl.DisableVertexAttribArray(i);
     return e.indices;
+}
+
+GLsizei MeshBuffers::bindDerived(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh,
+                                 DeriveIndices derive)
+{
+    if (bind(gl, mesh) <= 0) return 0;
+    Entry& e = mEntries[&mesh];
+    if (!e.derivedBuffer) {
+        ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &e.derivedBuffer);
+    }
+    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, e.derivedBuffer); // over the triangles', in the VAO
+    if (e.derivedStale) {
+        mIndices.clear();
+        derive(mesh, mIndices);
+        gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mIndices.size() * sizeof(uint32_t)),
+                      mIndices.data(), GL_STREAM_DRAW);
+        e.derivedIndices = GLsizei(mIndices.size());
+        e.derivedStale = false;
+    }
+    return e.derivedIndices;
 }
 
 void MeshBuffers::draw(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh)
@@ -108,6 +129,7 @@ void MeshBuffers::endFlush(const GlFunctions& gl)
         if (mFlush - it->second.lastUsed > 8) {
             gl.DeleteBuffers(1, &it->second.buffer);
             gl.DeleteBuffers(1, &it->second.indexBuffer);
+            if (it->second.derivedBuffer) gl.DeleteBuffers(1, &it->second.derivedBuffer);
             it = mEntries.erase(it);
         } else {
             ++it;
@@ -120,6 +142,7 @@ void MeshBuffers::destroy(const GlFunctions& gl)
     for (auto& [mesh, e] : mEntries) {
         gl.DeleteBuffers(1, &e.buffer);
         gl.DeleteBuffers(1, &e.indexBuffer);
+        if (e.derivedBuffer) gl.DeleteBuffers(1, &e.derivedBuffer);
     }
     mEntries.clear();
 }

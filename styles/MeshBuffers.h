@@ -27,6 +27,12 @@ public:
     // Binds the mesh's vertex and index buffers and points attributes 0-3 at them (the
     // styles' VAO is bound). Returns the number of indices to draw as GL_TRIANGLES.
     GLsizei bind(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
+    // Fills a second index list over the same vertices (e.g. GL_LINES pairs) from the mesh.
+    using DeriveIndices = void (*)(const reconstruct::ObjectMesh&, std::vector<uint32_t>&);
+    // Binds the mesh's vertices (as bind()) and its index list made by `derive`, remade when
+    // the mesh changes. Returns the number of indices in it. One derivation per mesh.
+    GLsizei bindDerived(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh,
+                        DeriveIndices derive);
     // Draws the mesh's triangles with the current program.
     void draw(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
     // Draws faces [firstFace, firstFace + faceCount) of the mesh.
@@ -41,6 +47,9 @@ private:
         GLuint buffer = 0;
         GLuint indexBuffer = 0;
         GLsizei indices = 0;
+        GLuint derivedBuffer = 0; // bindDerived's
+        GLsizei derivedIndices = 0;
+        bool derivedStale = true;
         uint64_t contentKey = 0;
         uint32_t geometryVersion = 0;
         uint64_t lastUsed = 0;

@@ -475,28 +475,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     return true;
 }
 
-GLsizei EdgesStyle::featureLines(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh)
-{
-    Lines& l = mLines[&mesh];
-    l.lastUsed = mFlush;
-    if (l.buffer && l.contentKey == mesh.contentKey &&
-        l.geometryVersion == mesh.geometryVersion) {
-        return l.indices;
-    }
-    if (!l.buffer) ObjectNames::reserve(gl, ObjectNames::Kind::Buffer, 1, &l.buffer);
-    mPairs.clear();
-    FeatureLines::collect(mesh, mPairs);
-    // Into the styles' VAO for the upload; MeshBuffers::bind binds the mesh's own again.
-    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, l.buffer);
-    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mPairs.size() * sizeof(uint32_t)),
-                  mPairs.data(), GL_STREAM_DRAW);
-    l.indices = GLsizei(mPairs.size());
-    l.contentKey = mesh.contentKey;
-    l.geometryVersion = mesh.geometryVersion;
-    return l.indices;
-}
-
-bool EdgesStyle::linesPay(const Scene& scene, const GlFunctions& gl, const glm::ivec4& rect)
+bool EdgesStyle::linesPay(const Scene& scene, StyleContext& ctx, const glm::ivec4& rect)
 {
     // Drawn more than once, a pixel must come out the same: ink of full coverage (widths of 2
     // and more; thinner lines blend a fraction of their colour).
@@ -515,11 +494,13 @@ bool EdgesStyle::linesPay(const Scene& scene, const GlFunctions& gl, const glm::
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& o = scene.objects[i];
         if (!o.mesh) continue;
-        const double n = 0.5 * double(featureLines(gl, *o.mesh));
+        const double n =
+            0.5 * double(ctx.meshes.bindDerived(ctx.gl, *o.mesh, &FeatureLines::collect));
         const double across = std::min(mSizes[i], widest);
         fragments += kNearWidth * (2.0 * across * std::sqrt(n) + 2.0 * kNearWidth * n) +
                      kLineSetup * n;
     }
+    ctx.gl.DisableVertexAttribArray(4); // MeshBuffers::draw's rule
     return mPass == Pass::Lines || fragments < double(extent.x) * double(extent.y);
 }
 
@@ -798,7 +779,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform3fv(u.colours, 3, glm::value_ptr(mColours[0]));
         gl.Uniform1f(u.depthBias, depthBias);
     }
-    const bool nearLines = direct && linesPay(scene, gl, rect);
+    const bool nearLines = direct && linesPay(scene, ctx, rect);
     ++mPasses[nearLines ? 1 : 0];
     if (nearLines) {
         // The operator on the pixels near each object's feature lines, hidden or not (it
@@ -807,9 +788,8 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.PointSize(kNearWidth);
         for (const SceneObject& o : scene.objects) {
             if (!o.mesh) continue;
-            const GLsizei n = featureLines(gl, *o.mesh);
-            if (n <= 0 || ctx.meshes.bind(gl, *o.mesh) <= 0) continue;
-            gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mLines[o.mesh.get()].buffer);
+            const GLsizei n = ctx.meshes.bindDerived(gl, *o.mesh, &FeatureLines::collect);
+            if (n <= 0) continue;
             gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));
             gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(o.projection));
             gl.DrawElements(GL_LINES, n, GL_UNSIGNED_INT, nullptr);
@@ -825,17 +805,6 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
             gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(identity));
         }
         drawFullscreen(gl);
-    }
-    // Forget the lines of meshes no longer drawn (MeshBuffers keeps theirs as long).
-    if (mLines.size() > 2 * scene.objects.size() + 64) {
-        for (auto it = mLines.begin(); it != mLines.end();) {
-            if (mFlush - it->second.lastUsed > 8) {
-                gl.DeleteBuffers(1, &it->second.buffer);
-                it = mLines.erase(it);
-            } else {
-                ++it;
-            }
-        }
     }
 
     ctx.endScissor(scene);
@@ -860,8 +829,6 @@ void EdgesStyle::shutdown(StyleContext& ctx)
     mTargets.destroy(gl);
     if (mTriangle) gl.DeleteBuffers(1, &mTriangle);
     mTriangle = 0;
-    for (auto& [mesh, lines] : mLines) gl.DeleteBuffers(1, &lines.buffer);
-    mLines.clear();
     for (ShaderProgram* p : {&mGeometry, &mDetect, &mDirect[0], &mDirect[1], &mDilate,
                              &mComposite[0], &mComposite[1]}) {
         p->destroy(gl);

@@ -42,20 +42,9 @@ private:
         glm::vec3 lo{0.0f}, hi{0.0f};
     };
 
-    struct Lines {
-        GLuint buffer = 0;
-        GLsizei indices = 0;
-        uint64_t contentKey = 0;
-        uint32_t geometryVersion = 0;
-        uint64_t lastUsed = 0;
-    };
-
     void drawFullscreen(const GlFunctions& gl);
-    // The mesh's feature lines (FeatureLines) in its Lines buffer, made when stale; returns
-    // their index count.
-    GLsizei featureLines(const GlFunctions& gl, const reconstruct::ObjectMesh& mesh);
     // Whether the direct pass is to run on the feature lines rather than the whole rectangle.
-    bool linesPay(const Scene& scene, const GlFunctions& gl, const glm::ivec4& rect);
+    bool linesPay(const Scene& scene, StyleContext& ctx, const glm::ivec4& rect);
     // The pixels [lo, hi) of the width x height target the scene (grown by the lines) can
     // touch; false when none.
     bool coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect);
@@ -70,8 +59,6 @@ private:
     ShaderProgram mComposite[2], mDirect[2];
     EdgeTargets mTargets;
     GLuint mTriangle = 0; // one triangle covering the viewport
-    std::unordered_map<const reconstruct::ObjectMesh*, Lines> mLines;
-    std::vector<uint32_t> mPairs; // upload staging
     bool mWideLines = false;      // lines and points 3 pixels wide can be drawn
     enum class Pass { Auto, Full, Lines } mPass = Pass::Auto; // edges.pass
     std::vector<float> mSizes;    // per object of the flush: screenSize()
