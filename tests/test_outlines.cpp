@@ -504,17 +504,21 @@ TEST(Edges, ThePassNearTheFeatureLinesDrawsWhatTheFullPassDraws)
     ASSERT_EQ(full.rgba.size(), near.rgba.size());
     const int ink = countInk(full);
     EXPECT_GT(ink, 500);
-    int differing = 0;
-    for (size_t i = 0; i < full.rgba.size(); i += 4) {
-        for (size_t c = 0; c < 3; ++c) {
-            if (std::abs(int(full.rgba[i + c]) - int(near.rgba[i + c])) > 16) {
-                ++differing;
-                break;
+    auto differing = [&](const PngImage& image) {
+        int n = 0;
+        for (size_t i = 0; i < full.rgba.size(); i += 4) {
+            for (size_t c = 0; c < 3; ++c) {
+                if (std::abs(int(full.rgba[i + c]) - int(image.rgba[i + c])) > 16) {
+                    ++n;
+                    break;
+                }
             }
         }
-    }
-    EXPECT_LE(differing, 4) << "of " << ink << " ink pixels";
-    EXPECT_EQ(chosen.rgba, near.rgba) << "this scene's lines are fewer than its pixels";
+        return n;
+    };
+    // Where a line leaves the viewport its band is clipped with it: a pixel or two.
+    EXPECT_LE(differing(near), 4) << "on every object's lines, of " << ink << " ink pixels";
+    EXPECT_LE(differing(chosen), 4) << "on the cheaper of each object's lines and box";
 }
 
 TEST(Wireframe, StencilKeepsLinesOffTheInterior)

@@ -475,7 +475,7 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     return true;
 }
 
-bool EdgesStyle::linesPay(const Scene& scene, StyleContext& ctx, const glm::ivec4& rect)
+bool EdgesStyle::planNear(const Scene& scene, StyleContext& ctx, const glm::ivec4& rect)
 {
     // Drawn more than once, a pixel must come out the same: ink of full coverage (widths of 2
     // and more; thinner lines blend a fraction of their colour).
@@ -483,27 +483,40 @@ bool EdgesStyle::linesPay(const Scene& scene, StyleContext& ctx, const glm::ivec
     for (int c = 0; c < 3; ++c) {
         if (mWidths[c] > 0.0f && mWidths[c] < 2.0f) return false;
     }
-    // The band's fragments, hidden parts included: n lines spread over an object s pixels
-    // across are together about 2 s sqrt(n) long (a grid's are; one box's 12 edges too), and
-    // each line's two end points add a square each. Setting up a wide line and its points
-    // costs llvmpipe about as much as kLineSetup fragments (measured on neverball's level:
-    // 8,174 lines took longer than the 448,800 pixels they lay in).
+    // Every pixel the operator can mark lies near some object's feature lines, and within
+    // that object's box on screen (with the lines' margin): each object covers its own either
+    // way, the cheaper one. The lines' fragments, hidden parts included: n lines spread over
+    // an object s pixels across are together about 2 s sqrt(n) long (a grid's are; one box's
+    // 12 edges too), and each line's two end points add a square each. Setting up a wide line
+    // and its points costs llvmpipe about as much as kLineSetup fragments (measured on
+    // neverball's level: 8,174 lines took longer than the 448,800 pixels they lay in).
     const glm::vec2 extent(rect.z - rect.x, rect.w - rect.y);
+    const double area = double(extent.x) * double(extent.y);
     const float widest = glm::length(extent);
     double fragments = 0.0;
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
+    mNearBy.assign(scene.objects.size(), NearBy::None);
+    for (size_t i = 0; i < scene.objects.size() && fragments < area; ++i) {
         const SceneObject& o = scene.objects[i];
         if (!o.mesh) continue;
         const double n =
             0.5 * double(ctx.meshes.bindDerived(ctx.gl, *o.mesh, &FeatureLines::collect));
-        const double across = std::min(mSizes[i], widest);
-        fragments += kNearWidth * (2.0 * across * std::sqrt(n) + 2.0 * kNearWidth * n) +
-                     kLineSetup * n;
+        if (n <= 0.0) continue;
+        Footprint& f = mFootprints[i];
+        const double across = std::min(f.size, widest);
+        const double lines = kNearWidth * (2.0 * across * std::sqrt(n) + 2.0 * kNearWidth * n) +
+                             kLineSetup * n;
+        f.box = glm::ivec4(glm::max(glm::ivec2(f.box), glm::ivec2(rect)),
+                           glm::min(glm::ivec2(f.box.z, f.box.w), glm::ivec2(rect.z, rect.w)));
+        const double box = f.size < INFINITY && f.box.x < f.box.z && f.box.y < f.box.w
+                               ? double(f.box.z - f.box.x) * double(f.box.w - f.box.y)
+                               : INFINITY;
+        const bool byLines = mPass == Pass::Lines || lines <= box;
+        mNearBy[i] = byLines ? NearBy::Lines : NearBy::Box;
+        fragments += byLines ? lines : box;
     }
     ctx.gl.DisableVertexAttribArray(4); // MeshBuffers::draw's rule
-    return mPass == Pass::Lines || fragments < double(extent.x) * double(extent.y);
+    return mPass == Pass::Lines || fragments < area;
 }
-
 
 void EdgesStyle::drawFullscreen(const GlFunctions& gl)
 {
@@ -573,16 +586,21 @@ bool EdgesStyle::boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo,
     return true;
 }
 
-float EdgesStyle::screenSize(const SceneObject& o, int width, int height)
+EdgesStyle::Footprint EdgesStyle::footprint(const SceneObject& o, int width, int height)
 {
-    if (!o.mesh) return INFINITY;
+    Footprint f;
+    if (!o.mesh) return f;
     const Bounds& b = bounds(*o.mesh);
     glm::vec2 lo(INFINITY), hi(-INFINITY);
-    if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return INFINITY;
-    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return INFINITY;
-    const glm::vec2 size = 0.5f * (glm::min(hi, 2.0f) - glm::max(lo, -2.0f)) *
-                           glm::vec2(float(width), float(height));
-    return std::max(size.x, size.y);
+    if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return f;
+    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return f;
+    const glm::vec2 pixels{float(width), float(height)};
+    lo = (glm::clamp(lo, -2.0f, 2.0f) * 0.5f + 0.5f) * pixels;
+    hi = (glm::clamp(hi, -2.0f, 2.0f) * 0.5f + 0.5f) * pixels;
+    f.size = std::max(hi.x - lo.x, hi.y - lo.y);
+    f.box = {int(std::floor(lo.x)) - mMargin, int(std::floor(lo.y)) - mMargin,
+             int(std::ceil(hi.x)) + mMargin, int(std::ceil(hi.y)) + mMargin};
+    return f;
 }
 
 bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect)
@@ -662,8 +680,10 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Clear(GL_DEPTH_BUFFER_BIT);
     gl.DepthFunc(GL_LESS);
     gl.PolygonOffset(-2.0f, -4.0f);
-    mSizes.clear();
-    for (const SceneObject& o : scene.objects) mSizes.push_back(screenSize(o, width, height));
+    mFootprints.clear();
+    for (const SceneObject& o : scene.objects) {
+        mFootprints.push_back(footprint(o, width, height));
+    }
     gl.UseProgram(mGeometry.id());
     for (const SceneObject& o : scene.objects) {
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
@@ -675,7 +695,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         const bool ortho = o.orthographic();
         gl.Uniform1i(mGeo.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(mGeo.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
-        const float size = mSizes[&o - scene.objects.data()];
+        const float size = mFootprints[size_t(&o - scene.objects.data())].size;
         gl.Uniform1i(mGeo.noMaterial, size < mDetailSize ? 1 : 0);
         gl.Uniform1i(mGeo.thinLines, size < mThinSize ? 1 : 0);
         // What the program culls is not on screen: no line may come from it.
@@ -779,15 +799,28 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform3fv(u.colours, 3, glm::value_ptr(mColours[0]));
         gl.Uniform1f(u.depthBias, depthBias);
     }
-    const bool nearLines = direct && linesPay(scene, ctx, rect);
+    const bool nearLines = direct && planNear(scene, ctx, rect);
     ++mPasses[nearLines ? 1 : 0];
     if (nearLines) {
         // The operator on the pixels near each object's feature lines, hidden or not (it
-        // reads the attributes, not the line); the lines' own depth plays no part.
+        // reads the attributes, not the line); the lines' own depth plays no part. Objects
+        // whose lines would cost more: on their box.
+        const glm::mat4 identity(1.0f);
+        gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(identity));
+        gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(identity));
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            if (mNearBy[i] != NearBy::Box) continue;
+            const glm::ivec4& b = mFootprints[i].box;
+            gl.Scissor(scene.viewport.x + b.x, scene.viewport.y + b.y, b.z - b.x, b.w - b.y);
+            drawFullscreen(gl);
+        }
+        gl.Scissor(scene.viewport.x + rect.x, scene.viewport.y + rect.y, rect.z - rect.x,
+                   rect.w - rect.y);
         gl.LineWidth(kNearWidth);
         gl.PointSize(kNearWidth);
-        for (const SceneObject& o : scene.objects) {
-            if (!o.mesh) continue;
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            if (mNearBy[i] != NearBy::Lines) continue;
+            const SceneObject& o = scene.objects[i];
             const GLsizei n = ctx.meshes.bindDerived(gl, *o.mesh, &FeatureLines::collect);
             if (n <= 0) continue;
             gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));

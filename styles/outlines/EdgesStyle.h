@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -43,16 +44,22 @@ private:
     };
 
     void drawFullscreen(const GlFunctions& gl);
-    // Whether the direct pass is to run on the feature lines rather than the whole rectangle.
-    bool linesPay(const Scene& scene, StyleContext& ctx, const glm::ivec4& rect);
+    // Whether the direct pass is to run near the objects (each on its feature lines or its
+    // box: mNearBy) rather than on the whole rectangle.
+    bool planNear(const Scene& scene, StyleContext& ctx, const glm::ivec4& rect);
     // The pixels [lo, hi) of the width x height target the scene (grown by the lines) can
     // touch; false when none.
     bool coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect);
     // Widens [lo, hi] (NDC) by the box's visible part; false if it cannot say.
     static bool boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi);
     const Bounds& bounds(const reconstruct::ObjectMesh& mesh);
-    // The larger side of the object's box on screen in pixels; infinite if it cannot say.
-    float screenSize(const SceneObject& o, int width, int height);
+    // An object's box on screen: its larger side in pixels (infinite if it cannot say) and
+    // the target's pixels [x0, y0, x1, y1) it covers, grown by the lines' margin.
+    struct Footprint {
+        float size = INFINITY;
+        glm::ivec4 box{0};
+    };
+    Footprint footprint(const SceneObject& o, int width, int height);
 
     ShaderProgram mGeometry, mDetect, mDilate;
     // Without and with the program's fog on the ink ([1]: kInkFog's INK_FOG).
@@ -61,7 +68,9 @@ private:
     GLuint mTriangle = 0; // one triangle covering the viewport
     bool mWideLines = false;      // lines and points 3 pixels wide can be drawn
     enum class Pass { Auto, Full, Lines } mPass = Pass::Auto; // edges.pass
-    std::vector<float> mSizes;    // per object of the flush: screenSize()
+    std::vector<Footprint> mFootprints; // per object of the flush
+    enum class NearBy : uint8_t { None, Lines, Box };
+    std::vector<NearBy> mNearBy;        // per object of the flush: planNear's choice
     uint64_t mPasses[2] = {0, 0}; // direct or composite passes: [0] whole rectangle, [1] near
     glm::vec3 mWidths{2.0f};
     glm::vec3 mColours[3];
