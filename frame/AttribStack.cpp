@@ -49,6 +49,7 @@ void AttribStack::pop()
     if (mask & GL_DEPTH_BUFFER_BIT) {
         a.depthTest = saved.depthTest;
         a.depthMask = saved.depthMask;
+        a.depthFunc = saved.depthFunc;
     }
     if (mask & GL_COLOR_BUFFER_BIT) {
         a.blend = saved.blend;

@@ -42,6 +42,7 @@ struct AttribState {
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
+    GLenum depthFunc = GL_LESS;
     bool polygonOffsetFill = false;
     // Face culling: which faces of a draw reach the picture (two passes over one mesh that
     // cull opposite faces draw different triangles).

@@ -855,6 +855,8 @@ void Compositor::buildScene()
         s.translucent = t.translucent;
         s.depthWrite = t.depthWrite;
         s.depthTest = t.depthTest;
+        s.depthAlways = t.depthAlways;
+        s.depthFunc = t.depthFunc;
         s.culled = t.culled;
         s.generated = t.generated;
         s.alphaFunc = t.alphaFunc;

@@ -329,6 +329,7 @@ void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
     T().blendFunc(srcRgb, dstRgb);
 }
 void APIENTRY tDepthMask(GLboolean flag) { T().depthMask(flag == GL_TRUE); }
+void APIENTRY tDepthFunc(GLenum func) { T().depthFunc(func); }
 void APIENTRY tAlphaFunc(GLenum func, GLfloat ref) { T().alphaFunc(func, ref); }
 void APIENTRY tPolygonOffset(GLfloat factor, GLfloat units) { T().polygonOffset(factor, units); }
 void APIENTRY tCullFace(GLenum mode)
@@ -503,6 +504,7 @@ StateTracker::StateTracker()
     d.glBlendFunc = tBlendFunc;
     d.glBlendFuncSeparate = tBlendFuncSeparate;
     d.glDepthMask = tDepthMask;
+    d.glDepthFunc = tDepthFunc;
     d.glAlphaFunc = tAlphaFunc;
     d.glPolygonOffset = tPolygonOffset;
     d.glCullFace = tCullFace;
@@ -1237,6 +1239,8 @@ void StateTracker::blendFunc(GLenum src, GLenum dst)
 
 void StateTracker::depthMask(bool on) { mAttrib.depthMask = on; }
 
+void StateTracker::depthFunc(GLenum func) { mAttrib.depthFunc = func; }
+
 void StateTracker::fog(GLenum pname, const float* v, size_t count)
 {
     AttribState& a = mAttrib;
@@ -1601,7 +1605,11 @@ bool StateTracker::keep(TrackedBatch& batch)
     const bool opaque = (blends || a.alphaTest) && opaqueAlpha(batch);
     batch.translucent = blends && !opaque;
     batch.depthWrite = a.depthMask;
-    batch.depthTest = a.depthTest;
+    // A test at GL_ALWAYS hides nothing: drawn as without the test, but it writes its depth
+    // (a program may reset its depth buffer with such a quad instead of glClear).
+    batch.depthTest = a.depthTest && a.depthFunc != GL_ALWAYS;
+    batch.depthAlways = a.depthTest && a.depthFunc == GL_ALWAYS;
+    batch.depthFunc = a.depthFunc;
     // The styles test their alpha (the program's, its texture modulating) as it would. A test
     // that no alpha of the draw can fail cuts nothing out: some programs leave it on for all
     // their drawing (extremetuxracer does), and such surfaces are opaque ones (with outlines).

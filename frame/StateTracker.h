@@ -66,6 +66,8 @@ struct TrackedBatch {
     bool translucent = false;
     bool depthWrite = true;
     bool depthTest = true; // off: a sky or backdrop drawn first, or a 3D mark drawn on top
+    bool depthAlways = false; // the test on at GL_ALWAYS: none, but depthWrite writes depth
+    GLenum depthFunc = GL_LESS;
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
     bool depthOnly = false; // drawn with no colour channel: it only supplies depth
@@ -276,6 +278,7 @@ public:
     void lightModel(GLenum pname, const float* v);
     void blendFunc(GLenum src, GLenum dst);
     void depthMask(bool on);
+    void depthFunc(GLenum func);
     void alphaFunc(GLenum func, float ref);
     void polygonOffset(float factor, float units)
     {

@@ -106,6 +106,13 @@ struct SceneObject {
     // or scenery behind the scene (before its other objects) or a mark over it (after them).
     // The shading style draws it so, in that place; outline styles leave it out.
     bool depthTest = true;
+    // Without the test, the program's depth test on at GL_ALWAYS: its depth is written (with
+    // depthWrite) where it draws, whatever was there.
+    bool depthAlways = false;
+    // The program's depth function. Translucent objects are tested with GL_LEQUAL where the
+    // program's is: text a program draws each frame at one depth without clearing depth
+    // fails GL_LESS against the depth it left the frame before.
+    GLenum depthFunc = GL_LESS;
     // The program's alpha test (GL_ALWAYS: none): the shading style's alpha is tested as the
     // program's would be, so cut-outs keep their shape; outlines leave such objects out.
     GLenum alphaFunc = GL_ALWAYS;

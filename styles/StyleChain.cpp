@@ -95,6 +95,7 @@ void StyleChain::forEachRun(const Scene& part, Draw&& draw)
 {
     auto same = [](const SceneObject& a, const SceneObject& b) {
         return a.depthTest == b.depthTest && a.depthWrite == b.depthWrite &&
+               a.depthAlways == b.depthAlways && a.depthFunc == b.depthFunc &&
                a.translucent == b.translucent && a.alphaFunc == b.alphaFunc &&
                a.alphaRef == b.alphaRef && a.offsetFactor == b.offsetFactor &&
                a.offsetUnits == b.offsetUnits;
@@ -192,6 +193,7 @@ void StyleChain::render(const Scene& scene)
         gl.Enable(GL_BLEND);
         gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
+        if (first.depthFunc == GL_LEQUAL) gl.DepthFunc(GL_LEQUAL);
         mStyles.front()->render(run, mContext);
     });
     mContext.meshes.endFlush(mContext.gl);
@@ -216,6 +218,7 @@ void StyleChain::renderAsDrawn(const Scene& part)
     const GlFunctions& gl = mContext.gl;
     forEachRun(part, [&](const Scene& run, const SceneObject& first) {
         if (first.depthTest) gl.DepthFunc(GL_LEQUAL);
+        else if (first.depthAlways) gl.DepthFunc(GL_ALWAYS);
         else gl.Disable(GL_DEPTH_TEST);
         gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
         if (first.translucent) {

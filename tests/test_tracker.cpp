@@ -177,6 +177,50 @@ TEST(StateTracker, TheFirstNormalInsideABatchCountsForItsEarlierVertices)
     for (const TrackedVertex& v : b.vertices) EXPECT_TRUE(v.hasNormal);
 }
 
+// A depth test at GL_ALWAYS hides nothing but still writes depth: dreamchess resets its depth
+// buffer each frame with such a quad instead of glClear, and styled as a depth-tested object
+// (with the styles' GL_LESS) it left the old depth in place, and the whole board failed it.
+TEST(StateTracker, ADepthTestAtAlwaysIsNoTestButWritesDepth)
+{
+    CallWriter w;
+    auto triangle = [&] {
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        for (float x : {0.0f, 1.0f, 0.0f}) {
+            w.op(op::glVertex3f);
+            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, -2.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+    };
+    auto depthFunc = [&](GLenum f) {
+        w.op(op::glDepthFunc);
+        w.put<GLenum>(f);
+    };
+    w.op(op::glEnable);
+    w.put<GLenum>(GL_DEPTH_TEST);
+    triangle();
+    w.op(op::glPushAttrib);
+    w.put<GLbitfield>(GL_DEPTH_BUFFER_BIT);
+    depthFunc(GL_ALWAYS);
+    triangle();
+    w.op(op::glPopAttrib); // back to GL_LESS
+    triangle();
+    w.op(op::kFrameEnd);
+    w.put<uint64_t>(1);
+    StateTracker tracker;
+    std::string error;
+    ASSERT_TRUE(tracker.runFrame(w.data(), w.size(), nullptr, error)) << error;
+    const std::vector<TrackedBatch>& batches = tracker.frameBatches();
+    ASSERT_EQ(batches.size(), 3u);
+    EXPECT_TRUE(batches[0].depthTest);
+    EXPECT_FALSE(batches[0].depthAlways);
+    EXPECT_FALSE(batches[1].depthTest);
+    EXPECT_TRUE(batches[1].depthAlways);
+    EXPECT_TRUE(batches[1].depthWrite);
+    EXPECT_TRUE(batches[2].depthTest) << "glPopAttrib(GL_DEPTH_BUFFER_BIT) restores the function";
+    EXPECT_FALSE(batches[2].depthAlways);
+}
+
 TEST(StateTracker, AnUnlitDrawDoesNotTakeANormalLeftByAnotherObject)
 {
     // Lit: glNormal, a triangle. Then unlit: a triangle without a normal of its own (the
