@@ -50,6 +50,18 @@ size_t distinctModelviews(const std::vector<TrackedBatch>& batches)
     return seen.size();
 }
 
+// One glBegin(GL_TRIANGLES) triangle at depth z (its vertices alone).
+void writeTriangle(CallWriter& w, float z = -2.0f)
+{
+    w.op(op::glBegin);
+    w.put<GLenum>(GL_TRIANGLES);
+    for (float x : {0.0f, 1.0f, 0.0f}) {
+        w.op(op::glVertex3f);
+        for (float c : {x, x == 0.0f ? 0.0f : 1.0f, z}) w.put<float>(c);
+    }
+    w.op(op::glEnd);
+}
+
 } // namespace
 
 TEST(StateTracker, GlxgearsDrawsThreeGearsFromItsDisplayLists)
@@ -183,15 +195,7 @@ TEST(StateTracker, TheFirstNormalInsideABatchCountsForItsEarlierVertices)
 TEST(StateTracker, ADepthTestAtAlwaysIsNoTestButWritesDepth)
 {
     CallWriter w;
-    auto triangle = [&] {
-        w.op(op::glBegin);
-        w.put<GLenum>(GL_TRIANGLES);
-        for (float x : {0.0f, 1.0f, 0.0f}) {
-            w.op(op::glVertex3f);
-            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, -2.0f}) w.put<float>(c);
-        }
-        w.op(op::glEnd);
-    };
+    auto triangle = [&] { writeTriangle(w); };
     auto depthFunc = [&](GLenum f) {
         w.op(op::glDepthFunc);
         w.put<GLenum>(f);
@@ -236,13 +240,7 @@ TEST(StateTracker, AnUnlitDrawDoesNotTakeANormalLeftByAnotherObject)
             w.op(op::glNormal3f);
             for (float c : {0.0f, 0.0f, -1.0f}) w.put<float>(c);
         }
-        w.op(op::glBegin);
-        w.put<GLenum>(GL_TRIANGLES);
-        for (float x : {0.0f, 1.0f, 0.0f}) {
-            w.op(op::glVertex3f);
-            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, -2.0f}) w.put<float>(c);
-        }
-        w.op(op::glEnd);
+        writeTriangle(w);
     };
     cap(op::glEnable, GL_LIGHTING);
     triangle(true);
@@ -394,15 +392,7 @@ struct Feed {
     // One triangle in immediate mode.
     void triangle()
     {
-        run([](CallWriter& w) {
-            w.op(op::glBegin);
-            w.put<GLenum>(GL_TRIANGLES);
-            for (float x : {0.0f, 1.0f, 0.0f}) {
-                w.op(op::glVertex3f);
-                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
-            }
-            w.op(op::glEnd);
-        });
+        run([](CallWriter& w) { writeTriangle(w, 0.0f); });
     }
 };
 

@@ -329,7 +329,7 @@ void main()
 // The band the direct pass runs on around each feature line: the operator marks the pixel on
 // each side of an edge, both within 1.5 pixels of it; points as wide cover the lines' ends.
 constexpr float kNearWidth = 3.0f;
-constexpr double kLineSetup = 48.0; // fragments (see linesPay)
+constexpr double kLineSetup = 48.0; // fragments (see planNear)
 
 std::unique_ptr<Style> create() { return std::make_unique<EdgesStyle>(); }
 
@@ -782,6 +782,10 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform3fv(mDirU[f].cover, 1, glm::value_ptr(cover));
         gl.Uniform3fv(mDirU[f].colours, 3, glm::value_ptr(mColours[0]));
         gl.Uniform1f(mDirU[f].depthBias, depthBias);
+        // The viewport's triangle (and an object's box) as is; feature lines set their own.
+        const glm::mat4 identity(1.0f);
+        gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(identity));
+        gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(identity));
     } else {
         const auto& u = mCom[f];
         gl.UseProgram(mComposite[f].id());
@@ -805,9 +809,6 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         // The operator on the pixels near each object's feature lines, hidden or not (it
         // reads the attributes, not the line); the lines' own depth plays no part. Objects
         // whose lines would cost more: on their box.
-        const glm::mat4 identity(1.0f);
-        gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(identity));
-        gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(identity));
         for (size_t i = 0; i < scene.objects.size(); ++i) {
             if (mNearBy[i] != NearBy::Box) continue;
             const glm::ivec4& b = mFootprints[i].box;
@@ -832,11 +833,6 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.LineWidth(1.0f);
         gl.PointSize(1.0f);
     } else {
-        if (direct) {
-            const glm::mat4 identity(1.0f);
-            gl.UniformMatrix4fv(mDirU[f].modelview, 1, GL_FALSE, glm::value_ptr(identity));
-            gl.UniformMatrix4fv(mDirU[f].projection, 1, GL_FALSE, glm::value_ptr(identity));
-        }
         drawFullscreen(gl);
     }
 
