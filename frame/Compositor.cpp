@@ -90,6 +90,15 @@ NPRGL_HELD_DRAW(glRects, placeDraw(GL_POLYGON, false),
         C().barrier();                                                                          \
         return C().next().name args;                                                            \
     }
+// Barriers that draw into colour, or give the framebuffer other pixels: its colour is no
+// longer as the program cleared it (Scene::colourFresh).
+#define NPRGL_DRAWING(ret, name, params, args)                                                  \
+    ret APIENTRY c_##name params                                                               \
+    {                                                                                           \
+        C().barrier();                                                                          \
+        C().colourDrawn();                                                                      \
+        return C().next().name args;                                                            \
+    }
 // Clears: barriers that also tell the page (paper) where the program's background is new.
 #define NPRGL_CLEAR(name, colour, params, args)                                                 \
     void APIENTRY c_##name params                                                               \
@@ -107,17 +116,17 @@ NPRGL_CLEAR(glClearBufferfv, buffer == GL_COLOR, (GLenum buffer, GLint i, const 
 NPRGL_CLEAR(glClearBufferfi, false, (GLenum buffer, GLint i, GLfloat depth, GLint stencil),
             (buffer, i, depth, stencil))
 #undef NPRGL_CLEAR
-NPRGL_BARRIER(void, glAccum, (GLenum op, GLfloat value), (op, value))
+NPRGL_DRAWING(void, glAccum, (GLenum op, GLfloat value), (op, value))
 NPRGL_BARRIER(void, glReadPixels,
               (GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* p),
               (x, y, w, h, format, type, p))
-NPRGL_BARRIER(void, glCopyPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum type),
+NPRGL_DRAWING(void, glCopyPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum type),
               (x, y, w, h, type))
-NPRGL_BARRIER(void, glBitmap,
+NPRGL_DRAWING(void, glBitmap,
               (GLsizei w, GLsizei h, GLfloat x, GLfloat y, GLfloat dx, GLfloat dy,
                const GLubyte* bits),
               (w, h, x, y, dx, dy, bits))
-NPRGL_BARRIER(void, glDrawPixels,
+NPRGL_DRAWING(void, glDrawPixels,
               (GLsizei w, GLsizei h, GLenum format, GLenum type, const void* p),
               (w, h, format, type, p))
 NPRGL_BARRIER(void, glCopyTexImage1D,
@@ -144,23 +153,24 @@ NPRGL_BARRIER(void, glViewport, (GLint x, GLint y, GLsizei w, GLsizei h), (x, y,
 // which framebuffer is bound or what it is attached to, builds mipmaps from it or blits it.
 NPRGL_BARRIER(void, glBindFramebuffer, (GLenum target, GLuint fb), (target, fb))
 NPRGL_BARRIER(void, glBindFramebufferEXT, (GLenum target, GLuint fb), (target, fb))
-NPRGL_BARRIER(void, glFramebufferTexture1D,
+NPRGL_DRAWING(void, glFramebufferTexture1D,
               (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l), (t, a, tt, tex, l))
-NPRGL_BARRIER(void, glFramebufferTexture2D,
+NPRGL_DRAWING(void, glFramebufferTexture2D,
               (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l), (t, a, tt, tex, l))
-NPRGL_BARRIER(void, glFramebufferTexture3D,
+NPRGL_DRAWING(void, glFramebufferTexture3D,
               (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l, GLint z),
               (t, a, tt, tex, l, z))
-NPRGL_BARRIER(void, glFramebufferTextureLayer,
+NPRGL_DRAWING(void, glFramebufferTextureLayer,
               (GLenum t, GLenum a, GLuint tex, GLint l, GLint layer), (t, a, tex, l, layer))
-NPRGL_BARRIER(void, glFramebufferRenderbuffer, (GLenum t, GLenum a, GLenum rt, GLuint rb),
+NPRGL_DRAWING(void, glFramebufferRenderbuffer, (GLenum t, GLenum a, GLenum rt, GLuint rb),
               (t, a, rt, rb))
 NPRGL_BARRIER(void, glGenerateMipmap, (GLenum target), (target))
-NPRGL_BARRIER(void, glBlitFramebuffer,
+NPRGL_DRAWING(void, glBlitFramebuffer,
               (GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLint dy0, GLint dx1,
                GLint dy1, GLbitfield mask, GLenum filter),
               (sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, filter))
 #undef NPRGL_BARRIER
+#undef NPRGL_DRAWING
 
 GLenum APIENTRY c_glGetError() { return C().getError(); }
 GLint APIENTRY c_glRenderMode(GLenum mode) { return C().renderMode(mode); }
@@ -417,6 +427,7 @@ void Compositor::setEnabled(bool enabled)
 
 void Compositor::tintBegin(GLuint list)
 {
+    mFresh.drawn = true;
     if (!mLeftNow) return;
     mLeftNow = false;
     bool textured = false, sourceAlpha = false;
@@ -747,7 +758,23 @@ void Compositor::barrier()
 void Compositor::clear(bool colour)
 {
     barrier();
-    if (colour) ++mColourClears;
+    if (!colour) return;
+    ++mColourClears;
+    // A clear of every channel makes its rectangle fresh; a partial one draws nothing, and
+    // what it clears is background either way.
+    if (!ready() || !mTracker.colourMaskAll()) return;
+    GLint framebuffer = 0;
+    gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    constexpr int kAll = 1 << 30;
+    mFresh.drawn = false;
+    mFresh.framebuffer = framebuffer;
+    mFresh.rect = mTracker.scissorTest() ? mTracker.scissor() : glm::ivec4(0, 0, kAll, kAll);
+}
+
+void Compositor::backBufferShown()
+{
+    constexpr int kAll = 1 << 30;
+    mFresh = Fresh{false, 0, glm::ivec4(0, 0, kAll, kAll)};
 }
 
 GLenum Compositor::getError()
@@ -792,6 +819,7 @@ void Compositor::flush()
     mTracker.takeBatches(mTracked);
     buildScene();
     if (!mScene.objects.empty()) render();
+    mFresh.drawn = true; // the styles' picture
     mFrameComposeMs +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
             .count();
@@ -876,6 +904,13 @@ void Compositor::buildScene()
     mScene.scissor = mHeldScissor;
     mScene.depthRange = mHeldDepthRange;
     mScene.colourClears = mColourClears;
+    // Fresh when the cleared (or shown) rectangle holds the scene's viewport, as confined.
+    const glm::ivec4 area = mScene.confined(mScene.viewport);
+    const glm::ivec4& fresh = mFresh.rect;
+    mScene.colourFresh = !mFresh.drawn && mFresh.framebuffer == mHeldFramebuffer &&
+                         area.x >= fresh.x && area.y >= fresh.y &&
+                         int64_t(area.x) + area.z <= int64_t(fresh.x) + fresh.z &&
+                         int64_t(area.y) + area.w <= int64_t(fresh.y) + fresh.w;
 }
 
 void Compositor::textureRuns(const reconstruct::FrameObject& o, styles::SceneObject& s) const

@@ -107,6 +107,12 @@ public:
     void barrier();
     // A clear of the colour buffer (colour) or of others: a barrier, counted.
     void clear(bool colour);
+    // The program drew into a colour buffer other than through a held draw (glDrawPixels,
+    // glBitmap, a blit...; tintBegin says so for the draws left to the driver).
+    void colourDrawn() { mFresh.drawn = true; }
+    // The window's back buffer was shown: its contents are undefined from now on, so what
+    // nothing draws over in the next frame is background.
+    void backBufferShown();
     // Around a draw left as the program draws it: with the coverage style, paints it red;
     // on a page, a glow is drawn as ink. list: the display list the draw calls, if any.
     void tintBegin(GLuint list = 0);
@@ -193,6 +199,13 @@ private:
     styles::Scene mScene;
     uint64_t mFlushes = 0;
     uint64_t mColourClears = 0; // glClear / glClearBuffer calls that reached colour
+    // Where one framebuffer's colour holds nothing drawn since it was cleared or shown
+    // (Scene::colourFresh): its window rectangle, unless something drew since.
+    struct Fresh {
+        bool drawn = true;
+        GLint framebuffer = 0;
+        glm::ivec4 rect{0};
+    } mFresh;
 
     SavedGlState mSaved; // the program's state while the chain starts or renders
     PFNGLBINDFRAMEBUFFERPROC mBindFramebuffer = nullptr;

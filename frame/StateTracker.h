@@ -178,6 +178,7 @@ public:
     const glm::vec2& depthRange() const { return mAttrib.depthRange; }
     // The scissor test's state now: on, and its box.
     bool scissorTest() const { return mAttrib.scissorTest; }
+    bool colourMaskAll() const { return mAttrib.colorMaskAll; }
     const glm::ivec4& scissor() const { return mAttrib.scissor; }
     const glm::ivec4& viewport() const { return mAttrib.viewport; }
     // Moves the held batches out (the frame's batch list starts empty again). The batches

@@ -84,7 +84,9 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
     auto frameEnd = [&](uint64_t frame) {
         // The program's frame is complete; OSMesa renders into our buffer.
         // Through the context's own glFinish: the compositor draws what it holds, as at the
-        // end of a live frame.
+        // end of a live frame; and a swap's: what the next frame does not draw over is its
+        // background.
+        if (tThread.context) tThread.context->swapAtNextFrameEnd();
         tThread.dispatch->glFinish();
         if (options.stats) {
             // The run's counts since the last recorded frame: a program's own glFinish also

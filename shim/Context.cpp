@@ -34,7 +34,7 @@ void APIENTRY osmesaFinish()
     Context* ctx = tThread.context;
     if (!ctx) return gRealGl.glFinish();
     ctx->finishBelowHook();
-    if (ctx->endFrame()) {
+    if (ctx->endFrame(false)) {
         GLint w = 0, h = 0;
         gRealWs.OSMesaGetIntegerv(OSMESA_WIDTH, &w);
         gRealWs.OSMesaGetIntegerv(OSMESA_HEIGHT, &h);
@@ -134,12 +134,14 @@ void Context::queryCaps()
                 mCaps.doubleBuffered ? ", double-buffered" : "");
 }
 
-bool Context::endFrame()
+bool Context::endFrame(bool shown)
 {
     if (mCompositor) {
         mCompositor->flush();
         mCompositor->endFrameCounts();
+        if (shown || mSwapNext) mCompositor->backBufferShown();
     }
+    mSwapNext = false;
     followConfig();
     applyKeys();
     ++mFrame;

@@ -37,10 +37,13 @@ public:
     // Called on every MakeCurrent to this context, after the driver's.
     void onMakeCurrent();
     // The end of a frame: just before SwapBuffers (or glFinish for swap-less OSMesa).
+    // `shown`: a back buffer is swapped, so its contents are undefined afterwards.
     // Returns true when this frame is to be written as a screenshot; the caller then asks
     // the window system for the size (a server round trip on GLX, so not every frame) and
     // calls writeScreenshot.
-    bool endFrame();
+    bool endFrame(bool shown);
+    // A replay's next frame end is the recorded program's swap (OSMesa has none).
+    void swapAtNextFrameEnd() { mSwapNext = true; }
     void writeScreenshot(int width, int height);
     // writeScreenshot's two halves, for a window system with the overlay between them: the
     // hotkey's picture (without the overlay) and the configured frames' (as shown).
@@ -125,6 +128,7 @@ private:
     std::unique_ptr<Overlay> mOverlay; // made when first opened
     bool mOverlayAsked = false;        // overlay=open at start-up was looked at
     bool mInitialized = false;
+    bool mSwapNext = false; // swapAtNextFrameEnd
 };
 
 } // namespace nprgl

@@ -59,7 +59,7 @@ EGLBoolean eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
             surfaceSize(dpy, surface, width, height);
             if (width > 0 && height > 0) ctx->setDrawableSize(width, height);
         }
-        if (ctx->endFrame()) {
+        if (ctx->endFrame(true)) {
             if (!recording) surfaceSize(dpy, surface, width, height);
             ctx->writeScreenshot(width, height);
         }

@@ -99,7 +99,8 @@ void glXSwapBuffers(Display* dpy, GLXDrawable drawable)
             askSize();
             if (width > 0 && height > 0) ctx->setDrawableSize(int(width), int(height));
         }
-        const bool shots = ctx->endFrame();
+        // Swapping a single-buffered drawable shows nothing and keeps its pixels.
+        const bool shots = ctx->endFrame(ctx->caps().doubleBuffered);
         if (shots || ctx->overlayOpen()) askSize();
         // The hotkey's pair without the overlay; the configured frames as the window shows.
         if (shots) ctx->writeHotkeyScreenshot(int(width), int(height));

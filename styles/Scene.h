@@ -166,6 +166,10 @@ struct Scene {
     uint64_t frame = 0;              // frames since the context started (0-based)
     uint32_t framebuffer = 0;        // the draw framebuffer the scene was drawn into
     uint64_t colourClears = 0;       // the program's colour clears so far (a running count)
+    // Nothing was drawn into the viewport's colour since the program cleared it (or, in a
+    // window's back buffer, since the last frame was shown): every pixel at the far depth is
+    // background, whatever its colour.
+    bool colourFresh = false;
     // The program drew the scene confined to the scissor box (x, y, width, height, window
     // pixels); the styles draw it so too.
     bool scissored = false;
@@ -181,6 +185,7 @@ struct Scene {
         frame = whole.frame;
         framebuffer = whole.framebuffer;
         colourClears = whole.colourClears;
+        colourFresh = whole.colourFresh;
         scissored = whole.scissored;
         scissor = whole.scissor;
         depthRange = whole.depthRange;

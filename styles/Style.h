@@ -64,7 +64,10 @@ public:
     virtual void render(const Scene& scene, StyleContext& ctx) = 0;
     // A background style's, first in a flush, before anything of it is drawn (with the
     // baseline of the styles after shading): what goes behind all of the program's drawing
-    // (the page).
+    // (the page). Or, when nothing in the flush is drawn without the depth test, only keep
+    // what the program left (keepBackground) and lay the page after the opaque scene, whose
+    // depth then spares its pixels the page's work (layBackground, from render or the chain).
+    virtual void keepBackground(const Scene&, StyleContext&) {}
     virtual void layBackground(const Scene&, StyleContext&) {}
     virtual void shutdown(StyleContext& ctx) = 0;
 };

@@ -163,10 +163,15 @@ void StyleChain::render(const Scene& scene)
     }
     const GlFunctions& gl = mContext.gl;
     // The page under everything: a backdrop in the clear colour, drawn without depth (a dark
-    // floor), stays the program's and does not become page.
+    // floor), stays the program's and does not become page. Without a backdrop it is laid
+    // after the opaque scene (the background style's render), where the scene's depth
+    // rejects its pixels before any of the page's work, but not over what goes at the far
+    // plane (a sky in a depth range of its own).
+    const bool layLater = mBackdrop.objects.empty() && scene.depthRange.x < 1.0f;
     for (size_t i : mBackgrounds) {
         setBaseline(scene, i == 0 && mHasShading);
-        mStyles[i]->layBackground(scene, mContext);
+        if (layLater) mStyles[i]->keepBackground(scene, mContext);
+        else mStyles[i]->layBackground(scene, mContext);
     }
     renderAsDrawn(mBackdrop);
     for (size_t i = 0; i < mStyles.size(); ++i) {
@@ -179,6 +184,12 @@ void StyleChain::render(const Scene& scene)
         forEachRun(mCutOut, [&](const Scene& run, const SceneObject&) {
             mStyles[i]->render(run, mContext);
         });
+    }
+    // Under the translucent objects and marks even when the flush has no opaque scene.
+    for (size_t i : mBackgrounds) {
+        if (!layLater) break;
+        setBaseline(scene, false);
+        mStyles[i]->layBackground(scene, mContext);
     }
     renderAsDrawn(mOnTop);
     if (!mDepthOnly.objects.empty()) {

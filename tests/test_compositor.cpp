@@ -304,6 +304,39 @@ TEST(Compositor, ABackdropInTheClearColourStaysOnThePage)
     EXPECT_GT(at(160, 10)[0], 200) << "no page above the scene";
 }
 
+// The page goes where nothing of the frame is. A panel the program draws with glDrawPixels
+// before its scene (frame 1) is the frame's and stays. Later frames clear only depth: in a
+// window's back buffer, whose contents a swap leaves undefined, the panel's pixels are left
+// over from a shown frame, so they are background and become page. On OSMesa, which has no
+// swap, they are still the program's and stay.
+TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
+{
+    auto panelAt = [](bool window, int frame) {
+        const std::string dir = freshDir(window ? "stale_panel_glx" : "stale_panel_osmesa");
+        std::vector<std::string> command = {demo("textured"), "--stale-panel", "--size",
+                                            "320x240", "--frames", "3", "--save-frames", "1,3",
+                                            "--save-dir", dir};
+        if (!window) command.push_back("--offscreen");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"}, command));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_" + std::to_string(frame) + ".png", image,
+                                   error))
+            << error;
+        // Window (8, 10): the panel's corner, left of the floor.
+        const size_t at = image.rgba.empty() ? 0 : (size_t(229) * image.width + 8) * 4;
+        if (image.rgba.empty()) return std::array<int, 3>{-1, -1, -1};
+        return std::array<int, 3>{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2]};
+    };
+    const std::array<int, 3> red{255, 0, 0};
+    EXPECT_EQ(panelAt(true, 1), red) << "the frame's own panel became page";
+    const std::array<int, 3> shown = panelAt(true, 3);
+    EXPECT_GT(shown[1], 200) << "the last frame's panel is still there, not page";
+    EXPECT_GT(shown[2], 190) << "the last frame's panel is still there, not page";
+    EXPECT_EQ(panelAt(false, 3), red) << "without a swap the panel is the program's";
+}
+
 // A translucent layer drawn without the depth test over an opaque backdrop drawn the same way
 // (a sky's clouds over its ground: bzflag) stays translucent: the two were one object, opaque
 // as the first, and the haze came out white over the floor (and bzflag's whole sky).

@@ -9,11 +9,16 @@
 // linear fog between eye distances 6 and 11; --depth-prepass draws the scene twice, depth
 // only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
 // floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
-// depth) and draws the scene again there, turned, like a rear-view mirror.
+// depth) and draws the scene again there, turned, like a rear-view mirror; --stale-panel
+// leaves frame 1's panel in the buffer by clearing only depth later.
+
+// Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
+#define GL_GLEXT_PROTOTYPES
 
 #include "Demo.h"
 
 #include <GL/gl.h>
+#include <GL/glext.h>
 
 #include <cmath>
 #include <cstdint>
@@ -182,7 +187,11 @@ public:
                  "a first-person weapon: a cube far behind the scene drawn in a depth range of "
                  "its own (glDepthRange 0 to 0.1), so that it is in front of everything"},
                 {"inset", demo::ExtraOption::Kind::Flag,
-                 "the scene again, turned, in the top right quarter (scissor and clear)"}};
+                 "the scene again, turned, in the top right quarter (scissor and clear)"},
+                {"stale-panel", demo::ExtraOption::Kind::Flag,
+                 "frame 1 puts a red panel in the bottom left corner with glDrawPixels; later "
+                 "frames clear only depth (as engines whose world covers the screen do), so the "
+                 "panel's pixels are what the buffer kept from before"}};
     }
 
     bool init(const demo::Options& options, std::string& error) override
@@ -206,6 +215,7 @@ public:
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
         inset_ = options.has("inset");
+        stalePanel_ = options.has("stale-panel");
         weapon_ = options.has("weapon");
         width_ = options.width;
         height_ = options.height;
@@ -252,7 +262,9 @@ public:
 
     void draw(int frame) override
     {
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glClear(stalePanel_ && frame > 1 ? GL_DEPTH_BUFFER_BIT
+                                         : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (stalePanel_ && frame == 1) drawPanel();
         if (depthPrepass_) {
             // Depth first, colour off; then the colours on equal depth.
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -282,6 +294,20 @@ public:
             drawScene(frame + 240);
             glDisable(GL_SCISSOR_TEST);
         }
+    }
+
+    // 48x32 red pixels at window (4, 4), before the scene, without depth.
+    void drawPanel()
+    {
+        std::vector<uint8_t> pixels(48 * 32 * 4, 0);
+        for (size_t i = 0; i < pixels.size(); i += 4) pixels[i] = pixels[i + 3] = 255;
+        glPushAttrib(GL_ENABLE_BIT);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_TEXTURE_2D);
+        glDisable(GL_LIGHTING);
+        glWindowPos2i(4, 4);
+        glDrawPixels(48, 32, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        glPopAttrib();
     }
 
     void drawScene(int frame)
@@ -473,6 +499,7 @@ private:
     bool lateFloor_ = false;
     bool backdropFloor_ = false;
     bool backdropHaze_ = false;
+    bool stalePanel_ = false;
     GLuint lateFloorTexture_ = 0;
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace nprgl::styles {
 
@@ -25,8 +26,9 @@ void main() { gl_Position = vec4(position.xy, 1.0, 1.0); }
 )";
 
 // Pass 0 (grain_scene) grains the whole viewport: multiplied (blend DST_COLOR, ZERO).
-// Pass 1 lays the page where nothing drew depth and the colour (copied before pass 0) is
-// still the clear colour (a 2D backdrop drawn without depth keeps its pixels): the grained
+// Pass 1 lays the page where nothing drew depth and the colour (copied before the flush) is
+// still the clear colour (a 2D backdrop drawn without depth keeps its pixels) or, when nothing
+// was drawn since the clear (Scene::colourFresh), wherever nothing drew depth: the grained
 // paper, opaque (a page has no holes, even where the program cleared alpha to 0), blended
 // in by an alpha of 1 there and 0 elsewhere.
 const char* kFragment = R"(#version 130
@@ -36,6 +38,7 @@ uniform sampler2D paperTex;  // the user's paper scan
 uniform int pass;
 uniform ivec2 origin;
 uniform bool usePaperTex;
+uniform bool compare;        // false: nothing was drawn since the clear, every pixel is page
 uniform vec3 paperColour;
 uniform vec3 clearColour;
 uniform float tolerance;
@@ -56,8 +59,11 @@ void main()
     }
     // No discard (it would turn off the early depth test that skips the scene's pixels):
     // alpha 0 leaves the pixel as it is through the blend.
-    vec3 d = abs(texelFetch(colour, p, 0).rgb - clearColour);
-    float untouched = max(d.r, max(d.g, d.b)) > tolerance ? 0.0 : 1.0;
+    float untouched = 1.0;
+    if (compare) {
+        vec3 d = abs(texelFetch(colour, p, 0).rgb - clearColour);
+        untouched = max(d.r, max(d.g, d.b)) > tolerance ? 0.0 : 1.0;
+    }
     vec3 paper = paperColour;
     if (usePaperTex) {
         // Upright: the image's top row was uploaded first (t = 0).
@@ -108,7 +114,8 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
     auto at = [&](const char* name) { return mProgram.uniform(gl, name); };
     mU = {at("colour"),      at("grainTex"),    at("paperTex"),    at("origin"),
           at("usePaperTex"), at("paperColour"), at("clearColour"), at("tolerance"),
-          at("grain"),       at("pass"),        at("grainSize"),   at("paperSize")};
+          at("grain"),       at("pass"),        at("grainSize"),   at("paperSize"),
+          at("compare")};
 
     mPaperColour = ctx.colour(kStyle, "color", kDefaultColour);
     mFill = ctx.param(kStyle, "background") >= 0.5;
@@ -150,7 +157,7 @@ bool PaperStyle::grainedThisFrame(const Scene& scene, bool mark)
     return false;
 }
 
-bool PaperStyle::filledAlready(const Scene& scene)
+bool PaperStyle::filledAlready(const Scene& scene, bool mark)
 {
     // A flush after the page was laid adds objects that wrote depth over it; the pixels
     // still untouched are paper already. A colour clear since makes new background.
@@ -160,7 +167,7 @@ bool PaperStyle::filledAlready(const Scene& scene)
     }
     const Filled key{scene.framebuffer, scene.viewport, scene.colourClears};
     if (std::find(mFilled.begin(), mFilled.end(), key) != mFilled.end()) return true;
-    mFilled.push_back(key);
+    if (mark) mFilled.push_back(key);
     return false;
 }
 
@@ -225,23 +232,46 @@ void PaperStyle::endPass(const Scene& scene, StyleContext& ctx)
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+bool PaperStyle::copyBackground(const Scene& scene, StyleContext& ctx)
+{
+    if (mCopy.capture(ctx.gl, scene.viewport)) return true;
+    if (!mWarnedCopy) {
+        NPRGL_WARN("paper: cannot copy a multisampled (or undrawn) framebuffer; the "
+                   "background is left as the program cleared it");
+    }
+    mWarnedCopy = true;
+    return false;
+}
+
+void PaperStyle::keepBackground(const Scene& scene, StyleContext& ctx)
+{
+    mKept = false;
+    const glm::ivec4 vp = scene.viewport;
+    // A fresh buffer needs no copy: nothing in it is the program's but the clear.
+    if (!mFill || scene.objects.empty() || vp.z <= 0 || vp.w <= 0 || scene.colourFresh ||
+        filledAlready(scene, false)) {
+        return;
+    }
+    mKept = copyBackground(scene, ctx);
+    mKeptFrame = scene.frame;
+    mKeptViewport = vp;
+}
+
 void PaperStyle::layBackground(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
     const glm::ivec4 vp = scene.viewport;
+    const bool kept = std::exchange(mKept, false);
     // An empty flush drew nothing; its page is whatever the program left.
-    if (!mFill || scene.objects.empty() || vp.z <= 0 || vp.w <= 0 || filledAlready(scene)) {
+    if (!mFill || scene.objects.empty() || vp.z <= 0 || vp.w <= 0 ||
+        filledAlready(scene, true)) {
         return;
     }
-    if (!mCopy.capture(gl, vp)) {
-        if (!mWarnedCopy) {
-            NPRGL_WARN("paper: cannot copy a multisampled (or undrawn) framebuffer; the "
-                       "background is left as the program cleared it");
-        }
-        mWarnedCopy = true;
-        return;
-    }
+    // The copy of what was there before the flush drew (the same viewport and frame).
+    const bool copied = kept && mKeptFrame == scene.frame && mKeptViewport == vp;
+    if (!scene.colourFresh && !copied && !copyBackground(scene, ctx)) return;
     beginPass(scene, ctx);
+    gl.Uniform1i(mU.compare, scene.colourFresh ? 0 : 1);
     // Grained here unless the grain goes over the whole viewport after the scene.
     if (mGrainScene && !grainedThisFrame(scene, false)) gl.Uniform1f(mU.grain, 0.0f);
     gl.Uniform1i(mU.pass, 1);

@@ -17,12 +17,13 @@ namespace nprgl::styles {
 // the frame, a paper structure blended over it after). Where the program left its cleared
 // background untouched - far depth and still the clear colour - the page shows paper (a flat
 // colour or a tiled scan); then a fine paper grain darkens the whole viewport, the scene
-// included, fixed to the screen like a real sheet. The page is laid first in a flush, before
-// the scene is drawn (so a surface the program draws in its clear colour without depth stays
-// the program's); the grain after shading, before the ink.
+// included, fixed to the screen like a real sheet. The page goes under the scene (so a surface
+// the program draws in its clear colour without depth stays the program's: see
+// Style::keepBackground); the grain after shading, before the ink.
 class PaperStyle : public Style {
 public:
     bool init(StyleContext& ctx, std::string& error) override;
+    void keepBackground(const Scene& scene, StyleContext& ctx) override;
     void layBackground(const Scene& scene, StyleContext& ctx) override;
     void render(const Scene& scene, StyleContext& ctx) override;
     void shutdown(StyleContext& ctx) override;
@@ -31,7 +32,7 @@ private:
     struct Uniforms {
         GLint colour = -1, grainTex = -1, paperTex = -1, origin = -1, usePaperTex = -1,
               paperColour = -1, clearColour = -1, tolerance = -1, grain = -1, pass = -1,
-              grainSize = -1, paperSize = -1;
+              grainSize = -1, paperSize = -1, compare = -1;
     };
     // Whether this frame's grain already lies over the viewport (a second flush in one
     // frame must not darken the page twice); mark: and it does from now on.
@@ -41,7 +42,10 @@ private:
     void endPass(const Scene& scene, StyleContext& ctx);
     // True when this frame's page is already under the scene's viewport of its framebuffer
     // and the program cleared no colour since: the background left is paper already.
-    bool filledAlready(const Scene& scene);
+    // mark: and it is from now on.
+    bool filledAlready(const Scene& scene, bool mark);
+    // Copies what the program left in the viewport (false, said once, when it cannot).
+    bool copyBackground(const Scene& scene, StyleContext& ctx);
 
     ShaderProgram mProgram;
     Uniforms mU;
@@ -50,6 +54,10 @@ private:
     GlTexture mGrainTexture, mPaperTexture;
     TextureImage mGrainImage, mPaperImage; // uploaded at the first render()
     bool mWarnedCopy = false;
+    // keepBackground's copy of this flush (the scene's frame and viewport), not yet laid.
+    bool mKept = false;
+    uint64_t mKeptFrame = UINT64_MAX;
+    glm::ivec4 mKeptViewport{0};
     uint64_t mGrainFrame = UINT64_MAX;
     std::vector<glm::ivec4> mGrainedViewports;
     struct Filled {
