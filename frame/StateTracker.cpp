@@ -1574,14 +1574,18 @@ bool StateTracker::keep(TrackedBatch& batch)
         // Inside a list the driver draws itself (not masked by the compositor) nothing is
         // held: the style would draw it a second time over the program's own.
         batch.held = mHoldingList > 0 || (mPassingList == 0 && wouldHold(batch.mode));
-        // A blended pass over geometry already held (a shine, light or fog stage; left for
-        // its blending and asked about by the compositor, or translucent and held itself) is
-        // that object's: merged into it, not drawn or styled again. Not so an alpha-blended
-        // layer the program lifts off the surface with a polygon offset: a decal (neverball's
-        // start arrow on its floor tile), whose picture is its own.
+        // A blended pass over geometry already held (a shine, light or detail stage, left
+        // for its blending and asked about by the compositor) is that object's: merged into
+        // it, not drawn or styled again. Not so a layer blended by an alpha that is not 1
+        // everywhere (water or paint laid over the ground through a texture's alpha, a fog
+        // stage), nor one the program lifts off the surface with a polygon offset (a decal:
+        // neverball's start arrow on its floor tile): their pictures are their own, held as
+        // objects drawn over what they cover.
         const bool layer = translucent();
+        batch.texture = detailTexture();
+        const bool own = layer && !opaqueAlpha(batch);
         const bool lifted = a.polygonOffsetFill && (a.offsetFactor < 0.0f || a.offsetUnits < 0.0f);
-        if (blending() && !(layer && lifted) && repeatsHeld(batch, layer)) {
+        if (blending() && !own && !(layer && lifted) && repeatsHeld(batch, layer)) {
             if (mWatch.on) ++mWatch.repeated;
             else ++mMergedPasses;
             return false;

@@ -204,7 +204,11 @@ void StyleChain::render(const Scene& scene)
         gl.Enable(GL_BLEND);
         gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
-        if (first.depthFunc == GL_LEQUAL) gl.DepthFunc(GL_LEQUAL);
+        // A layer over a surface drawn before (water or paint through a texture's alpha)
+        // passes at its depth, as the program's test lets it.
+        if (first.depthFunc == GL_LEQUAL || first.depthFunc == GL_EQUAL) {
+            gl.DepthFunc(GL_LEQUAL);
+        }
         mStyles.front()->render(run, mContext);
     });
     mContext.meshes.endFlush(mContext.gl);

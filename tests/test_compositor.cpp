@@ -337,6 +337,40 @@ TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
     EXPECT_EQ(panelAt(false, 3), red) << "without a swap the panel is the program's";
 }
 
+// A layer blended by its texture's alpha over the very quad of the floor (a pool of water laid
+// over the ground, as cultivation draws its) is a picture of its own: drawn over the styled
+// floor, not merged into it as a light or detail stage (it was, and the pool vanished), with
+// the floor depth-tested (GL_LEQUAL) or drawn as a backdrop without the test.
+TEST(Compositor, ALayerBlendedByItsAlphaOverItsSurfaceIsDrawn)
+{
+    auto poolPixels = [](const std::string& style, bool backdrop) {
+        const std::string dir = freshDir("floor_layer");
+        std::vector<std::string> command = {demo("textured"), "--floor-layer", "--offscreen",
+                                            "--size", "320x240", "--frames", "2",
+                                            "--save-frames", "2", "--save-dir", dir};
+        if (backdrop) command.push_back("--backdrop-floor");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, command));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
+        int pool = 0; // the layer's blue (0.1, 0.35, 1), unlit
+        for (size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+            const uint8_t* p = &image.rgba[i];
+            pool += p[0] < 50 && p[1] > 70 && p[1] < 110 && p[2] > 235;
+        }
+        return pool;
+    };
+    for (bool backdrop : {false, true}) {
+        const int native = poolPixels("none", backdrop);
+        const int styled = poolPixels("toon+paper+edges", backdrop);
+        EXPECT_GT(native, 3000) << "no pool: no test";
+        EXPECT_GT(styled, native * 9 / 10)
+            << (backdrop ? "backdrop floor: " : "depth-tested floor: ") << styled << " of "
+            << native << " pool pixels";
+    }
+}
+
 // A translucent layer drawn without the depth test over an opaque backdrop drawn the same way
 // (a sky's clouds over its ground: bzflag) stays translucent: the two were one object, opaque
 // as the first, and the haze came out white over the floor (and bzflag's whole sky).

@@ -1460,18 +1460,22 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
     feed.enable(GL_CULL_FACE, true);
     EXPECT_FALSE(pass(0.0f)) << "culled: it draws other triangles than the surface";
     feed.enable(GL_CULL_FACE, false);
-    // A translucent layer is held by itself: merged, it is not kept a second time.
+    // Blended by an alpha of 1 everywhere, a pass is held, and merged without being asked.
+    // At alpha 0.5 it is a layer with a picture of its own (water or paint over the ground):
+    // held as an object of its own.
     blend(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    ASSERT_TRUE(tracker.wouldHold(GL_TRIANGLES));
+    triangle(0.0f);
+    EXPECT_EQ(tracker.mergedPasses(), 1u) << "an opaque pass over the surface was kept";
     feed.run([](CallWriter& w) {
         w.op(op::glColor4f);
         for (float c : {1.0f, 1.0f, 1.0f, 0.5f}) w.put<float>(c);
     });
-    ASSERT_TRUE(tracker.wouldHold(GL_TRIANGLES));
     triangle(0.0f);
-    EXPECT_EQ(tracker.mergedPasses(), 1u) << "merged without being asked";
+    EXPECT_EQ(tracker.mergedPasses(), 1u) << "a translucent layer merged into its surface";
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
-    EXPECT_EQ(batches.size(), 41u) << "the surface and the others, each once";
+    EXPECT_EQ(batches.size(), 42u) << "the surface, the others and the layer, each once";
     // A scene drawn (the batches taken): the same pass has nothing held to merge into.
     blend(GL_ONE, GL_ONE);
     EXPECT_FALSE(pass(0.0f));
@@ -1494,11 +1498,12 @@ TEST(StateTracker, ABlendedPassOverHeldGeometryIsMergedIntoIt)
 }
 
 // An alpha-blended layer the program lifts off its surface with a polygon offset is a decal
-// (neverball's start arrow, drawn on the very quad of its floor tile), and a layer over a
-// translucent batch is the next layer of a layered decal: their pictures are their own, kept
-// as objects, not merged as stages of what they cover. A layer over an opaque surface without
-// an offset (a fog or detail stage) still is.
-TEST(StateTracker, ADecalOnTheTrianglesOfItsSurfaceIsKeptNotMerged)
+// (neverball's start arrow, drawn on the very quad of its floor tile); one without an offset
+// whose alpha is not 1 is water or paint laid over the ground (cultivation's pools, a game's
+// item lights); a layer over a translucent batch is the next layer of a layered decal: their
+// pictures are their own, kept as objects, not merged as stages of what they cover. A pass
+// blended by an alpha of 1 everywhere changes nothing over its surface and is merged.
+TEST(StateTracker, DecalsAndLayersBlendedByTheirAlphaAreKeptNotMerged)
 {
     StateTracker tracker;
     tracker.setHolding(true);
@@ -1526,11 +1531,15 @@ TEST(StateTracker, ADecalOnTheTrianglesOfItsSurfaceIsKeptNotMerged)
     feed.triangle(); // the decal
     EXPECT_EQ(tracker.mergedPasses(), 0u) << "the decal was merged into its floor";
     feed.enable(GL_POLYGON_OFFSET_FILL, false);
-    feed.triangle(); // a stage of the floor: merged (the decal is no base for it)
+    feed.triangle(); // a layer on the floor without an offset: its own too
+    EXPECT_EQ(tracker.mergedPasses(), 0u) << "the layer was merged into its floor";
+    alpha(1.0f);
+    feed.triangle(); // an opaque stage of the floor: merged
     EXPECT_EQ(tracker.mergedPasses(), 1u);
     tracker.takeBatches(batches);
-    EXPECT_EQ(batches.size(), 2u) << "the floor and its decal";
+    EXPECT_EQ(batches.size(), 3u) << "the floor, its decal and its layer";
 
+    alpha(0.5f);
     feed.triangle(); // a translucent pane
     feed.triangle(); // a second layer on it
     EXPECT_EQ(tracker.mergedPasses(), 1u) << "a layer merged into a translucent one";

@@ -93,6 +93,29 @@ GLuint uploadHoles()
     return texture;
 }
 
+// White, opaque in a round patch and clear around it: a pool laid over the floor.
+GLuint uploadPool()
+{
+    std::vector<uint8_t> pixels(textureSize * textureSize * 4, 255);
+    for (int y = 0; y < textureSize; ++y) {
+        for (int x = 0; x < textureSize; ++x) {
+            const float dx = float(x) + 0.5f - 0.35f * textureSize;
+            const float dy = float(y) + 0.5f - 0.4f * textureSize;
+            const bool inside = dx * dx + dy * dy < 0.09f * textureSize * textureSize;
+            pixels[(y * textureSize + x) * 4 + 3] = inside ? 255 : 0;
+        }
+    }
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, textureSize, textureSize, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, pixels.data());
+    return texture;
+}
+
 GLuint uploadTexture(const std::vector<uint8_t>& pixels)
 {
     GLuint texture = 0;
@@ -188,6 +211,10 @@ public:
                  "its own (glDepthRange 0 to 0.1), so that it is in front of everything"},
                 {"inset", demo::ExtraOption::Kind::Flag,
                  "the scene again, turned, in the top right quarter (scissor and clear)"},
+                {"floor-layer", demo::ExtraOption::Kind::Flag,
+                 "the floor drawn again, unlit blue through a second texture's alpha (a round "
+                 "pool), blended by alpha at equal depth (GL_LEQUAL): water or paint a program "
+                 "lays over its ground"},
                 {"stale-panel", demo::ExtraOption::Kind::Flag,
                  "frame 1 puts a red panel in the bottom left corner with glDrawPixels; later "
                  "frames clear only depth (as engines whose world covers the screen do), so the "
@@ -216,6 +243,7 @@ public:
         translucentDecal_ = options.has("translucent-decal");
         inset_ = options.has("inset");
         stalePanel_ = options.has("stale-panel");
+        if (options.has("floor-layer")) poolTexture_ = uploadPool();
         weapon_ = options.has("weapon");
         width_ = options.width;
         height_ = options.height;
@@ -296,6 +324,32 @@ public:
         }
     }
 
+    // The floor's quad again, blue where the pool texture is opaque.
+    void drawPool()
+    {
+        glPushAttrib(GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |
+                     GL_CURRENT_BIT | GL_TEXTURE_BIT);
+        glEnable(GL_TEXTURE_2D);
+        glBindTexture(GL_TEXTURE_2D, poolTexture_);
+        glDisable(GL_LIGHTING);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_FALSE);
+        glColor4f(0.1f, 0.35f, 1.0f, 1.0f);
+        glBegin(GL_QUADS);
+        glTexCoord2f(0.0f, 0.0f);
+        glVertex3f(-3.0f, -1.0f, 3.0f);
+        glTexCoord2f(1.0f, 0.0f);
+        glVertex3f(3.0f, -1.0f, 3.0f);
+        glTexCoord2f(1.0f, 1.0f);
+        glVertex3f(3.0f, -1.0f, -3.0f);
+        glTexCoord2f(0.0f, 1.0f);
+        glVertex3f(-3.0f, -1.0f, -3.0f);
+        glEnd();
+        glPopAttrib();
+    }
+
     // 48x32 red pixels at window (4, 4), before the scene, without depth.
     void drawPanel()
     {
@@ -345,6 +399,7 @@ public:
         glTexCoord2f(0.0f, 4.0f);
         glVertex3f(-3.0f, -1.0f, -3.0f);
         glEnd();
+        if (poolTexture_) drawPool();
         if (backdropFloor_ && backdropHaze_) {
             glEnable(GL_BLEND);
             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -500,6 +555,7 @@ private:
     bool backdropFloor_ = false;
     bool backdropHaze_ = false;
     bool stalePanel_ = false;
+    GLuint poolTexture_ = 0;
     GLuint lateFloorTexture_ = 0;
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;
