@@ -117,9 +117,12 @@ NPRGL_CLEAR(glClearBufferfi, false, (GLenum buffer, GLint i, GLfloat depth, GLin
             (buffer, i, depth, stencil))
 #undef NPRGL_CLEAR
 NPRGL_DRAWING(void, glAccum, (GLenum op, GLfloat value), (op, value))
-NPRGL_BARRIER(void, glReadPixels,
-              (GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* p),
-              (x, y, w, h, format, type, p))
+void APIENTRY c_glReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
+                             GLenum type, void* p)
+{
+    C().readPixels();
+    C().next().glReadPixels(x, y, w, h, format, type, p);
+}
 NPRGL_DRAWING(void, glCopyPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum type),
               (x, y, w, h, type))
 NPRGL_DRAWING(void, glBitmap,
@@ -151,8 +154,19 @@ NPRGL_BARRIER(void, glDrawBuffers, (GLsizei n, const GLenum* bufs), (n, bufs))
 NPRGL_BARRIER(void, glViewport, (GLint x, GLint y, GLsizei w, GLsizei h), (x, y, w, h))
 // Render to texture: what is held for a framebuffer is drawn before the program changes
 // which framebuffer is bound or what it is attached to, builds mipmaps from it or blits it.
-NPRGL_BARRIER(void, glBindFramebuffer, (GLenum target, GLuint fb), (target, fb))
-NPRGL_BARRIER(void, glBindFramebufferEXT, (GLenum target, GLuint fb), (target, fb))
+// Render to texture: a framebuffer the program reads back is left as it draws it.
+void APIENTRY c_glBindFramebuffer(GLenum target, GLuint fb)
+{
+    C().barrier();
+    C().next().glBindFramebuffer(target, fb);
+    C().framebufferBound();
+}
+void APIENTRY c_glBindFramebufferEXT(GLenum target, GLuint fb)
+{
+    C().barrier();
+    C().next().glBindFramebufferEXT(target, fb);
+    C().framebufferBound();
+}
 NPRGL_DRAWING(void, glFramebufferTexture1D,
               (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l), (t, a, tt, tex, l))
 NPRGL_DRAWING(void, glFramebufferTexture2D,
@@ -513,8 +527,10 @@ void Compositor::noteLeft(const char* why)
     // Compiled only (GL_COMPILE), nothing is drawn now: the list's calls count.
     if (!why || !mTracker.is3D() || !mTracker.executing()) return;
     // The coverage style paints it red, unless the attribute stack has no room to do so. Not
-    // while a list compiles: the tint's own commands would be compiled into it.
-    mLeftNow = std::strcmp(why, "a full attribute stack") != 0 && !mTracker.compiling();
+    // while a list compiles: the tint's own commands would be compiled into it. Nor into a
+    // framebuffer read back: its colours are the program's data.
+    mLeftNow = std::strcmp(why, "a full attribute stack") != 0 &&
+               why != StateTracker::kDrawingDataWhy && !mTracker.compiling();
     mFrameCounts.noteLeft(why);
     if (!mRunCounts.noteLeft(why)) return;
     NPRGL_INFO("context %u: 3D polygons drawn with %s are left as the program draws them",
@@ -633,6 +649,7 @@ Compositor::Placement Compositor::placeList(GLuint list)
 {
     if (!ready()) return Placement::Left;
     syncStream();
+
     if (!mTracker.wouldHoldList(list)) {
         if (mHeld && mTracker.mayLayerList(list)) {
             mLayerWhy = mTracker.listUnstylable(list);
@@ -748,6 +765,38 @@ void Compositor::end()
     }
     gRealGl.glEnd();
     tintEnd();
+}
+
+void Compositor::readPixels()
+{
+    GLint framebuffer = 0;
+    if (ready()) gRealGl.glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &framebuffer);
+    // A framebuffer object the program reads back holds data (colour-coded picking, results
+    // computed by drawing), not picture: from now on what it draws there is its own, and
+    // what is held for it now is drawn unstyled before it reads.
+    if (framebuffer != 0 && !readBack(framebuffer)) {
+        mReadBack.push_back(framebuffer);
+        NPRGL_INFO("context %u: the program reads framebuffer %d back (picking, or results "
+                   "computed by drawing): what it draws there is left as it draws it",
+                   mContext.serial(), framebuffer);
+        mPlainFlush = mHeld && mHeldFramebuffer == framebuffer;
+    }
+    barrier();
+    mPlainFlush = false;
+    framebufferBound();
+}
+
+bool Compositor::readBack(GLint framebuffer) const
+{
+    return std::find(mReadBack.begin(), mReadBack.end(), framebuffer) != mReadBack.end();
+}
+
+void Compositor::framebufferBound()
+{
+    if (mReadBack.empty() || !ready()) return;
+    GLint framebuffer = 0;
+    gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    mTracker.setDrawingData(readBack(framebuffer));
 }
 
 void Compositor::barrier()
@@ -947,7 +996,7 @@ void Compositor::render()
         gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &current);
         if (current != mHeldFramebuffer) mBindFramebuffer(GL_DRAW_FRAMEBUFFER, mHeldFramebuffer);
         gRealGl.glGetFloatv(GL_COLOR_CLEAR_VALUE, glm::value_ptr(mScene.clearColor));
-        mChain.render(mScene);
+        if (!mPlainFlush || !mChain.renderPlain(mScene)) mChain.render(mScene);
         mSaved.restore();
     } else if (!mStackWarned) {
         // The tracker holds nothing while the stacks are full, so only a program that

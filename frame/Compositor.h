@@ -105,6 +105,10 @@ public:
     bool shading() const { return mShading; }
     const GlDispatch& heldNext() const { return mHeldNext; }
     void barrier();
+    // Before the program's glReadPixels (see mReadBack).
+    void readPixels();
+    // After the program bound a framebuffer: tells the tracker whether it draws data.
+    void framebufferBound();
     // A clear of the colour buffer (colour) or of others: a barrier, counted.
     void clear(bool colour);
     // The program drew into a colour buffer other than through a held draw (glDrawPixels,
@@ -199,6 +203,11 @@ private:
     styles::Scene mScene;
     uint64_t mFlushes = 0;
     uint64_t mColourClears = 0; // glClear / glClearBuffer calls that reached colour
+    // Framebuffer objects the program read back with glReadPixels: their pixels are data, so
+    // draws into them are left as drawn; the flush its first read forces is drawn unstyled.
+    std::vector<GLint> mReadBack;
+    bool mPlainFlush = false;
+    bool readBack(GLint framebuffer) const;
     // Where one framebuffer's colour holds nothing drawn since it was cleared or shown
     // (Scene::colourFresh): its window rectangle, unless something drew since.
     struct Fresh {

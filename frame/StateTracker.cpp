@@ -632,6 +632,7 @@ bool StateTracker::ownShaders() const
 
 const char* StateTracker::pipelineLimit() const
 {
+    if (mDrawingData) return kDrawingDataWhy;
     const AttribState& a = mAttrib;
     if (a.stencilTest) return "the stencil test";
     // A side's mode matters only where that side is drawn: programs set lines for the back

@@ -105,6 +105,11 @@ public:
     bool feed(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error);
     // Holding: batches the compositor holds back are marked `held`, and only those are kept.
     void setHolding(bool on) { mHolding = on; }
+    // The program draws into a framebuffer it reads back (colour-coded picking, results
+    // computed by drawing): its pixels are data, so nothing is held (the reason below).
+    void setDrawingData(bool on) { mDrawingData = on; }
+    static constexpr const char* kDrawingDataWhy =
+        "a framebuffer the program reads back (picking, results computed by drawing)";
     // Would a draw of `mode` issued now be held back? Polygonal, executed now (not only
     // compiled into a list), 3D, and drawn in plain state (GL_RENDER, filled, no blending,
     // alpha or stencil test, all colour channels written): what the styles can re-draw.
@@ -455,6 +460,7 @@ private:
     // from the state when the list is called).
     bool mListSetsColor = false, mListSetsNormal = false, mListSetsTexCoord = false;
     bool mHolding = false;
+    bool mDrawingData = false; // setDrawingData
     int mHoldingList = 0; // > 0 while a held glCallList expands
     int mPassingList = 0; // > 0 while a list the driver draws itself expands
     GLenum mRenderMode = GL_RENDER;

@@ -245,6 +245,37 @@ void StyleChain::renderAsDrawn(const Scene& part)
     });
 }
 
+bool StyleChain::renderPlain(const Scene& scene)
+{
+    const GlFunctions& gl = mContext.gl;
+    if (mPlainState == PlainState::Unbuilt) {
+        std::string error;
+        mPlainState = mPlain.init(gl, error) ? PlainState::Ready : PlainState::Failed;
+        if (mPlainState == PlainState::Failed) {
+            NPRGL_ERROR("the unstyled pass for scenes read back does not build (%s); they are "
+                        "styled",
+                        error.c_str());
+        }
+    }
+    if (mPlainState != PlainState::Ready) return false;
+    mRun.takeFrameOf(scene);
+    forEachRun(scene, [&](const Scene& run, const SceneObject& first) {
+        if (!first.depthTest && !first.depthAlways) gl.Disable(GL_DEPTH_TEST);
+        else gl.DepthFunc(first.depthAlways ? GL_ALWAYS : first.depthFunc);
+        gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
+        if (first.depthOnly) gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        if (first.translucent) {
+            gl.Enable(GL_BLEND);
+            gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        }
+        mPlain.render(run, mContext);
+        gl.Disable(GL_BLEND);
+        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    });
+    mContext.meshes.endFlush(gl);
+    return true;
+}
+
 void StyleChain::shutdown()
 {
     for (const std::unique_ptr<Style>& style : mStyles) style->shutdown(mContext);
@@ -252,6 +283,8 @@ void StyleChain::shutdown()
     mBackgrounds.clear();
     if (mGlowInkReady) mGlowInk.shutdown(mContext.gl);
     mGlowInkReady = false;
+    if (mPlainState == PlainState::Ready) mPlain.shutdown(mContext.gl);
+    mPlainState = PlainState::Unbuilt;
     if (mContext.gl.DeleteVertexArrays) {
         mContext.meshes.destroy(mContext.gl);
         mContext.gl.DeleteVertexArrays(1, &mContext.vao);

@@ -3,6 +3,7 @@
 #include "styles/Style.h"
 #include "styles/StyleSettings.h"
 #include "styles/background/GlowInk.h"
+#include "styles/shading/PlainShading.h"
 
 #include <memory>
 #include <string>
@@ -20,6 +21,9 @@ public:
     bool init(const StyleSettings& settings, GlFunctions::GetProc getProc, std::string& error);
     // Renders the scene. The caller has saved the program's state and restores it after.
     void render(const Scene& scene);
+    // Renders the scene without styles, as the program drew it (PlainShading), for a scene
+    // whose pixels the program reads back as data. False when that cannot be drawn.
+    bool renderPlain(const Scene& scene);
     void shutdown();
 
     bool hasShading() const { return mHasShading; }
@@ -44,6 +48,8 @@ private:
     bool mHasShading = false;
     GlowInk mGlowInk;
     bool mGlowInkReady = false;
+    PlainShading mPlain;
+    enum class PlainState { Unbuilt, Ready, Failed } mPlainState = PlainState::Unbuilt;
     // The object's alpha test and polygon offset, as the program drew it (a run's first).
     void applyTestAndOffset(const SceneObject& o);
     // `part`'s objects in runs of equal draw state (depth test and writes, translucency,

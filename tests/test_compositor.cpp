@@ -337,6 +337,39 @@ TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
     EXPECT_EQ(panelAt(false, 3), red) << "without a swap the panel is the program's";
 }
 
+// Colour-coded picking (dreamchess picks its squares so): the program draws ids as flat
+// colours into a framebuffer object and reads them back. Styled, they came back as paper,
+// ink and shaded bands. From the first read on the program gets the ids native gets (the
+// flush that read forces is drawn unstyled; later draws there are left), while the frame it
+// shows is still styled.
+TEST(Compositor, ColourCodedPickingReadsWhatTheProgramDrew)
+{
+    auto picks = [](const std::string& style, const std::string& dir) {
+        ProcessResult r = runProcess(
+            under({nprglCommand(), "--style", style},
+                  {demo("textured"), "--pick", "--offscreen", "--size", "320x240", "--frames",
+                   "3", "--save-frames", "3", "--save-dir", dir}));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r.out;
+    };
+    const std::string native = picks("none", freshDir("pick_none"));
+    EXPECT_NE(native.find("pick frame 3: 0 0 1 2 2 1 3 1 0 0"), std::string::npos)
+        << "the demo picks something else: no test\n"
+        << native;
+    for (const std::string style : {"toon+paper+edges", "coverage"}) {
+        const std::string dir = freshDir("pick_styled");
+        EXPECT_EQ(picks(style, dir), native) << style;
+        PngImage image;
+        std::string error;
+        ASSERT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+        // Above the scene: the page (or the coverage style's untouched background).
+        const uint8_t* p = &image.rgba[(size_t(10) * image.width + 160) * 4];
+        if (style != "coverage") {
+            EXPECT_GT(p[0], 200) << "the shown frame is not styled";
+        }
+    }
+}
+
 // A layer blended by its texture's alpha over the very quad of the floor (a pool of water laid
 // over the ground, as cultivation draws its) is a picture of its own: drawn over the styled
 // floor, not merged into it as a light or detail stage (it was, and the pool vanished), with

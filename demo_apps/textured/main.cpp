@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -215,6 +216,10 @@ public:
                  "the floor drawn again, unlit blue through a second texture's alpha (a round "
                  "pool), blended by alpha at equal depth (GL_LEQUAL): water or paint a program "
                  "lays over its ground"},
+                {"pick", demo::ExtraOption::Kind::Flag,
+                 "each frame first draws the floor, cube and sphere colour-coded (1, 2, 3 in "
+                 "red) into a framebuffer object, reads its pixels back and prints the ids "
+                 "under a row of points (mouse picking as games do it)"},
                 {"stale-panel", demo::ExtraOption::Kind::Flag,
                  "frame 1 puts a red panel in the bottom left corner with glDrawPixels; later "
                  "frames clear only depth (as engines whose world covers the screen do), so the "
@@ -247,6 +252,7 @@ public:
         weapon_ = options.has("weapon");
         width_ = options.width;
         height_ = options.height;
+        if (options.has("pick")) makePickTarget();
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -293,6 +299,7 @@ public:
         glClear(stalePanel_ && frame > 1 ? GL_DEPTH_BUFFER_BIT
                                          : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         if (stalePanel_ && frame == 1) drawPanel();
+        if (pickFbo_) pick(frame);
         if (depthPrepass_) {
             // Depth first, colour off; then the colours on equal depth.
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -322,6 +329,73 @@ public:
             drawScene(frame + 240);
             glDisable(GL_SCISSOR_TEST);
         }
+    }
+
+    void makePickTarget()
+    {
+        GLuint buffers[2];
+        glGenRenderbuffers(2, buffers);
+        glBindRenderbuffer(GL_RENDERBUFFER, buffers[0]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
+        glBindRenderbuffer(GL_RENDERBUFFER, buffers[1]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width_, height_);
+        glBindRenderbuffer(GL_RENDERBUFFER, 0);
+        glGenFramebuffers(1, &pickFbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, pickFbo_);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  buffers[0]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  buffers[1]);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            std::fprintf(stderr, "pick framebuffer incomplete\n");
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+
+    // The scene's shapes in flat id colours, read back along the middle row.
+    void pick(int frame)
+    {
+        glBindFramebuffer(GL_FRAMEBUFFER, pickFbo_);
+        glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_COLOR_BUFFER_BIT);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glDisable(GL_LIGHTING);
+        glDisable(GL_TEXTURE_2D);
+        glDisable(GL_BLEND);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glTranslatef(0.0f, -0.3f, -8.0f);
+        glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
+        glRotatef(frame * 0.5f, 0.0f, 1.0f, 0.0f);
+        glColor3ub(1, 0, 0);
+        glBegin(GL_QUADS);
+        glVertex3f(-3.0f, -1.0f, 3.0f);
+        glVertex3f(3.0f, -1.0f, 3.0f);
+        glVertex3f(3.0f, -1.0f, -3.0f);
+        glVertex3f(-3.0f, -1.0f, -3.0f);
+        glEnd();
+        glColor3ub(2, 0, 0);
+        glPushMatrix();
+        glTranslatef(-1.3f, 0.0f, 0.0f);
+        glRotatef(frame * 2.0f, 0.3f, 1.0f, 0.2f);
+        drawCube(0.8f, nullptr);
+        glPopMatrix();
+        glColor3ub(3, 0, 0);
+        glPushMatrix();
+        glTranslatef(1.3f, 0.0f, 0.0f);
+        demo::drawSphere(0.95f, 24, 32, 2.0f);
+        glPopMatrix();
+        // Ten points across the window, a third of the way up.
+        std::printf("pick frame %d:", frame);
+        for (int i = 0; i < 10; ++i) {
+            uint8_t rgba[4] = {0, 0, 0, 0};
+            glReadPixels(width_ * (2 * i + 1) / 20, height_ / 3, 1, 1, GL_RGBA,
+                         GL_UNSIGNED_BYTE, rgba);
+            std::printf(" %d", int(rgba[0]));
+        }
+        std::printf("\n");
+        glPopAttrib();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
     // The floor's quad again, blue where the pool texture is opaque.
@@ -556,6 +630,7 @@ private:
     bool backdropHaze_ = false;
     bool stalePanel_ = false;
     GLuint poolTexture_ = 0;
+    GLuint pickFbo_ = 0;
     GLuint lateFloorTexture_ = 0;
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;
