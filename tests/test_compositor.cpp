@@ -370,6 +370,33 @@ TEST(Compositor, ColourCodedPickingReadsWhatTheProgramDrew)
     }
 }
 
+// The coverage style tints what is styled, with the program's alpha test: a cut-out's holes
+// stay holes (a model's invisible cut-out quads covered scorched3d's window in grey).
+TEST(Compositor, TheCoverageStyleKeepsCutOutsHoles)
+{
+    auto frame = [](bool cutout) {
+        const std::string dir = freshDir(cutout ? "coverage_cutout" : "coverage_solid");
+        std::vector<std::string> command = {demo("textured"), "--offscreen", "--size",
+                                            "320x240", "--frames", "2", "--save-frames", "2",
+                                            "--save-dir", dir};
+        if (cutout) command.push_back("--cutout");
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", "coverage"}, command));
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
+        return image;
+    };
+    const PngImage solid = frame(false), cut = frame(true);
+    ASSERT_EQ(solid.rgba.size(), cut.rgba.size());
+    size_t differing = 0;
+    for (size_t i = 0; i + 3 < solid.rgba.size(); i += 4) {
+        differing += std::memcmp(&solid.rgba[i], &cut.rgba[i], 3) != 0;
+    }
+    // Eight holes on the cube's three visible faces: hundreds of pixels.
+    EXPECT_GT(differing, 300u) << "the cube's holes are tinted over";
+}
+
 // A layer blended by its texture's alpha over the very quad of the floor (a pool of water laid
 // over the ground, as cultivation draws its) is a picture of its own: drawn over the styled
 // floor, not merged into it as a light or detail stage (it was, and the pool vanished), with

@@ -12,6 +12,8 @@ namespace {
 const char* kFragment = R"(
 uniform vec3 lightDir;
 uniform vec3 tint;
+uniform sampler2D detail;
+uniform bool textured;
 in vec3 eyeNormal;
 in vec4 baseColor;
 in vec2 uv;
@@ -20,7 +22,9 @@ out vec4 fragColor;
 void main()
 {
     vec3 n = shadingNormal(eyeNormal);
-    fragColor = vec4(tint * (0.65 + 0.35 * max(dot(n, lightDir), 0.0)), 1.0);
+    // The program's alpha, for its alpha test: a cut-out covers only what it shows.
+    float alpha = baseColor.a * (textured ? texture(detail, uv).a : 1.0);
+    fragColor = vec4(tint * (0.65 + 0.35 * max(dot(n, lightDir), 0.0)), alpha);
 }
 )";
 
@@ -61,6 +65,7 @@ bool CoverageStyle::init(StyleContext& ctx, std::string& error)
     }
     mU.find(ctx.gl, mProgram.id());
     mTint = mProgram.uniform(ctx.gl, "tint");
+    mTextured = mProgram.uniform(ctx.gl, "textured");
     return true;
 }
 
@@ -72,9 +77,8 @@ void CoverageStyle::render(const Scene& scene, StyleContext& ctx)
         mU.set(gl, object);
         const glm::vec3 c = colourOf(object.id);
         gl.Uniform3f(mTint, c.r, c.g, c.b);
-        if (!FaceCulling::begin(gl, object)) continue;
-        ctx.meshes.draw(gl, *object.mesh);
-        FaceCulling::end(gl, object);
+        gl.Uniform1i(mTextured, object.textured() ? 1 : 0);
+        ShadingCommon::draw(ctx, object, mU, object.textured());
     }
 }
 

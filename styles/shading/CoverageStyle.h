@@ -25,6 +25,7 @@ private:
     ShaderProgram mProgram;
     ShadingCommon::ObjectUniforms mU;
     GLint mTint = -1;
+    GLint mTextured = -1;
 };
 
 } // namespace nprgl::styles
