@@ -65,6 +65,20 @@ std::vector<uint8_t> makeStripes()
     return pixels;
 }
 
+// An RGBA image of textureSize squared, nearest-filtered (cut-outs keep sharp edges).
+GLuint uploadRgba(const std::vector<uint8_t>& pixels)
+{
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, textureSize, textureSize, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, pixels.data());
+    return texture;
+}
+
 // Red and white checks with a round hole (alpha 0) in the middle of each of 2 x 2 cells.
 GLuint uploadHoles()
 {
@@ -83,15 +97,7 @@ GLuint uploadHoles()
             p[3] = hole ? 0 : 255;
         }
     }
-    GLuint texture = 0;
-    glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, textureSize, textureSize, 0, GL_RGBA,
-                 GL_UNSIGNED_BYTE, pixels.data());
-    return texture;
+    return uploadRgba(pixels);
 }
 
 // White, opaque in a round patch and clear around it: a pool laid over the floor.
@@ -106,15 +112,7 @@ GLuint uploadPool()
             pixels[(y * textureSize + x) * 4 + 3] = inside ? 255 : 0;
         }
     }
-    GLuint texture = 0;
-    glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, textureSize, textureSize, 0, GL_RGBA,
-                 GL_UNSIGNED_BYTE, pixels.data());
-    return texture;
+    return uploadRgba(pixels);
 }
 
 GLuint uploadTexture(const std::vector<uint8_t>& pixels)
@@ -133,6 +131,21 @@ GLuint uploadTexture(const std::vector<uint8_t>& pixels)
 }
 
 // With `faceTextures`, each face binds its own texture (outside glBegin/glEnd, as GL wants).
+// The floor: a 6 x 6 quad at y = -1, its texture repeated `repeat` times each way.
+void drawFloorQuad(float repeat)
+{
+    glBegin(GL_QUADS);
+    glTexCoord2f(0.0f, 0.0f);
+    glVertex3f(-3.0f, -1.0f, 3.0f);
+    glTexCoord2f(repeat, 0.0f);
+    glVertex3f(3.0f, -1.0f, 3.0f);
+    glTexCoord2f(repeat, repeat);
+    glVertex3f(3.0f, -1.0f, -3.0f);
+    glTexCoord2f(0.0f, repeat);
+    glVertex3f(-3.0f, -1.0f, -3.0f);
+    glEnd();
+}
+
 void drawCube(float half, const GLuint* faceTextures = nullptr)
 {
     // Each face: normal, then the in-face s and t axes.
@@ -368,12 +381,7 @@ public:
         glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
         glRotatef(frame * 0.5f, 0.0f, 1.0f, 0.0f);
         glColor3ub(1, 0, 0);
-        glBegin(GL_QUADS);
-        glVertex3f(-3.0f, -1.0f, 3.0f);
-        glVertex3f(3.0f, -1.0f, 3.0f);
-        glVertex3f(3.0f, -1.0f, -3.0f);
-        glVertex3f(-3.0f, -1.0f, -3.0f);
-        glEnd();
+        drawFloorQuad(1.0f);
         glColor3ub(2, 0, 0);
         glPushMatrix();
         glTranslatef(-1.3f, 0.0f, 0.0f);
@@ -411,16 +419,7 @@ public:
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
         glColor4f(0.1f, 0.35f, 1.0f, 1.0f);
-        glBegin(GL_QUADS);
-        glTexCoord2f(0.0f, 0.0f);
-        glVertex3f(-3.0f, -1.0f, 3.0f);
-        glTexCoord2f(1.0f, 0.0f);
-        glVertex3f(3.0f, -1.0f, 3.0f);
-        glTexCoord2f(1.0f, 1.0f);
-        glVertex3f(3.0f, -1.0f, -3.0f);
-        glTexCoord2f(0.0f, 1.0f);
-        glVertex3f(-3.0f, -1.0f, -3.0f);
-        glEnd();
+        drawFloorQuad(1.0f);
         glPopAttrib();
     }
 
@@ -463,16 +462,7 @@ public:
             glDisable(GL_TEXTURE_2D);
             glColor3f(0.15f, 0.15f, 0.18f); // the clear colour
         }
-        glBegin(GL_QUADS);
-        glTexCoord2f(0.0f, 0.0f);
-        glVertex3f(-3.0f, -1.0f, 3.0f);
-        glTexCoord2f(4.0f, 0.0f);
-        glVertex3f(3.0f, -1.0f, 3.0f);
-        glTexCoord2f(4.0f, 4.0f);
-        glVertex3f(3.0f, -1.0f, -3.0f);
-        glTexCoord2f(0.0f, 4.0f);
-        glVertex3f(-3.0f, -1.0f, -3.0f);
-        glEnd();
+        drawFloorQuad(4.0f);
         if (poolTexture_) drawPool();
         if (backdropFloor_ && backdropHaze_) {
             glEnable(GL_BLEND);
