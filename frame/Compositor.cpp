@@ -530,7 +530,7 @@ void Compositor::noteLeft(const char* why)
     // while a list compiles: the tint's own commands would be compiled into it. Nor into a
     // framebuffer read back: its colours are the program's data.
     mLeftNow = std::strcmp(why, "a full attribute stack") != 0 &&
-               why != StateTracker::kDrawingDataWhy && !mTracker.compiling();
+               std::strcmp(why, StateTracker::kDrawingDataWhy) != 0 && !mTracker.compiling();
     mFrameCounts.noteLeft(why);
     if (!mRunCounts.noteLeft(why)) return;
     NPRGL_INFO("context %u: 3D polygons drawn with %s are left as the program draws them",
@@ -807,17 +807,25 @@ void Compositor::barrier()
 void Compositor::clear(bool colour)
 {
     barrier();
-    if (!colour) return;
-    ++mColourClears;
-    // A clear of every channel makes its rectangle fresh; a partial one draws nothing, and
-    // what it clears is background either way.
-    if (!ready() || !mTracker.colourMaskAll()) return;
+    if (!colour || !ready()) return;
     GLint framebuffer = 0;
     gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    ++colourClearsOf(framebuffer);
+    // A clear of every channel makes its rectangle fresh; a partial one draws nothing, and
+    // what it clears is background either way.
+    if (!mTracker.colourMaskAll()) return;
     constexpr int kAll = 1 << 30;
     mFresh.drawn = false;
     mFresh.framebuffer = framebuffer;
     mFresh.rect = mTracker.scissorTest() ? mTracker.scissor() : glm::ivec4(0, 0, kAll, kAll);
+}
+
+uint64_t& Compositor::colourClearsOf(GLint framebuffer)
+{
+    for (auto& [name, clears] : mColourClears) {
+        if (name == framebuffer) return clears;
+    }
+    return mColourClears.emplace_back(framebuffer, 0).second;
 }
 
 void Compositor::backBufferShown()
@@ -952,7 +960,7 @@ void Compositor::buildScene()
     mScene.scissored = mHeldScissorTest;
     mScene.scissor = mHeldScissor;
     mScene.depthRange = mHeldDepthRange;
-    mScene.colourClears = mColourClears;
+    mScene.colourClears = colourClearsOf(mHeldFramebuffer);
     // Fresh when the cleared (or shown) rectangle holds the scene's viewport, as confined.
     const glm::ivec4 area = mScene.confined(mScene.viewport);
     const glm::ivec4& fresh = mFresh.rect;

@@ -202,7 +202,11 @@ private:
     reconstruct::Reconstructor mReconstructor;
     styles::Scene mScene;
     uint64_t mFlushes = 0;
-    uint64_t mColourClears = 0; // glClear / glClearBuffer calls that reached colour
+    // Per framebuffer, the glClear / glClearBuffer calls that reached its colour (another
+    // framebuffer's clear makes no new background here: dreamchess clears its picking
+    // target, and its scene's page was laid again over its black sky).
+    std::vector<std::pair<GLint, uint64_t>> mColourClears;
+    uint64_t& colourClearsOf(GLint framebuffer);
     // Framebuffer objects the program read back with glReadPixels: their pixels are data, so
     // draws into them are left as drawn; the flush its first read forces is drawn unstyled.
     std::vector<GLint> mReadBack;

@@ -431,6 +431,29 @@ TEST(Compositor, ALayerBlendedByItsAlphaOverItsSurfaceIsDrawn)
     }
 }
 
+// The page is laid once per framebuffer until that framebuffer's colour is cleared again:
+// a clear of another one (the picking target between the scene and the weapon) is no new
+// background here. It was taken for one, and the weapon's flush laid the page again over the
+// backdrop floor drawn in the clear colour (dreamchess: over the black of its sky).
+TEST(Compositor, AnotherFramebuffersClearMakesNoNewBackground)
+{
+    const std::string dir = freshDir("other_clear");
+    ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"},
+                                       {demo("textured"), "--backdrop-floor", "--pick",
+                                        "--weapon", "--offscreen", "--size", "320x240",
+                                        "--frames", "2", "--save-frames", "2", "--save-dir",
+                                        dir}));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    PngImage image;
+    std::string error;
+    ASSERT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
+    auto at = [&](int x, int y) { return &image.rgba[(size_t(y) * image.width + x) * 4]; };
+    // The floor near the bottom, in the clear colour (0.15, 0.15, 0.18); the page above.
+    EXPECT_NEAR(at(160, 220)[0], 38, 6) << "the page was laid over the floor";
+    EXPECT_NEAR(at(160, 220)[2], 46, 6) << "the page was laid over the floor";
+    EXPECT_GT(at(160, 10)[0], 200) << "no page above the scene";
+}
+
 // A translucent layer drawn without the depth test over an opaque backdrop drawn the same way
 // (a sky's clouds over its ground: bzflag) stays translucent: the two were one object, opaque
 // as the first, and the haze came out white over the floor (and bzflag's whole sky).

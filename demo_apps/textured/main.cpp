@@ -230,9 +230,10 @@ public:
                  "pool), blended by alpha at equal depth (GL_LEQUAL): water or paint a program "
                  "lays over its ground"},
                 {"pick", demo::ExtraOption::Kind::Flag,
-                 "each frame first draws the floor, cube and sphere colour-coded (1, 2, 3 in "
-                 "red) into a framebuffer object, reads its pixels back and prints the ids "
-                 "under a row of points (mouse picking as games do it)"},
+                 "after the scene (before --weapon), draws the floor, cube and sphere "
+                 "colour-coded (1, 2, 3 in red) into a framebuffer object, reads its pixels "
+                 "back and prints the ids under a row of points (mouse picking as games do "
+                 "it)"},
                 {"stale-panel", demo::ExtraOption::Kind::Flag,
                  "frame 1 puts a red panel in the bottom left corner with glDrawPixels; later "
                  "frames clear only depth (as engines whose world covers the screen do), so the "
@@ -312,7 +313,6 @@ public:
         glClear(stalePanel_ && frame > 1 ? GL_DEPTH_BUFFER_BIT
                                          : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         if (stalePanel_ && frame == 1) drawPanel();
-        if (pickFbo_) pick(frame);
         if (depthPrepass_) {
             // Depth first, colour off; then the colours on equal depth.
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -324,6 +324,8 @@ public:
             return;
         }
         drawScene(frame);
+        // Between the scene and the weapon: another framebuffer's colour is cleared.
+        if (pickFbo_) pick(frame);
         if (weapon_) {
             // As engines draw their weapon: whatever its distance, in front of the world.
             glDepthRange(0.0, 0.1);
