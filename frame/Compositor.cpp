@@ -1004,7 +1004,10 @@ void Compositor::render()
         gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &current);
         if (current != mHeldFramebuffer) mBindFramebuffer(GL_DRAW_FRAMEBUFFER, mHeldFramebuffer);
         gRealGl.glGetFloatv(GL_COLOR_CLEAR_VALUE, glm::value_ptr(mScene.clearColor));
-        if (!mPlainFlush || !mChain.renderPlain(mScene)) mChain.render(mScene);
+        // A scene read back is drawn as the program drew it: without a shading style the
+        // program's own draws are there already, and no style goes over them.
+        if (!mPlainFlush) mChain.render(mScene);
+        else if (mShading && !mChain.renderPlain(mScene)) mChain.render(mScene);
         mSaved.restore();
     } else if (!mStackWarned) {
         // The tracker holds nothing while the stacks are full, so only a program that

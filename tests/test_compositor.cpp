@@ -356,7 +356,8 @@ TEST(Compositor, ColourCodedPickingReadsWhatTheProgramDrew)
     EXPECT_NE(native.find("pick frame 3: 0 0 1 2 2 1 3 1 0 0"), std::string::npos)
         << "the demo picks something else: no test\n"
         << native;
-    for (const std::string style : {"toon+paper+edges", "coverage"}) {
+    // The last: a chain without a shading style, where the program draws its objects.
+    for (const std::string style : {"toon+paper+edges", "coverage", "paper+edges"}) {
         const std::string dir = freshDir("pick_styled");
         EXPECT_EQ(picks(style, dir), native) << style;
         PngImage image;
