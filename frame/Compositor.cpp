@@ -153,8 +153,8 @@ NPRGL_BARRIER(void, glDrawBuffer, (GLenum mode), (mode))
 NPRGL_BARRIER(void, glDrawBuffers, (GLsizei n, const GLenum* bufs), (n, bufs))
 NPRGL_BARRIER(void, glViewport, (GLint x, GLint y, GLsizei w, GLsizei h), (x, y, w, h))
 // Render to texture: what is held for a framebuffer is drawn before the program changes
-// which framebuffer is bound or what it is attached to, builds mipmaps from it or blits it.
-// Render to texture: a framebuffer the program reads back is left as it draws it.
+// which framebuffer is bound or what it is attached to, builds mipmaps from it or blits it;
+// a binding also tells the tracker whether the program now draws data (framebufferBound).
 void APIENTRY c_glBindFramebuffer(GLenum target, GLuint fb)
 {
     C().barrier();
@@ -649,7 +649,6 @@ Compositor::Placement Compositor::placeList(GLuint list)
 {
     if (!ready()) return Placement::Left;
     syncStream();
-
     if (!mTracker.wouldHoldList(list)) {
         if (mHeld && mTracker.mayLayerList(list)) {
             mLayerWhy = mTracker.listUnstylable(list);

@@ -185,11 +185,13 @@ void StyleChain::render(const Scene& scene)
             mStyles[i]->render(run, mContext);
         });
     }
-    // Under the translucent objects and marks even when the flush has no opaque scene.
-    for (size_t i : mBackgrounds) {
-        if (!layLater) break;
-        setBaseline(scene, false);
-        mStyles[i]->layBackground(scene, mContext);
+    // Under the translucent objects and marks even when the flush has no opaque scene (laid
+    // already otherwise: a second call does nothing).
+    if (layLater) {
+        for (size_t i : mBackgrounds) {
+            setBaseline(scene, false);
+            mStyles[i]->layBackground(scene, mContext);
+        }
     }
     renderAsDrawn(mOnTop);
     if (!mDepthOnly.objects.empty()) {
