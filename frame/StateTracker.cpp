@@ -848,6 +848,48 @@ int StateTracker::lightUnit() const
     return -1;
 }
 
+void StateTracker::pushAttrib(GLbitfield mask)
+{
+    const size_t depth = mAttribs.depth();
+    mAttribs.push(mask);
+    if (mAttribs.depth() == depth) return; // the driver's overflow: nothing saved
+    SavedCurrent s;
+    s.mask = mask;
+    s.boundTexture = mBoundTexture;
+    s.unitTextures = mUnitTextures;
+    s.unitCubeTextures = mUnitCubeTextures;
+    s.activeUnit = mActiveUnit;
+    s.color = mCurrent.color;
+    s.normal = mCurrent.normal;
+    s.hasNormal = mCurrent.hasNormal;
+    s.texcoords = mUnitTexcoords;
+    s.texcoords[size_t(mSurfaceUnit)] = mCurrent.texcoord;
+    mSavedCurrent.push_back(s);
+}
+
+void StateTracker::popAttrib()
+{
+    const size_t depth = mAttribs.depth();
+    mAttribs.pop();
+    if (mAttribs.depth() == depth || mSavedCurrent.empty()) return;
+    const SavedCurrent s = mSavedCurrent.back();
+    mSavedCurrent.pop_back();
+    if (s.mask & GL_TEXTURE_BIT) {
+        mBoundTexture = s.boundTexture;
+        mUnitTextures = s.unitTextures;
+        mUnitCubeTextures = s.unitCubeTextures;
+        mActiveUnit = s.activeUnit;
+    }
+    if (s.mask & GL_CURRENT_BIT) {
+        mCurrent.color = s.color;
+        mCurrent.normal = s.normal;
+        mCurrent.hasNormal = s.hasNormal;
+        mUnitTexcoords = s.texcoords;
+        mCurrent.texcoord = mUnitTexcoords[size_t(mSurfaceUnit)];
+        if (mLightUnit >= 0) mCurrent.lightcoord = mUnitTexcoords[size_t(mLightUnit)];
+    }
+}
+
 void StateTracker::followSurfaceUnit()
 {
     const int u = std::max(surfaceUnit(), 0);

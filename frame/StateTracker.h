@@ -313,8 +313,8 @@ public:
         mAttrib.colorMaskAll = r && g && b && a;
         mAttrib.colorMaskNone = !r && !g && !b;
     }
-    void pushAttrib(GLbitfield mask) { mAttribs.push(mask); }
-    void popAttrib() { mAttribs.pop(); }
+    void pushAttrib(GLbitfield mask);
+    void popAttrib();
     void pushClientAttrib();
     void popClientAttrib();
     void otherDraw(); // a bitmap, pixel rectangle, line or point: never held
@@ -456,6 +456,20 @@ private:
     LeaveRules mRules;
     size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;
+    // What glPushAttrib saves beside AttribState: GL_TEXTURE_BIT's bindings and active unit,
+    // GL_CURRENT_BIT's colour, normal and every unit's coordinates (a program that binds or
+    // sets them inside a push finds the old ones after the pop, and so does the tracker).
+    struct SavedCurrent {
+        GLbitfield mask = 0;
+        GLuint boundTexture = 0;
+        std::array<GLuint, 8> unitTextures{}, unitCubeTextures{};
+        int activeUnit = 0;
+        glm::vec4 color{1.0f};
+        glm::vec3 normal{0.0f, 0.0f, 1.0f};
+        bool hasNormal = false;
+        std::array<glm::vec2, 8> texcoords{};
+    };
+    std::vector<SavedCurrent> mSavedCurrent;
     // While a list compiles: which current attributes the list sets itself (the others come
     // from the state when the list is called).
     bool mListSetsColor = false, mListSetsNormal = false, mListSetsTexCoord = false;

@@ -1573,3 +1573,50 @@ TEST(StateTracker, AListCallingItselfOverAndOverIsFollowedOnlySoFar)
     tracker.takeBatches(batches);
     EXPECT_EQ(batches.size(), 1u);
 }
+
+// glPopAttrib gives back what its groups saved beyond the enables: GL_TEXTURE_BIT each
+// unit's binding and the active unit, GL_CURRENT_BIT the colour and every unit's
+// coordinates. scorched3d binds and sets inside a push of all groups; the tracker kept the
+// later values, and drew its tank previews' squares with a texture they did not have.
+TEST(StateTracker, PopAttribRestoresBindingsAndCurrentAttributes)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto bind = [&](GLuint texture) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(texture);
+        });
+    };
+    auto colour = [&](float r) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glColor4f);
+            for (float c : {r, 0.5f, 0.5f, 1.0f}) w.put<float>(c);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true);
+    bind(5);
+    colour(0.25f);
+    feed.run([](CallWriter& w) {
+        w.op(op::glPushAttrib);
+        w.put<GLbitfield>(GL_TEXTURE_BIT | GL_CURRENT_BIT);
+    });
+    feed.activeTexture(GL_TEXTURE1);
+    feed.activeTexture(GL_TEXTURE0);
+    bind(9);
+    colour(0.75f);
+    feed.triangle(); // inside: texture 9, red 0.75
+    feed.run([](CallWriter& w) { w.op(op::glPopAttrib); });
+    feed.triangle(); // after: texture 5, red 0.25 again
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 2u);
+    EXPECT_EQ(batches[0].texture, 9u);
+    EXPECT_EQ(batches[1].texture, 5u) << "the binding inside the push outlived its pop";
+    ASSERT_FALSE(batches[1].vertices.empty());
+    EXPECT_FLOAT_EQ(batches[1].vertices[0].color.r, 0.25f)
+        << "the colour inside the push outlived its pop";
+}
