@@ -1613,6 +1613,12 @@ bool StateTracker::keep(TrackedBatch& batch)
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
     batch.culled = culledWinding();
+    batch.texture = detailTexture();
+    // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
+    // drawing (neverball does), and such surfaces are opaque ones (with outlines); so does a
+    // pass over a held surface (merged below).
+    const bool blends = translucent();
+    const bool opaque = (blends || a.alphaTest) && opaqueAlpha(batch);
     if (mHolding) {
         // Inside a list the driver draws itself (not masked by the compositor) nothing is
         // held: the style would draw it a second time over the program's own.
@@ -1624,11 +1630,9 @@ bool StateTracker::keep(TrackedBatch& batch)
         // stage), nor one the program lifts off the surface with a polygon offset (a decal:
         // neverball's start arrow on its floor tile): their pictures are their own, held as
         // objects drawn over what they cover.
-        const bool layer = translucent();
-        batch.texture = detailTexture();
-        const bool own = layer && !opaqueAlpha(batch);
+        const bool own = blends && !opaque;
         const bool lifted = a.polygonOffsetFill && (a.offsetFactor < 0.0f || a.offsetUnits < 0.0f);
-        if (blending() && !own && !(layer && lifted) && repeatsHeld(batch, layer)) {
+        if (blending() && !own && !(blends && lifted) && repeatsHeld(batch, blends)) {
             if (mWatch.on) ++mWatch.repeated;
             else ++mMergedPasses;
             return false;
@@ -1638,7 +1642,6 @@ bool StateTracker::keep(TrackedBatch& batch)
     }
     if (a.lighting) litBy(batch.lights);
     else batch.lights.count = 0;
-    batch.texture = detailTexture();
     if (batch.texture == 0) {
         batch.generated = generatedTexture();
         bakeObjectLinear(batch);
@@ -1646,10 +1649,6 @@ bool StateTracker::keep(TrackedBatch& batch)
     // Without GL lighting a lightmap is the surface's light (the styles' L·n).
     batch.lightmap = mLightUnit >= 0 && !a.lighting ? unitTexture(mLightUnit) : 0;
     layerEffects(batch);
-    // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
-    // drawing (neverball does), and such surfaces are opaque ones (with outlines).
-    const bool blends = translucent();
-    const bool opaque = (blends || a.alphaTest) && opaqueAlpha(batch);
     batch.translucent = blends && !opaque;
     batch.depthWrite = a.depthMask;
     // A test at GL_ALWAYS hides nothing: drawn as without the test, but it writes its depth

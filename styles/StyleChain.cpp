@@ -229,21 +229,26 @@ void StyleChain::applyTestAndOffset(const SceneObject& o)
     }
 }
 
+void StyleChain::setDrawnState(const SceneObject& first, GLenum testedFunc)
+{
+    const GlFunctions& gl = mContext.gl;
+    if (first.depthTest) gl.DepthFunc(testedFunc);
+    else if (first.depthAlways) gl.DepthFunc(GL_ALWAYS);
+    else gl.Disable(GL_DEPTH_TEST);
+    gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
+    if (first.translucent) {
+        gl.Enable(GL_BLEND);
+        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    }
+}
+
 void StyleChain::renderAsDrawn(const Scene& part)
 {
     // Translucent text and sprites are drawn over the scene without the depth test.
-    const GlFunctions& gl = mContext.gl;
     forEachRun(part, [&](const Scene& run, const SceneObject& first) {
-        if (first.depthTest) gl.DepthFunc(GL_LEQUAL);
-        else if (first.depthAlways) gl.DepthFunc(GL_ALWAYS);
-        else gl.Disable(GL_DEPTH_TEST);
-        gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
-        if (first.translucent) {
-            gl.Enable(GL_BLEND);
-            gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        }
+        setDrawnState(first, GL_LEQUAL);
         mStyles.front()->render(run, mContext);
-        if (first.translucent) gl.Disable(GL_BLEND);
+        mContext.gl.Disable(GL_BLEND);
     });
 }
 
@@ -262,14 +267,8 @@ bool StyleChain::renderPlain(const Scene& scene)
     if (mPlainState != PlainState::Ready) return false;
     mRun.takeFrameOf(scene);
     forEachRun(scene, [&](const Scene& run, const SceneObject& first) {
-        if (!first.depthTest && !first.depthAlways) gl.Disable(GL_DEPTH_TEST);
-        else gl.DepthFunc(first.depthAlways ? GL_ALWAYS : first.depthFunc);
-        gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
+        setDrawnState(first, first.depthFunc);
         if (first.depthOnly) gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        if (first.translucent) {
-            gl.Enable(GL_BLEND);
-            gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        }
         mPlain.render(run, mContext);
         gl.Disable(GL_BLEND);
         gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

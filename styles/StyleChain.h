@@ -57,6 +57,9 @@ private:
     // draw(mRun, first) sets the rest and renders; test and offset are undone after.
     template <typename Draw>
     void forEachRun(const Scene& part, Draw&& draw);
+    // The depth test (depth-tested objects by `testedFunc`), depth writes and blending a run
+    // is drawn with as the program drew it; the caller disables blending after.
+    void setDrawnState(const SceneObject& first, GLenum testedFunc);
     // The shading style alone draws `part`'s objects with the program's depth test, depth
     // writes and blending.
     void renderAsDrawn(const Scene& part);

@@ -98,6 +98,15 @@ std::string demoFrame(const std::string& app, const std::string& name,
     return dir + "/" + app + "_3.png";
 }
 
+// The PNG at `path` (empty, with the failure reported, when it cannot be read).
+PngImage readPng(const std::string& path)
+{
+    PngImage image;
+    std::string error;
+    EXPECT_TRUE(PngImage::read(path, image, error)) << error;
+    return image;
+}
+
 } // namespace
 
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
@@ -311,7 +320,8 @@ TEST(Compositor, ABackdropInTheClearColourStaysOnThePage)
 // swap, they are still the program's and stay.
 TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
 {
-    auto panelAt = [](bool window, int frame) {
+    // Frames 1 and 3 of one run; returns the directory they are in.
+    auto run = [](bool window) {
         const std::string dir = freshDir(window ? "stale_panel_glx" : "stale_panel_osmesa");
         std::vector<std::string> command = {demo("textured"), "--stale-panel", "--size",
                                             "320x240", "--frames", "3", "--save-frames", "1,3",
@@ -319,22 +329,22 @@ TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
         if (!window) command.push_back("--offscreen");
         ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"}, command));
         EXPECT_EQ(r.exitCode, 0) << r.err;
-        PngImage image;
-        std::string error;
-        EXPECT_TRUE(PngImage::read(dir + "/textured_" + std::to_string(frame) + ".png", image,
-                                   error))
-            << error;
-        // Window (8, 10): the panel's corner, left of the floor.
-        const size_t at = image.rgba.empty() ? 0 : (size_t(229) * image.width + 8) * 4;
+        return dir;
+    };
+    auto panelAt = [](const std::string& dir, int frame) {
+        const PngImage image = readPng(dir + "/textured_" + std::to_string(frame) + ".png");
         if (image.rgba.empty()) return std::array<int, 3>{-1, -1, -1};
+        // Window (8, 10): the panel's corner, left of the floor.
+        const size_t at = (size_t(229) * image.width + 8) * 4;
         return std::array<int, 3>{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2]};
     };
     const std::array<int, 3> red{255, 0, 0};
-    EXPECT_EQ(panelAt(true, 1), red) << "the frame's own panel became page";
-    const std::array<int, 3> shown = panelAt(true, 3);
+    const std::string window = run(true);
+    EXPECT_EQ(panelAt(window, 1), red) << "the frame's own panel became page";
+    const std::array<int, 3> shown = panelAt(window, 3);
     EXPECT_GT(shown[1], 200) << "the last frame's panel is still there, not page";
     EXPECT_GT(shown[2], 190) << "the last frame's panel is still there, not page";
-    EXPECT_EQ(panelAt(false, 3), red) << "without a swap the panel is the program's";
+    EXPECT_EQ(panelAt(run(false), 3), red) << "without a swap the panel is the program's";
 }
 
 // Colour-coded picking (dreamchess picks its squares so): the program draws ids as flat
@@ -360,9 +370,8 @@ TEST(Compositor, ColourCodedPickingReadsWhatTheProgramDrew)
     for (const std::string style : {"toon+paper+edges", "coverage", "paper+edges"}) {
         const std::string dir = freshDir("pick_styled");
         EXPECT_EQ(picks(style, dir), native) << style;
-        PngImage image;
-        std::string error;
-        ASSERT_TRUE(PngImage::read(dir + "/textured_3.png", image, error)) << error;
+        const PngImage image = readPng(dir + "/textured_3.png");
+        ASSERT_FALSE(image.rgba.empty());
         // Above the scene: the page (or the coverage style's untouched background).
         const uint8_t* p = &image.rgba[(size_t(10) * image.width + 160) * 4];
         if (style != "coverage") {
@@ -375,27 +384,13 @@ TEST(Compositor, ColourCodedPickingReadsWhatTheProgramDrew)
 // stay holes (a model's invisible cut-out quads covered scorched3d's window in grey).
 TEST(Compositor, TheCoverageStyleKeepsCutOutsHoles)
 {
-    auto frame = [](bool cutout) {
-        const std::string dir = freshDir(cutout ? "coverage_cutout" : "coverage_solid");
-        std::vector<std::string> command = {demo("textured"), "--offscreen", "--size",
-                                            "320x240", "--frames", "2", "--save-frames", "2",
-                                            "--save-dir", dir};
-        if (cutout) command.push_back("--cutout");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", "coverage"}, command));
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        PngImage image;
-        std::string error;
-        EXPECT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
-        return image;
-    };
-    const PngImage solid = frame(false), cut = frame(true);
-    ASSERT_EQ(solid.rgba.size(), cut.rgba.size());
-    size_t differing = 0;
-    for (size_t i = 0; i + 3 < solid.rgba.size(); i += 4) {
-        differing += std::memcmp(&solid.rgba[i], &cut.rgba[i], 3) != 0;
-    }
+    const ImageDiff diff =
+        compareImages(demoFrame("textured", "coverage_solid", {"--style", "coverage"}, {}),
+                      demoFrame("textured", "coverage_cutout", {"--style", "coverage"},
+                                {"--cutout"}));
+    ASSERT_TRUE(diff.comparable) << diff.error;
     // Eight holes on the cube's three visible faces: hundreds of pixels.
-    EXPECT_GT(differing, 300u) << "the cube's holes are tinted over";
+    EXPECT_GT(diff.differingPixels, 300u) << "the cube's holes are tinted over";
 }
 
 // A layer blended by its texture's alpha over the very quad of the floor (a pool of water laid
@@ -405,16 +400,10 @@ TEST(Compositor, TheCoverageStyleKeepsCutOutsHoles)
 TEST(Compositor, ALayerBlendedByItsAlphaOverItsSurfaceIsDrawn)
 {
     auto poolPixels = [](const std::string& style, bool backdrop) {
-        const std::string dir = freshDir("floor_layer");
-        std::vector<std::string> command = {demo("textured"), "--floor-layer", "--offscreen",
-                                            "--size", "320x240", "--frames", "2",
-                                            "--save-frames", "2", "--save-dir", dir};
-        if (backdrop) command.push_back("--backdrop-floor");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, command));
-        EXPECT_EQ(r.exitCode, 0) << r.err;
-        PngImage image;
-        std::string error;
-        EXPECT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
+        std::vector<std::string> extra = {"--floor-layer"};
+        if (backdrop) extra.push_back("--backdrop-floor");
+        const PngImage image =
+            readPng(demoFrame("textured", "floor_layer", {"--style", style}, extra));
         int pool = 0; // the layer's blue (0.1, 0.35, 1), unlit
         for (size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
             const uint8_t* p = &image.rgba[i];
@@ -438,16 +427,10 @@ TEST(Compositor, ALayerBlendedByItsAlphaOverItsSurfaceIsDrawn)
 // backdrop floor drawn in the clear colour (dreamchess: over the black of its sky).
 TEST(Compositor, AnotherFramebuffersClearMakesNoNewBackground)
 {
-    const std::string dir = freshDir("other_clear");
-    ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"},
-                                       {demo("textured"), "--backdrop-floor", "--pick",
-                                        "--weapon", "--offscreen", "--size", "320x240",
-                                        "--frames", "2", "--save-frames", "2", "--save-dir",
-                                        dir}));
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    PngImage image;
-    std::string error;
-    ASSERT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
+    const PngImage image = readPng(demoFrame("textured", "other_clear",
+                                             {"--style", "toon+paper"},
+                                             {"--backdrop-floor", "--pick", "--weapon"}));
+    ASSERT_FALSE(image.rgba.empty());
     auto at = [&](int x, int y) { return &image.rgba[(size_t(y) * image.width + x) * 4]; };
     // The floor near the bottom, in the clear colour (0.15, 0.15, 0.18); the page above.
     EXPECT_NEAR(at(160, 220)[0], 38, 6) << "the page was laid over the floor";

@@ -62,6 +62,15 @@ void writeTriangle(CallWriter& w, float z = -2.0f)
     w.op(op::glEnd);
 }
 
+// Ends the frame `w` holds (frame 1) and runs it through `tracker`.
+void runOneFrame(CallWriter& w, StateTracker& tracker)
+{
+    w.op(op::kFrameEnd);
+    w.put<uint64_t>(1);
+    std::string error;
+    ASSERT_TRUE(tracker.runFrame(w.data(), w.size(), nullptr, error)) << error;
+}
+
 } // namespace
 
 TEST(StateTracker, GlxgearsDrawsThreeGearsFromItsDisplayLists)
@@ -178,11 +187,8 @@ TEST(StateTracker, TheFirstNormalInsideABatchCountsForItsEarlierVertices)
         for (float c : positions[i]) w.put<float>(c);
     }
     w.op(op::glEnd);
-    w.op(op::kFrameEnd);
-    w.put<uint64_t>(1);
     StateTracker tracker;
-    std::string error;
-    ASSERT_TRUE(tracker.runFrame(w.data(), w.size(), nullptr, error)) << error;
+    ASSERT_NO_FATAL_FAILURE(runOneFrame(w, tracker));
     ASSERT_EQ(tracker.frameBatches().size(), 1u);
     const TrackedBatch& b = tracker.frameBatches()[0];
     EXPECT_TRUE(b.hasNormals);
@@ -209,11 +215,8 @@ TEST(StateTracker, ADepthTestAtAlwaysIsNoTestButWritesDepth)
     triangle();
     w.op(op::glPopAttrib); // back to GL_LESS
     triangle();
-    w.op(op::kFrameEnd);
-    w.put<uint64_t>(1);
     StateTracker tracker;
-    std::string error;
-    ASSERT_TRUE(tracker.runFrame(w.data(), w.size(), nullptr, error)) << error;
+    ASSERT_NO_FATAL_FAILURE(runOneFrame(w, tracker));
     const std::vector<TrackedBatch>& batches = tracker.frameBatches();
     ASSERT_EQ(batches.size(), 3u);
     EXPECT_TRUE(batches[0].depthTest);
@@ -249,11 +252,8 @@ TEST(StateTracker, AnUnlitDrawDoesNotTakeANormalLeftByAnotherObject)
     triangle(true);
     cap(op::glEnable, GL_LIGHTING);
     triangle(false);
-    w.op(op::kFrameEnd);
-    w.put<uint64_t>(1);
     StateTracker tracker;
-    std::string error;
-    ASSERT_TRUE(tracker.runFrame(w.data(), w.size(), nullptr, error)) << error;
+    ASSERT_NO_FATAL_FAILURE(runOneFrame(w, tracker));
     const std::vector<TrackedBatch>& batches = tracker.frameBatches();
     ASSERT_EQ(batches.size(), 4u);
     const bool expected[4] = {true, false, true, true};

@@ -1,6 +1,5 @@
 #include "styles/shading/CoverageStyle.h"
 
-#include "styles/FaceCulling.h"
 #include "styles/StyleRegistry.h"
 
 #include <cmath>
