@@ -1389,9 +1389,11 @@ bool StateTracker::runCalls(const uint8_t* data, size_t size, bool topLevel, std
         if (!r.ok()) break;
         // While a list compiles (GL_COMPILE), state calls are kept for glCallList and not
         // run; geometry is run so that its batches are captured into the list.
+        // A list that a list being compiled calls (GL_COMPILE_AND_EXECUTE runs it) is in the
+        // new list as its glCallList: its own calls are not compiled into it a second time.
         const bool listControl = opcode == op::glNewList || opcode == op::glEndList;
-        const bool keep = mCompiling && !listControl && !isVertexCall(opcode) &&
-                          !runsWhileCompiling(opcode);
+        const bool keep = mCompiling && mListDepth == 0 && !listControl &&
+                          !isVertexCall(opcode) && !runsWhileCompiling(opcode);
         const bool skip = keep && !mCompileAndExecute;
         mSkipping = skip; // decoded (for its bytes and checks) but not followed
         const bool ok = decodeCall(r, opcode, *this);
@@ -1576,7 +1578,7 @@ bool StateTracker::keep(TrackedBatch& batch)
         return false;
     }
     if (batch.vertices.empty()) return false;
-    if (mCompiling) {
+    if (mCompiling && mListDepth == 0) { // a called list's batches: see runCalls
         mCompiled.inherits.push_back({!mListSetsColor, !mListSetsNormal, !mListSetsTexCoord});
         mCompiled.batches.push_back(batch);
         ListItem item;
@@ -1843,6 +1845,7 @@ void StateTracker::callListBody(GLuint list)
         return;
     }
     ++mCallDepth;
+    ++mListDepth;
     const bool callerNormal = currentNormalCounts(); // before the list's draws clear it
     for (const ListItem& item : body.items) {
         if (item.batch >= 0) {
@@ -1872,6 +1875,7 @@ void StateTracker::callListBody(GLuint list)
             runCalls(item.call.data(), item.call.size(), false, ignored);
         }
     }
+    --mListDepth;
     --mCallDepth;
 }
 

@@ -491,6 +491,7 @@ private:
     List mCompiled;
     GLuint mListBase = 0;
     int mCallDepth = 0;
+    int mListDepth = 0; // of display lists being run (mCallDepth counts batch blobs too)
     // List items run by the current top-level glCallList(s): lists calling themselves more
     // than once would otherwise run 2^64 of them within the nesting limit (a hostile capture).
     static constexpr uint64_t kListWorkLimit = uint64_t(1) << 20;

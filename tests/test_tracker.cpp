@@ -1620,3 +1620,56 @@ TEST(StateTracker, PopAttribRestoresBindingsAndCurrentAttributes)
     EXPECT_FLOAT_EQ(batches[1].vertices[0].color.r, 0.25f)
         << "the colour inside the push outlived its pop";
 }
+
+// A list compiled with GL_COMPILE_AND_EXECUTE that calls another holds that call, not a copy
+// of what the call ran besides: called later, the inner list draws once, moved once, with the
+// normal it set itself. billard-gl's cue ball was drawn twice, the copy with the caller's
+// normal on every vertex, and came out in the shadow band all over.
+TEST(StateTracker, AListCalledWhileAnotherCompilesAndExecutesIsNotCopiedIntoIt)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto normal = [](CallWriter& w, float x, float y, float z) {
+        w.op(op::glNormal3f);
+        for (float c : {x, y, z}) w.put<float>(c);
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.run([&](CallWriter& w) {
+        w.op(op::glNewList);
+        w.put<GLuint>(1);
+        w.put<GLenum>(GL_COMPILE);
+        w.op(op::glTranslatef);
+        for (float c : {1.0f, 0.0f, 0.0f}) w.put<float>(c);
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        normal(w, 1.0f, 0.0f, 0.0f);
+        for (float x : {0.0f, 1.0f, 0.0f}) {
+            w.op(op::glVertex3f);
+            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, -2.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+        w.op(op::glEndList);
+        w.op(op::glNewList);
+        w.put<GLuint>(2);
+        w.put<GLenum>(GL_COMPILE_AND_EXECUTE);
+        w.op(op::glCallList);
+        w.put<GLuint>(1);
+        w.op(op::glEndList);
+    });
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches); // what compiling list 2 ran (left to the driver)
+    batches.clear();
+    feed.run([&](CallWriter& w) {
+        w.op(op::glLoadIdentity);
+        normal(w, 0.0f, 1.0f, 0.0f);
+        w.op(op::glCallList);
+        w.put<GLuint>(2);
+    });
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u) << "list 2 holds a copy of list 1's triangle besides its call";
+    EXPECT_FLOAT_EQ(batches[0].modelview[3][0], 1.0f);
+    ASSERT_FALSE(batches[0].vertices.empty());
+    EXPECT_EQ(batches[0].vertices[0].normal, glm::vec3(1.0f, 0.0f, 0.0f));
+}
