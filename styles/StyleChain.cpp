@@ -176,8 +176,10 @@ void StyleChain::render(const Scene& scene)
     renderAsDrawn(mBackdrop);
     for (size_t i = 0; i < mStyles.size(); ++i) {
         const bool shading = mHasShading && i == 0; // the shading style is ordered first
-        if (!mOpaque.objects.empty()) {
-            setBaseline(mOpaque, shading);
+        if (shading) {
+            renderShading(mOpaque, *mStyles[i]);
+        } else if (!mOpaque.objects.empty()) {
+            setBaseline(mOpaque, false);
             mStyles[i]->render(mOpaque, mContext);
         }
         if (!shading) continue;
@@ -214,6 +216,31 @@ void StyleChain::render(const Scene& scene)
         mStyles.front()->render(run, mContext);
     });
     mContext.meshes.endFlush(mContext.gl);
+}
+
+void StyleChain::renderShading(const Scene& part, Style& shading)
+{
+    // The program's rule for a tie in depth: under GL_LEQUAL (or GL_EQUAL) a surface drawn
+    // later at the same depth covers the earlier one (a panel's face over its frame, a layer
+    // painted on in the same plane), under GL_LESS the earlier one stays. In runs of the
+    // program's order, each with its rule.
+    auto later = [](const SceneObject& o) {
+        return o.depthFunc == GL_LEQUAL || o.depthFunc == GL_EQUAL;
+    };
+    for (size_t i = 0; i < part.objects.size();) {
+        const bool tie = later(part.objects[i]);
+        size_t end = i + 1;
+        while (end < part.objects.size() && later(part.objects[end]) == tie) ++end;
+        const bool whole = i == 0 && end == part.objects.size();
+        if (!whole) {
+            mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
+        }
+        const Scene& run = whole ? part : mRun;
+        setBaseline(run, true);
+        if (tie) mContext.gl.DepthFunc(GL_LEQUAL);
+        shading.render(run, mContext);
+        i = end;
+    }
 }
 
 void StyleChain::applyTestAndOffset(const SceneObject& o)

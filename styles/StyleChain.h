@@ -63,6 +63,8 @@ private:
     // The shading style alone draws `part`'s objects with the program's depth test, depth
     // writes and blending.
     void renderAsDrawn(const Scene& part);
+    // The shading style's pass over the opaque scene, which lays its depth.
+    void renderShading(const Scene& part, Style& shading);
 
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
     Scene mBackdrop, mOnTop; // drawn as the program did, before or after the scene

@@ -421,6 +421,30 @@ TEST(Compositor, ALayerBlendedByItsAlphaOverItsSurfaceIsDrawn)
     }
 }
 
+// Surfaces drawn at the same depth under GL_LEQUAL: the later one covers the earlier, as in
+// GL. The shading pass tested every held surface with GL_LESS, so the first kept its pixels:
+// dreamchess's health bars (a white frame, then a blue gradient in it, flat in 2D with the
+// depth test) came out white.
+TEST(Compositor, ALaterSurfaceAtEqualDepthCoversUnderLequal)
+{
+    auto bluePixels = [](const std::string& style) {
+        const PngImage image =
+            readPng(demoFrame("textured", "hud_bar", {"--style", style}, {"--hud-bar"}));
+        int blue = 0, seen = 0;
+        // Along the bar's middle row (the demo's bar: x 22-218, rows 22-38 from the top).
+        for (int x = 30; x <= 210 && !image.rgba.empty(); x += 10, ++seen) {
+            const uint8_t* p = &image.rgba[(size_t(30) * image.width + x) * 4];
+            blue += p[2] > p[0] + 40;
+        }
+        EXPECT_EQ(seen, 19);
+        return blue;
+    };
+    EXPECT_EQ(bluePixels("none"), 19) << "no gradient natively: no test";
+    for (const char* style : {"toon+paper+edges", "toon"}) {
+        EXPECT_GE(bluePixels(style), 17) << style << ": the white frame covered its gradient";
+    }
+}
+
 // The page is laid once per framebuffer until that framebuffer's colour is cleared again:
 // a clear of another one (the picking target between the scene and the weapon) is no new
 // background here. It was taken for one, and the weapon's flush laid the page again over the

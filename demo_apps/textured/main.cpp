@@ -10,7 +10,9 @@
 // only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
 // floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
 // depth) and draws the scene again there, turned, like a rear-view mirror; --stale-panel
-// leaves frame 1's panel in the buffer by clearing only depth later.
+// leaves frame 1's panel in the buffer by clearing only depth later; --hud-bar draws a bar
+// over the scene in 2D with the depth test (GL_LEQUAL): a white frame, then a blue gradient in
+// it at the same depth.
 
 // Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
@@ -234,6 +236,10 @@ public:
                  "colour-coded (1, 2, 3 in red) into a framebuffer object, reads its pixels "
                  "back and prints the ids under a row of points (mouse picking as games do "
                  "it)"},
+                {"hud-bar", demo::ExtraOption::Kind::Flag,
+                 "after the scene (before --pick), a bar in the top left corner drawn "
+                 "orthographically with depth test and writes (GL_LEQUAL): a white frame, then "
+                 "a blue gradient inside it at the same depth, which covers it as in GL"},
                 {"stale-panel", demo::ExtraOption::Kind::Flag,
                  "frame 1 puts a red panel in the bottom left corner with glDrawPixels; later "
                  "frames clear only depth (as engines whose world covers the screen do), so the "
@@ -262,6 +268,7 @@ public:
         translucentDecal_ = options.has("translucent-decal");
         inset_ = options.has("inset");
         stalePanel_ = options.has("stale-panel");
+        hudBar_ = options.has("hud-bar");
         if (options.has("floor-layer")) poolTexture_ = uploadPool();
         weapon_ = options.has("weapon");
         width_ = options.width;
@@ -324,6 +331,7 @@ public:
             return;
         }
         drawScene(frame);
+        if (hudBar_) drawHudBar();
         // Between the scene and the weapon: another framebuffer's colour is cleared.
         if (pickFbo_) pick(frame);
         if (weapon_) {
@@ -436,6 +444,43 @@ public:
         glDisable(GL_LIGHTING);
         glWindowPos2i(4, 4);
         glDrawPixels(48, 32, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        glPopAttrib();
+    }
+
+    void drawHudBar()
+    {
+        glPushAttrib(GL_ENABLE_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
+        glDisable(GL_LIGHTING);
+        glDisable(GL_TEXTURE_2D);
+        glDepthFunc(GL_LEQUAL);
+        glMatrixMode(GL_PROJECTION);
+        glPushMatrix();
+        glLoadIdentity();
+        glOrtho(0.0, width_, 0.0, height_, -1.0, 1.0);
+        glMatrixMode(GL_MODELVIEW);
+        glPushMatrix();
+        glLoadIdentity();
+        const float x0 = 20.0f, x1 = 220.0f, y0 = float(height_) - 40.0f;
+        const float y1 = float(height_) - 20.0f;
+        const float dark[] = {0.19f, 0.2f, 0.46f}, light[] = {0.79f, 0.8f, 1.0f};
+        auto bar = [](float a, float b, float c, float d, const float* left, const float* right) {
+            glBegin(GL_QUADS);
+            glColor3fv(left);
+            glVertex3f(a, b, 0.5f);
+            glColor3fv(right);
+            glVertex3f(c, b, 0.5f);
+            glVertex3f(c, d, 0.5f);
+            glColor3fv(left);
+            glVertex3f(a, d, 0.5f);
+            glEnd();
+        };
+        const float white[] = {1.0f, 1.0f, 1.0f};
+        bar(x0, y0, x1, y1, white, white);
+        bar(x0 + 2.0f, y0 + 2.0f, x1 - 2.0f, y1 - 2.0f, dark, light);
+        glPopMatrix();
+        glMatrixMode(GL_PROJECTION);
+        glPopMatrix();
+        glMatrixMode(GL_MODELVIEW);
         glPopAttrib();
     }
 
@@ -629,6 +674,7 @@ private:
     bool decal_ = false;
     bool inset_ = false;
     bool weapon_ = false;
+    bool hudBar_ = false;
     bool translucentDecal_ = false;
     int width_ = 0, height_ = 0;
     GLuint cutoutTexture_ = 0;
