@@ -776,10 +776,12 @@ uint32_t StateTracker::texturedUnits(uint32_t& layers) const
     // units layer light or effects over it: lightmaps and shadows through combiners or
     // additions, environment maps on generated coordinates.
     uint32_t plain = 0;
+    const uint32_t depth = depthUnits();
     for (int u = 0; u < 8; ++u) {
         const GLenum mode = a.envMode[size_t(u)];
         const bool ownCoordinates = ((a.texGen >> (4 * u)) & 0x3u) != 0x3u;
-        const bool applies = mode == GL_MODULATE || mode == GL_REPLACE || mode == GL_DECAL;
+        const bool applies = (mode == GL_MODULATE || mode == GL_REPLACE || mode == GL_DECAL) &&
+                             !(depth & (1u << u));
         if ((textured & (1u << u)) && ownCoordinates && applies) plain |= 1u << u;
     }
     // Only the first textured unit may be a generated or combined one on its own (a sphere
@@ -787,6 +789,19 @@ uint32_t StateTracker::texturedUnits(uint32_t& layers) const
     const uint32_t base = plain ? plain & (~plain + 1u) : 0u;
     layers = textured & ~base;
     return base;
+}
+
+uint32_t StateTracker::depthUnits() const
+{
+    const AttribState& a = mAttrib;
+    uint32_t units = 0;
+    for (int u = 0; u < 8; ++u) {
+        // The unit's 2D texture is the one it applies (a cube map or another target wins).
+        const bool twoD = u == 0 ? a.texture2D && !(a.textureUnits & 1u)
+                                 : ((a.texture2DUnits & ~a.cubeUnits) >> u) & 1u;
+        if (twoD && mDepthTextures.contains(mUnitTextures[size_t(u)])) units |= 1u << u;
+    }
+    return units;
 }
 
 int StateTracker::surfaceUnit() const
@@ -799,7 +814,9 @@ int StateTracker::surfaceUnit() const
         // coordinates (an environment map, styled without its texture) under combined or
         // added layers (shadows, fades; not drawn). Combiners alone are the surface's colour
         // computed in ways the styles cannot follow.
-        const uint32_t textured = (a.textureUnits | (a.texture2D ? 1u : 0u)) & 0xFFu;
+        // A shadow map alone leaves the surface untextured.
+        const uint32_t textured =
+            (a.textureUnits | (a.texture2D ? 1u : 0u)) & 0xFFu & ~depthUnits();
         if (textured == 0) return 0;
         uint32_t generated = 0;
         for (int u = 0; u < 8; ++u) {
@@ -839,6 +856,7 @@ int StateTracker::lightUnit() const
     const AttribState& a = mAttrib;
     uint32_t layers = 0;
     if (texturedUnits(layers) == 0) return -1;
+    layers &= ~depthUnits();
     for (int u = 0; u < 8; ++u) {
         if (!(layers & (1u << u)) || a.envMode[size_t(u)] != GL_MODULATE) continue;
         if (((a.texGen >> (4 * u)) & 0x3u) == 0x3u) continue;
@@ -2081,6 +2099,11 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     }
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
     if (texture == 0) mDefaultImage = width > 0 && height > 0;
+    if (format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL) {
+        mDepthTextures.insert(texture);
+    } else {
+        mDepthTextures.erase(texture);
+    }
     mOpaqueTextures.erase(texture);
     mFilledLater.erase(texture);
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.

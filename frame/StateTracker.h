@@ -383,6 +383,9 @@ private:
     const char* pipelineLimit() const;
     // The surface's unit (a bit) and the layers above it (bits).
     uint32_t texturedUnits(uint32_t& layers) const;
+    // The enabled units whose texture is a depth texture (bits): a shadow map compared by
+    // the fixed pipeline, never a surface's texture or a lightmap, only a layer not drawn.
+    uint32_t depthUnits() const;
     // Makes mCurrent's texture coordinates the surface unit's (at each draw).
     void followSurfaceUnit();
     // The surface unit's 2D texture as the styles use it: 0 when off or on generated
@@ -453,6 +456,7 @@ private:
     std::map<GLuint, std::array<glm::vec4, 6>> mCubeFaceMeans;
     bool mDefaultImage = false;       // texture object 0 (2D) has a level 0 image
     std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
+    std::set<GLuint> mDepthTextures;  // level 0 of GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL
     LeaveRules mRules;
     size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;

@@ -1673,3 +1673,59 @@ TEST(StateTracker, AListCalledWhileAnotherCompilesAndExecutesIsNotCopiedIntoIt)
     ASSERT_FALSE(batches[0].vertices.empty());
     EXPECT_EQ(batches[0].vertices[0].normal, glm::vec3(1.0f, 0.0f, 0.0f));
 }
+
+// A depth texture on a unit (a shadow map the fixed pipeline compares) is no surface texture
+// and no lightmap: a draw with only it enabled is untextured, and opaque where its colour
+// is; beside a colour texture it is a layer not drawn. scorched3d leaves its shadow map
+// enabled on unit 2 into its menus: the styles sampled it, and its tank previews' squares
+// vanished.
+TEST(StateTracker, AShadowMapIsNeitherTheSurfacesTextureNorItsLight)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto bind = [&](GLuint texture) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(texture);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_BLEND, true);
+    feed.blendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    feed.activeTexture(GL_TEXTURE2);
+    feed.enable(GL_TEXTURE_2D, true);
+    bind(78);
+    feed.run([](CallWriter& w) {
+        w.op(op::glTexImage2D);
+        const size_t mark = w.beginPayload();
+        for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_DEPTH_COMPONENT), 64, 64, 0}) {
+            w.put<GLint>(v);
+        }
+        w.put<GLenum>(GL_DEPTH_COMPONENT);
+        w.put<GLenum>(GL_UNSIGNED_INT);
+        w.put<uint8_t>(0); // no pixels: a target to render depth into
+        w.endPayload(mark);
+    });
+    feed.activeTexture(GL_TEXTURE0);
+    EXPECT_TRUE(tracker.wouldHold(GL_TRIANGLES)) << tracker.unstylableState();
+    EXPECT_EQ(tracker.droppedLayers(), 1u << 2);
+    feed.triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, 0u) << "the shadow map was taken for the surface's texture";
+    EXPECT_FALSE(batches[0].translucent) << "its colour's alpha is 1";
+
+    // With a colour texture on unit 0, modulated by the shadow map: no lightmap.
+    feed.enable(GL_TEXTURE_2D, true);
+    bind(4);
+    EXPECT_EQ(tracker.lightmapUnit(), -1) << "the shadow map was taken for a lightmap";
+    EXPECT_EQ(tracker.droppedLayers(), 1u << 2);
+    feed.triangle();
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, 4u);
+    EXPECT_EQ(batches[0].lightmap, 0u);
+}
