@@ -394,6 +394,15 @@ struct Feed {
     {
         run([](CallWriter& w) { writeTriangle(w, 0.0f); });
     }
+    // glBindTexture(GL_TEXTURE_2D, texture) on the active unit.
+    void bindTexture(GLuint texture)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(texture);
+        });
+    }
 };
 
 // A side's polygon mode counts only where that side is drawn: lines for the back faces a
@@ -657,13 +666,6 @@ TEST(StateTracker, ObjectPlanesGiveEachBatchItsOwnCoordinates)
     tracker.setHolding(true);
     Feed feed{tracker};
     auto run = [&](auto&& write) { feed.run(write); };
-    auto bind = [&](GLuint texture) {
-        run([&](CallWriter& w) {
-            w.op(op::glBindTexture);
-            w.put<GLenum>(GL_TEXTURE_2D);
-            w.put<GLuint>(texture);
-        });
-    };
     auto planes = [&](float sOffset) {
         for (GLenum coord : {GLenum(GL_S), GLenum(GL_T)}) {
             run([&](CallWriter& w) {
@@ -683,10 +685,10 @@ TEST(StateTracker, ObjectPlanesGiveEachBatchItsOwnCoordinates)
     feed.enable(GL_TEXTURE_2D, true);
     feed.enable(GL_TEXTURE_GEN_S, true);
     feed.enable(GL_TEXTURE_GEN_T, true);
-    bind(7);
+    feed.bindTexture(7);
     planes(0.0f);
     feed.triangle();
-    bind(8);
+    feed.bindTexture(8);
     planes(-1.0f);
     feed.triangle();
     std::vector<TrackedBatch> batches;
@@ -1583,13 +1585,6 @@ TEST(StateTracker, PopAttribRestoresBindingsAndCurrentAttributes)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    auto bind = [&](GLuint texture) {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glBindTexture);
-            w.put<GLenum>(GL_TEXTURE_2D);
-            w.put<GLuint>(texture);
-        });
-    };
     auto colour = [&](float r) {
         feed.run([&](CallWriter& w) {
             w.op(op::glColor4f);
@@ -1598,7 +1593,7 @@ TEST(StateTracker, PopAttribRestoresBindingsAndCurrentAttributes)
     };
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_TEXTURE_2D, true);
-    bind(5);
+    feed.bindTexture(5);
     colour(0.25f);
     feed.run([](CallWriter& w) {
         w.op(op::glPushAttrib);
@@ -1606,7 +1601,7 @@ TEST(StateTracker, PopAttribRestoresBindingsAndCurrentAttributes)
     });
     feed.activeTexture(GL_TEXTURE1);
     feed.activeTexture(GL_TEXTURE0);
-    bind(9);
+    feed.bindTexture(9);
     colour(0.75f);
     feed.triangle(); // inside: texture 9, red 0.75
     feed.run([](CallWriter& w) { w.op(op::glPopAttrib); });
@@ -1684,19 +1679,12 @@ TEST(StateTracker, AShadowMapIsNeitherTheSurfacesTextureNorItsLight)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    auto bind = [&](GLuint texture) {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glBindTexture);
-            w.put<GLenum>(GL_TEXTURE_2D);
-            w.put<GLuint>(texture);
-        });
-    };
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_BLEND, true);
     feed.blendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     feed.activeTexture(GL_TEXTURE2);
     feed.enable(GL_TEXTURE_2D, true);
-    bind(78);
+    feed.bindTexture(78);
     feed.run([](CallWriter& w) {
         w.op(op::glTexImage2D);
         const size_t mark = w.beginPayload();
@@ -1720,7 +1708,7 @@ TEST(StateTracker, AShadowMapIsNeitherTheSurfacesTextureNorItsLight)
 
     // With a colour texture on unit 0, modulated by the shadow map: no lightmap.
     feed.enable(GL_TEXTURE_2D, true);
-    bind(4);
+    feed.bindTexture(4);
     EXPECT_EQ(tracker.lightmapUnit(), -1) << "the shadow map was taken for a lightmap";
     EXPECT_EQ(tracker.droppedLayers(), 1u << 2);
     feed.triangle();

@@ -10,6 +10,11 @@ int run(int argc, char** argv, const char* shortName, Scene& scene);
 // Sets a perspective projection like gluPerspective, without depending on GLU.
 void setPerspective(double fovYDegrees, double aspect, double zNear, double zFar);
 
+// Pushes the projection and modelview matrices and sets a projection in window pixels (z from
+// -1 to 1) with an identity modelview; the matrix mode is left at GL_MODELVIEW. The caller
+// pops both.
+void pushPixelProjection(int width, int height);
+
 // A lit sphere at the origin, one GL_TRIANGLE_STRIP per band of latitude; with
 // textureRepeats > 0, texture coordinates that wrap that many times around it.
 void drawSphere(float radius, int stacks, int slices, float textureRepeats = 0.0f);

@@ -1041,13 +1041,7 @@ private:
         glDisable(GL_TEXTURE_2D);
         glActiveTexture(GL_TEXTURE0);
         glDisable(GL_TEXTURE_2D);
-        glMatrixMode(GL_PROJECTION);
-        glPushMatrix();
-        glLoadIdentity();
-        glOrtho(0.0, width_, 0.0, height_, -1.0, 1.0);
-        glMatrixMode(GL_MODELVIEW);
-        glPushMatrix();
-        glLoadIdentity();
+        demo::pushPixelProjection(width_, height_);
         for (GLenum cap : {GL_DEPTH_TEST, GL_LIGHTING, GL_BLEND, GL_FOG, GL_SCISSOR_TEST,
                            GL_STENCIL_TEST, GL_ALPHA_TEST, GL_COLOR_LOGIC_OP, GL_CLIP_PLANE0}) {
             glDisable(cap);

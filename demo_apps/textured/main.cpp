@@ -453,13 +453,7 @@ public:
         glDisable(GL_LIGHTING);
         glDisable(GL_TEXTURE_2D);
         glDepthFunc(GL_LEQUAL);
-        glMatrixMode(GL_PROJECTION);
-        glPushMatrix();
-        glLoadIdentity();
-        glOrtho(0.0, width_, 0.0, height_, -1.0, 1.0);
-        glMatrixMode(GL_MODELVIEW);
-        glPushMatrix();
-        glLoadIdentity();
+        demo::pushPixelProjection(width_, height_);
         const float x0 = 20.0f, x1 = 220.0f, y0 = float(height_) - 40.0f;
         const float y1 = float(height_) - 20.0f;
         const float dark[] = {0.19f, 0.2f, 0.46f}, light[] = {0.79f, 0.8f, 1.0f};
