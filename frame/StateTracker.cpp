@@ -217,6 +217,15 @@ void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsi
 {
     T().texImage2D(target, level, width, height, format, type, pixels);
 }
+void APIENTRY tCopyTexImage2D(GLenum target, GLint level, GLenum internalFormat, GLint, GLint,
+                              GLsizei, GLsizei, GLint)
+{
+    T().texStorage2D(target, level, internalFormat, false);
+}
+void APIENTRY tTexStorage2D(GLenum target, GLsizei, GLenum internalFormat, GLsizei, GLsizei)
+{
+    T().texStorage2D(target, 0, internalFormat, true);
+}
 void APIENTRY tTexSubImage2D(GLenum target, GLint level, GLint, GLint, GLsizei width,
                              GLsizei height, GLenum format, GLenum type, const void* pixels)
 {
@@ -463,6 +472,8 @@ StateTracker::StateTracker()
     d.glBindTexture = tBindTexture;
     d.glTexImage2D = tTexImage2D;
     d.glTexSubImage2D = tTexSubImage2D;
+    d.glCopyTexImage2D = tCopyTexImage2D;
+    d.glTexStorage2D = tTexStorage2D;
     d.glTexEnvi = tTexEnvi;
     d.glTexGeni = tTexGen<GLint>;
     d.glTexGenf = tTexGen<GLfloat>;
@@ -2119,6 +2130,35 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
     uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
     mTextureHashes[texture] = hash == 0 ? 1 : hash;
+}
+
+void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalFormat, bool empty)
+{
+    if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
+        return;
+    }
+    const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
+    // Nothing of an earlier upload holds any more: its hash, mean and opacity go. Formats
+    // without alpha read alpha 1.
+    mTextureHashes.erase(texture);
+    mTextureMeans.erase(texture);
+    if (empty) mFilledLater.insert(texture);
+    else mFilledLater.erase(texture);
+    const GLenum depth[] = {GL_DEPTH_COMPONENT,   GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
+                            GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F, GL_DEPTH_STENCIL,
+                            GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
+    const GLenum noAlpha[] = {1, 3, GL_RGB, GL_RGB8, GL_RGB5, GL_R3_G3_B2, GL_LUMINANCE,
+                              GL_LUMINANCE8, GL_RED, GL_R8, GL_SRGB8};
+    const bool isDepth = std::find(std::begin(depth), std::end(depth), internalFormat) !=
+                         std::end(depth);
+    if (isDepth) mDepthTextures.insert(texture);
+    else mDepthTextures.erase(texture);
+    if (isDepth || std::find(std::begin(noAlpha), std::end(noAlpha), internalFormat) !=
+                       std::end(noAlpha)) {
+        mOpaqueTextures.insert(texture);
+    } else {
+        mOpaqueTextures.erase(texture);
+    }
 }
 
 void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,

@@ -244,6 +244,10 @@ public:
     // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed).
     void texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
                     GLenum type, const void* pixels);
+    // glCopyTexImage2D and glTexStorage2D: level 0 of the bound 2D texture is made in
+    // `internalFormat` with content not known here: a copy of the framebuffer, or none yet
+    // (`empty`: glTexSubImage2D fills it, as after glTexImage2D without pixels).
+    void texStorage2D(GLenum target, GLint level, GLenum internalFormat, bool empty);
     // glTexSubImage2D: what it does to level 0's opacity.
     void texSubImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
                        GLenum type, const void* pixels);

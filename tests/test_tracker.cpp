@@ -1716,4 +1716,21 @@ TEST(StateTracker, AShadowMapIsNeitherTheSurfacesTextureNorItsLight)
     ASSERT_EQ(batches.size(), 1u);
     EXPECT_EQ(batches[0].texture, 4u);
     EXPECT_EQ(batches[0].lightmap, 0u);
+
+    // The older way to make one: the depth buffer copied into a texture (here on unit 1).
+    feed.activeTexture(GL_TEXTURE2);
+    feed.enable(GL_TEXTURE_2D, false);
+    feed.activeTexture(GL_TEXTURE1);
+    feed.enable(GL_TEXTURE_2D, true);
+    feed.bindTexture(79);
+    feed.run([](CallWriter& w) {
+        w.op(op::glCopyTexImage2D);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLint>(0);
+        w.put<GLenum>(GL_DEPTH_COMPONENT24);
+        for (GLint v : {0, 0, 64, 64, 0}) w.put<GLint>(v);
+    });
+    feed.activeTexture(GL_TEXTURE0);
+    EXPECT_EQ(tracker.lightmapUnit(), -1) << "the copied depth was taken for a lightmap";
+    EXPECT_EQ(tracker.droppedLayers(), 1u << 1);
 }
