@@ -989,6 +989,7 @@ GLuint StateTracker::detailTexture() const
     const AttribState& a = mAttrib;
     const int u = surfaceUnit();
     if (u < 0 || ((a.texGen >> (4 * u)) & 0xFu) != 0) return 0;
+    if (depthUnits() & (1u << u)) return 0; // a shadow map alone on unit 0
     return unitTexture(u);
 }
 

@@ -1733,4 +1733,14 @@ TEST(StateTracker, AShadowMapIsNeitherTheSurfacesTextureNorItsLight)
     feed.activeTexture(GL_TEXTURE0);
     EXPECT_EQ(tracker.lightmapUnit(), -1) << "the copied depth was taken for a lightmap";
     EXPECT_EQ(tracker.droppedLayers(), 1u << 1);
+
+    // Alone on unit 0: untextured too.
+    feed.activeTexture(GL_TEXTURE1);
+    feed.enable(GL_TEXTURE_2D, false);
+    feed.activeTexture(GL_TEXTURE0);
+    feed.bindTexture(79);
+    feed.triangle();
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    EXPECT_EQ(batches[0].texture, 0u) << "the shadow map on unit 0 was taken for the texture";
 }
