@@ -155,18 +155,16 @@ NPRGL_BARRIER(void, glViewport, (GLint x, GLint y, GLsizei w, GLsizei h), (x, y,
 // Render to texture: what is held for a framebuffer is drawn before the program changes
 // which framebuffer is bound or what it is attached to, builds mipmaps from it or blits it;
 // a binding also tells the tracker whether the program now draws data (framebufferBound).
-void APIENTRY c_glBindFramebuffer(GLenum target, GLuint fb)
-{
-    C().barrier();
-    C().next().glBindFramebuffer(target, fb);
-    C().framebufferBound();
-}
-void APIENTRY c_glBindFramebufferEXT(GLenum target, GLuint fb)
-{
-    C().barrier();
-    C().next().glBindFramebufferEXT(target, fb);
-    C().framebufferBound();
-}
+#define NPRGL_BIND_FRAMEBUFFER(name)                                                            \
+    void APIENTRY c_##name(GLenum target, GLuint fb)                                            \
+    {                                                                                           \
+        C().barrier();                                                                          \
+        C().next().name(target, fb);                                                            \
+        C().framebufferBound();                                                                 \
+    }
+NPRGL_BIND_FRAMEBUFFER(glBindFramebuffer)
+NPRGL_BIND_FRAMEBUFFER(glBindFramebufferEXT)
+#undef NPRGL_BIND_FRAMEBUFFER
 NPRGL_DRAWING(void, glFramebufferTexture1D,
               (GLenum t, GLenum a, GLenum tt, GLuint tex, GLint l), (t, a, tt, tex, l))
 NPRGL_DRAWING(void, glFramebufferTexture2D,

@@ -37,6 +37,23 @@ bool byAlpha(bool blend, GLenum src, GLenum dst)
     return blend && src == GL_SRC_ALPHA && dst == GL_ONE_MINUS_SRC_ALPHA;
 }
 
+// A texture format of depth (a shadow map), given as glTexImage2D's format or as an internal
+// format (glCopyTexImage2D, glTexStorage2D).
+bool depthFormat(GLenum format)
+{
+    switch (format) {
+    case GL_DEPTH_COMPONENT:
+    case GL_DEPTH_COMPONENT16:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH_STENCIL:
+    case GL_DEPTH24_STENCIL8:
+    case GL_DEPTH32F_STENCIL8: return true;
+    default: return false;
+    }
+}
+
 // An enum given as a float (glTexEnvf, glFogf, glTexGenf): 0, which names no mode, where the
 // value is none (NaN, negative, past 32 bits: converting those is undefined behaviour).
 GLenum enumOf(double value)
@@ -2111,11 +2128,8 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     }
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
     if (texture == 0) mDefaultImage = width > 0 && height > 0;
-    if (format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL) {
-        mDepthTextures.insert(texture);
-    } else {
-        mDepthTextures.erase(texture);
-    }
+    if (depthFormat(format)) mDepthTextures.insert(texture);
+    else mDepthTextures.erase(texture);
     mOpaqueTextures.erase(texture);
     mFilledLater.erase(texture);
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
@@ -2145,13 +2159,9 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     mTextureMeans.erase(texture);
     if (empty) mFilledLater.insert(texture);
     else mFilledLater.erase(texture);
-    const GLenum depth[] = {GL_DEPTH_COMPONENT,   GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
-                            GL_DEPTH_COMPONENT32, GL_DEPTH_COMPONENT32F, GL_DEPTH_STENCIL,
-                            GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8};
     const GLenum noAlpha[] = {1, 3, GL_RGB, GL_RGB8, GL_RGB5, GL_R3_G3_B2, GL_LUMINANCE,
                               GL_LUMINANCE8, GL_RED, GL_R8, GL_SRGB8};
-    const bool isDepth = std::find(std::begin(depth), std::end(depth), internalFormat) !=
-                         std::end(depth);
+    const bool isDepth = depthFormat(internalFormat);
     if (isDepth) mDepthTextures.insert(texture);
     else mDepthTextures.erase(texture);
     if (isDepth || std::find(std::begin(noAlpha), std::end(noAlpha), internalFormat) !=

@@ -105,10 +105,15 @@ void StyleChain::forEachRun(const Scene& part, Draw&& draw)
         const SceneObject& first = part.objects[i];
         size_t end = i + 1;
         while (end < part.objects.size() && same(part.objects[end], first)) ++end;
-        mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
-        setBaseline(mRun, true);
+        // One run is the whole part (the common case): drawn as it is, not copied.
+        const bool whole = i == 0 && end == part.objects.size();
+        if (!whole) {
+            mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
+        }
+        const Scene& run = whole ? part : mRun;
+        setBaseline(run, true);
         applyTestAndOffset(first);
-        draw(std::as_const(mRun), first);
+        draw(run, first);
         gl.Disable(GL_ALPHA_TEST);
         gl.Disable(GL_POLYGON_OFFSET_FILL);
         i = end;
@@ -222,25 +227,14 @@ void StyleChain::renderShading(const Scene& part, Style& shading)
 {
     // The program's rule for a tie in depth: under GL_LEQUAL (or GL_EQUAL) a surface drawn
     // later at the same depth covers the earlier one (a panel's face over its frame, a layer
-    // painted on in the same plane), under GL_LESS the earlier one stays. In runs of the
-    // program's order, each with its rule.
-    auto later = [](const SceneObject& o) {
-        return o.depthFunc == GL_LEQUAL || o.depthFunc == GL_EQUAL;
-    };
-    for (size_t i = 0; i < part.objects.size();) {
-        const bool tie = later(part.objects[i]);
-        size_t end = i + 1;
-        while (end < part.objects.size() && later(part.objects[end]) == tie) ++end;
-        const bool whole = i == 0 && end == part.objects.size();
-        if (!whole) {
-            mRun.objects.assign(part.objects.begin() + long(i), part.objects.begin() + long(end));
+    // painted on in the same plane), under GL_LESS the earlier one stays. The opaque scene's
+    // objects differ in no other state forEachRun tells apart.
+    forEachRun(part, [&](const Scene& run, const SceneObject& first) {
+        if (first.depthFunc == GL_LEQUAL || first.depthFunc == GL_EQUAL) {
+            mContext.gl.DepthFunc(GL_LEQUAL);
         }
-        const Scene& run = whole ? part : mRun;
-        setBaseline(run, true);
-        if (tie) mContext.gl.DepthFunc(GL_LEQUAL);
         shading.render(run, mContext);
-        i = end;
-    }
+    });
 }
 
 void StyleChain::applyTestAndOffset(const SceneObject& o)

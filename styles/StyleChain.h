@@ -54,7 +54,8 @@ private:
     void applyTestAndOffset(const SceneObject& o);
     // `part`'s objects in runs of equal draw state (depth test and writes, translucency,
     // alpha test, offset), each from the baseline with its alpha test and offset applied:
-    // draw(mRun, first) sets the rest and renders; test and offset are undone after.
+    // draw(run, first) sets the rest and renders (run: mRun, or `part` when it is one run);
+    // test and offset are undone after.
     template <typename Draw>
     void forEachRun(const Scene& part, Draw&& draw);
     // The depth test (depth-tested objects by `testedFunc`), depth writes and blending a run

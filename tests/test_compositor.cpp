@@ -98,6 +98,12 @@ std::string demoFrame(const std::string& app, const std::string& name,
     return dir + "/" + app + "_3.png";
 }
 
+// The RGBA bytes of pixel (x, y) of `image`, rows from the top.
+const uint8_t* pixel(const PngImage& image, int x, int y)
+{
+    return &image.rgba[(size_t(y) * image.width + x) * 4];
+}
+
 // The PNG at `path` (empty, with the failure reported, when it cannot be read).
 PngImage readPng(const std::string& path)
 {
@@ -300,17 +306,16 @@ TEST(Compositor, ABackdropInTheClearColourStaysOnThePage)
     ASSERT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
     // The clear colour (0.15, 0.15, 0.18): the floor's, in the floor's middle near the bottom;
     // the page above the scene.
-    auto at = [&](int x, int y) { return &image.rgba[(size_t(y) * image.width + x) * 4]; };
     int floor = 0, all = 0;
     for (int y = 200; y < 236; ++y) {
         for (int x = 140; x < 180; ++x) {
-            const uint8_t* p = at(x, y);
+            const uint8_t* p = pixel(image, x, y);
             floor += std::abs(p[0] - 38) <= 6 && std::abs(p[2] - 46) <= 6;
             ++all;
         }
     }
     EXPECT_GT(floor, all * 9 / 10) << floor << " of " << all << " floor pixels kept";
-    EXPECT_GT(at(160, 10)[0], 200) << "no page above the scene";
+    EXPECT_GT(pixel(image, 160, 10)[0], 200) << "no page above the scene";
 }
 
 // The page goes where nothing of the frame is. A panel the program draws with glDrawPixels
@@ -335,8 +340,8 @@ TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
         const PngImage image = readPng(dir + "/textured_" + std::to_string(frame) + ".png");
         if (image.rgba.empty()) return std::array<int, 3>{-1, -1, -1};
         // Window (8, 10): the panel's corner, left of the floor.
-        const size_t at = (size_t(229) * image.width + 8) * 4;
-        return std::array<int, 3>{image.rgba[at], image.rgba[at + 1], image.rgba[at + 2]};
+        const uint8_t* p = pixel(image, 8, 229);
+        return std::array<int, 3>{p[0], p[1], p[2]};
     };
     const std::array<int, 3> red{255, 0, 0};
     const std::string window = run(true);
@@ -373,7 +378,7 @@ TEST(Compositor, ColourCodedPickingReadsWhatTheProgramDrew)
         const PngImage image = readPng(dir + "/textured_3.png");
         ASSERT_FALSE(image.rgba.empty());
         // Above the scene: the page (or the coverage style's untouched background).
-        const uint8_t* p = &image.rgba[(size_t(10) * image.width + 160) * 4];
+        const uint8_t* p = pixel(image, 160, 10);
         if (style != "coverage") {
             EXPECT_GT(p[0], 200) << "the shown frame is not styled";
         }
@@ -433,7 +438,7 @@ TEST(Compositor, ALaterSurfaceAtEqualDepthCoversUnderLequal)
         int blue = 0, seen = 0;
         // Along the bar's middle row (the demo's bar: x 22-218, rows 22-38 from the top).
         for (int x = 30; x <= 210 && !image.rgba.empty(); x += 10, ++seen) {
-            const uint8_t* p = &image.rgba[(size_t(30) * image.width + x) * 4];
+            const uint8_t* p = pixel(image, x, 30);
             blue += p[2] > p[0] + 40;
         }
         EXPECT_EQ(seen, 19);
@@ -455,11 +460,10 @@ TEST(Compositor, AnotherFramebuffersClearMakesNoNewBackground)
                                              {"--style", "toon+paper"},
                                              {"--backdrop-floor", "--pick", "--weapon"}));
     ASSERT_FALSE(image.rgba.empty());
-    auto at = [&](int x, int y) { return &image.rgba[(size_t(y) * image.width + x) * 4]; };
     // The floor near the bottom, in the clear colour (0.15, 0.15, 0.18); the page above.
-    EXPECT_NEAR(at(160, 220)[0], 38, 6) << "the page was laid over the floor";
-    EXPECT_NEAR(at(160, 220)[2], 46, 6) << "the page was laid over the floor";
-    EXPECT_GT(at(160, 10)[0], 200) << "no page above the scene";
+    EXPECT_NEAR(pixel(image, 160, 220)[0], 38, 6) << "the page was laid over the floor";
+    EXPECT_NEAR(pixel(image, 160, 220)[2], 46, 6) << "the page was laid over the floor";
+    EXPECT_GT(pixel(image, 160, 10)[0], 200) << "no page above the scene";
 }
 
 // A translucent layer drawn without the depth test over an opaque backdrop drawn the same way
@@ -479,7 +483,7 @@ TEST(Compositor, ATranslucentBackdropOverAnOpaqueOneStaysTranslucent)
         std::string error;
         EXPECT_TRUE(PngImage::read(dir + "/textured_2.png", image, error)) << error;
         // The haze over the floor's far half, left of the cube.
-        return int(image.rgba.empty() ? 0 : image.rgba[(size_t(150) * image.width + 160) * 4]);
+        return int(image.rgba.empty() ? 0 : pixel(image, 160, 150)[0]);
     };
     const int native = hazeAt("none"), styled = hazeAt("toon+paper");
     EXPECT_GT(native, 60) << "no haze: no test";
@@ -877,7 +881,7 @@ TEST(Compositor, EachFaceOfAnObjectKeepsItsOwnTexture)
         std::array<int, 3> hues{};
         for (int y = 80; y < 190; ++y) {
             for (int x = 55; x < 165; ++x) {
-                const uint8_t* p = &im.rgba[(size_t(y) * im.width + x) * 4];
+                const uint8_t* p = pixel(im, x, y);
                 const int r = p[0], g = p[1], bl = p[2];
                 hues[0] += bl > r + 60 && bl > g + 40;  // blue
                 hues[1] += g > r + 40 && g > bl + 40;   // green
@@ -950,7 +954,7 @@ TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
         int red = 0, all = 0;
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
-                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                const uint8_t* p = pixel(image, x, y);
                 // Laid over what is behind by its alpha (added, it read pink over the floor's
                 // light tint); no colour of the styled objects reaches 250 in red.
                 red += p[0] >= 250 && p[1] < 60 && p[2] < 60;
@@ -996,7 +1000,7 @@ TEST_P(AdditiveGlows, ReadOverPaper)
         int white = 0, all = 0, stripes = 0;
         for (int y = 110; y < 145; ++y) {
             for (int x = 190; x < 225; ++x) {
-                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                const uint8_t* p = pixel(image, x, y);
                 white += std::min({p[0], p[1], p[2]}) >= 225;
                 stripes += p[0] > 150 && p[0] - p[2] > 60;
                 ++all;
@@ -1041,7 +1045,7 @@ TEST(Compositor, AGlowListTurningItsTextureOffIsInkedPlain)
     int blue = 0, all = 0;
     for (int y = 115; y < 140; ++y) {
         for (int x = 195; x < 220; ++x) {
-            const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+            const uint8_t* p = pixel(image, x, y);
             blue += p[2] > p[0] + 60 && p[2] > p[1] + 40;
             ++all;
         }
@@ -1156,7 +1160,7 @@ TEST(Compositor, AlphaTestedCutOutsKeepTheirHoles)
         int blue = 0;
         for (int y = 90; y < 180 && !image.rgba.empty(); ++y) {
             for (int x = 75; x < 150; ++x) {
-                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                const uint8_t* p = pixel(image, x, y);
                 blue += p[2] > p[0] + 60 && p[2] > p[1] + 30;
             }
         }
@@ -1271,7 +1275,7 @@ TEST(Compositor, TheProgramsFogFadesTheStyledScene)
         int n = 0;
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
-                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                const uint8_t* p = pixel(image, x, y);
                 for (int c = 0; c < 3; ++c) sum += std::abs(p[c] - fogColour[c]);
                 ++n;
             }
@@ -1321,7 +1325,7 @@ TEST(Compositor, DecalsStayOnTheirSurface)
         int yellow = 0, all = 0;
         for (int y = 198; y < 225 && !image.rgba.empty(); ++y) {
             for (int x = 142; x < 182; ++x) {
-                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                const uint8_t* p = pixel(image, x, y);
                 yellow += p[0] > 150 && p[1] > 110 && p[2] < 90;
                 ++all;
             }
@@ -1351,7 +1355,7 @@ TEST(Compositor, AStateRuleLeavesTheDrawsInThatState)
         for (int y = y0; y < y1 && !image.rgba.empty(); ++y) {
             for (int x = x0; x < x1; ++x) {
                 // A left translucent draw is fog-red blended by its alpha (0.6) over the page.
-                const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+                const uint8_t* p = pixel(image, x, y);
                 red += p[0] >= 200 && p[1] < 90 && p[2] < 90;
                 ++all;
             }

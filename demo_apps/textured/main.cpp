@@ -67,16 +67,20 @@ std::vector<uint8_t> makeStripes()
     return pixels;
 }
 
-// An RGBA image of textureSize squared, nearest-filtered (cut-outs keep sharp edges).
-GLuint uploadRgba(const std::vector<uint8_t>& pixels)
+// An image of textureSize squared, repeated: RGB filtered linearly, or RGBA nearest-filtered
+// (cut-outs keep sharp edges).
+GLuint uploadTexture(const std::vector<uint8_t>& pixels, GLenum format = GL_RGB)
 {
+    const GLint filter = format == GL_RGBA ? GL_NEAREST : GL_LINEAR;
     GLuint texture = 0;
     glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, textureSize, textureSize, 0, GL_RGBA,
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), textureSize, textureSize, 0, format,
                  GL_UNSIGNED_BYTE, pixels.data());
     return texture;
 }
@@ -99,7 +103,7 @@ GLuint uploadHoles()
             p[3] = hole ? 0 : 255;
         }
     }
-    return uploadRgba(pixels);
+    return uploadTexture(pixels, GL_RGBA);
 }
 
 // White, opaque in a round patch and clear around it: a pool laid over the floor.
@@ -114,22 +118,7 @@ GLuint uploadPool()
             pixels[(y * textureSize + x) * 4 + 3] = inside ? 255 : 0;
         }
     }
-    return uploadRgba(pixels);
-}
-
-GLuint uploadTexture(const std::vector<uint8_t>& pixels)
-{
-    GLuint texture = 0;
-    glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, textureSize, textureSize, 0, GL_RGB,
-                 GL_UNSIGNED_BYTE, pixels.data());
-    return texture;
+    return uploadTexture(pixels, GL_RGBA);
 }
 
 // With `faceTextures`, each face binds its own texture (outside glBegin/glEnd, as GL wants).
