@@ -14,7 +14,9 @@
 namespace nprgl::capture {
 
 constexpr char kMagic[8] = {'N', 'P', 'R', 'G', 'L', 'C', 'A', 'P'};
-constexpr uint32_t kFormatVersion = 2; // 2: META ends with the opcode name table
+// 2: META ends with the opcode name table; 3: frames may hold the Created pseudo-call (the name
+// a created shader or program got), which a version 2 reader would refuse as unknown.
+constexpr uint32_t kFormatVersion = 3;
 constexpr uint64_t kFileHeaderSize = 16; // magic, u32 version, u32 flags (0)
 
 constexpr uint32_t fourcc(const char (&s)[5])

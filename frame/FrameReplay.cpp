@@ -104,6 +104,9 @@ public:
             CallReader::Uncaptured ignored;
             return r.getUncaptured(ignored);
         }
+        case op::kCreated: // in the program's own process its names are the driver's
+            r.get<uint32_t>();
+            return r.ok();
         default:
             r.fail("a pseudo-call a kept frame does not hold (opcode " + std::to_string(opcode) +
                    ")");

@@ -80,6 +80,12 @@ void Recorder::readPixels(uint16_t opcode)
     }
 }
 
+void Recorder::created(GLuint name)
+{
+    mWriter.op(op::kCreated);
+    mWriter.put<uint32_t>(name);
+}
+
 void Recorder::endFrame(uint64_t frame)
 {
     if (mSession) {

@@ -39,6 +39,8 @@ public:
     void countUncaptured(uint16_t opcode);
     // A query that reads rendered pixels (texture images, query results): a barrier only.
     void readback();
+    // After glCreateShader or glCreateProgram: the name the program got (a kCreated pseudo-call).
+    void created(GLuint name);
     // glReadPixels: a readback, or not captured when it writes into a pixel-pack buffer.
     void readPixels(uint16_t opcode);
     // Hands over the counts not reported yet (name, count).

@@ -1493,6 +1493,10 @@ bool StateTracker::pseudo(CallReader& r, uint16_t opcode)
         CallReader::Uncaptured ignored; // what the recorder could not follow either
         return r.getUncaptured(ignored);
     }
+    if (opcode == op::kCreated) { // the replay's names are the replaying sink's concern
+        r.get<uint32_t>();
+        return r.ok();
+    }
     if (opcode == op::kBatchRef) {
         const std::vector<uint8_t>* blob = r.getBlobRef();
         if (!blob) return false;

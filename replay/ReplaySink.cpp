@@ -143,6 +143,17 @@ bool ReplaySink::pseudo(CallReader& r, uint16_t opcode)
         for (auto& [name, count] : calls) mFrameUncaptured.emplace_back(std::move(name), count);
         return true;
     }
+    if (opcode == op::kCreated) {
+        const GLuint recorded = r.get<uint32_t>();
+        if (!r.ok()) return false;
+        if (mObjectNames.size() >= mLimits.names && !mObjectNames.contains(recorded)) {
+            r.fail("more than " + std::to_string(mLimits.names) + " shader and program names");
+            return false;
+        }
+        mObjectNames[recorded] = mMade; // 0 where the create failed here: no object
+        mMade = 0;
+        return true;
+    }
     r.fail("unknown opcode " + std::to_string(opcode));
     return false;
 }

@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace nprgl {
@@ -44,6 +45,16 @@ public:
     // A recorded client-array pointer: an offset when a buffer is bound, else our shadow.
     const void* clientPointer(uint64_t value, int attribIndex);
     bool pseudo(CallReader& r, uint16_t opcode);
+    // Shader and program names: the recorded program got its names from its driver, this
+    // replay's come after nprgl's own programs, so a kCreated pseudo-call after each
+    // glCreateShader or glCreateProgram maps the recorded name to the one made here. Names
+    // a capture never announced (format version 2) are taken as they are.
+    void created(GLuint made) { mMade = made; }
+    GLuint objectName(GLuint recorded) const
+    {
+        const auto it = mObjectNames.find(recorded);
+        return it == mObjectNames.end() ? recorded : it->second;
+    }
     const std::string& error() const { return mError; }
     // Calls the program made that the capture lacks (forwarded, not recorded), by name, with
     // the frames they were made in.
@@ -130,6 +141,8 @@ private:
     CallReader::Uncaptured mFrameUncaptured; // of the frame being replayed
     std::map<std::string, Uncaptured> mUncaptured;
     std::string mError;
+    GLuint mMade = 0; // what the last glCreateShader or glCreateProgram made here
+    std::unordered_map<GLuint, GLuint> mObjectNames; // recorded -> made here
     std::vector<ArrayUse> mUses;
     bool mUsesValid = false;
     bool mDropRange = false;     // the next glDrawRangeElements is issued without its range

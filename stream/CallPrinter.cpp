@@ -153,6 +153,13 @@ bool CallPrinter::pseudo(CallReader& r, uint16_t opcode)
         if (mGrep.empty()) *mOut += line + " --\n";
         return true;
     }
+    if (opcode == op::kCreated) {
+        const uint32_t name = r.get<uint32_t>();
+        if (!r.ok()) return false;
+        ++mCalls;
+        if (mGrep.empty()) *mOut += "-- created: " + std::to_string(name) + " --\n";
+        return true;
+    }
     if (opcode == op::kArrayData) {
         CallReader::Payload payload(r);
         uint8_t slot = r.get<uint8_t>();

@@ -111,12 +111,17 @@ INSTANTIATE_TEST_SUITE_P(
 // goes on to bind (the program's own, given out before nprgl existed in the recorded run): the
 // demo's new floor texture and a style's shared one name, and the floor came out in the style's
 // texture, or the replay was refused (a game's vertex buffer, taken by a style's mesh buffer).
-TEST(RecordReplay, AStyledReplayDrawsWhatTheStyledProgramDrew)
+namespace {
+
+// Records demo_textured with `options` in style none, runs it live in the default style and
+// replays the capture in that style: frame 3 must be the same pixels.
+void expectStyledReplayAsLive(const std::string& name, const std::vector<std::string>& options)
 {
-    std::string dir = freshDir("rec_late"), live = dir + "/live", replay = dir + "/replay";
-    std::string file = dir + "/capture.nprgl";
-    const std::vector<std::string> app = {demo("textured"), "--late-floor", "--offscreen",
-                                          "--frames", "3", "--size", "160x120"};
+    std::string dir = freshDir(name), live = dir + "/live";
+    std::string replay = dir + "/replay", file = dir + "/capture.nprgl";
+    std::vector<std::string> app = {demo("textured"), "--offscreen", "--frames", "3", "--size",
+                                    "160x120"};
+    app.insert(app.end(), options.begin(), options.end());
     std::vector<std::string> rec = {nprglCommand(), "record", "--style", "none", "-o", file, "--"};
     rec.insert(rec.end(), app.begin(), app.end());
     ProcessResult r = runProcess(rec);
@@ -132,6 +137,24 @@ TEST(RecordReplay, AStyledReplayDrawsWhatTheStyledProgramDrew)
     ImageDiff diff = compareImages(live + "/textured_3.png", framePng(replay, 3));
     ASSERT_TRUE(diff.comparable) << diff.error;
     EXPECT_EQ(diff.differingPixels, 0u);
+}
+
+} // namespace
+
+TEST(RecordReplay, AStyledReplayDrawsWhatTheStyledProgramDrew)
+{
+    expectStyledReplayAsLive("rec_late", {"--late-floor"});
+}
+
+// The same for shader and program objects, whose names the driver alone gives out: the
+// replay's styles made theirs before the demo's frame 2 made its own, so the capture's
+// glShaderSource, glAttachShader, glLinkProgram and glUseProgram named the styles' objects
+// (the first style program relinked from the pane's shaders, whose sources replaced its own:
+// the HUD bar, drawn by that program, lost its fill, as scorched3d's tank previews lost their
+// squares in every replayed shading style).
+TEST(RecordReplay, AStyledReplayKeepsTheProgramsShadersApartFromTheStyles)
+{
+    expectStyledReplayAsLive("rec_shader", {"--late-shader", "--hud-bar"});
 }
 
 TEST(Fixtures, EveryDemoFixtureReplaysAsTheDemoDrawsToday)

@@ -12,7 +12,8 @@
 // depth) and draws the scene again there, turned, like a rear-view mirror; --stale-panel
 // leaves frame 1's panel in the buffer by clearing only depth later; --hud-bar draws a bar
 // over the scene in 2D with the depth test (GL_LEQUAL): a white frame, then a blue gradient in
-// it at the same depth.
+// it at the same depth; --late-shader makes a GLSL program of its own in frame 2 and draws an
+// orange pane with it from then on, as games make theirs while they load.
 
 // Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
@@ -195,6 +196,9 @@ public:
                 {"late-floor", demo::ExtraOption::Kind::Flag,
                  "the floor gets a texture of its own made in frame 2, after the first frame "
                  "was drawn (games load textures as they go)"},
+                {"late-shader", demo::ExtraOption::Kind::Flag,
+                 "from frame 2, an orange pane beside the cube drawn with a GLSL program the "
+                 "demo makes in that frame (its own shaders)"},
                 {"backdrop-floor", demo::ExtraOption::Kind::Flag,
                  "the floor is a backdrop in the clear colour: unlit, untextured, drawn first "
                  "without the depth test or depth writes (a dark arena floor)"},
@@ -250,6 +254,7 @@ public:
         glowAlphaTest_ = options.has("glow-alpha-test");
         glowListPlain_ = options.has("glow-list-plain");
         lateFloor_ = options.has("late-floor");
+        lateShader_ = options.has("late-shader");
         backdropFloor_ = options.has("backdrop-floor");
         backdropHaze_ = options.has("backdrop-haze");
         depthPrepass_ = options.has("depth-prepass");
@@ -320,6 +325,7 @@ public:
             return;
         }
         drawScene(frame);
+        if (lateShader_ && frame >= 2) drawShaderPane();
         if (hudBar_) drawHudBar();
         // Between the scene and the weapon: another framebuffer's colour is cleared.
         if (pickFbo_) pick(frame);
@@ -434,6 +440,41 @@ public:
         glWindowPos2i(4, 4);
         glDrawPixels(48, 32, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
         glPopAttrib();
+    }
+
+    // A pane in the scene drawn by the demo's own GLSL program, made the first time.
+    void drawShaderPane()
+    {
+        if (!paneProgram_) {
+            const char* vertex = "#version 110\nvoid main() { gl_Position = ftransform(); }\n";
+            const char* fragment =
+                "#version 110\nvoid main() { gl_FragColor = vec4(1.0, 0.55, 0.1, 1.0); }\n";
+            const GLuint vs = glCreateShader(GL_VERTEX_SHADER);
+            const GLuint fs = glCreateShader(GL_FRAGMENT_SHADER);
+            glShaderSource(vs, 1, &vertex, nullptr);
+            glShaderSource(fs, 1, &fragment, nullptr);
+            glCompileShader(vs);
+            glCompileShader(fs);
+            paneProgram_ = glCreateProgram();
+            glAttachShader(paneProgram_, vs);
+            glAttachShader(paneProgram_, fs);
+            glLinkProgram(paneProgram_);
+            // Flagged: they go with the program, as careful programs leave them.
+            glDeleteShader(vs);
+            glDeleteShader(fs);
+        }
+        glUseProgram(paneProgram_);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glTranslatef(-2.2f, 0.9f, -8.0f);
+        glRotatef(20.0f, 0.0f, 1.0f, 0.0f);
+        glBegin(GL_QUADS);
+        glVertex3f(-0.5f, -0.5f, 0.0f);
+        glVertex3f(0.5f, -0.5f, 0.0f);
+        glVertex3f(0.5f, 0.5f, 0.0f);
+        glVertex3f(-0.5f, 0.5f, 0.0f);
+        glEnd();
+        glUseProgram(0);
     }
 
     void drawHudBar()
@@ -631,6 +672,7 @@ public:
         if (cutoutTexture_) glDeleteTextures(1, &cutoutTexture_);
         if (glowList_) glDeleteLists(glowList_, 1);
         if (lateFloorTexture_) glDeleteTextures(1, &lateFloorTexture_);
+        if (paneProgram_) glDeleteProgram(paneProgram_);
     }
 
 private:
@@ -646,6 +688,8 @@ private:
     bool glowAlphaTest_ = false;
     bool glowListPlain_ = false;
     bool lateFloor_ = false;
+    bool lateShader_ = false;
+    GLuint paneProgram_ = 0;
     bool backdropFloor_ = false;
     bool backdropHaze_ = false;
     bool stalePanel_ = false;
