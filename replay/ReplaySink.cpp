@@ -58,6 +58,17 @@ bool ReplaySink::before(uint16_t opcode)
     mOpcode = opcode;
     mWork = 1;
     if (!chargeWork(1)) return false; // batch references may run a blob's calls many times
+    if (mMadeUnnamed) {
+        // A capture of format 2 does not say which name the program got.
+        mMadeUnnamed = false;
+        if (!mWarnedUnnamed) {
+            NPRGL_WARN("this capture does not say which names the program's shaders and "
+                       "programs got (its format is older than version 3): in a style, "
+                       "they may take the names of the styles' own programs and draw wrongly; "
+                       "record it again");
+            mWarnedUnnamed = true;
+        }
+    }
     // Mesa's list compiler overruns heap buffers on several calls after a glBegin it
     // compiled (glEndList, glCallList, glEvalCoord...; found by fuzz_replay). Programs only
     // give vertices and their attributes there.
@@ -152,6 +163,7 @@ bool ReplaySink::pseudo(CallReader& r, uint16_t opcode)
         }
         mObjectNames[recorded] = mMade; // 0 where the create failed here: no object
         mMade = 0;
+        mMadeUnnamed = false;
         return true;
     }
     r.fail("unknown opcode " + std::to_string(opcode));

@@ -49,7 +49,11 @@ public:
     // replay's come after nprgl's own programs, so a kCreated pseudo-call after each
     // glCreateShader or glCreateProgram maps the recorded name to the one made here. Names
     // a capture never announced (format version 2) are taken as they are.
-    void created(GLuint made) { mMade = made; }
+    void created(GLuint made)
+    {
+        mMade = made;
+        mMadeUnnamed = true; // until the kCreated pseudo-call after it
+    }
     GLuint objectName(GLuint recorded) const
     {
         const auto it = mObjectNames.find(recorded);
@@ -142,6 +146,7 @@ private:
     std::map<std::string, Uncaptured> mUncaptured;
     std::string mError;
     GLuint mMade = 0; // what the last glCreateShader or glCreateProgram made here
+    bool mMadeUnnamed = false, mWarnedUnnamed = false;
     std::unordered_map<GLuint, GLuint> mObjectNames; // recorded -> made here
     std::vector<ArrayUse> mUses;
     bool mUsesValid = false;

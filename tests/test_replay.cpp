@@ -388,3 +388,47 @@ TEST(Replay, StatsCountEachFramesStyledAndLeftDraws)
     EXPECT_NE(neither.err.find("-o DIR or --stats is required"), std::string::npos)
         << neither.err;
 }
+
+// A capture of format 2 names no created shader or program: its replay says so once, as its
+// names may meet the styles' own. One of format 3 (a Created after each) says nothing.
+TEST(Replay, ACaptureThatDoesNotNameItsShadersSaysSo)
+{
+    auto frame = [](bool named) {
+        return [named](CallWriter& w) {
+            call(w, op::glCreateShader, GLenum(GL_VERTEX_SHADER));
+            if (named) call(w, op::kCreated, uint32_t(7));
+            call(w, op::glDeleteShader, GLuint(7));
+            call(w, op::glCreateProgram);
+            if (named) call(w, op::kCreated, uint32_t(8));
+            call(w, op::glDeleteProgram, GLuint(8));
+        };
+    };
+    const std::string warning = "does not say which names the program's shaders";
+    for (bool named : {false, true}) {
+        const std::string path =
+            writeCapture(named ? "named" : "unnamed", {frame(named), frame(named)});
+        ProcessResult p =
+            runProcess({binDir() + "/nprgl", "replay", "--style", "none", path, "--stats"});
+        EXPECT_EQ(p.exitCode, 0) << p.err;
+        const size_t at = p.err.find(warning);
+        if (named) {
+            EXPECT_EQ(at, std::string::npos) << p.err;
+        } else {
+            ASSERT_NE(at, std::string::npos) << p.err;
+            EXPECT_EQ(p.err.find(warning, at + 1), std::string::npos) << "said twice: " << p.err;
+        }
+    }
+}
+
+// Created names are bounded like glGen* counts: a capture announcing more is refused.
+TEST(Replay, CreatedNamesAreBounded)
+{
+    const std::string path = writeCapture("created", {[](CallWriter& w) {
+        for (uint32_t name = 1; name <= 20; ++name) call(w, op::kCreated, name);
+    }});
+    ReplayOptions options;
+    options.limits.names = 16;
+    std::string error;
+    EXPECT_FALSE(Replayer::run(path, options, error));
+    EXPECT_NE(error.find("more than 16 shader and program names"), std::string::npos) << error;
+}
