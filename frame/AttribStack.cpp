@@ -56,6 +56,8 @@ void AttribStack::pop()
         a.alphaTest = saved.alphaTest;
         a.colorMaskAll = saved.colorMaskAll;
         a.colorMaskNone = saved.colorMaskNone;
+        a.colorMaskRgb = saved.colorMaskRgb;
+        a.colorMaskAlpha = saved.colorMaskAlpha;
     }
     if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
     if (mask & (GL_POLYGON_BIT | GL_ENABLE_BIT)) {

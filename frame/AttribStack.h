@@ -39,6 +39,8 @@ struct AttribState {
     bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
     bool fillFront = true, fillBack = true, colorMaskAll = true, depthMask = true;
     bool colorMaskNone = false; // no colour channel written: a depth-only pass
+    bool colorMaskRgb = true;   // red, green and blue written (alpha may not be)
+    bool colorMaskAlpha = true;
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;

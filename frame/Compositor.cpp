@@ -685,9 +685,17 @@ void Compositor::noteHeld()
     const glm::ivec4 scissor = scissorTest ? mTracker.scissor() : glm::ivec4(0);
     // And per depth range (a first-person weapon drawn in a range of its own).
     const glm::vec2 depthRange = mTracker.depthRange();
+    // And per alpha mask of the drawn colours (a depth-only pass joins its colour pass).
+    const bool coloured = !mTracker.colourMaskNone();
+    const bool alphaWrites = mTracker.colourMaskAlpha();
     if (mHeld && (framebuffer != mHeldFramebuffer || scissorTest != mHeldScissorTest ||
-                  scissor != mHeldScissor || depthRange != mHeldDepthRange)) {
+                  scissor != mHeldScissor || depthRange != mHeldDepthRange ||
+                  (coloured && mHeldColoured && alphaWrites != mHeldAlphaWrites))) {
         flush();
+    }
+    if (coloured && !(mHeld && mHeldColoured)) {
+        mHeldColoured = true;
+        mHeldAlphaWrites = alphaWrites;
     }
     mHeldDepthRange = depthRange;
     mHeldFramebuffer = framebuffer;
@@ -808,9 +816,9 @@ void Compositor::clear(bool colour)
     GLint framebuffer = 0;
     gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     ++colourClearsOf(framebuffer);
-    // A clear of every channel makes its rectangle fresh; a partial one draws nothing, and
-    // what it clears is background either way.
-    if (!mTracker.colourMaskAll()) return;
+    // A clear of every colour channel makes its rectangle fresh (alpha is no part of the
+    // picture); a partial one draws nothing, and what it clears is background either way.
+    if (!mTracker.colourMaskRgb()) return;
     constexpr int kAll = 1 << 30;
     mFresh.drawn = false;
     mFresh.framebuffer = framebuffer;
@@ -872,6 +880,7 @@ void Compositor::flush()
     const auto start = std::chrono::steady_clock::now();
     mTracker.takeBatches(mTracked);
     buildScene();
+    mHeldColoured = false;
     if (!mScene.objects.empty()) render();
     mFresh.drawn = true; // the styles' picture
     mFrameComposeMs +=
@@ -957,6 +966,7 @@ void Compositor::buildScene()
     mScene.scissored = mHeldScissorTest;
     mScene.scissor = mHeldScissor;
     mScene.depthRange = mHeldDepthRange;
+    mScene.alphaWrites = !mHeldColoured || mHeldAlphaWrites;
     mScene.colourClears = colourClearsOf(mHeldFramebuffer);
     // Fresh when the cleared (or shown) rectangle holds the scene's viewport, as confined.
     const glm::ivec4 area = mScene.confined(mScene.viewport);

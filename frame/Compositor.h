@@ -186,6 +186,8 @@ private:
     bool mHeldScissorTest = false; // the held scene's scissor test and box
     glm::ivec4 mHeldScissor{0};
     glm::vec2 mHeldDepthRange{0.0f, 1.0f};
+    bool mHeldColoured = false;   // a draw with colour is held: mHeldAlphaWrites is its mask
+    bool mHeldAlphaWrites = true; // the held draws write alpha (glColorMask's fourth)
     std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
     // 3D polygon draws (a glBegin/glEnd, an array draw, a held glCallList) over the run and

@@ -670,8 +670,9 @@ const char* StateTracker::pipelineLimit() const
     if ((!a.fillFront && frontDrawn) || (!a.fillBack && backDrawn)) {
         return "glPolygonMode lines or points";
     }
-    // A depth-only pass (no colour channel) is held: the styles supply its depth.
-    if (!a.colorMaskAll && !a.colorMaskNone) return "a partial colour mask";
+    // A depth-only pass (no colour channel) is held: the styles supply its depth. So is one
+    // that masks only alpha (the picture is all its own; the styles keep alpha as masked).
+    if (!a.colorMaskRgb && !a.colorMaskNone) return "a partial colour mask";
     // The styles run inside one more glPushAttrib/glPushClientAttrib: a full stack would
     // leave the held scene undrawn.
     if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
@@ -687,7 +688,7 @@ bool StateTracker::mayLayer(GLenum mode) const
     // it draws over.
     const AttribState& a = mAttrib;
     if (!mHolding || !isPolygonMode(mode) || mCompiling || mRenderMode != GL_RENDER ||
-        !is3D() || !blending() || !a.colorMaskAll) {
+        !is3D() || !blending() || !a.colorMaskRgb) {
         return false;
     }
     if (ownShaders() || pipelineLimit() || leftByRule()) return false;

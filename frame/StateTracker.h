@@ -184,6 +184,10 @@ public:
     // The scissor test's state now: on, and its box.
     bool scissorTest() const { return mAttrib.scissorTest; }
     bool colourMaskAll() const { return mAttrib.colorMaskAll; }
+    // Red, green and blue written: the picture is the draw's (alpha may be masked).
+    bool colourMaskRgb() const { return mAttrib.colorMaskRgb; }
+    bool colourMaskAlpha() const { return mAttrib.colorMaskAlpha; }
+    bool colourMaskNone() const { return mAttrib.colorMaskNone; }
     const glm::ivec4& scissor() const { return mAttrib.scissor; }
     const glm::ivec4& viewport() const { return mAttrib.viewport; }
     // Moves the held batches out (the frame's batch list starts empty again). The batches
@@ -316,6 +320,8 @@ public:
     {
         mAttrib.colorMaskAll = r && g && b && a;
         mAttrib.colorMaskNone = !r && !g && !b;
+        mAttrib.colorMaskRgb = r && g && b;
+        mAttrib.colorMaskAlpha = a;
     }
     void pushAttrib(GLbitfield mask);
     void popAttrib();

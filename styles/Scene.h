@@ -176,6 +176,9 @@ struct Scene {
     glm::ivec4 scissor{0, 0, 0, 0};
     // The program's glDepthRange for the scene (one per scene: a change flushes).
     glm::vec2 depthRange{0.0f, 1.0f};
+    // The program's draws write alpha (one per scene: a change flushes); when they do not,
+    // neither do the styles in its framebuffer (a program may keep data there).
+    bool alphaWrites = true;
 
     // Everything but the objects, from `whole` (for a part of it drawn on its own).
     void takeFrameOf(const Scene& whole)
@@ -189,6 +192,7 @@ struct Scene {
         scissored = whole.scissored;
         scissor = whole.scissor;
         depthRange = whole.depthRange;
+        alphaWrites = whole.alphaWrites;
     }
     // `rect` (x, y, width, height, window pixels) within the scissor box, when scissored.
     glm::ivec4 confined(glm::ivec4 rect) const

@@ -19,6 +19,7 @@ struct StyleContext {
     GLuint vao = 0; // bound when a style's render() starts
     GLuint blankTexture = 0; // 1x1 white, made on first use (ShadingCommon::drawTextured)
     const StyleSettings* settings = nullptr;
+    bool alphaWrites = true; // the scene's (Scene::alphaWrites), set by the chain per flush
 
     // The value of style.param (configured, else the registry's default).
     double param(const char* style, const char* name) const;
@@ -32,6 +33,8 @@ struct StyleContext {
     // scene's scissor box; and back to the baseline (the scene's box, or no test).
     void scissorTo(const Scene& scene, glm::ivec4 rect) const;
     void endScissor(const Scene& scene) const;
+    // Every colour channel on, alpha as the program writes it in this scene.
+    void colourMaskOn() const { gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, alphaWrites); }
 };
 
 // Shading styles draw the held-back surfaces; background styles then restyle the page around

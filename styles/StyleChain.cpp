@@ -85,7 +85,8 @@ void StyleChain::setBaseline(const Scene& scene, bool shadingPass)
     // The styles' front: gl_FrontFacing and culling are by it, not by the program's front face
     // at the flush (FaceCulling, ShadingCommon's faceSign).
     gl.FrontFace(GL_CCW);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    mContext.alphaWrites = scene.alphaWrites;
+    mContext.colourMaskOn();
     gl.LineWidth(1.0f);
     gl.PointSize(1.0f);
 }
@@ -205,7 +206,7 @@ void StyleChain::render(const Scene& scene)
         setBaseline(mDepthOnly, true);
         gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         mStyles.front()->render(mDepthOnly, mContext);
-        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        mContext.colourMaskOn();
     }
     // With the program's depth writes, alpha test and offset: a translucent decal (a goal
     // painted on the floor) keeps the offset that lifts it off its surface.
@@ -292,7 +293,7 @@ bool StyleChain::renderPlain(const Scene& scene)
         if (first.depthOnly) gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         mPlain.render(run, mContext);
         gl.Disable(GL_BLEND);
-        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        mContext.colourMaskOn();
     });
     mContext.meshes.endFlush(gl);
     return true;

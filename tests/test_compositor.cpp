@@ -1431,3 +1431,23 @@ TEST_P(MultiPass, ABlendedSecondPassIsMergedIntoItsObject)
 INSTANTIATE_TEST_SUITE_P(Compositor, MultiPass,
                          ::testing::Values("arrays", "immediate", "displaylist"),
                          [](const auto& param) { return param.param; });
+
+// A program that draws with alpha writes off (glColorMask(1, 1, 1, 0): briquolo, every
+// frame) draws its whole picture: it is styled (it was all left as "a partial colour mask"),
+// and the styles keep the destination alpha the program keeps (cleared to 0.25 here), which
+// the demo reads back at five points after its scene.
+TEST(Compositor, AProgramMaskingOnlyAlphaIsStyledAndKeepsItsAlpha)
+{
+    for (const char* style : {"toon+paper+edges", "halftone+paper+edges", "pencil"}) {
+        const std::vector<std::string> command = {nprglCommand(),     "--style",  style,
+                                                  demo("textured"),   "--offscreen",
+                                                  "--alpha-mask",     "--frames", "3",
+                                                  "--size",           "320x240"};
+        ProcessResult r = runProcess(command);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.err.find(" styled, 0 left as the program drew them"), std::string::npos)
+            << style << ": " << r.err;
+        EXPECT_NE(r.out.find("alpha frame 3: 64 64 64 64 64"), std::string::npos)
+            << style << ": " << r.out;
+    }
+}

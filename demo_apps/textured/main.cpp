@@ -13,7 +13,9 @@
 // leaves frame 1's panel in the buffer by clearing only depth later; --hud-bar draws a bar
 // over the scene in 2D with the depth test (GL_LEQUAL): a white frame, then a blue gradient in
 // it at the same depth; --late-shader makes a GLSL program of its own in frame 2 and draws an
-// orange pane with it from then on, as games make theirs while they load.
+// orange pane with it from then on, as games make theirs while they load; --alpha-mask draws
+// the scene with alpha writes off over a colour cleared to alpha 0.25 and prints the
+// destination alpha.
 
 // Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
@@ -196,6 +198,10 @@ public:
                 {"late-floor", demo::ExtraOption::Kind::Flag,
                  "the floor gets a texture of its own made in frame 2, after the first frame "
                  "was drawn (games load textures as they go)"},
+                {"alpha-mask", demo::ExtraOption::Kind::Flag,
+                 "the scene drawn with glColorMask(1, 1, 1, 0) over a colour cleared to alpha "
+                 "0.25 (as briquolo draws); after each frame prints the destination alpha at "
+                 "five points of the scene"},
                 {"late-shader", demo::ExtraOption::Kind::Flag,
                  "from frame 2, an orange pane beside the cube drawn with a GLSL program the "
                  "demo makes in that frame (its own shaders)"},
@@ -255,6 +261,7 @@ public:
         glowListPlain_ = options.has("glow-list-plain");
         lateFloor_ = options.has("late-floor");
         lateShader_ = options.has("late-shader");
+        alphaMask_ = options.has("alpha-mask");
         backdropFloor_ = options.has("backdrop-floor");
         backdropHaze_ = options.has("backdrop-haze");
         depthPrepass_ = options.has("depth-prepass");
@@ -296,7 +303,7 @@ public:
         glViewport(0, 0, options.width, options.height);
         demo::setPerspective(45.0, static_cast<double>(options.width) / options.height, 1.0,
                              50.0);
-        glClearColor(0.15f, 0.15f, 0.18f, 1.0f);
+        glClearColor(0.15f, 0.15f, 0.18f, alphaMask_ ? 0.25f : 1.0f);
         glEnable(GL_DEPTH_TEST);
         glEnable(GL_LIGHTING);
         glEnable(GL_LIGHT0);
@@ -311,8 +318,10 @@ public:
 
     void draw(int frame) override
     {
+        if (alphaMask_) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glClear(stalePanel_ && frame > 1 ? GL_DEPTH_BUFFER_BIT
                                          : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (alphaMask_) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
         if (stalePanel_ && frame == 1) drawPanel();
         if (depthPrepass_) {
             // Depth first, colour off; then the colours on equal depth.
@@ -325,6 +334,7 @@ public:
             return;
         }
         drawScene(frame);
+        if (alphaMask_) printAlpha(frame);
         if (lateShader_ && frame >= 2) drawShaderPane();
         if (hudBar_) drawHudBar();
         // Between the scene and the weapon: another framebuffer's colour is cleared.
@@ -440,6 +450,24 @@ public:
         glWindowPos2i(4, 4);
         glDrawPixels(48, 32, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
         glPopAttrib();
+    }
+
+    // The destination alpha at the centre (the cube), on the floor, the sphere and two
+    // corners, as a program that keeps data there reads it.
+    void printAlpha(int frame)
+    {
+        const int points[5][2] = {{width_ / 2, height_ / 2},
+                                  {width_ / 2, height_ / 8},
+                                  {width_ * 2 / 3, height_ / 2},
+                                  {2, 2},
+                                  {width_ - 3, height_ - 3}};
+        std::printf("alpha frame %d:", frame);
+        for (const auto& p : points) {
+            GLubyte a = 0;
+            glReadPixels(p[0], p[1], 1, 1, GL_ALPHA, GL_UNSIGNED_BYTE, &a);
+            std::printf(" %d", int(a));
+        }
+        std::printf("\n");
     }
 
     // A pane in the scene drawn by the demo's own GLSL program, made the first time.
@@ -689,6 +717,7 @@ private:
     bool glowListPlain_ = false;
     bool lateFloor_ = false;
     bool lateShader_ = false;
+    bool alphaMask_ = false;
     GLuint paneProgram_ = 0;
     bool backdropFloor_ = false;
     bool backdropHaze_ = false;

@@ -229,7 +229,7 @@ void PaperStyle::endPass(const Scene& scene, StyleContext& ctx)
     ctx.endScissor(scene);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthMask(GL_TRUE);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ctx.colourMaskOn();
 }
 
 bool PaperStyle::copyBackground(const Scene& scene, StyleContext& ctx)
@@ -275,7 +275,7 @@ void PaperStyle::layBackground(const Scene& scene, StyleContext& ctx)
     // Grained here unless the grain goes over the whole viewport after the scene.
     if (mGrainScene && !grainedThisFrame(scene, false)) gl.Uniform1f(mU.grain, 0.0f);
     gl.Uniform1i(mU.pass, 1);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ctx.colourMaskOn();
     // Depth still at the far plane: nothing was drawn there (without a depth buffer every
     // pixel passes and the colour alone decides).
     gl.Enable(GL_DEPTH_TEST);

@@ -672,6 +672,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     // 1. The scene's attributes off screen. The polygon offset is stronger than the one a
     // shading style draws with, so the stored depth never loses against the program's.
     gl.BindFramebuffer(GL_FRAMEBUFFER, mTargets.geometryFbo());
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); // every channel of its own targets
     gl.Viewport(0, 0, width, height);
     gl.ClearDepth(1.0);
     gl.DepthMask(GL_TRUE);
@@ -739,6 +740,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     // 4. Columns (or the operator itself), coverage and the composite into the program's
     // framebuffer.
     bindBack();
+    ctx.colourMaskOn();
     gl.Viewport(scene.viewport.x, scene.viewport.y, width, height);
     gl.Scissor(scene.viewport.x + rect.x, scene.viewport.y + rect.y, rect.z - rect.x,
                rect.w - rect.y);

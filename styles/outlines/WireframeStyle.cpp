@@ -271,7 +271,7 @@ void WireframeStyle::render(const Scene& scene, StyleContext& ctx)
         gl.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         gl.Disable(GL_STENCIL_TEST);
         gl.FrontFace(GL_CCW);
-        gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        ctx.colourMaskOn();
     }
 
     for (size_t i = 0; i < scene.objects.size(); ++i) {

@@ -95,6 +95,8 @@ void QueryVisibility::classify(const GlFunctions& gl, const reconstruct::ObjectM
 {
     mQueryCount = 0;
     gl.UseProgram(mProgram.id());
+    GLboolean mask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    gl.GetBooleanv(GL_COLOR_WRITEMASK, mask); // the pass's, alpha as the program writes it
     gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     gl.DepthMask(GL_FALSE);
     gl.DepthFunc(GL_LEQUAL);
@@ -157,7 +159,7 @@ void QueryVisibility::classify(const GlFunctions& gl, const reconstruct::ObjectM
         }
     }
     gl.DisableVertexAttribArray(0);
-    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.ColorMask(mask[0], mask[1], mask[2], mask[3]);
     gl.DepthMask(GL_TRUE);
     gl.Enable(GL_DEPTH_TEST);
     gl.LineWidth(1.0f);
