@@ -37,6 +37,7 @@ void AttribStack::pop()
         a.colorMaterial = saved.colorMaterial;
         a.lightsOn = saved.lightsOn;
         a.materialDiffuse = saved.materialDiffuse;
+        a.materialEmission = saved.materialEmission;
         a.lightPosition = saved.lightPosition;
         a.lightDiffuse = saved.lightDiffuse;
         a.lightAmbient = saved.lightAmbient;

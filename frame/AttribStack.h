@@ -56,6 +56,7 @@ struct AttribState {
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
     glm::vec3 fogColour{0.0f};
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
+    glm::vec3 materialEmission{0.0f}; // front: the light the surface gives itself
     uint8_t lightsOn = 0; // bit i: GL_LIGHTi enabled
     // GL_POSITION in eye space (transformed by the modelview of the call), and GL_DIFFUSE:
     // GL's defaults, white for light 0 and black for the others.

@@ -1643,11 +1643,15 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.materialId = currentMaterialId();
     const AttribState& a = mAttrib;
     // What the program's picture shows: lit surfaces take the material's colour in the light
-    // on their lit side, clamped per channel as GL clamps.
+    // on their lit side, plus the light the material emits, clamped per channel as GL clamps
+    // (a track whose materials are mostly emission, as torcs's are, was far too dark).
     if (a.lighting) {
         // One pass over the vertices: the material's colour (or the vertex's), lit.
         const glm::vec4 light(litSideLight(), 1.0f);
-        auto lit = [&](const glm::vec4& c) { return glm::min(c * light, glm::vec4(1.0f)); };
+        const glm::vec4 emission(glm::max(a.materialEmission, glm::vec3(0.0f)), 0.0f);
+        auto lit = [&](const glm::vec4& c) {
+            return glm::min(c * light + emission, glm::vec4(1.0f));
+        };
         if (!a.colorMaterial && !batch.materials.empty()) {
             // Materials set between glBegin and glEnd: each colours its run of vertices.
             glm::vec4 c = lit(batch.beginMaterial);
@@ -1661,7 +1665,7 @@ bool StateTracker::keep(TrackedBatch& batch)
         } else if (!a.colorMaterial) {
             const glm::vec4 c = lit(a.materialDiffuse);
             for (TrackedVertex& v : batch.vertices) v.color = c;
-        } else if (light != glm::vec4(1.0f)) {
+        } else if (light != glm::vec4(1.0f) || emission != glm::vec4(0.0f)) {
             for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
         }
     }
@@ -1812,6 +1816,7 @@ void StateTracker::material(GLenum face, GLenum pname, const float* v)
     if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
         mAttrib.materialDiffuse = {v[0], v[1], v[2], v[3]};
     }
+    if (pname == GL_EMISSION) mAttrib.materialEmission = {v[0], v[1], v[2]};
 }
 
 void StateTracker::newList(GLuint list, GLenum mode)

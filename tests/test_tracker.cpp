@@ -483,6 +483,59 @@ TEST(StateTracker, MaterialsInsideABatchColourTheirOwnVertices)
     }
 }
 
+// The light a material emits adds to its lit colour, as GL sums it (torcs's track: grey 0.4
+// that emits 0.4 was drawn at 0.4, 2.5 times too dark), also under glColorMaterial; and
+// glPopAttrib(GL_LIGHTING_BIT) takes it back.
+TEST(StateTracker, AMaterialsEmissionAddsToItsLitColour)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto material = [](CallWriter& w, GLenum pname, glm::vec4 c) {
+        vectorCall(w, op::glMaterialfv, GL_FRONT_AND_BACK, pname, &c, sizeof c);
+    };
+    auto triangle = [](CallWriter& w) {
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLES);
+        for (float x : {0.0f, 1.0f, 0.0f}) {
+            w.op(op::glVertex3f);
+            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+    };
+    const glm::vec4 grey(0.4f, 0.4f, 0.4f, 1.0f), glow(0.4f, 0.2f, 0.0f, 1.0f);
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true); // white: the lit side's light is white at full strength
+    feed.run([&](CallWriter& w) {
+        material(w, GL_AMBIENT_AND_DIFFUSE, grey);
+        material(w, GL_EMISSION, glow);
+        triangle(w);
+        w.op(op::glPushAttrib);
+        w.put<GLbitfield>(GL_LIGHTING_BIT);
+        material(w, GL_EMISSION, glm::vec4(0.0f, 0.0f, 0.5f, 1.0f));
+        w.op(op::glPopAttrib);
+        w.op(op::glEnable);
+        w.put<GLenum>(GL_COLOR_MATERIAL);
+        w.op(op::glColor3f);
+        for (float c : {0.4f, 0.4f, 0.4f}) w.put<float>(c);
+        triangle(w);
+        material(w, GL_EMISSION, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        triangle(w);
+    });
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    const glm::vec4 expected[3] = {{0.8f, 0.6f, 0.4f, 1.0f}, {0.8f, 0.6f, 0.4f, 1.0f}, grey};
+    for (size_t b = 0; b < 3; ++b) {
+        ASSERT_EQ(batches[b].vertices.size(), 3u);
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_NEAR(batches[b].vertices[0].color[c], expected[b][c], 1e-5f)
+                << "batch " << b << " channel " << c;
+        }
+    }
+}
+
 // Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
 // the generation off again gives the plain texture back (a program that sphere-maps one
 // object must not leave every later draw unstyled). A texture on unit 1 layers over unit 0's.
