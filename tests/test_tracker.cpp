@@ -494,15 +494,7 @@ TEST(StateTracker, AMaterialsEmissionAddsToItsLitColour)
     auto material = [](CallWriter& w, GLenum pname, glm::vec4 c) {
         vectorCall(w, op::glMaterialfv, GL_FRONT_AND_BACK, pname, &c, sizeof c);
     };
-    auto triangle = [](CallWriter& w) {
-        w.op(op::glBegin);
-        w.put<GLenum>(GL_TRIANGLES);
-        for (float x : {0.0f, 1.0f, 0.0f}) {
-            w.op(op::glVertex3f);
-            for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
-        }
-        w.op(op::glEnd);
-    };
+    auto triangle = [](CallWriter& w) { writeTriangle(w); };
     const glm::vec4 grey(0.4f, 0.4f, 0.4f, 1.0f), glow(0.4f, 0.2f, 0.0f, 1.0f);
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_LIGHTING, true);
