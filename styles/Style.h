@@ -72,6 +72,10 @@ public:
     // depth then spares its pixels the page's work (layBackground, from render or the chain).
     virtual void keepBackground(const Scene&, StyleContext&) {}
     virtual void layBackground(const Scene&, StyleContext&) {}
+    // An outline style that draws cut-outs' lines along their cuts (the program's alpha test
+    // on their texture) is given them with the opaque scene; others are not (a cut-out's
+    // polygons are not its shape).
+    virtual bool outlinesCutOuts() const { return false; }
     virtual void shutdown(StyleContext& ctx) = 0;
 };
 

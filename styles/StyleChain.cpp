@@ -136,6 +136,7 @@ void StyleChain::render(const Scene& scene)
     mBackdrop.objects.clear();
     mOnTop.objects.clear();
     bool depthTested = false; // an object drawn with the depth test came before
+    ++mFlushes;
     for (const SceneObject& o : scene.objects) {
         // Drawn without the depth test or, opaque, without depth writes: skies, clouds and
         // scenery behind the scene (before its first object), marks over it (after): drawn as
@@ -184,6 +185,9 @@ void StyleChain::render(const Scene& scene)
         const bool shading = mHasShading && i == 0; // the shading style is ordered first
         if (shading) {
             renderShading(mOpaque, *mStyles[i]);
+        } else if (mStyles[i]->outlinesCutOuts() && cutOutsOutlined()) {
+            setBaseline(mWithCutOuts, false);
+            mStyles[i]->render(mWithCutOuts, mContext);
         } else if (!mOpaque.objects.empty()) {
             setBaseline(mOpaque, false);
             mStyles[i]->render(mOpaque, mContext);
@@ -222,6 +226,27 @@ void StyleChain::render(const Scene& scene)
         mStyles.front()->render(run, mContext);
     });
     mContext.meshes.endFlush(mContext.gl);
+}
+
+bool StyleChain::cutOutsOutlined()
+{
+    // Built once a flush, when the first style asks: alpha-tested objects without a polygon
+    // offset (a decal's lines would fight its surface's).
+    if (mWithCutOutsFlush != mFlushes) {
+        mWithCutOutsFlush = mFlushes;
+        mWithCutOuts.objects.clear();
+        for (const SceneObject& o : mCutOut.objects) {
+            if (o.alphaFunc != GL_ALWAYS && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f) {
+                mWithCutOuts.objects.push_back(o);
+            }
+        }
+        if (!mWithCutOuts.objects.empty()) {
+            mWithCutOuts.objects.insert(mWithCutOuts.objects.begin(), mOpaque.objects.begin(),
+                                        mOpaque.objects.end());
+        }
+        mWithCutOuts.takeFrameOf(mOpaque);
+    }
+    return !mWithCutOuts.objects.empty();
 }
 
 void StyleChain::renderShading(const Scene& part, Style& shading)

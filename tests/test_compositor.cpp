@@ -1451,3 +1451,25 @@ TEST(Compositor, AProgramMaskingOnlyAlphaIsStyledAndKeepsItsAlpha)
             << style << ": " << r.out;
     }
 }
+
+// A cut-out (demo_textured --cutout: round holes in the cube's faces by its texture's alpha
+// and the alpha test) is outlined along its cut: the edge style draws its attributes where
+// the program's test keeps its texture, so its silhouette and the rims of its holes get ink.
+// It got none before (a cut-out's polygons are not its shape, so it was left out).
+TEST(Compositor, CutOutsAreOutlinedAlongTheirCuts)
+{
+    auto ink = [](const std::string& name, const std::string& style) {
+        const PngImage image = readPng(demoFrame("textured", name, {"--style", style}, {"--cutout"}));
+        int n = 0;
+        // The cube's box in frame 3 at 320x240 (the holes show the dark background).
+        for (int y = 85; y < 180 && !image.rgba.empty(); ++y) {
+            for (int x = 75; x < 150; ++x) {
+                const uint8_t* p = pixel(image, x, y);
+                n += std::max({p[0], p[1], p[2]}) < 20;
+            }
+        }
+        return n;
+    };
+    EXPECT_EQ(ink("cutout_toon", "toon"), 0) << "toon alone draws no ink";
+    EXPECT_GT(ink("cutout_edges", "toon+edges"), 800) << "the cut-out cube has no outlines";
+}

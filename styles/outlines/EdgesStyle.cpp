@@ -21,7 +21,8 @@ namespace {
 
 constexpr const char* kStyle = "edges";
 
-const char* kGeometryVertex = R"(#version 130
+// CUT 1: the variant for cut-outs, which carries their texture coordinates (kCutTest).
+const char* kGeometryVertex = R"(
 uniform mat4 modelview;
 uniform mat4 projection;
 uniform mat3 normalMatrix;
@@ -31,13 +32,50 @@ in vec4 color;
 out vec3 eyeNormal;
 out float viewDepth;
 out vec4 baseColor;
+#if CUT
+in vec2 texcoord;
+out vec2 uv;
+#endif
 void main()
 {
     vec4 eye = modelview * vec4(position, 1.0);
     eyeNormal = normalMatrix * normal;
     viewDepth = -eye.z / eye.w;
     baseColor = color;
+#if CUT
+    uv = texcoord;
+#endif
     gl_Position = projection * eye;
+}
+)";
+
+// A cut-out's attributes only where the program's alpha test keeps its fragment (its
+// texture's alpha times its colour's), so the operator finds its lines along the cut. A
+// variant of its own: the others would pay for the texture read (llvmpipe runs it anyway).
+const char* kCutTest = R"(
+#if CUT
+uniform sampler2D cutTexture;
+uniform bool cutTextured;
+uniform int alphaFunc; // the program's, less GL_NEVER: 0 never ... 7 always
+uniform float alphaRef;
+in vec2 uv;
+bool kept(float a)
+{
+    return alphaFunc == 1 ? a < alphaRef
+           : alphaFunc == 2 ? a == alphaRef
+           : alphaFunc == 3 ? a <= alphaRef
+           : alphaFunc == 4 ? a > alphaRef
+           : alphaFunc == 5 ? a != alphaRef
+           : alphaFunc == 6 ? a >= alphaRef
+                            : alphaFunc == 7;
+}
+#endif
+void cutTest(vec4 colour)
+{
+#if CUT
+    float a = colour.a * (cutTextured ? texture(cutTexture, uv).a : 1.0);
+    if (!kept(a)) discard;
+#endif
 }
 )";
 
@@ -52,7 +90,7 @@ void main()
 //      one pixel wide (see the operator).
 // An orthographic view may put the eye anywhere, so there the depth is measured from one
 // depth range in front of the near plane (relative jumps are then relative to the range).
-const char* kGeometryFragment = R"(#version 130
+const char* kGeometryFragment = R"(
 uniform float objectId;
 uniform bool orthographic;
 uniform float depthRange;
@@ -64,6 +102,7 @@ in vec4 baseColor;
 out uvec4 fragColor;
 void main()
 {
+    cutTest(baseColor);
     vec3 n = normalize(eyeNormal);
     if (!gl_FrontFacing) n = -n;
     float z = orthographic ? (1.0 + gl_FragCoord.z) * depthRange : max(viewDepth, 1e-6);
@@ -403,8 +442,21 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
         direct[fogged] = std::string(kOperator) + fog + kDirectMain;
         composite[fogged] = "#version 130\n" + fog + kCompositeFragment;
     }
-    if (!mGeometry.build(gl, kGeometryVertex, kGeometryFragment, error) ||
-        !mDetect.build(gl, kFullscreenVertex, detect.c_str(), error) ||
+    for (int cut = 0; cut < 2; ++cut) {
+        const std::string prefix =
+            std::string("#version 130\n#define CUT ") + (cut ? "1\n" : "0\n");
+        const std::string vertex = prefix + kGeometryVertex;
+        const std::string fragment = prefix + kCutTest + kGeometryFragment;
+        if (!mGeometry[cut].build(gl, vertex.c_str(), fragment.c_str(), error)) return false;
+        const ShaderProgram& g = mGeometry[cut];
+        mGeo[cut] = {g.uniform(gl, "modelview"),   g.uniform(gl, "projection"),
+                     g.uniform(gl, "normalMatrix"), g.uniform(gl, "objectId"),
+                     g.uniform(gl, "orthographic"), g.uniform(gl, "depthRange"),
+                     g.uniform(gl, "noMaterial"),  g.uniform(gl, "thinLines"),
+                     g.uniform(gl, "cutTexture"),  g.uniform(gl, "cutTextured"),
+                     g.uniform(gl, "alphaFunc"),   g.uniform(gl, "alphaRef")};
+    }
+    if (!mDetect.build(gl, kFullscreenVertex, detect.c_str(), error) ||
         !mDirect[0].build(gl, kPlacedVertex, direct[0].c_str(), error) ||
         !mDirect[1].build(gl, kPlacedVertex, direct[1].c_str(), error) ||
         !mDilate.build(gl, kFullscreenVertex, kDilateFragment, error) ||
@@ -412,10 +464,6 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
         !mComposite[1].build(gl, kFullscreenVertex, composite[1].c_str(), error)) {
         return false;
     }
-    mGeo = {mGeometry.uniform(gl, "modelview"),    mGeometry.uniform(gl, "projection"),
-            mGeometry.uniform(gl, "normalMatrix"), mGeometry.uniform(gl, "objectId"),
-            mGeometry.uniform(gl, "orthographic"), mGeometry.uniform(gl, "depthRange"),
-            mGeometry.uniform(gl, "noMaterial"), mGeometry.uniform(gl, "thinLines")};
     auto findOperator = [&](ShaderProgram& program, Operator& op) {
         op = {program.uniform(gl, "attributes"), program.uniform(gl, "rect"),
               program.uniform(gl, "depthStep"), program.uniform(gl, "creaseCosine"),
@@ -494,13 +542,16 @@ bool EdgesStyle::planNear(const Scene& scene, StyleContext& ctx, const glm::ivec
     const double area = double(extent.x) * double(extent.y);
     const float widest = glm::length(extent);
     double fragments = 0.0;
+    bool whole = false;
     mNearBy.assign(scene.objects.size(), NearBy::None);
     for (size_t i = 0; i < scene.objects.size() && fragments < area; ++i) {
         const SceneObject& o = scene.objects[i];
         if (!o.mesh) continue;
+        // A cut-out's lines follow its cut, not its polygons' edges: its box.
+        const bool cut = o.alphaFunc != GL_ALWAYS;
         const double n =
             0.5 * double(ctx.meshes.bindDerived(ctx.gl, *o.mesh, &FeatureLines::collect));
-        if (n <= 0.0) continue;
+        if (n <= 0.0 && !cut) continue;
         Footprint& f = mFootprints[i];
         const double across = std::min(f.size, widest);
         const double lines = kNearWidth * (2.0 * across * std::sqrt(n) + 2.0 * kNearWidth * n) +
@@ -510,12 +561,37 @@ bool EdgesStyle::planNear(const Scene& scene, StyleContext& ctx, const glm::ivec
         const double box = f.size < INFINITY && f.box.x < f.box.z && f.box.y < f.box.w
                                ? double(f.box.z - f.box.x) * double(f.box.w - f.box.y)
                                : INFINITY;
-        const bool byLines = mPass == Pass::Lines || lines <= box;
+        const bool byLines = !cut && (mPass == Pass::Lines || lines <= box);
         mNearBy[i] = byLines ? NearBy::Lines : NearBy::Box;
         fragments += byLines ? lines : box;
+        // A cut-out of no known box on screen: the whole rectangle.
+        if (cut && box == INFINITY) whole = true;
     }
     ctx.gl.DisableVertexAttribArray(4); // MeshBuffers::draw's rule
-    return mPass == Pass::Lines || fragments < area;
+    return !whole && (mPass == Pass::Lines || fragments < area);
+}
+
+void EdgesStyle::drawCutOut(StyleContext& ctx, const SceneObject& o, const Geometry& u)
+{
+    const GlFunctions& gl = ctx.gl;
+    gl.Uniform1i(u.alphaFunc, int(o.alphaFunc) - GL_NEVER);
+    gl.Uniform1f(u.alphaRef, o.alphaRef);
+    gl.Uniform1i(u.cutTexture, 0);
+    gl.ActiveTexture(GL_TEXTURE0);
+    auto textured = [&](GLuint texture) {
+        gl.Uniform1i(u.cutTextured, texture != 0 ? 1 : 0);
+        gl.BindTexture(GL_TEXTURE_2D, textureName(texture));
+    };
+    if (o.textureRuns.empty()) {
+        textured(o.texture);
+        ctx.meshes.draw(gl, *o.mesh);
+    } else {
+        for (const SceneObject::TextureRun& run : o.textureRuns) {
+            textured(run.texture);
+            ctx.meshes.drawFaces(gl, *o.mesh, run.firstFace, run.faceCount);
+        }
+    }
+    gl.BindTexture(GL_TEXTURE_2D, 0);
 }
 
 void EdgesStyle::drawFullscreen(const GlFunctions& gl)
@@ -685,23 +761,30 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     for (const SceneObject& o : scene.objects) {
         mFootprints.push_back(footprint(o, width, height));
     }
-    gl.UseProgram(mGeometry.id());
+    int current = -1;
     for (const SceneObject& o : scene.objects) {
+        const int cut = o.alphaFunc != GL_ALWAYS ? 1 : 0;
+        if (cut != current) {
+            current = cut;
+            gl.UseProgram(mGeometry[cut].id());
+        }
+        const Geometry& u = mGeo[cut];
         const glm::mat3 normalMatrix = glm::inverseTranspose(glm::mat3(o.modelview));
-        gl.UniformMatrix4fv(mGeo.modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));
-        gl.UniformMatrix4fv(mGeo.projection, 1, GL_FALSE, glm::value_ptr(o.projection));
-        gl.UniformMatrix3fv(mGeo.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-        gl.Uniform1f(mGeo.objectId, float(o.id));
+        gl.UniformMatrix4fv(u.modelview, 1, GL_FALSE, glm::value_ptr(o.modelview));
+        gl.UniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(o.projection));
+        gl.UniformMatrix3fv(u.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+        gl.Uniform1f(u.objectId, float(o.id));
         // A projection without a perspective row is orthographic; its P[2][2] is -2/range.
         const bool ortho = o.orthographic();
-        gl.Uniform1i(mGeo.orthographic, ortho ? 1 : 0);
-        gl.Uniform1f(mGeo.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
+        gl.Uniform1i(u.orthographic, ortho ? 1 : 0);
+        gl.Uniform1f(u.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
         const float size = mFootprints[size_t(&o - scene.objects.data())].size;
-        gl.Uniform1i(mGeo.noMaterial, size < mDetailSize ? 1 : 0);
-        gl.Uniform1i(mGeo.thinLines, size < mThinSize ? 1 : 0);
+        gl.Uniform1i(u.noMaterial, size < mDetailSize ? 1 : 0);
+        gl.Uniform1i(u.thinLines, size < mThinSize ? 1 : 0);
         // What the program culls is not on screen: no line may come from it.
         if (!FaceCulling::begin(gl, o)) continue;
-        ctx.meshes.draw(gl, *o.mesh);
+        if (cut) drawCutOut(ctx, o, u);
+        else ctx.meshes.draw(gl, *o.mesh);
         FaceCulling::end(gl, o);
     }
     gl.Disable(GL_POLYGON_OFFSET_FILL);
@@ -860,7 +943,7 @@ void EdgesStyle::shutdown(StyleContext& ctx)
     mTargets.destroy(gl);
     if (mTriangle) gl.DeleteBuffers(1, &mTriangle);
     mTriangle = 0;
-    for (ShaderProgram* p : {&mGeometry, &mDetect, &mDirect[0], &mDirect[1], &mDilate,
+    for (ShaderProgram* p : {&mGeometry[0], &mGeometry[1], &mDetect, &mDirect[0], &mDirect[1], &mDilate,
                              &mComposite[0], &mComposite[1]}) {
         p->destroy(gl);
     }

@@ -31,6 +31,7 @@ public:
     ~EdgesStyle() override;
     bool init(StyleContext& ctx, std::string& error) override;
     void render(const Scene& scene, StyleContext& ctx) override;
+    bool outlinesCutOuts() const override { return true; }
     void shutdown(StyleContext& ctx) override;
 
 private:
@@ -44,6 +45,9 @@ private:
     };
 
     void drawFullscreen(const GlFunctions& gl);
+    struct Geometry;
+    // A cut-out's attributes, with the program's alpha test on its texture.
+    void drawCutOut(StyleContext& ctx, const SceneObject& o, const Geometry& u);
     // Whether the direct pass is to run near the objects (each on its feature lines or its
     // box: mNearBy) rather than on the whole rectangle.
     bool planNear(const Scene& scene, StyleContext& ctx, const glm::ivec4& rect);
@@ -61,7 +65,8 @@ private:
     };
     Footprint footprint(const SceneObject& o, int width, int height);
 
-    ShaderProgram mGeometry, mDetect, mDilate;
+    // [1]: the attributes of cut-outs, kept where the program's alpha test keeps them.
+    ShaderProgram mGeometry[2], mDetect, mDilate;
     // Without and with the program's fog on the ink ([1]: kInkFog's INK_FOG).
     ShaderProgram mComposite[2], mDirect[2];
     EdgeTargets mTargets;
@@ -81,11 +86,12 @@ private:
     int mMargin = 4; // pixels around the scene's bounds that lines may reach
     std::unordered_map<const reconstruct::ObjectMesh*, Bounds> mBounds;
     uint64_t mFlush = 0;
-    struct {
+    struct Geometry {
         GLint modelview = -1, projection = -1, normalMatrix = -1, objectId = -1,
-              orthographic = -1, depthRange = -1, noMaterial = -1,
-              thinLines = -1;
-    } mGeo;
+              orthographic = -1, depthRange = -1, noMaterial = -1, thinLines = -1,
+              cutTexture = -1, cutTextured = -1, alphaFunc = -1, alphaRef = -1;
+    };
+    Geometry mGeo[2];
     // The edge operator's uniforms, in both programs that run it.
     struct Operator {
         GLint attributes = -1, rect = -1, depthStep = -1, creaseCosine = -1,
