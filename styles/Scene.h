@@ -114,7 +114,8 @@ struct SceneObject {
     // fails GL_LESS against the depth it left the frame before.
     GLenum depthFunc = GL_LESS;
     // The program's alpha test (GL_ALWAYS: none): the shading style's alpha is tested as the
-    // program's would be, so cut-outs keep their shape; outlines leave such objects out.
+    // program's would be, so cut-outs keep their shape; only outline styles that follow the
+    // cut draw their lines (Style::outlinesCutOuts).
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
     // Drawn by the program with no colour channel (a depth pre-pass, an occluder): the chain
