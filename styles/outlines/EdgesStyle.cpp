@@ -105,6 +105,11 @@ void main()
     cutTest(baseColor);
     vec3 n = normalize(eyeNormal);
     if (!gl_FrontFacing) n = -n;
+#if CUT
+    // Facing the eye: a cut-out's lines are its cut's (silhouettes and other objects), not
+    // creases where the quads it is drawn on cross (a tree of two crossed billboards).
+    n = vec3(0.0, 0.0, 1.0);
+#endif
     float z = orthographic ? (1.0 + gl_FragCoord.z) * depthRange : max(viewDepth, 1e-6);
     uint logDepth = uint(clamp((log2(z) + 64.0) * 16777216.0, 1.0, 2147483520.0));
     uint window = uint(clamp(gl_FragCoord.z, 0.0, 1.0) * 16777215.0 + 0.5);
