@@ -18,7 +18,9 @@ namespace nprgl::styles {
 // discontinuities (silhouettes), normal discontinuities (creases) and id or colour changes
 // (material edges); a distance search widens each class to its width; the three layers are
 // stacked like cels and composited over the framebuffer, depth-tested against the program's
-// depth so that anything in front of an outline still hides it.
+// depth so that anything in front of an outline still hides it. Cut-outs (alpha-tested
+// objects) are in the off-screen scene only where the program's alpha test keeps their
+// texture, so their lines follow the cut.
 //
 // Cost on a software rasteriser is per pixel, so every pass is scissored to the window
 // rectangle the scene's bounding boxes cover, the attributes are packed into one target,
