@@ -38,6 +38,7 @@ void AttribStack::pop()
         a.lightsOn = saved.lightsOn;
         a.materialDiffuse = saved.materialDiffuse;
         a.materialEmission = saved.materialEmission;
+        a.colorMaterialMode = saved.colorMaterialMode;
         a.lightPosition = saved.lightPosition;
         a.lightDiffuse = saved.lightDiffuse;
         a.lightAmbient = saved.lightAmbient;

@@ -57,6 +57,7 @@ struct AttribState {
     glm::vec3 fogColour{0.0f};
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
     glm::vec3 materialEmission{0.0f}; // front: the light the surface gives itself
+    GLenum colorMaterialMode = GL_AMBIENT_AND_DIFFUSE; // what glColor sets under GL_COLOR_MATERIAL
     uint8_t lightsOn = 0; // bit i: GL_LIGHTi enabled
     // GL_POSITION in eye space (transformed by the modelview of the call), and GL_DIFFUSE:
     // GL's defaults, white for light 0 and black for the others.

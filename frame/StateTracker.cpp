@@ -335,6 +335,7 @@ void APIENTRY tLightModeliv(GLenum pname, const GLint* v)
     T().lightModel(pname, f);
 }
 void APIENTRY tPolygonMode(GLenum face, GLenum mode) { T().polygonMode(face, mode); }
+void APIENTRY tColorMaterial(GLenum face, GLenum mode) { T().colorMaterial(face, mode); }
 void APIENTRY tColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
 {
     T().colorMask(r, g, b, a);
@@ -529,6 +530,7 @@ StateTracker::StateTracker()
     d.glLightModeliv = tLightModeliv;
     d.glPolygonMode = tPolygonMode;
     d.glColorMask = tColorMask;
+    d.glColorMaterial = tColorMaterial;
     d.glBlendFunc = tBlendFunc;
     d.glBlendFuncSeparate = tBlendFuncSeparate;
     d.glDepthMask = tDepthMask;
@@ -1652,7 +1654,19 @@ bool StateTracker::keep(TrackedBatch& batch)
         auto lit = [&](const glm::vec4& c) {
             return glm::min(c * light + emission, glm::vec4(1.0f));
         };
-        if (!a.colorMaterial && !batch.materials.empty()) {
+        // glColor sets the diffuse colour only under GL_COLOR_MATERIAL's diffuse modes; as
+        // the emission it adds to the material's lit colour; as the ambient or specular it
+        // leaves the material's diffuse colour what the eye mostly sees.
+        const GLenum mode = a.colorMaterial ? a.colorMaterialMode : GL_AMBIENT_AND_DIFFUSE;
+        if (a.colorMaterial && mode == GL_EMISSION) {
+            const glm::vec4 c = glm::min(a.materialDiffuse * light, glm::vec4(1.0f));
+            for (TrackedVertex& v : batch.vertices) {
+                v.color = glm::min(c + glm::vec4(glm::vec3(v.color), 0.0f), glm::vec4(1.0f));
+            }
+        } else if (a.colorMaterial && mode != GL_DIFFUSE && mode != GL_AMBIENT_AND_DIFFUSE) {
+            const glm::vec4 c = lit(a.materialDiffuse);
+            for (TrackedVertex& v : batch.vertices) v.color = c;
+        } else if (!a.colorMaterial && !batch.materials.empty()) {
             // Materials set between glBegin and glEnd: each colours its run of vertices.
             glm::vec4 c = lit(batch.beginMaterial);
             size_t next = 0;

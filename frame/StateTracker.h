@@ -316,6 +316,15 @@ public:
     // where it passes 1 (per channel).
     glm::vec3 litSideLight() const;
     void polygonMode(GLenum face, GLenum mode);
+    void colorMaterial(GLenum face, GLenum mode)
+    {
+        // The front's (the side the styles colour); another value is refused by the driver.
+        if (face != GL_FRONT && face != GL_FRONT_AND_BACK) return;
+        if (mode == GL_EMISSION || mode == GL_AMBIENT || mode == GL_DIFFUSE ||
+            mode == GL_SPECULAR || mode == GL_AMBIENT_AND_DIFFUSE) {
+            mAttrib.colorMaterialMode = mode;
+        }
+    }
     void colorMask(bool r, bool g, bool b, bool a)
     {
         mAttrib.colorMaskAll = r && g && b && a;

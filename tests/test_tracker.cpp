@@ -528,6 +528,45 @@ TEST(StateTracker, AMaterialsEmissionAddsToItsLitColour)
     }
 }
 
+// Under GL_COLOR_MATERIAL, glColor sets what glColorMaterial names: the diffuse colour (the
+// default, and GL_DIFFUSE), the emission (added to the material's lit diffuse), or the
+// ambient or specular colour (the material's diffuse is what shows).
+TEST(StateTracker, ColourMaterialColoursWhatItsModeNames)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    const glm::vec4 grey(0.4f, 0.4f, 0.4f, 1.0f);
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true); // white
+    feed.run([&](CallWriter& w) {
+        vectorCall(w, op::glMaterialfv, GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, &grey,
+                   sizeof grey);
+        w.op(op::glEnable);
+        w.put<GLenum>(GL_COLOR_MATERIAL);
+        w.op(op::glColor3f);
+        for (float c : {0.2f, 0.5f, 0.0f}) w.put<float>(c);
+        for (GLenum mode : {GL_AMBIENT_AND_DIFFUSE, GL_EMISSION, GL_SPECULAR}) {
+            w.op(op::glColorMaterial);
+            w.put<GLenum>(GL_FRONT_AND_BACK);
+            w.put<GLenum>(mode);
+            writeTriangle(w);
+        }
+    });
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    const glm::vec4 expected[3] = {{0.2f, 0.5f, 0.0f, 1.0f}, {0.6f, 0.9f, 0.4f, 1.0f}, grey};
+    for (size_t b = 0; b < 3; ++b) {
+        ASSERT_EQ(batches[b].vertices.size(), 3u);
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_NEAR(batches[b].vertices[0].color[c], expected[b][c], 1e-5f)
+                << "batch " << b << " channel " << c;
+        }
+    }
+}
+
 // Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
 // the generation off again gives the plain texture back (a program that sphere-maps one
 // object must not leave every later draw unstyled). A texture on unit 1 layers over unit 0's.
