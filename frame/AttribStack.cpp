@@ -56,10 +56,7 @@ void AttribStack::pop()
     if (mask & GL_COLOR_BUFFER_BIT) {
         a.blend = saved.blend;
         a.alphaTest = saved.alphaTest;
-        a.colorMaskAll = saved.colorMaskAll;
-        a.colorMaskNone = saved.colorMaskNone;
-        a.colorMaskRgb = saved.colorMaskRgb;
-        a.colorMaskAlpha = saved.colorMaskAlpha;
+        a.colorMask = saved.colorMask;
     }
     if (mask & GL_STENCIL_BUFFER_BIT) a.stencilTest = saved.stencilTest;
     if (mask & (GL_POLYGON_BIT | GL_ENABLE_BIT)) {

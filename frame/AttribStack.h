@@ -37,10 +37,13 @@ struct AttribState {
     std::array<glm::vec4, 16> eyePlane = defaultPlanes();
     bool blend = false, alphaTest = false, stencilTest = false;
     bool vertexProgram = false, fragmentProgram = false; // ARB assembly programs enabled
-    bool fillFront = true, fillBack = true, colorMaskAll = true, depthMask = true;
-    bool colorMaskNone = false; // no colour channel written: a depth-only pass
-    bool colorMaskRgb = true;   // red, green and blue written (alpha may not be)
-    bool colorMaskAlpha = true;
+    bool fillFront = true, fillBack = true, depthMask = true;
+    uint8_t colorMask = 0xF; // glColorMask: bits red, green, blue, alpha
+    // No colour channel written (alpha aside): a depth-only pass.
+    bool colorMaskNone() const { return (colorMask & 0x7u) == 0; }
+    // Red, green and blue written: the picture is the draw's (alpha may be masked).
+    bool colorMaskRgb() const { return (colorMask & 0x7u) == 0x7u; }
+    bool colorMaskAlpha() const { return (colorMask & 0x8u) != 0; }
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO; // the colour part of glBlendFunc(Separate)
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;

@@ -674,7 +674,7 @@ const char* StateTracker::pipelineLimit() const
     }
     // A depth-only pass (no colour channel) is held: the styles supply its depth. So is one
     // that masks only alpha (the picture is all its own; the styles keep alpha as masked).
-    if (!a.colorMaskRgb && !a.colorMaskNone) return "a partial colour mask";
+    if (!a.colorMaskRgb() && !a.colorMaskNone()) return "a partial colour mask";
     // The styles run inside one more glPushAttrib/glPushClientAttrib: a full stack would
     // leave the held scene undrawn.
     if (int(mAttribs.depth()) >= mMaxAttribDepth || mClientDepth >= mMaxClientDepth) {
@@ -690,7 +690,7 @@ bool StateTracker::mayLayer(GLenum mode) const
     // it draws over.
     const AttribState& a = mAttrib;
     if (!mHolding || !isPolygonMode(mode) || mCompiling || mRenderMode != GL_RENDER ||
-        !is3D() || !blending() || !a.colorMaskRgb) {
+        !is3D() || !blending() || !a.colorMaskRgb()) {
         return false;
     }
     if (ownShaders() || pipelineLimit() || leftByRule()) return false;
@@ -1734,7 +1734,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     const bool cuts = a.alphaTest && !(opaque && passesAlphaOne(a.alphaFunc, a.alphaRef));
     batch.alphaFunc = cuts ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
-    batch.depthOnly = a.colorMaskNone;
+    batch.depthOnly = a.colorMaskNone();
     // Decals: the styles pull the surface towards the eye by the program's offset.
     batch.offsetFactor = a.polygonOffsetFill ? a.offsetFactor : 0.0f;
     batch.offsetUnits = a.polygonOffsetFill ? a.offsetUnits : 0.0f;

@@ -183,11 +183,10 @@ public:
     const glm::vec2& depthRange() const { return mAttrib.depthRange; }
     // The scissor test's state now: on, and its box.
     bool scissorTest() const { return mAttrib.scissorTest; }
-    bool colourMaskAll() const { return mAttrib.colorMaskAll; }
-    // Red, green and blue written: the picture is the draw's (alpha may be masked).
-    bool colourMaskRgb() const { return mAttrib.colorMaskRgb; }
-    bool colourMaskAlpha() const { return mAttrib.colorMaskAlpha; }
-    bool colourMaskNone() const { return mAttrib.colorMaskNone; }
+    // glColorMask's (AttribState::colorMaskRgb and its kin).
+    bool colourMaskRgb() const { return mAttrib.colorMaskRgb(); }
+    bool colourMaskAlpha() const { return mAttrib.colorMaskAlpha(); }
+    bool colourMaskNone() const { return mAttrib.colorMaskNone(); }
     const glm::ivec4& scissor() const { return mAttrib.scissor; }
     const glm::ivec4& viewport() const { return mAttrib.viewport; }
     // Moves the held batches out (the frame's batch list starts empty again). The batches
@@ -327,10 +326,7 @@ public:
     }
     void colorMask(bool r, bool g, bool b, bool a)
     {
-        mAttrib.colorMaskAll = r && g && b && a;
-        mAttrib.colorMaskNone = !r && !g && !b;
-        mAttrib.colorMaskRgb = r && g && b;
-        mAttrib.colorMaskAlpha = a;
+        mAttrib.colorMask = uint8_t((r ? 1u : 0u) | (g ? 2u : 0u) | (b ? 4u : 0u) | (a ? 8u : 0u));
     }
     void pushAttrib(GLbitfield mask);
     void popAttrib();

@@ -1333,12 +1333,12 @@ TEST(AttribStack, PopRestoresOnlyTheSavedGroups)
     AttribState& a = stack.current();
     a.fragmentProgram = true;
     a.blend = true;
-    a.colorMaskAll = false; // GL_COLOR_BUFFER_BIT: not saved
+    a.colorMask = 0; // GL_COLOR_BUFFER_BIT: not saved
     a.viewport = {1, 2, 3, 4};
     stack.pop();
     EXPECT_FALSE(stack.current().fragmentProgram);
     EXPECT_FALSE(stack.current().blend);
-    EXPECT_FALSE(stack.current().colorMaskAll);
+    EXPECT_EQ(stack.current().colorMask, 0);
     EXPECT_EQ(stack.current().viewport, glm::ivec4(1, 2, 3, 4));
     stack.pop(); // underflow: nothing happens, as in the driver
     EXPECT_EQ(stack.depth(), 0u);
