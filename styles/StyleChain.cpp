@@ -136,7 +136,6 @@ void StyleChain::render(const Scene& scene)
     mBackdrop.objects.clear();
     mOnTop.objects.clear();
     bool depthTested = false; // an object drawn with the depth test came before
-    ++mFlushes;
     for (const SceneObject& o : scene.objects) {
         // Drawn without the depth test or, opaque, without depth writes: skies, clouds and
         // scenery behind the scene (before its first object), marks over it (after): drawn as
@@ -168,6 +167,7 @@ void StyleChain::render(const Scene& scene)
                         &mOnTop}) {
         part->takeFrameOf(scene);
     }
+    const bool outlineCutOuts = collectCutOuts();
     const GlFunctions& gl = mContext.gl;
     // The page under everything: a backdrop in the clear colour, drawn without depth (a dark
     // floor), stays the program's and does not become page. Without a backdrop it is laid
@@ -185,7 +185,7 @@ void StyleChain::render(const Scene& scene)
         const bool shading = mHasShading && i == 0; // the shading style is ordered first
         if (shading) {
             renderShading(mOpaque, *mStyles[i]);
-        } else if (mStyles[i]->outlinesCutOuts() && cutOutsOutlined()) {
+        } else if (outlineCutOuts && mStyles[i]->outlinesCutOuts()) {
             setBaseline(mWithCutOuts, false);
             mStyles[i]->render(mWithCutOuts, mContext);
         } else if (!mOpaque.objects.empty()) {
@@ -228,25 +228,24 @@ void StyleChain::render(const Scene& scene)
     mContext.meshes.endFlush(mContext.gl);
 }
 
-bool StyleChain::cutOutsOutlined()
+bool StyleChain::collectCutOuts()
 {
-    // Built once a flush, when the first style asks: alpha-tested objects without a polygon
-    // offset (a decal's lines would fight its surface's).
-    if (mWithCutOutsFlush != mFlushes) {
-        mWithCutOutsFlush = mFlushes;
-        mWithCutOuts.objects.clear();
-        for (const SceneObject& o : mCutOut.objects) {
-            if (o.alphaFunc != GL_ALWAYS && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f) {
-                mWithCutOuts.objects.push_back(o);
-            }
+    // Alpha-tested objects without a polygon offset (a decal's lines would fight its
+    // surface's), after the opaque scene; only for a chain with a style that outlines them.
+    mWithCutOuts.objects.clear();
+    const bool asked = std::any_of(mStyles.begin(), mStyles.end(),
+                                   [](const auto& style) { return style->outlinesCutOuts(); });
+    if (!asked) return false;
+    for (const SceneObject& o : mCutOut.objects) {
+        if (o.alphaFunc != GL_ALWAYS && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f) {
+            mWithCutOuts.objects.push_back(o);
         }
-        if (!mWithCutOuts.objects.empty()) {
-            mWithCutOuts.objects.insert(mWithCutOuts.objects.begin(), mOpaque.objects.begin(),
-                                        mOpaque.objects.end());
-        }
-        mWithCutOuts.takeFrameOf(mOpaque);
     }
-    return !mWithCutOuts.objects.empty();
+    if (mWithCutOuts.objects.empty()) return false;
+    mWithCutOuts.objects.insert(mWithCutOuts.objects.begin(), mOpaque.objects.begin(),
+                                mOpaque.objects.end());
+    mWithCutOuts.takeFrameOf(mOpaque);
+    return true;
 }
 
 void StyleChain::renderShading(const Scene& part, Style& shading)

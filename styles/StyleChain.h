@@ -3,8 +3,6 @@
 #include "styles/Style.h"
 #include "styles/StyleSettings.h"
 #include "styles/background/GlowInk.h"
-
-#include <cstdint>
 #include "styles/shading/PlainShading.h"
 
 #include <memory>
@@ -68,13 +66,12 @@ private:
     void renderAsDrawn(const Scene& part);
     // The shading style's pass over the opaque scene, which lays its depth.
     void renderShading(const Scene& part, Style& shading);
-    // Whether the flush has cut-outs to outline (then mWithCutOuts holds them after the
-    // opaque scene).
-    bool cutOutsOutlined();
+    // Whether the flush has cut-outs a style of the chain outlines (then mWithCutOuts holds
+    // them after the opaque scene).
+    bool collectCutOuts();
 
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
     Scene mWithCutOuts; // the opaque scene and the cut-outs (Style::outlinesCutOuts)
-    uint64_t mFlushes = 0, mWithCutOutsFlush = 0; // render() calls; the one it was built in
     Scene mBackdrop, mOnTop; // drawn as the program did, before or after the scene
 };
 
