@@ -483,6 +483,21 @@ TEST(StateTracker, MaterialsInsideABatchColourTheirOwnVertices)
     }
 }
 
+// The held batches are writeTriangle's, one each, coloured `expected` in turn.
+static void expectTriangleColours(StateTracker& tracker, const std::vector<glm::vec4>& expected)
+{
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), expected.size());
+    for (size_t b = 0; b < batches.size(); ++b) {
+        ASSERT_EQ(batches[b].vertices.size(), 3u);
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_NEAR(batches[b].vertices[0].color[c], expected[b][c], 1e-5f)
+                << "batch " << b << " channel " << c;
+        }
+    }
+}
+
 // The light a material emits adds to its lit colour, as GL sums it (torcs's track: grey 0.4
 // that emits 0.4 was drawn at 0.4, 2.5 times too dark), also under glColorMaterial; and
 // glPopAttrib(GL_LIGHTING_BIT) takes it back.
@@ -494,7 +509,6 @@ TEST(StateTracker, AMaterialsEmissionAddsToItsLitColour)
     auto material = [](CallWriter& w, GLenum pname, glm::vec4 c) {
         vectorCall(w, op::glMaterialfv, GL_FRONT_AND_BACK, pname, &c, sizeof c);
     };
-    auto triangle = [](CallWriter& w) { writeTriangle(w); };
     const glm::vec4 grey(0.4f, 0.4f, 0.4f, 1.0f), glow(0.4f, 0.2f, 0.0f, 1.0f);
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_LIGHTING, true);
@@ -502,7 +516,7 @@ TEST(StateTracker, AMaterialsEmissionAddsToItsLitColour)
     feed.run([&](CallWriter& w) {
         material(w, GL_AMBIENT_AND_DIFFUSE, grey);
         material(w, GL_EMISSION, glow);
-        triangle(w);
+        writeTriangle(w);
         w.op(op::glPushAttrib);
         w.put<GLbitfield>(GL_LIGHTING_BIT);
         material(w, GL_EMISSION, glm::vec4(0.0f, 0.0f, 0.5f, 1.0f));
@@ -511,21 +525,11 @@ TEST(StateTracker, AMaterialsEmissionAddsToItsLitColour)
         w.put<GLenum>(GL_COLOR_MATERIAL);
         w.op(op::glColor3f);
         for (float c : {0.4f, 0.4f, 0.4f}) w.put<float>(c);
-        triangle(w);
+        writeTriangle(w);
         material(w, GL_EMISSION, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-        triangle(w);
+        writeTriangle(w);
     });
-    std::vector<TrackedBatch> batches;
-    tracker.takeBatches(batches);
-    ASSERT_EQ(batches.size(), 3u);
-    const glm::vec4 expected[3] = {{0.8f, 0.6f, 0.4f, 1.0f}, {0.8f, 0.6f, 0.4f, 1.0f}, grey};
-    for (size_t b = 0; b < 3; ++b) {
-        ASSERT_EQ(batches[b].vertices.size(), 3u);
-        for (int c = 0; c < 4; ++c) {
-            EXPECT_NEAR(batches[b].vertices[0].color[c], expected[b][c], 1e-5f)
-                << "batch " << b << " channel " << c;
-        }
-    }
+    expectTriangleColours(tracker, {{0.8f, 0.6f, 0.4f, 1.0f}, {0.8f, 0.6f, 0.4f, 1.0f}, grey});
 }
 
 // Under GL_COLOR_MATERIAL, glColor sets what glColorMaterial names: the diffuse colour (the
@@ -554,17 +558,7 @@ TEST(StateTracker, ColourMaterialColoursWhatItsModeNames)
             writeTriangle(w);
         }
     });
-    std::vector<TrackedBatch> batches;
-    tracker.takeBatches(batches);
-    ASSERT_EQ(batches.size(), 3u);
-    const glm::vec4 expected[3] = {{0.2f, 0.5f, 0.0f, 1.0f}, {0.6f, 0.9f, 0.4f, 1.0f}, grey};
-    for (size_t b = 0; b < 3; ++b) {
-        ASSERT_EQ(batches[b].vertices.size(), 3u);
-        for (int c = 0; c < 4; ++c) {
-            EXPECT_NEAR(batches[b].vertices[0].color[c], expected[b][c], 1e-5f)
-                << "batch " << b << " channel " << c;
-        }
-    }
+    expectTriangleColours(tracker, {{0.2f, 0.5f, 0.0f, 1.0f}, {0.6f, 0.9f, 0.4f, 1.0f}, grey});
 }
 
 // Sphere mapping on unit 0: the surface is styled, without the generated texture; turning
