@@ -1439,11 +1439,9 @@ INSTANTIATE_TEST_SUITE_P(Compositor, MultiPass,
 TEST(Compositor, AProgramMaskingOnlyAlphaIsStyledAndKeepsItsAlpha)
 {
     for (const char* style : {"toon+paper+edges", "halftone+paper+edges", "pencil"}) {
-        const std::vector<std::string> command = {nprglCommand(),     "--style",  style,
-                                                  demo("textured"),   "--offscreen",
-                                                  "--alpha-mask",     "--frames", "3",
-                                                  "--size",           "320x240"};
-        ProcessResult r = runProcess(command);
+        ProcessResult r = runProcess(under({nprglCommand(), "--style", style},
+                                           {demo("textured"), "--offscreen", "--alpha-mask",
+                                            "--frames", "3", "--size", "320x240"}));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_NE(r.err.find(" styled, 0 left as the program drew them"), std::string::npos)
             << style << ": " << r.err;
@@ -1459,7 +1457,8 @@ TEST(Compositor, AProgramMaskingOnlyAlphaIsStyledAndKeepsItsAlpha)
 TEST(Compositor, CutOutsAreOutlinedAlongTheirCuts)
 {
     auto ink = [](const std::string& name, const std::string& style) {
-        const PngImage image = readPng(demoFrame("textured", name, {"--style", style}, {"--cutout"}));
+        const PngImage image =
+            readPng(demoFrame("textured", name, {"--style", style}, {"--cutout"}));
         int n = 0;
         // The cube's box in frame 3 at 320x240 (the holes show the dark background).
         for (int y = 85; y < 180 && !image.rgba.empty(); ++y) {
