@@ -132,6 +132,7 @@ void StyleChain::render(const Scene& scene)
     mOpaque.objects.clear();
     mTranslucent.objects.clear();
     mCutOut.objects.clear();
+    mBlendedCutOut.objects.clear();
     mDepthOnly.objects.clear();
     mBackdrop.objects.clear();
     mOnTop.objects.clear();
@@ -158,13 +159,18 @@ void StyleChain::render(const Scene& scene)
         } else if (!mHasShading) {
             mOpaque.objects.push_back(o);
         } else if (o.translucent) {
-            mTranslucent.objects.push_back(o);
+            // Blended but with its depth written where the alpha test keeps it (foliage with
+            // soft rims): its shape is that test's, and it is drawn with the cut-outs, before
+            // the outlines, which then lie over it as over them.
+            const bool shaped = o.alphaFunc != GL_ALWAYS && o.depthWrite &&
+                                o.offsetFactor == 0.0f && o.offsetUnits == 0.0f;
+            (shaped ? mBlendedCutOut : mTranslucent).objects.push_back(o);
         } else {
             (o.special() ? mCutOut : mOpaque).objects.push_back(o);
         }
     }
-    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mDepthOnly, &mRun, &mBackdrop,
-                        &mOnTop}) {
+    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mBlendedCutOut, &mDepthOnly, &mRun,
+                        &mBackdrop, &mOnTop}) {
         part->takeFrameOf(scene);
     }
     const bool outlineCutOuts = collectCutOuts();
@@ -196,6 +202,7 @@ void StyleChain::render(const Scene& scene)
         forEachRun(mCutOut, [&](const Scene& run, const SceneObject&) {
             mStyles[i]->render(run, mContext);
         });
+        renderBlended(mBlendedCutOut);
     }
     // Under the translucent objects and marks even when the flush has no opaque scene (laid
     // already otherwise: a second call does nothing).
@@ -212,9 +219,16 @@ void StyleChain::render(const Scene& scene)
         mStyles.front()->render(mDepthOnly, mContext);
         mContext.colourMaskOn();
     }
+    renderBlended(mTranslucent);
+    mContext.meshes.endFlush(mContext.gl);
+}
+
+void StyleChain::renderBlended(const Scene& part)
+{
     // With the program's depth writes, alpha test and offset: a translucent decal (a goal
     // painted on the floor) keeps the offset that lifts it off its surface.
-    forEachRun(mTranslucent, [&](const Scene& run, const SceneObject& first) {
+    const GlFunctions& gl = mContext.gl;
+    forEachRun(part, [&](const Scene& run, const SceneObject& first) {
         gl.Enable(GL_BLEND);
         gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         gl.DepthMask(first.depthWrite ? GL_TRUE : GL_FALSE);
@@ -225,22 +239,25 @@ void StyleChain::render(const Scene& scene)
         }
         mStyles.front()->render(run, mContext);
     });
-    mContext.meshes.endFlush(mContext.gl);
+    gl.Disable(GL_BLEND);
 }
 
 bool StyleChain::collectCutOuts()
 {
     // Alpha-tested objects without a polygon offset (a decal's lines would fight its
     // surface's), after the opaque scene; only for a chain with a style that outlines them.
+    // Blended ones too where they write their depth (mBlendedCutOut).
     mWithCutOuts.objects.clear();
     const bool asked = std::any_of(mStyles.begin(), mStyles.end(),
                                    [](const auto& style) { return style->outlinesCutOuts(); });
     if (!asked) return false;
+    auto cut = [](const SceneObject& o) {
+        return o.alphaFunc != GL_ALWAYS && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f;
+    };
     for (const SceneObject& o : mCutOut.objects) {
-        if (o.alphaFunc != GL_ALWAYS && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f) {
-            mWithCutOuts.objects.push_back(o);
-        }
+        if (cut(o)) mWithCutOuts.objects.push_back(o);
     }
+    for (const SceneObject& o : mBlendedCutOut.objects) mWithCutOuts.objects.push_back(o);
     if (mWithCutOuts.objects.empty()) return false;
     mWithCutOuts.objects.insert(mWithCutOuts.objects.begin(), mOpaque.objects.begin(),
                                 mOpaque.objects.end());

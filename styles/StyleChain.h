@@ -66,11 +66,14 @@ private:
     void renderAsDrawn(const Scene& part);
     // The shading style's pass over the opaque scene, which lays its depth.
     void renderShading(const Scene& part, Style& shading);
+    // The shading style's pass over translucent objects, blended by their alpha.
+    void renderBlended(const Scene& part);
     // Whether the flush has cut-outs a style of the chain outlines (then mWithCutOuts holds
     // them after the opaque scene).
     bool collectCutOuts();
 
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
+    Scene mBlendedCutOut; // translucent, shaped by their alpha test and depth writes
     Scene mWithCutOuts; // the opaque scene and the cut-outs (Style::outlinesCutOuts)
     Scene mBackdrop, mOnTop; // drawn as the program did, before or after the scene
 };

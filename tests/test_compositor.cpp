@@ -1456,9 +1456,9 @@ TEST(Compositor, AProgramMaskingOnlyAlphaIsStyledAndKeepsItsAlpha)
 // It got none before (a cut-out's polygons are not its shape, so it was left out).
 TEST(Compositor, CutOutsAreOutlinedAlongTheirCuts)
 {
-    auto ink = [](const std::string& name, const std::string& style) {
-        const PngImage image =
-            readPng(demoFrame("textured", name, {"--style", style}, {"--cutout"}));
+    auto ink = [](const std::string& name, const std::string& style,
+                  std::vector<std::string> extra = {"--cutout"}) {
+        const PngImage image = readPng(demoFrame("textured", name, {"--style", style}, extra));
         int n = 0;
         // The cube's box in frame 3 at 320x240 (the holes show the dark background).
         for (int y = 85; y < 180 && !image.rgba.empty(); ++y) {
@@ -1471,4 +1471,7 @@ TEST(Compositor, CutOutsAreOutlinedAlongTheirCuts)
     };
     EXPECT_EQ(ink("cutout_toon", "toon"), 0) << "toon alone draws no ink";
     EXPECT_GT(ink("cutout_edges", "toon+edges"), 800) << "the cut-out cube has no outlines";
+    // Blended as well, with depth writes (foliage with soft rims): the same shape.
+    EXPECT_GT(ink("cutout_blend_edges", "toon+edges", {"--cutout", "--cutout-blend"}), 800)
+        << "the blended cut-out cube has no outlines";
 }

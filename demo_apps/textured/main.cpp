@@ -5,7 +5,8 @@
 // each face of the cube its own texture (six glBegin/glEnd, one object); --translucent
 // blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
 // to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
-// its texture's alpha and the alpha test (GL_GREATER 0.5); --fog fades the scene into a pale
+// its texture's alpha and the alpha test (GL_GREATER 0.5), --cutout-blend blends it too
+// (foliage's soft rims, depth written); --fog fades the scene into a pale
 // linear fog between eye distances 6 and 11; --depth-prepass draws the scene twice, depth
 // only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
 // floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
@@ -213,6 +214,9 @@ public:
                  "opacity, blended by alpha, also without the depth test (a sky's clouds)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
+                {"cutout-blend", demo::ExtraOption::Kind::Flag,
+                 "with --cutout: the cube also blended by its alpha (GL_SRC_ALPHA, "
+                 "GL_ONE_MINUS_SRC_ALPHA) with depth writes, as foliage is drawn"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
                 {"depth-prepass", demo::ExtraOption::Kind::Flag,
                  "draw the scene's depth first with the colour mask off, then its colours"},
@@ -276,6 +280,7 @@ public:
         height_ = options.height;
         if (options.has("pick")) makePickTarget();
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
+        cutoutBlend_ = options.has("cutout-blend");
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
             glEnable(GL_FOG);
@@ -606,6 +611,10 @@ public:
         if (cutoutTexture_) {
             glEnable(GL_ALPHA_TEST);
             glAlphaFunc(GL_GREATER, 0.5f);
+            if (cutoutBlend_) {
+                glEnable(GL_BLEND);
+                glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            }
         }
         glPushMatrix();
         glTranslatef(-1.3f, 0.0f, 0.0f);
@@ -613,6 +622,7 @@ public:
         drawCube(0.8f, faceTextures_[0] ? faceTextures_ : nullptr);
         glPopMatrix();
         glDisable(GL_ALPHA_TEST);
+        glDisable(GL_BLEND);
 
         glBindTexture(GL_TEXTURE_2D, sphereTexture_);
         glPushMatrix();
@@ -718,6 +728,7 @@ private:
     bool lateFloor_ = false;
     bool lateShader_ = false;
     bool alphaMask_ = false;
+    bool cutoutBlend_ = false;
     GLuint paneProgram_ = 0;
     bool backdropFloor_ = false;
     bool backdropHaze_ = false;
