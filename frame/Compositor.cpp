@@ -952,6 +952,10 @@ void Compositor::buildScene()
         s.generated = t.generated;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
+        for (uint32_t b = 0; b < o.batchCount; ++b) {
+            const float f = mTracked[o.firstBatch + b].cutFeature;
+            if (f > 0.0f && (s.cutFeature == 0.0f || f < s.cutFeature)) s.cutFeature = f;
+        }
         s.depthOnly = t.depthOnly;
         s.offsetFactor = t.offsetFactor;
         s.offsetUnits = t.offsetUnits;

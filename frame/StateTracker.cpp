@@ -1734,6 +1734,10 @@ bool StateTracker::keep(TrackedBatch& batch)
     const bool cuts = a.alphaTest && !(opaque && passesAlphaOne(a.alphaFunc, a.alphaRef));
     batch.alphaFunc = cuts ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
+    if (cuts && batch.texture != 0) {
+        auto it = mCutFeatures.find(styles::textureName(batch.texture));
+        batch.cutFeature = it != mCutFeatures.end() ? it->second : 0.0f;
+    }
     batch.depthOnly = a.colorMaskNone();
     // Decals: the styles pull the surface towards the eye by the program's offset.
     batch.offsetFactor = a.polygonOffsetFill ? a.offsetFactor : 0.0f;
@@ -2120,6 +2124,9 @@ void StateTracker::noteTextureMean(GLuint texture, GLsizei width, GLsizei height
     glm::vec3 mean;
     if (imageMean(width, height, format, type, pixels, mean)) mTextureMeans[texture] = mean;
     else mTextureMeans.erase(texture);
+    const float feature = cutFeature(width, height, format, type, pixels);
+    if (feature > 0.0f) mCutFeatures[texture] = feature;
+    else mCutFeatures.erase(texture);
 }
 
 bool StateTracker::cubeMean(GLuint texture, glm::vec3& mean) const
@@ -2161,6 +2168,7 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     if (!pixels || mImageBytes == 0) {
         mTextureHashes.erase(texture);
         mTextureMeans.erase(texture);
+        mCutFeatures.erase(texture);
         if (!pixels) mFilledLater.insert(texture);
         return;
     }
@@ -2181,6 +2189,7 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     // without alpha read alpha 1.
     mTextureHashes.erase(texture);
     mTextureMeans.erase(texture);
+    mCutFeatures.erase(texture);
     if (empty) mFilledLater.insert(texture);
     else mFilledLater.erase(texture);
     const GLenum noAlpha[] = {1, 3, GL_RGB, GL_RGB8, GL_RGB5, GL_R3_G3_B2, GL_LUMINANCE,
@@ -2210,6 +2219,7 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
                         opaqueImage(width, height, format, type, pixels);
     mTextureHashes.erase(texture); // its content is no longer the hashed upload
     mTextureMeans.erase(texture);
+    mCutFeatures.erase(texture);
     if (!opaque) {
         mOpaqueTextures.erase(texture);
         mFilledLater.erase(texture);
@@ -2234,6 +2244,57 @@ bool StateTracker::opaqueImage(GLsizei width, GLsizei height, GLenum format, GLe
         if (p[i] != 255) return false;
     }
     return true;
+}
+
+float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                              const void* pixels) const
+{
+    int channels = 0;
+    switch (format) {
+    case GL_RGBA: case GL_BGRA: channels = 4; break;
+    case GL_LUMINANCE_ALPHA: channels = 2; break;
+    case GL_ALPHA: channels = 1; break;
+    default: return 0.0f;
+    }
+    if (!pixels || type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0) return 0.0f;
+    const size_t row = mImageBytes / size_t(height);
+    if (row < size_t(width) * size_t(channels)) return 0.0f;
+    const uint8_t* alpha = static_cast<const uint8_t*>(pixels) + (channels - 1);
+    // Sums over the lines walked, each run's length as a fraction of its line.
+    double kept = 0.0, enclosed = 0.0;
+    size_t keptRuns = 0, enclosedRuns = 0;
+    auto walk = [&](const uint8_t* first, size_t stride, int n) {
+        int run = 0, clearRun = 0;
+        bool inKept = false, seenKept = false;
+        for (int i = 0; i <= n; ++i) {
+            const bool k = i < n && first[size_t(i) * stride] >= 128;
+            if (k && !inKept && seenKept && clearRun > 0) {
+                enclosed += double(clearRun) / n;
+                ++enclosedRuns;
+            }
+            if (!k && inKept) {
+                kept += double(run) / n;
+                ++keptRuns;
+            }
+            if (k) {
+                run = inKept ? run + 1 : 1;
+                seenKept = true;
+            } else {
+                clearRun = inKept ? 1 : clearRun + 1;
+            }
+            inKept = k;
+        }
+    };
+    // At most 64 rows and 64 columns, whole: once at upload.
+    const int stepY = std::max(1, int(height) / 64), stepX = std::max(1, int(width) / 64);
+    for (int y = 0; y < height; y += stepY) walk(alpha + size_t(y) * row, size_t(channels), width);
+    for (int x = 0; x < width; x += stepX) {
+        walk(alpha + size_t(x) * size_t(channels), row, height);
+    }
+    if (keptRuns == 0) return 0.0f;
+    const double meanKept = kept / double(keptRuns);
+    const double meanEnclosed = enclosedRuns > 0 ? enclosed / double(enclosedRuns) : meanKept;
+    return float(std::min(meanKept, meanEnclosed));
 }
 
 uint64_t StateTracker::textureHash(GLuint texture) const

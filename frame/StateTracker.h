@@ -70,6 +70,9 @@ struct TrackedBatch {
     GLenum depthFunc = GL_LESS;
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
+    // Under the alpha test, how fine its texture's cut is (StateTracker::cutFeature), in
+    // texture coordinate units; 0 when not known.
+    float cutFeature = 0.0f;
     bool depthOnly = false; // drawn with no colour channel: it only supplies depth
     float offsetFactor = 0.0f, offsetUnits = 0.0f; // GL_POLYGON_OFFSET_FILL's, 0 when off
     GLenum fogMode = 0; // GL_LINEAR, GL_EXP, GL_EXP2; 0 when fog is off
@@ -391,6 +394,11 @@ private:
     // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.
     bool opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
                      const void* pixels) const;
+    // The mean length, in texture coordinate units, of the runs of texels an alpha test at
+    // one half keeps and of the clear runs they enclose, whichever is shorter, along rows and
+    // columns of an uploaded image (0: not known, or nothing kept): how fine its cut-out is.
+    float cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                     const void* pixels) const;
     // Why surfaceUnit() is -1.
     const char* multitexturing() const;
     // What of the fixed pipeline's state the styles cannot follow (stencil, lines or points,
@@ -466,6 +474,7 @@ private:
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
     std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
+    std::map<GLuint, float> mCutFeatures; // level 0's cutFeature, where it is known
     std::array<GLuint, 8> mUnitCubeTextures{}; // every unit's GL_TEXTURE_CUBE_MAP
     // Each cube map's faces' level-0 means (w 1 where known), +X -X +Y -Y +Z -Z.
     std::map<GLuint, std::array<glm::vec4, 6>> mCubeFaceMeans;

@@ -118,6 +118,9 @@ struct SceneObject {
     // cut draw their lines (Style::outlinesCutOuts).
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
+    // How fine the cut of its alpha-tested texture is, in texture coordinate units (the
+    // finest of its batches'; 0: not known).
+    float cutFeature = 0.0f;
     // Drawn by the program with no colour channel (a depth pre-pass, an occluder): the chain
     // writes its depth after the opaque scene and draws no colour for it.
     bool depthOnly = false;

@@ -1454,24 +1454,45 @@ TEST(Compositor, AProgramMaskingOnlyAlphaIsStyledAndKeepsItsAlpha)
 // and the alpha test) is outlined along its cut: the edge style draws its attributes where
 // the program's test keeps its texture, so its silhouette and the rims of its holes get ink.
 // It got none before (a cut-out's polygons are not its shape, so it was left out).
+namespace {
+
+// Ink (near-black pixels) in the box of demo_textured's cube in frame 3 at 320x240, run with
+// `extra` under `style` (the cut-out's holes show the dark background, not black).
+int cubeInk(const std::string& name, const std::string& style,
+            const std::vector<std::string>& extra)
+{
+    const PngImage image = readPng(demoFrame("textured", name, {"--style", style}, extra));
+    int n = 0;
+    for (int y = 85; y < 180 && !image.rgba.empty(); ++y) {
+        for (int x = 75; x < 150; ++x) {
+            const uint8_t* p = pixel(image, x, y);
+            n += std::max({p[0], p[1], p[2]}) < 20;
+        }
+    }
+    return n;
+}
+
+} // namespace
+
 TEST(Compositor, CutOutsAreOutlinedAlongTheirCuts)
 {
     auto ink = [](const std::string& name, const std::string& style,
-                  std::vector<std::string> extra = {"--cutout"}) {
-        const PngImage image = readPng(demoFrame("textured", name, {"--style", style}, extra));
-        int n = 0;
-        // The cube's box in frame 3 at 320x240 (the holes show the dark background).
-        for (int y = 85; y < 180 && !image.rgba.empty(); ++y) {
-            for (int x = 75; x < 150; ++x) {
-                const uint8_t* p = pixel(image, x, y);
-                n += std::max({p[0], p[1], p[2]}) < 20;
-            }
-        }
-        return n;
+                  const std::vector<std::string>& extra = {"--cutout"}) {
+        return cubeInk(name, style, extra);
     };
     EXPECT_EQ(ink("cutout_toon", "toon"), 0) << "toon alone draws no ink";
     EXPECT_GT(ink("cutout_edges", "toon+edges"), 800) << "the cut-out cube has no outlines";
     // Blended as well, with depth writes (foliage with soft rims): the same shape.
     EXPECT_GT(ink("cutout_blend_edges", "toon+edges", {"--cutout", "--cutout-blend"}), 800)
         << "the blended cut-out cube has no outlines";
+}
+
+TEST(Compositor, AFineCutOutIsNotSwampedByInk)
+{
+    // A grille of bars and holes about two pixels across on screen: lines one pixel each side
+    // of every bar would turn it into a mesh of ink (3,053 dark pixels in the cube's box when
+    // it was outlined along its cut). Its cut gets no lines; the floor's far edge behind it
+    // shows through the holes.
+    EXPECT_LT(cubeInk("grille_edges", "toon+edges", {"--cutout-fine"}), 300)
+        << "the fine grille is swamped by ink";
 }

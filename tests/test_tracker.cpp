@@ -1141,6 +1141,61 @@ TEST(StateTracker, TheDefaultTextureAndItsTextureMatrixReachTheBatch)
     EXPECT_EQ(batches[3].vertices[0].texcoord, glm::vec2(0.5f, 0.25f)) << "unit 1's applied";
 }
 
+// How fine an alpha-tested texture's cut is (the mean run of kept texels or of the clear ones
+// they enclose, whichever is shorter, over rows and columns, in texture coordinates): what
+// the edge style asks before outlining a cut-out along its cut.
+TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    // 8 x 8: columns kept two, clear two (the last two clear runs end the rows, not enclosed)
+    // and a left half kept.
+    std::vector<uint8_t> bars(8 * 8 * 4, 255), half(8 * 8 * 4, 255);
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 8; ++x) {
+            bars[size_t(y * 8 + x) * 4 + 3] = x % 4 >= 2 ? 0 : 255;
+            half[size_t(y * 8 + x) * 4 + 3] = x >= 4 ? 0 : 255;
+        }
+    }
+    auto draw = [&](GLuint texture, const std::vector<uint8_t>* image) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(texture);
+            if (image) rgbaImage(w, 8, 8, image->data());
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (float x : {0.0f, 1.0f, 0.0f}) {
+                w.op(op::glTexCoord2f);
+                for (float c : {x, x == 0.0f ? 0.0f : 1.0f}) w.put<float>(c);
+                w.op(op::glVertex3f);
+                for (float c : {x, x == 0.0f ? 0.0f : 1.0f, 0.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_TEXTURE_2D, true);
+    feed.run([](CallWriter& w) {
+        w.op(op::glAlphaFunc);
+        w.put<GLenum>(GL_GREATER);
+        w.put<float>(0.5f);
+    });
+    draw(1, &bars); // no alpha test yet
+    feed.enable(GL_ALPHA_TEST, true);
+    draw(1, nullptr);
+    draw(2, &half);
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    EXPECT_EQ(batches[0].cutFeature, 0.0f) << "no alpha test, no cut";
+    // Rows: 16 kept runs of 2/8 and 8 enclosed clear runs of 2/8; columns: 4 kept of 8/8.
+    EXPECT_FLOAT_EQ(batches[1].cutFeature, 0.25f);
+    // Rows: 8 kept runs of 4/8, none enclosed; columns: 4 kept runs of 8/8.
+    EXPECT_FLOAT_EQ(batches[2].cutFeature, (8 * 0.5f + 4 * 1.0f) / 12.0f);
+}
+
 // GL has one default 2D texture for all units (Mesa draws unit 0 with the image given to
 // unit 1's texture 0): an image uploaded with texture 0 bound on another unit is the default
 // texture of unit 0 too.

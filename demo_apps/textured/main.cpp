@@ -6,8 +6,9 @@
 // blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
 // to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
 // its texture's alpha and the alpha test (GL_GREATER 0.5), --cutout-blend blends it too
-// (foliage's soft rims, depth written); --fog fades the scene into a pale
-// linear fog between eye distances 6 and 11; --depth-prepass draws the scene twice, depth
+// (foliage's soft rims, depth written), --cutout-fine makes it a fine grille; --fog fades the
+// scene into a pale linear fog between eye distances 6 and 11; --depth-prepass draws the
+// scene twice, depth
 // only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
 // floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
 // depth) and draws the scene again there, turned, like a rear-view mirror; --stale-panel
@@ -104,6 +105,23 @@ GLuint uploadHoles()
             p[0] = red ? 200 : 235;
             p[1] = red ? 40 : 235;
             p[2] = red ? 40 : 235;
+            p[3] = hole ? 0 : 255;
+        }
+    }
+    return uploadTexture(pixels, GL_RGBA);
+}
+
+// A grille: bars two texels wide around square holes two texels wide, red on white rows.
+GLuint uploadGrille()
+{
+    std::vector<uint8_t> pixels(textureSize * textureSize * 4);
+    for (int y = 0; y < textureSize; ++y) {
+        for (int x = 0; x < textureSize; ++x) {
+            const bool hole = x % 4 >= 2 && y % 4 >= 2;
+            uint8_t* p = &pixels[(y * textureSize + x) * 4];
+            p[0] = 200;
+            p[1] = (y / 16) % 2 ? 40 : 200;
+            p[2] = (y / 16) % 2 ? 40 : 200;
             p[3] = hole ? 0 : 255;
         }
     }
@@ -214,6 +232,9 @@ public:
                  "opacity, blended by alpha, also without the depth test (a sky's clouds)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
+                {"cutout-fine", demo::ExtraOption::Kind::Flag,
+                 "the cube a fine grille instead: bars and square holes two texels wide "
+                 "(about two pixels on screen at 320x240)"},
                 {"cutout-blend", demo::ExtraOption::Kind::Flag,
                  "with --cutout: the cube also blended by its alpha (GL_SRC_ALPHA, "
                  "GL_ONE_MINUS_SRC_ALPHA) with depth writes, as foliage is drawn"},
@@ -281,6 +302,7 @@ public:
         if (options.has("pick")) makePickTarget();
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         cutoutBlend_ = options.has("cutout-blend");
+        if (options.has("cutout-fine")) cutoutTexture_ = uploadGrille();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
             glEnable(GL_FOG);

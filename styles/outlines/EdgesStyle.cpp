@@ -374,6 +374,9 @@ void main()
 // each side of an edge, both within 1.5 pixels of it; points as wide cover the lines' ends.
 constexpr float kNearWidth = 3.0f;
 constexpr double kLineSetup = 48.0; // fragments (see planNear)
+// Pixels: a cut-out whose kept parts or enclosed holes are finer on screen gets no lines
+// along its cut (footprint()).
+constexpr float kFineCut = 3.0f;
 
 std::unique_ptr<Style> create() { return std::make_unique<EdgesStyle>(); }
 
@@ -556,7 +559,7 @@ bool EdgesStyle::planNear(const Scene& scene, StyleContext& ctx, const glm::ivec
         const bool cut = o.alphaFunc != GL_ALWAYS;
         const double n =
             0.5 * double(ctx.meshes.bindDerived(ctx.gl, *o.mesh, &FeatureLines::collect));
-        if (n <= 0.0 && !cut) continue;
+        if ((n <= 0.0 && !cut) || mFootprints[i].fineCut) continue;
         Footprint& f = mFootprints[i];
         const double across = std::min(f.size, widest);
         const double lines = kNearWidth * (2.0 * across * std::sqrt(n) + 2.0 * kNearWidth * n) +
@@ -620,6 +623,7 @@ const EdgesStyle::Bounds& EdgesStyle::bounds(const reconstruct::ObjectMesh& mesh
     b.contentKey = mesh.contentKey;
     b.geometryVersion = mesh.geometryVersion;
     b.empty = true;
+    b.unitsPerUv = 0.0f;
     b.lo = glm::vec3(INFINITY);
     b.hi = glm::vec3(-INFINITY);
     // The corners drawn (MeshBuffers draws faces' source vertices).
@@ -631,6 +635,27 @@ const EdgesStyle::Bounds& EdgesStyle::bounds(const reconstruct::ObjectMesh& mesh
         b.empty = false;
     }
     return b;
+}
+
+float EdgesStyle::unitsPerUv(const reconstruct::ObjectMesh& mesh)
+{
+    Bounds& b = mBounds[&mesh]; // bounds() has brought it up to date this flush
+    if (b.unitsPerUv != 0.0f) return b.unitsPerUv;
+    double area = 0.0, uvArea = 0.0;
+    for (size_t f = 0; f + 2 < mesh.faceCorners.size(); f += 3) {
+        const reconstruct::Vertex& v0 = mesh.sourceVertices[mesh.faceCorners[f]];
+        const reconstruct::Vertex& v1 = mesh.sourceVertices[mesh.faceCorners[f + 1]];
+        const reconstruct::Vertex& v2 = mesh.sourceVertices[mesh.faceCorners[f + 2]];
+        const float a = glm::length(glm::cross(v1.position - v0.position,
+                                               v2.position - v0.position));
+        const glm::vec2 s = v1.texcoord - v0.texcoord, t = v2.texcoord - v0.texcoord;
+        const float uv = std::abs(s.x * t.y - s.y * t.x);
+        if (!std::isfinite(a) || !std::isfinite(uv)) continue;
+        area += a;
+        uvArea += uv;
+    }
+    b.unitsPerUv = area > 0.0 && uvArea > 0.0 ? float(std::sqrt(area / uvArea)) : -1.0f;
+    return b.unitsPerUv;
 }
 
 bool EdgesStyle::boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi)
@@ -676,6 +701,19 @@ EdgesStyle::Footprint EdgesStyle::footprint(const SceneObject& o, int width, int
     if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return f;
     if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return f;
     const glm::vec2 pixels{float(width), float(height)};
+    if (o.alphaFunc != GL_ALWAYS && o.cutFeature > 0.0f) {
+        // The cut's parts and holes on screen, by the box's pixels per object-space unit:
+        // under kFineCut pixels its lines (one pixel each side of every border of the cut)
+        // would leave little of either, a grille or a bare tree's twigs a mesh of ink.
+        const glm::vec2 across = (hi - lo) * 0.5f * pixels;
+        const glm::vec3 extent = b.hi - b.lo;
+        const float span = std::max({extent.x, extent.y, extent.z});
+        const float perUv = unitsPerUv(*o.mesh);
+        if (span > 0.0f && perUv > 0.0f) {
+            const float feature = o.cutFeature * perUv * std::max(across.x, across.y) / span;
+            f.fineCut = feature < kFineCut;
+        }
+    }
     lo = (glm::clamp(lo, -2.0f, 2.0f) * 0.5f + 0.5f) * pixels;
     hi = (glm::clamp(hi, -2.0f, 2.0f) * 0.5f + 0.5f) * pixels;
     f.size = std::max(hi.x - lo.x, hi.y - lo.y);
@@ -786,6 +824,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         const float size = mFootprints[size_t(&o - scene.objects.data())].size;
         gl.Uniform1i(u.noMaterial, size < mDetailSize ? 1 : 0);
         gl.Uniform1i(u.thinLines, size < mThinSize ? 1 : 0);
+        if (cut && mFootprints[size_t(&o - scene.objects.data())].fineCut) continue;
         // What the program culls is not on screen: no line may come from it.
         if (!FaceCulling::begin(gl, o)) continue;
         if (cut) drawCutOut(ctx, o, u);

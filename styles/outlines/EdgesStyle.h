@@ -44,6 +44,8 @@ private:
         bool cached = false;
         bool empty = true;
         glm::vec3 lo{0.0f}, hi{0.0f};
+        // Object-space length per texture coordinate unit (0: not yet measured, -1: none).
+        float unitsPerUv = 0.0f;
     };
 
     void drawFullscreen(const GlFunctions& gl);
@@ -59,11 +61,14 @@ private:
     // Widens [lo, hi] (NDC) by the box's visible part; false if it cannot say.
     static bool boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi);
     const Bounds& bounds(const reconstruct::ObjectMesh& mesh);
+    // Object-space length per texture coordinate unit over the mesh's faces (-1: none).
+    float unitsPerUv(const reconstruct::ObjectMesh& mesh);
     // An object's box on screen: its larger side in pixels (infinite if it cannot say) and
     // the target's pixels [x0, y0, x1, y1) it covers, grown by the lines' margin.
     struct Footprint {
         float size = INFINITY;
         glm::ivec4 box{0};
+        bool fineCut = false; // a cut-out whose cut lines would swamp it (footprint())
     };
     Footprint footprint(const SceneObject& o, int width, int height);
 
