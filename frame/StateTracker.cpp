@@ -2124,9 +2124,6 @@ void StateTracker::noteTextureMean(GLuint texture, GLsizei width, GLsizei height
     glm::vec3 mean;
     if (imageMean(width, height, format, type, pixels, mean)) mTextureMeans[texture] = mean;
     else mTextureMeans.erase(texture);
-    const float feature = cutFeature(width, height, format, type, pixels);
-    if (feature > 0.0f) mCutFeatures[texture] = feature;
-    else mCutFeatures.erase(texture);
 }
 
 bool StateTracker::cubeMean(GLuint texture, glm::vec3& mean) const
@@ -2163,17 +2160,20 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     else mDepthTextures.erase(texture);
     mOpaqueTextures.erase(texture);
     mFilledLater.erase(texture);
+    mCutFeatures.erase(texture);
+    mTextureSizes[texture] = {width, height};
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
     // Storage alone is filled by glTexSubImage2D next (SFML's way): those decide.
     if (!pixels || mImageBytes == 0) {
         mTextureHashes.erase(texture);
         mTextureMeans.erase(texture);
-        mCutFeatures.erase(texture);
         if (!pixels) mFilledLater.insert(texture);
         return;
     }
     if (opaqueImage(width, height, format, type, pixels)) mOpaqueTextures.insert(texture);
     noteTextureMean(texture, width, height, format, type, pixels);
+    const float feature = cutFeature(width, height, format, type, pixels, {width, height});
+    if (feature > 0.0f) mCutFeatures[texture] = feature;
     const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
     uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
     mTextureHashes[texture] = hash == 0 ? 1 : hash;
@@ -2190,6 +2190,7 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     mTextureHashes.erase(texture);
     mTextureMeans.erase(texture);
     mCutFeatures.erase(texture);
+    mTextureSizes.erase(texture); // its size is not followed here
     if (empty) mFilledLater.insert(texture);
     else mFilledLater.erase(texture);
     const GLenum noAlpha[] = {1, 3, GL_RGB, GL_RGB8, GL_RGB5, GL_R3_G3_B2, GL_LUMINANCE,
@@ -2219,7 +2220,15 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
                         opaqueImage(width, height, format, type, pixels);
     mTextureHashes.erase(texture); // its content is no longer the hashed upload
     mTextureMeans.erase(texture);
-    mCutFeatures.erase(texture);
+    // The finest cut of the parts filled (an image given in parts, or by parts only).
+    auto size = mTextureSizes.find(texture);
+    const float feature =
+        size != mTextureSizes.end()
+            ? cutFeature(width, height, format, type, pixels, size->second) : 0.0f;
+    auto known = mCutFeatures.find(texture);
+    if (feature > 0.0f && (known == mCutFeatures.end() || feature < known->second)) {
+        mCutFeatures[texture] = feature;
+    }
     if (!opaque) {
         mOpaqueTextures.erase(texture);
         mFilledLater.erase(texture);
@@ -2247,7 +2256,7 @@ bool StateTracker::opaqueImage(GLsizei width, GLsizei height, GLenum format, GLe
 }
 
 float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                              const void* pixels) const
+                              const void* pixels, glm::ivec2 level) const
 {
     int channels = 0;
     switch (format) {
@@ -2256,24 +2265,28 @@ float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLe
     case GL_ALPHA: channels = 1; break;
     default: return 0.0f;
     }
-    if (!pixels || type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0) return 0.0f;
+    if (!pixels || type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0 || level.x <= 0 ||
+        level.y <= 0) {
+        return 0.0f;
+    }
     const size_t row = mImageBytes / size_t(height);
     if (row < size_t(width) * size_t(channels)) return 0.0f;
     const uint8_t* alpha = static_cast<const uint8_t*>(pixels) + (channels - 1);
     // Sums over the lines walked, each run's length as a fraction of its line.
     double kept = 0.0, enclosed = 0.0;
     size_t keptRuns = 0, enclosedRuns = 0;
-    auto walk = [&](const uint8_t* first, size_t stride, int n) {
+    // n texels of a line of the level `across` texels long.
+    auto walk = [&](const uint8_t* first, size_t stride, int n, int across) {
         int run = 0, clearRun = 0;
         bool inKept = false, seenKept = false;
         for (int i = 0; i <= n; ++i) {
             const bool k = i < n && first[size_t(i) * stride] >= 128;
             if (k && !inKept && seenKept && clearRun > 0) {
-                enclosed += double(clearRun) / n;
+                enclosed += double(clearRun) / across;
                 ++enclosedRuns;
             }
             if (!k && inKept) {
-                kept += double(run) / n;
+                kept += double(run) / across;
                 ++keptRuns;
             }
             if (k) {
@@ -2287,9 +2300,11 @@ float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLe
     };
     // At most 64 rows and 64 columns, whole: once at upload.
     const int stepY = std::max(1, int(height) / 64), stepX = std::max(1, int(width) / 64);
-    for (int y = 0; y < height; y += stepY) walk(alpha + size_t(y) * row, size_t(channels), width);
+    for (int y = 0; y < height; y += stepY) {
+        walk(alpha + size_t(y) * row, size_t(channels), width, level.x);
+    }
     for (int x = 0; x < width; x += stepX) {
-        walk(alpha + size_t(x) * size_t(channels), row, height);
+        walk(alpha + size_t(x) * size_t(channels), row, height, level.y);
     }
     if (keptRuns == 0) return 0.0f;
     const double meanKept = kept / double(keptRuns);

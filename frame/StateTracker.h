@@ -394,11 +394,12 @@ private:
     // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.
     bool opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
                      const void* pixels) const;
-    // The mean length, in texture coordinate units, of the runs of texels an alpha test at
-    // one half keeps and of the clear runs they enclose, whichever is shorter, along rows and
-    // columns of an uploaded image (0: not known, or nothing kept): how fine its cut-out is.
+    // The mean length, in texture coordinate units of a level `level` texels wide and high,
+    // of the runs of texels an alpha test at one half keeps and of the clear runs they
+    // enclose, whichever is shorter, along rows and columns of an uploaded image or part
+    // (0: not known, or nothing kept): how fine its cut-out is.
     float cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                     const void* pixels) const;
+                     const void* pixels, glm::ivec2 level) const;
     // Why surfaceUnit() is -1.
     const char* multitexturing() const;
     // What of the fixed pipeline's state the styles cannot follow (stencil, lines or points,
@@ -475,6 +476,7 @@ private:
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
     std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
     std::map<GLuint, float> mCutFeatures; // level 0's cutFeature, where it is known
+    std::map<GLuint, glm::ivec2> mTextureSizes; // level 0's size as glTexImage2D gave it
     std::array<GLuint, 8> mUnitCubeTextures{}; // every unit's GL_TEXTURE_CUBE_MAP
     // Each cube map's faces' level-0 means (w 1 where known), +X -X +Y -Y +Z -Z.
     std::map<GLuint, std::array<glm::vec4, 6>> mCubeFaceMeans;

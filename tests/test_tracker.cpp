@@ -1186,14 +1186,39 @@ TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
     feed.enable(GL_ALPHA_TEST, true);
     draw(1, nullptr);
     draw(2, &half);
+    // Made 8 x 8 without pixels, then its lower half filled by a part (SFML's way): the part's
+    // runs measured against the whole level.
+    feed.run([&](CallWriter& w) {
+        w.op(op::glBindTexture);
+        w.put<GLenum>(GL_TEXTURE_2D);
+        w.put<GLuint>(3);
+        w.op(op::glTexImage2D);
+        size_t mark = w.beginPayload();
+        for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 8, 8, 0}) w.put<GLint>(v);
+        w.put<GLenum>(GL_RGBA);
+        w.put<GLenum>(GL_UNSIGNED_BYTE);
+        w.put<uint8_t>(0); // no pixels: storage only
+        w.endPayload(mark);
+        w.op(op::glTexSubImage2D);
+        mark = w.beginPayload();
+        for (GLint v : {GLint(GL_TEXTURE_2D), 0, 0, 0, 8, 4}) w.put<GLint>(v);
+        w.put<GLenum>(GL_RGBA);
+        w.put<GLenum>(GL_UNSIGNED_BYTE);
+        w.put<uint8_t>(1);
+        w.putBytes(half.data(), 8 * 4 * 4);
+        w.endPayload(mark);
+    });
+    draw(3, nullptr);
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
-    ASSERT_EQ(batches.size(), 3u);
+    ASSERT_EQ(batches.size(), 4u);
     EXPECT_EQ(batches[0].cutFeature, 0.0f) << "no alpha test, no cut";
     // Rows: 16 kept runs of 2/8 and 8 enclosed clear runs of 2/8; columns: 4 kept of 8/8.
     EXPECT_FLOAT_EQ(batches[1].cutFeature, 0.25f);
     // Rows: 8 kept runs of 4/8, none enclosed; columns: 4 kept runs of 8/8.
     EXPECT_FLOAT_EQ(batches[2].cutFeature, (8 * 0.5f + 4 * 1.0f) / 12.0f);
+    // Rows: 4 kept runs of 4/8; columns: 4 kept runs of 4 texels of the level's 8.
+    EXPECT_FLOAT_EQ(batches[3].cutFeature, 0.5f);
 }
 
 // GL has one default 2D texture for all units (Mesa draws unit 0 with the image given to
