@@ -2272,9 +2272,10 @@ float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLe
     const size_t row = mImageBytes / size_t(height);
     if (row < size_t(width) * size_t(channels)) return 0.0f;
     const uint8_t* alpha = static_cast<const uint8_t*>(pixels) + (channels - 1);
-    // Sums over the lines walked, each run's length as a fraction of its line.
-    double kept = 0.0, enclosed = 0.0;
-    size_t keptRuns = 0, enclosedRuns = 0;
+    // The runs of the lines walked, each as a fraction of its line. Medians, not means: a
+    // font's few long bars would hide its thin strokes, a tree's trunk its twigs.
+    std::vector<float> kept, enclosed;
+    bool anyClear = false;
     // n texels of a line of the level `across` texels long.
     auto walk = [&](const uint8_t* first, size_t stride, int n, int across) {
         int run = 0, clearRun = 0;
@@ -2282,18 +2283,15 @@ float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLe
         for (int i = 0; i <= n; ++i) {
             const bool k = i < n && first[size_t(i) * stride] >= 128;
             if (k && !inKept && seenKept && clearRun > 0) {
-                enclosed += double(clearRun) / across;
-                ++enclosedRuns;
+                enclosed.push_back(float(clearRun) / float(across));
             }
-            if (!k && inKept) {
-                kept += double(run) / across;
-                ++keptRuns;
-            }
+            if (!k && inKept) kept.push_back(float(run) / float(across));
             if (k) {
                 run = inKept ? run + 1 : 1;
                 seenKept = true;
-            } else {
+            } else if (i < n) {
                 clearRun = inKept ? 1 : clearRun + 1;
+                anyClear = true;
             }
             inKept = k;
         }
@@ -2306,10 +2304,14 @@ float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLe
     for (int x = 0; x < width; x += stepX) {
         walk(alpha + size_t(x) * size_t(channels), row, height, level.y);
     }
-    if (keptRuns == 0) return 0.0f;
-    const double meanKept = kept / double(keptRuns);
-    const double meanEnclosed = enclosedRuns > 0 ? enclosed / double(enclosedRuns) : meanKept;
-    return float(std::min(meanKept, meanEnclosed));
+    if (kept.empty() || !anyClear) return 0.0f;
+    auto median = [](std::vector<float>& runs) {
+        auto middle = runs.begin() + std::ptrdiff_t(runs.size() / 2);
+        std::nth_element(runs.begin(), middle, runs.end());
+        return *middle;
+    };
+    const float keptMedian = median(kept);
+    return enclosed.empty() ? keptMedian : std::min(keptMedian, median(enclosed));
 }
 
 uint64_t StateTracker::textureHash(GLuint texture) const

@@ -394,10 +394,10 @@ private:
     // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.
     bool opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
                      const void* pixels) const;
-    // The mean length, in texture coordinate units of a level `level` texels wide and high,
+    // The median length, in texture coordinate units of a level `level` texels wide and high,
     // of the runs of texels an alpha test at one half keeps and of the clear runs they
     // enclose, whichever is shorter, along rows and columns of an uploaded image or part
-    // (0: not known, or nothing kept): how fine its cut-out is.
+    // (0: not known, or the test keeps all or nothing of it): how fine its cut-out is.
     float cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
                      const void* pixels, glm::ivec2 level) const;
     // Why surfaceUnit() is -1.

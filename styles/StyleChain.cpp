@@ -159,11 +159,12 @@ void StyleChain::render(const Scene& scene)
         } else if (!mHasShading) {
             mOpaque.objects.push_back(o);
         } else if (o.translucent) {
-            // Blended but with its depth written where the alpha test keeps it (foliage with
-            // soft rims): its shape is that test's, and it is drawn with the cut-outs, before
-            // the outlines, which then lie over it as over them.
-            const bool shaped = o.alphaFunc != GL_ALWAYS && o.depthWrite &&
-                                o.offsetFactor == 0.0f && o.offsetUnits == 0.0f;
+            // Blended but with its depth written where the alpha test keeps it, and a texture
+            // the test cuts (foliage with soft rims): its shape is that cut, and it is drawn
+            // with the cut-outs, before the outlines, which then lie over it as over them.
+            // Not a surface faded as a whole (3D text fading out): its shape is its polygons.
+            const bool shaped = o.alphaFunc != GL_ALWAYS && o.cutFeature > 0.0f &&
+                                o.depthWrite && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f;
             (shaped ? mBlendedCutOut : mTranslucent).objects.push_back(o);
         } else {
             (o.special() ? mCutOut : mOpaque).objects.push_back(o);

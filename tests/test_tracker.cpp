@@ -1141,9 +1141,9 @@ TEST(StateTracker, TheDefaultTextureAndItsTextureMatrixReachTheBatch)
     EXPECT_EQ(batches[3].vertices[0].texcoord, glm::vec2(0.5f, 0.25f)) << "unit 1's applied";
 }
 
-// How fine an alpha-tested texture's cut is (the mean run of kept texels or of the clear ones
-// they enclose, whichever is shorter, over rows and columns, in texture coordinates): what
-// the edge style asks before outlining a cut-out along its cut.
+// How fine an alpha-tested texture's cut is (the median run of kept texels or of the clear
+// ones they enclose, whichever is shorter, over rows and columns, in texture coordinates):
+// what the edge style asks before outlining a cut-out along its cut.
 TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
 {
     StateTracker tracker;
@@ -1216,7 +1216,7 @@ TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
     // Rows: 16 kept runs of 2/8 and 8 enclosed clear runs of 2/8; columns: 4 kept of 8/8.
     EXPECT_FLOAT_EQ(batches[1].cutFeature, 0.25f);
     // Rows: 8 kept runs of 4/8, none enclosed; columns: 4 kept runs of 8/8.
-    EXPECT_FLOAT_EQ(batches[2].cutFeature, (8 * 0.5f + 4 * 1.0f) / 12.0f);
+    EXPECT_FLOAT_EQ(batches[2].cutFeature, 0.5f);
     // Rows: 4 kept runs of 4/8; columns: 4 kept runs of 4 texels of the level's 8.
     EXPECT_FLOAT_EQ(batches[3].cutFeature, 0.5f);
 }
