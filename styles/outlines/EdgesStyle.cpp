@@ -806,7 +806,9 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     }
     int current = -1;
     for (const SceneObject& o : scene.objects) {
+        const Footprint& f = mFootprints[size_t(&o - scene.objects.data())];
         const int cut = o.alphaFunc != GL_ALWAYS ? 1 : 0;
+        if (cut && f.fineCut) continue; // its cut gets no lines (footprint())
         if (cut != current) {
             current = cut;
             gl.UseProgram(mGeometry[cut].id());
@@ -821,10 +823,8 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         const bool ortho = o.orthographic();
         gl.Uniform1i(u.orthographic, ortho ? 1 : 0);
         gl.Uniform1f(u.depthRange, 2.0f / std::max(std::abs(o.projection[2][2]), 1e-12f));
-        const float size = mFootprints[size_t(&o - scene.objects.data())].size;
-        gl.Uniform1i(u.noMaterial, size < mDetailSize ? 1 : 0);
-        gl.Uniform1i(u.thinLines, size < mThinSize ? 1 : 0);
-        if (cut && mFootprints[size_t(&o - scene.objects.data())].fineCut) continue;
+        gl.Uniform1i(u.noMaterial, f.size < mDetailSize ? 1 : 0);
+        gl.Uniform1i(u.thinLines, f.size < mThinSize ? 1 : 0);
         // What the program culls is not on screen: no line may come from it.
         if (!FaceCulling::begin(gl, o)) continue;
         if (cut) drawCutOut(ctx, o, u);
