@@ -731,10 +731,18 @@ bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ive
         if (!o.mesh) continue;
         const Bounds& b = bounds(*o.mesh);
         if (b.empty) continue;
-        if (!boxOnScreen(o.projection * o.modelview, b, lo, hi)) {
+        glm::vec2 objectLo(INFINITY), objectHi(-INFINITY);
+        if (!boxOnScreen(o.projection * o.modelview, b, objectLo, objectHi)) {
             whole = true;
             break;
         }
+        // Wholly beside the view (trees along a course, off to the side): it draws nothing,
+        // and its box would stretch the rectangle over what is there (a sky above the ground).
+        if (objectHi.x < -1.0f || objectLo.x > 1.0f || objectHi.y < -1.0f || objectLo.y > 1.0f) {
+            continue;
+        }
+        lo = glm::min(lo, objectLo);
+        hi = glm::max(hi, objectHi);
     }
     // Forget meshes no longer drawn.
     if (mBounds.size() > 2 * scene.objects.size() + 64) {
