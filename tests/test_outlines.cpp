@@ -7,6 +7,7 @@
 #include "styles/StyleSettings.h"
 #include "styles/outlines/FeatureLines.h"
 #include "styles/outlines/MotionHistory.h"
+#include "styles/outlines/TileUnion.h"
 
 #include <GL/osmesa.h>
 #include <gtest/gtest.h>
@@ -1289,4 +1290,42 @@ TEST(Motion, HistoryFollowsMeshesThenDrawingOrderAndTopology)
     // A skipped frame forgets: frame 2 had c, frame 4 has c again.
     EXPECT_TRUE(history.beginFlush(4, viewport));
     EXPECT_EQ(history.track(object(c[0])).before, nullptr) << "motion across a skipped frame";
+}
+
+// The edge operator runs over the union of the boxes of objects it covers by their box: each
+// pixel of every box covered exactly once, by rectangles that do not overlap.
+TEST(TileUnion, CoversEveryBoxOnceWithRectanglesThatDoNotOverlap)
+{
+    const glm::ivec4 area(10, 20, 110, 90); // 100 x 70 pixels: tiles of 16, the last ones cut
+    const std::vector<glm::ivec4> boxes = {
+        {12, 22, 40, 50}, {30, 30, 60, 60}, {35, 25, 45, 85}, {100, 80, 130, 100}, {0, 0, 5, 5}};
+    styles::TileUnion tiles(16);
+    tiles.reset(area);
+    int64_t added = 0;
+    for (const glm::ivec4& b : boxes) added += tiles.add(b);
+    EXPECT_EQ(tiles.add(boxes[1]), 0) << "a box again marks nothing new";
+    std::vector<int> hits(100 * 70, 0);
+    for (const glm::ivec4& r : tiles.rects()) {
+        ASSERT_TRUE(r.x >= area.x && r.y >= area.y && r.z <= area.z && r.w <= area.w);
+        for (int y = r.y; y < r.w; ++y) {
+            for (int x = r.x; x < r.z; ++x) ++hits[size_t(y - area.y) * 100 + size_t(x - area.x)];
+        }
+    }
+    int covered = 0;
+    for (int y = area.y; y < area.w; ++y) {
+        for (int x = area.x; x < area.z; ++x) {
+            const int n = hits[size_t(y - area.y) * 100 + size_t(x - area.x)];
+            EXPECT_LE(n, 1) << "rectangles overlap at " << x << ", " << y;
+            covered += n;
+            const bool inBox = std::any_of(boxes.begin(), boxes.end(), [&](const glm::ivec4& b) {
+                return x >= b.x && x < b.z && y >= b.y && y < b.w;
+            });
+            if (inBox) {
+                EXPECT_EQ(n, 1) << "a box's pixel " << x << ", " << y << " not covered";
+            }
+        }
+    }
+    // The tiles' pixels, whole tiles counted in full where the area cuts them.
+    EXPECT_GE(added, covered);
+    EXPECT_LT(covered, 100 * 70) << "the union is the whole area: the test shows nothing";
 }

@@ -546,20 +546,23 @@ bool EdgesStyle::planNear(const Scene& scene, StyleContext& ctx, const glm::ivec
     // 12 edges too), and each line's two end points add a square each. Setting up a wide line
     // and its points costs llvmpipe about as much as kLineSetup fragments (measured on
     // neverball's level: 8,174 lines took longer than the 448,800 pixels they lay in).
+    // The boxes are run as their union, in tiles (mBoxes): overlapping boxes (a forest of
+    // cut-outs) do not run the operator twice over a pixel.
     const glm::vec2 extent(rect.z - rect.x, rect.w - rect.y);
     const double area = double(extent.x) * double(extent.y);
     const float widest = glm::length(extent);
-    double fragments = 0.0;
+    mBoxes.reset(rect);
+    double lineFragments = 0.0, boxFragments = 0.0;
     bool whole = false;
     mNearBy.assign(scene.objects.size(), NearBy::None);
-    for (size_t i = 0; i < scene.objects.size() && fragments < area; ++i) {
+    for (size_t i = 0; i < scene.objects.size() && lineFragments + boxFragments < area; ++i) {
         const SceneObject& o = scene.objects[i];
         if (!o.mesh) continue;
         // A cut-out's lines follow its cut, not its polygons' edges: its box.
         const bool cut = o.alphaFunc != GL_ALWAYS;
         const double n =
             0.5 * double(ctx.meshes.bindDerived(ctx.gl, *o.mesh, &FeatureLines::collect));
-        if ((n <= 0.0 && !cut) || mFootprints[i].fineCut) continue;
+        if ((n <= 0.0 && !cut) || mFootprints[i].fineCut || !mFootprints[i].onScreen) continue;
         Footprint& f = mFootprints[i];
         const double across = std::min(f.size, widest);
         const double lines = kNearWidth * (2.0 * across * std::sqrt(n) + 2.0 * kNearWidth * n) +
@@ -571,12 +574,17 @@ bool EdgesStyle::planNear(const Scene& scene, StyleContext& ctx, const glm::ivec
                                : INFINITY;
         const bool byLines = !cut && (mPass == Pass::Lines || lines <= box);
         mNearBy[i] = byLines ? NearBy::Lines : NearBy::Box;
-        fragments += byLines ? lines : box;
-        // A cut-out of no known box on screen: the whole rectangle.
-        if (cut && box == INFINITY) whole = true;
+        if (byLines) {
+            lineFragments += lines;
+        } else if (box == INFINITY) {
+            boxFragments = INFINITY;
+            whole = cut; // a cut-out of no known box on screen: the whole rectangle
+        } else {
+            boxFragments += double(mBoxes.add(f.box));
+        }
     }
     ctx.gl.DisableVertexAttribArray(4); // MeshBuffers::draw's rule
-    return !whole && (mPass == Pass::Lines || fragments < area);
+    return !whole && (mPass == Pass::Lines || lineFragments + boxFragments < area);
 }
 
 void EdgesStyle::drawCutOut(StyleContext& ctx, const SceneObject& o, const Geometry& u)
@@ -699,7 +707,12 @@ EdgesStyle::Footprint EdgesStyle::footprint(const SceneObject& o, int width, int
     const Bounds& b = bounds(*o.mesh);
     glm::vec2 lo(INFINITY), hi(-INFINITY);
     if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return f;
-    if (!(lo.x <= hi.x) || !(lo.y <= hi.y)) return f;
+    // Wholly behind the eye or beside the view: nothing of it is drawn.
+    if (!(lo.x <= hi.x) || !(lo.y <= hi.y) || hi.x < -1.0f || lo.x > 1.0f || hi.y < -1.0f ||
+        lo.y > 1.0f) {
+        f.onScreen = false;
+        return f;
+    }
     const glm::vec2 pixels{float(width), float(height)};
     if (o.alphaFunc != GL_ALWAYS && o.cutFeature > 0.0f) {
         // The cut's parts and holes on screen, by the box's pixels per object-space unit:
@@ -816,7 +829,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     for (const SceneObject& o : scene.objects) {
         const Footprint& f = mFootprints[size_t(&o - scene.objects.data())];
         const int cut = o.alphaFunc != GL_ALWAYS ? 1 : 0;
-        if (cut && f.fineCut) continue; // its cut gets no lines (footprint())
+        if ((cut && f.fineCut) || !f.onScreen) continue; // no lines (footprint())
         if (cut != current) {
             current = cut;
             gl.UseProgram(mGeometry[cut].id());
@@ -946,9 +959,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         // The operator on the pixels near each object's feature lines, hidden or not (it
         // reads the attributes, not the line); the lines' own depth plays no part. Objects
         // whose lines would cost more: on their box.
-        for (size_t i = 0; i < scene.objects.size(); ++i) {
-            if (mNearBy[i] != NearBy::Box) continue;
-            const glm::ivec4& b = mFootprints[i].box;
+        for (const glm::ivec4& b : mBoxes.rects()) {
             gl.Scissor(scene.viewport.x + b.x, scene.viewport.y + b.y, b.z - b.x, b.w - b.y);
             drawFullscreen(gl);
         }

@@ -3,6 +3,7 @@
 #include "styles/ShaderProgram.h"
 #include "styles/Style.h"
 #include "styles/outlines/EdgeTargets.h"
+#include "styles/outlines/TileUnion.h"
 
 #include <glm/glm.hpp>
 
@@ -69,6 +70,7 @@ private:
         float size = INFINITY;
         glm::ivec4 box{0};
         bool fineCut = false; // a cut-out whose cut lines would swamp it (footprint())
+        bool onScreen = true; // false: its box is wholly behind the eye or beside the view
     };
     Footprint footprint(const SceneObject& o, int width, int height);
 
@@ -83,6 +85,7 @@ private:
     std::vector<Footprint> mFootprints; // per object of the flush
     enum class NearBy : uint8_t { None, Lines, Box };
     std::vector<NearBy> mNearBy;        // per object of the flush: planNear's choice
+    TileUnion mBoxes{16};               // planNear: the objects run over their boxes
     uint64_t mPasses[2] = {0, 0}; // direct or composite passes: [0] whole rectangle, [1] near
     glm::vec3 mWidths{2.0f};
     glm::vec3 mColours[3];
