@@ -327,6 +327,28 @@ static void rgbaImage(CallWriter& w, GLint width, GLint height, const uint8_t* p
     w.endPayload(mark);
 }
 
+// glTexImage2D of level 0 of the bound 2D texture without pixels (storage only), then
+// glTexSubImage2D of its lowest `rows` rows from RGBA bytes: SFML's way of making textures.
+static void rgbaImageByPart(CallWriter& w, GLint width, GLint height, GLint rows,
+                            const uint8_t* pixels)
+{
+    w.op(op::glTexImage2D);
+    size_t mark = w.beginPayload();
+    for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), width, height, 0}) w.put<GLint>(v);
+    w.put<GLenum>(GL_RGBA);
+    w.put<GLenum>(GL_UNSIGNED_BYTE);
+    w.put<uint8_t>(0); // no pixels: storage only
+    w.endPayload(mark);
+    w.op(op::glTexSubImage2D);
+    mark = w.beginPayload();
+    for (GLint v : {GLint(GL_TEXTURE_2D), 0, 0, 0, width, rows}) w.put<GLint>(v);
+    w.put<GLenum>(GL_RGBA);
+    w.put<GLenum>(GL_UNSIGNED_BYTE);
+    w.put<uint8_t>(1);
+    w.putBytes(pixels, size_t(4 * width * rows));
+    w.endPayload(mark);
+}
+
 // Feeds a tracker calls written on the spot: the state tests' building blocks.
 struct Feed {
     StateTracker& tracker;
@@ -1192,21 +1214,7 @@ TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
         w.op(op::glBindTexture);
         w.put<GLenum>(GL_TEXTURE_2D);
         w.put<GLuint>(3);
-        w.op(op::glTexImage2D);
-        size_t mark = w.beginPayload();
-        for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 8, 8, 0}) w.put<GLint>(v);
-        w.put<GLenum>(GL_RGBA);
-        w.put<GLenum>(GL_UNSIGNED_BYTE);
-        w.put<uint8_t>(0); // no pixels: storage only
-        w.endPayload(mark);
-        w.op(op::glTexSubImage2D);
-        mark = w.beginPayload();
-        for (GLint v : {GLint(GL_TEXTURE_2D), 0, 0, 0, 8, 4}) w.put<GLint>(v);
-        w.put<GLenum>(GL_RGBA);
-        w.put<GLenum>(GL_UNSIGNED_BYTE);
-        w.put<uint8_t>(1);
-        w.putBytes(half.data(), 8 * 4 * 4);
-        w.endPayload(mark);
+        rgbaImageByPart(w, 8, 8, 4, half.data());
     });
     draw(3, nullptr);
     std::vector<TrackedBatch> batches;
@@ -1529,21 +1537,7 @@ TEST(StateTracker, AlphaThatCannotBeBelowOneIsOpaque)
             w.op(op::glBindTexture);
             w.put<GLenum>(GL_TEXTURE_2D);
             w.put<GLuint>(name);
-            w.op(op::glTexImage2D);
-            size_t mark = w.beginPayload();
-            for (GLint v : {GLint(GL_TEXTURE_2D), 0, GLint(GL_RGBA), 4, 4, 0}) w.put<GLint>(v);
-            w.put<GLenum>(GL_RGBA);
-            w.put<GLenum>(GL_UNSIGNED_BYTE);
-            w.put<uint8_t>(0); // no pixels: storage only
-            w.endPayload(mark);
-            w.op(op::glTexSubImage2D);
-            mark = w.beginPayload();
-            for (GLint v : {GLint(GL_TEXTURE_2D), 0, 0, 0, 4, 4}) w.put<GLint>(v);
-            w.put<GLenum>(GL_RGBA);
-            w.put<GLenum>(GL_UNSIGNED_BYTE);
-            w.put<uint8_t>(1);
-            w.putBytes(pixels.data(), pixels.size());
-            w.endPayload(mark);
+            rgbaImageByPart(w, 4, 4, 4, pixels.data());
         });
     };
     // Each triangle somewhere else: the same triangle again would be a pass over the first.
