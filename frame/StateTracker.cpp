@@ -1737,6 +1737,16 @@ bool StateTracker::keep(TrackedBatch& batch)
     if (cuts && batch.texture != 0) {
         auto it = mCutFeatures.find(styles::textureName(batch.texture));
         batch.cutFeature = it != mCutFeatures.end() ? it->second : 0.0f;
+        // A texture the test keeps whole, faded by its colours' alpha below what the test
+        // keeps of it: a surface fading as a whole, not a shape (its cut not known).
+        if (batch.cutFeature == kKeptWhole) {
+            for (const TrackedVertex& v : batch.vertices) {
+                if (!(v.color.a >= 0.5f)) {
+                    batch.cutFeature = 0.0f;
+                    break;
+                }
+            }
+        }
     }
     batch.depthOnly = a.colorMaskNone();
     // Decals: the styles pull the surface towards the eye by the program's offset.
@@ -2304,7 +2314,8 @@ float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLe
     for (int x = 0; x < width; x += stepX) {
         walk(alpha + size_t(x) * size_t(channels), row, height, level.y);
     }
-    if (kept.empty() || !anyClear) return 0.0f;
+    if (kept.empty()) return 0.0f;
+    if (!anyClear) return kKeptWhole; // its shape is its polygons
     auto median = [](std::vector<float>& runs) {
         auto middle = runs.begin() + std::ptrdiff_t(runs.size() / 2);
         std::nth_element(runs.begin(), middle, runs.end());

@@ -30,6 +30,10 @@ enum class Attrib { Vertex, Normal, Color, TexCoord };
 // Reconstructor without converting them. hasNormal always equals its batch's hasNormals.
 using TrackedVertex = reconstruct::Vertex;
 
+// TrackedBatch::cutFeature of a texture an alpha test at one half keeps whole: one texture
+// coordinate unit, never fine on screen.
+inline constexpr float kKeptWhole = 1.0f;
+
 
 // One polygonal draw of a frame, with the state reconstruction and the styles need.
 struct TrackedBatch {
@@ -71,7 +75,8 @@ struct TrackedBatch {
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
     // Under the alpha test, how fine its texture's cut is (StateTracker::cutFeature), in
-    // texture coordinate units; 0 when not known.
+    // texture coordinate units; 0 when not known, kKeptWhole when the test cuts nothing of
+    // the texture (a mostly opaque blended surface, shaped by its polygons).
     float cutFeature = 0.0f;
     bool depthOnly = false; // drawn with no colour channel: it only supplies depth
     float offsetFactor = 0.0f, offsetUnits = 0.0f; // GL_POLYGON_OFFSET_FILL's, 0 when off
@@ -397,7 +402,8 @@ private:
     // The median length, in texture coordinate units of a level `level` texels wide and high,
     // of the runs of texels an alpha test at one half keeps and of the clear runs they
     // enclose, whichever is shorter, along rows and columns of an uploaded image or part
-    // (0: not known, or the test keeps all or nothing of it): how fine its cut-out is.
+    // (0: not known, or the test keeps nothing; kKeptWhole: it keeps every texel): how fine
+    // its cut-out is.
     float cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
                      const void* pixels, glm::ivec2 level) const;
     // Why surfaceUnit() is -1.

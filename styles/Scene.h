@@ -131,6 +131,9 @@ struct SceneObject {
     {
         return alphaFunc != GL_ALWAYS || offsetFactor != 0.0f || offsetUnits != 0.0f;
     }
+    // A decal: pulled towards the eye over a surface by its offset (its lines would fight
+    // the surface's). An offset that pushes away keeps an object behind marks drawn over it.
+    bool lifted() const { return offsetFactor < 0.0f || offsetUnits < 0.0f; }
     // The program's fog at its draw (mode 0: none), applied to the styled colours by the
     // eye distance as GL's fixed pipeline does.
     struct Fog {

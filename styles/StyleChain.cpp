@@ -163,8 +163,8 @@ void StyleChain::render(const Scene& scene)
             // the test cuts (foliage with soft rims): its shape is that cut, and it is drawn
             // with the cut-outs, before the outlines, which then lie over it as over them.
             // Not a surface faded as a whole (3D text fading out): its shape is its polygons.
-            const bool shaped = o.alphaFunc != GL_ALWAYS && o.cutFeature > 0.0f &&
-                                o.depthWrite && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f;
+            const bool shaped =
+                o.alphaFunc != GL_ALWAYS && o.cutFeature > 0.0f && o.depthWrite && !o.lifted();
             (shaped ? mBlendedCutOut : mTranslucent).objects.push_back(o);
         } else {
             (o.special() ? mCutOut : mOpaque).objects.push_back(o);
@@ -245,18 +245,16 @@ void StyleChain::renderBlended(const Scene& part)
 
 bool StyleChain::collectCutOuts()
 {
-    // Alpha-tested objects without a polygon offset (a decal's lines would fight its
-    // surface's), after the opaque scene; only for a chain with a style that outlines them.
-    // Blended ones too where they write their depth (mBlendedCutOut).
+    // Alpha-tested objects and objects pushed back by a polygon offset, not decals (their
+    // lines would fight their surfaces'), after the opaque scene; only for a chain with a
+    // style that outlines them. Blended ones too where they write their depth
+    // (mBlendedCutOut).
     mWithCutOuts.objects.clear();
     const bool asked = std::any_of(mStyles.begin(), mStyles.end(),
                                    [](const auto& style) { return style->outlinesCutOuts(); });
     if (!asked) return false;
-    auto cut = [](const SceneObject& o) {
-        return o.alphaFunc != GL_ALWAYS && o.offsetFactor == 0.0f && o.offsetUnits == 0.0f;
-    };
     for (const SceneObject& o : mCutOut.objects) {
-        if (cut(o)) mWithCutOuts.objects.push_back(o);
+        if (!o.lifted()) mWithCutOuts.objects.push_back(o);
     }
     for (const SceneObject& o : mBlendedCutOut.objects) mWithCutOuts.objects.push_back(o);
     if (mWithCutOuts.objects.empty()) return false;

@@ -1487,6 +1487,16 @@ TEST(Compositor, CutOutsAreOutlinedAlongTheirCuts)
         << "the blended cut-out cube has no outlines";
 }
 
+TEST(Compositor, AnObjectPushedBackByItsOffsetIsOutlined)
+{
+    // A positive polygon offset pushes the cube away (megaglest draws all its models so):
+    // not a decal lifted over a surface, whose lines would fight it. Without the rule it got
+    // no line at all.
+    EXPECT_EQ(cubeInk("pushed_toon", "toon", {"--pushed-back"}), 0) << "toon alone draws no ink";
+    EXPECT_GT(cubeInk("pushed_edges", "toon+edges", {"--pushed-back"}), 300)
+        << "the cube pushed back by its offset has no outlines";
+}
+
 TEST(Compositor, AFineCutOutIsNotSwampedByInk)
 {
     // A grille of bars and holes about two pixels across on screen: lines one pixel each side

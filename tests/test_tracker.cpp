@@ -1217,9 +1217,19 @@ TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
         rgbaImageByPart(w, 8, 8, 4, half.data());
     });
     draw(3, nullptr);
+    // Alpha 0.8 everywhere (a mostly opaque texture with soft alpha): the test keeps it whole;
+    // drawn again faded by its colour's alpha, a surface fading as a whole.
+    std::vector<uint8_t> soft(8 * 8 * 4, 255);
+    for (size_t i = 3; i < soft.size(); i += 4) soft[i] = 204;
+    draw(4, &soft);
+    feed.run([](CallWriter& w) {
+        w.op(op::glColor4f);
+        for (float c : {1.0f, 1.0f, 1.0f, 0.3f}) w.put<float>(c);
+    });
+    draw(4, nullptr);
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
-    ASSERT_EQ(batches.size(), 4u);
+    ASSERT_EQ(batches.size(), 6u);
     EXPECT_EQ(batches[0].cutFeature, 0.0f) << "no alpha test, no cut";
     // Rows: 16 kept runs of 2/8 and 8 enclosed clear runs of 2/8; columns: 4 kept of 8/8.
     EXPECT_FLOAT_EQ(batches[1].cutFeature, 0.25f);
@@ -1227,6 +1237,8 @@ TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
     EXPECT_FLOAT_EQ(batches[2].cutFeature, 0.5f);
     // Rows: 4 kept runs of 4/8; columns: 4 kept runs of 4 texels of the level's 8.
     EXPECT_FLOAT_EQ(batches[3].cutFeature, 0.5f);
+    EXPECT_EQ(batches[4].cutFeature, kKeptWhole) << "a texture the test keeps whole";
+    EXPECT_EQ(batches[5].cutFeature, 0.0f) << "faded by its colour: no shape known";
 }
 
 // GL has one default 2D texture for all units (Mesa draws unit 0 with the image given to

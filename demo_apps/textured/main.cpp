@@ -6,7 +6,8 @@
 // blends the sphere over the scene (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), --additive adds it
 // to the scene (GL_ONE, GL_ONE, a glow); --cutout cuts round holes into the cube's faces by
 // its texture's alpha and the alpha test (GL_GREATER 0.5), --cutout-blend blends it too
-// (foliage's soft rims, depth written), --cutout-fine makes it a fine grille; --fog fades the
+// (foliage's soft rims, depth written), --cutout-fine makes it a fine grille; --pushed-back
+// draws the cube with a small positive polygon offset; --fog fades the
 // scene into a pale linear fog between eye distances 6 and 11; --depth-prepass draws the
 // scene twice, depth
 // only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
@@ -232,6 +233,9 @@ public:
                  "opacity, blended by alpha, also without the depth test (a sky's clouds)"},
                 {"cutout", demo::ExtraOption::Kind::Flag,
                  "round holes in the cube's faces (texture alpha and the alpha test)"},
+                {"pushed-back", demo::ExtraOption::Kind::Flag,
+                 "the cube drawn with glPolygonOffset(0.005, 0), pushed back a little (as "
+                 "megaglest draws its models, behind marks drawn over them)"},
                 {"cutout-fine", demo::ExtraOption::Kind::Flag,
                  "the cube a fine grille instead: bars and square holes two texels wide "
                  "(about two pixels on screen at 320x240)"},
@@ -302,6 +306,7 @@ public:
         if (options.has("pick")) makePickTarget();
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         cutoutBlend_ = options.has("cutout-blend");
+        pushedBack_ = options.has("pushed-back");
         if (options.has("cutout-fine")) cutoutTexture_ = uploadGrille();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -638,11 +643,16 @@ public:
                 glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             }
         }
+        if (pushedBack_) {
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(0.005f, 0.0f);
+        }
         glPushMatrix();
         glTranslatef(-1.3f, 0.0f, 0.0f);
         glRotatef(frame * 2.0f, 0.3f, 1.0f, 0.2f);
         drawCube(0.8f, faceTextures_[0] ? faceTextures_ : nullptr);
         glPopMatrix();
+        glDisable(GL_POLYGON_OFFSET_FILL);
         glDisable(GL_ALPHA_TEST);
         glDisable(GL_BLEND);
 
@@ -751,6 +761,7 @@ private:
     bool lateShader_ = false;
     bool alphaMask_ = false;
     bool cutoutBlend_ = false;
+    bool pushedBack_ = false;
     GLuint paneProgram_ = 0;
     bool backdropFloor_ = false;
     bool backdropHaze_ = false;
