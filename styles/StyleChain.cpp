@@ -160,9 +160,10 @@ void StyleChain::render(const Scene& scene)
             mOpaque.objects.push_back(o);
         } else if (o.translucent) {
             // Blended but with its depth written where the alpha test keeps it, and a texture
-            // the test cuts (foliage with soft rims): its shape is that cut, and it is drawn
-            // with the cut-outs, before the outlines, which then lie over it as over them.
-            // Not a surface faded as a whole (3D text fading out): its shape is its polygons.
+            // whose cut is known (foliage with soft rims; or one the test keeps whole, a mostly
+            // opaque surface): its shape is that cut, and it is drawn with the cut-outs, before
+            // the outlines, which then lie over it as over them. Not a surface faded as a whole
+            // by its colours (3D text fading out: its cut is then not known), nor a decal.
             const bool shaped =
                 o.alphaFunc != GL_ALWAYS && o.cutFeature > 0.0f && o.depthWrite && !o.lifted();
             (shaped ? mBlendedCutOut : mTranslucent).objects.push_back(o);

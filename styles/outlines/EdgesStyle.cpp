@@ -666,6 +666,11 @@ float EdgesStyle::unitsPerUv(const reconstruct::ObjectMesh& mesh)
     return b.unitsPerUv;
 }
 
+bool EdgesStyle::besideView(const glm::vec2& lo, const glm::vec2& hi)
+{
+    return hi.x < -1.0f || lo.x > 1.0f || hi.y < -1.0f || lo.y > 1.0f;
+}
+
 bool EdgesStyle::boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi)
 {
     // The box as GL clips it: corners in front of the near plane (z + w >= 0 in clip space)
@@ -707,9 +712,8 @@ EdgesStyle::Footprint EdgesStyle::footprint(const SceneObject& o, int width, int
     const Bounds& b = bounds(*o.mesh);
     glm::vec2 lo(INFINITY), hi(-INFINITY);
     if (b.empty || !boxOnScreen(o.projection * o.modelview, b, lo, hi)) return f;
-    // Wholly behind the eye or beside the view: nothing of it is drawn.
-    if (!(lo.x <= hi.x) || !(lo.y <= hi.y) || hi.x < -1.0f || lo.x > 1.0f || hi.y < -1.0f ||
-        lo.y > 1.0f) {
+    // Wholly behind the eye (no point added) or beside the view: nothing of it is drawn.
+    if (!(lo.x <= hi.x) || !(lo.y <= hi.y) || besideView(lo, hi)) {
         f.onScreen = false;
         return f;
     }
@@ -751,9 +755,7 @@ bool EdgesStyle::coveredRect(const Scene& scene, int width, int height, glm::ive
         }
         // Wholly beside the view (trees along a course, off to the side): it draws nothing,
         // and its box would stretch the rectangle over what is there (a sky above the ground).
-        if (objectHi.x < -1.0f || objectLo.x > 1.0f || objectHi.y < -1.0f || objectLo.y > 1.0f) {
-            continue;
-        }
+        if (besideView(objectLo, objectHi)) continue;
         lo = glm::min(lo, objectLo);
         hi = glm::max(hi, objectHi);
     }

@@ -61,6 +61,8 @@ private:
     bool coveredRect(const Scene& scene, int width, int height, glm::ivec4& rect);
     // Widens [lo, hi] (NDC) by the box's visible part; false if it cannot say.
     static bool boxOnScreen(const glm::mat4& m, const Bounds& b, glm::vec2& lo, glm::vec2& hi);
+    // Whether a box [lo, hi] (NDC) lies wholly outside the view, left, right, above or below.
+    static bool besideView(const glm::vec2& lo, const glm::vec2& hi);
     const Bounds& bounds(const reconstruct::ObjectMesh& mesh);
     // Object-space length per texture coordinate unit over the mesh's faces (-1: none).
     float unitsPerUv(const reconstruct::ObjectMesh& mesh);
