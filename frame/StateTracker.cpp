@@ -2095,47 +2095,6 @@ void StateTracker::layerEffects(TrackedBatch& batch) const
     }
 }
 
-bool StateTracker::imageMean(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                             const void* pixels, glm::vec3& mean) const
-{
-    int channels = 0;
-    switch (format) {
-    case GL_RGBA: case GL_BGRA: channels = 4; break;
-    case GL_RGB: case GL_BGR: channels = 3; break;
-    case GL_LUMINANCE_ALPHA: channels = 2; break;
-    case GL_LUMINANCE: channels = 1; break;
-    default: return false;
-    }
-    if (!pixels || type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0) return false;
-    // Rows as the recorder laid them out (the unpack alignment's padding included).
-    const size_t row = mImageBytes / size_t(height);
-    if (row < size_t(width) * size_t(channels)) return false;
-    // A sample of at most 64 x 64 texels: a mean, taken once at upload.
-    const int stepX = std::max(1, int(width) / 64), stepY = std::max(1, int(height) / 64);
-    const uint8_t* p = static_cast<const uint8_t*>(pixels);
-    glm::dvec3 sum(0.0);
-    size_t n = 0;
-    for (int y = 0; y < height; y += stepY) {
-        for (int x = 0; x < width; x += stepX) {
-            const uint8_t* t = p + size_t(y) * row + size_t(x) * size_t(channels);
-            glm::dvec3 c = channels >= 3 ? glm::dvec3(t[0], t[1], t[2]) : glm::dvec3(t[0]);
-            if (format == GL_BGRA || format == GL_BGR) std::swap(c.r, c.b);
-            sum += c;
-            ++n;
-        }
-    }
-    mean = glm::vec3(sum / (255.0 * double(n)));
-    return true;
-}
-
-void StateTracker::noteTextureMean(GLuint texture, GLsizei width, GLsizei height, GLenum format,
-                                   GLenum type, const void* pixels)
-{
-    glm::vec3 mean;
-    if (imageMean(width, height, format, type, pixels, mean)) mTextureMeans[texture] = mean;
-    else mTextureMeans.erase(texture);
-}
-
 bool StateTracker::cubeMean(GLuint texture, glm::vec3& mean) const
 {
     auto it = mCubeFaceMeans.find(texture);
@@ -2157,8 +2116,9 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
         glm::vec3 mean;
         glm::vec4& face = mCubeFaceMeans[mUnitCubeTextures[size_t(mActiveUnit)]]
                                         [target - GL_TEXTURE_CUBE_MAP_POSITIVE_X];
-        face = imageMean(width, height, format, type, pixels, mean) ? glm::vec4(mean, 1.0f)
-                                                                    : glm::vec4(0.0f);
+        face = TextureImage(width, height, format, type, pixels, mImageBytes).mean(mean)
+                   ? glm::vec4(mean, 1.0f)
+                   : glm::vec4(0.0f);
         return;
     }
     if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
@@ -2180,9 +2140,12 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
         if (!pixels) mFilledLater.insert(texture);
         return;
     }
-    if (opaqueImage(width, height, format, type, pixels)) mOpaqueTextures.insert(texture);
-    noteTextureMean(texture, width, height, format, type, pixels);
-    const float feature = cutFeature(width, height, format, type, pixels, {width, height});
+    const TextureImage image(width, height, format, type, pixels, mImageBytes);
+    if (image.opaque()) mOpaqueTextures.insert(texture);
+    glm::vec3 mean;
+    if (image.mean(mean)) mTextureMeans[texture] = mean;
+    else mTextureMeans.erase(texture);
+    const float feature = image.cutFeature({width, height});
     if (feature > 0.0f) mCutFeatures[texture] = feature;
     const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
     uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
@@ -2226,15 +2189,15 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
     // filled are undefined in GL). Into an image of known pixels: a part with alpha below 1
     // makes it not opaque; an opaque part changes nothing.
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
-    const bool opaque = pixels && mImageBytes != 0 &&
-                        opaqueImage(width, height, format, type, pixels);
+    const TextureImage image(width, height, format, type, pixels, mImageBytes);
+    const bool opaque = pixels && mImageBytes != 0 && image.opaque();
     mTextureHashes.erase(texture); // its content is no longer the hashed upload
     mTextureMeans.erase(texture);
     // The finest cut of the parts filled (an image given in parts, or by parts only).
     auto size = mTextureSizes.find(texture);
     const float feature =
         size != mTextureSizes.end()
-            ? cutFeature(width, height, format, type, pixels, size->second) : 0.0f;
+            ? image.cutFeature(size->second) : 0.0f;
     auto known = mCutFeatures.find(texture);
     if (feature > 0.0f && (known == mCutFeatures.end() || feature < known->second)) {
         mCutFeatures[texture] = feature;
@@ -2245,84 +2208,6 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
     } else if (mFilledLater.contains(texture)) {
         mOpaqueTextures.insert(texture);
     }
-}
-
-bool StateTracker::opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                               const void* pixels) const
-{
-    // Formats without alpha, or bytes of 255 (one pass, at upload, not per draw).
-    if (format == GL_RGB || format == GL_BGR || format == GL_LUMINANCE || format == GL_RED) {
-        return true;
-    }
-    if ((format != GL_RGBA && format != GL_BGRA) || type != GL_UNSIGNED_BYTE ||
-        mImageBytes < size_t(width) * size_t(height) * 4) {
-        return false;
-    }
-    const uint8_t* p = static_cast<const uint8_t*>(pixels);
-    for (size_t i = 3; i < size_t(width) * size_t(height) * 4; i += 4) {
-        if (p[i] != 255) return false;
-    }
-    return true;
-}
-
-float StateTracker::cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                              const void* pixels, glm::ivec2 level) const
-{
-    int channels = 0;
-    switch (format) {
-    case GL_RGBA: case GL_BGRA: channels = 4; break;
-    case GL_LUMINANCE_ALPHA: channels = 2; break;
-    case GL_ALPHA: channels = 1; break;
-    default: return 0.0f;
-    }
-    if (!pixels || type != GL_UNSIGNED_BYTE || width <= 0 || height <= 0 || level.x <= 0 ||
-        level.y <= 0) {
-        return 0.0f;
-    }
-    const size_t row = mImageBytes / size_t(height);
-    if (row < size_t(width) * size_t(channels)) return 0.0f;
-    const uint8_t* alpha = static_cast<const uint8_t*>(pixels) + (channels - 1);
-    // The runs of the lines walked, each as a fraction of its line. Medians, not means: a
-    // font's few long bars would hide its thin strokes, a tree's trunk its twigs.
-    std::vector<float> kept, enclosed;
-    bool anyClear = false;
-    // n texels of a line of the level `across` texels long.
-    auto walk = [&](const uint8_t* first, size_t stride, int n, int across) {
-        int run = 0, clearRun = 0;
-        bool inKept = false, seenKept = false;
-        for (int i = 0; i <= n; ++i) {
-            const bool k = i < n && first[size_t(i) * stride] >= 128;
-            if (k && !inKept && seenKept && clearRun > 0) {
-                enclosed.push_back(float(clearRun) / float(across));
-            }
-            if (!k && inKept) kept.push_back(float(run) / float(across));
-            if (k) {
-                run = inKept ? run + 1 : 1;
-                seenKept = true;
-            } else if (i < n) {
-                clearRun = inKept ? 1 : clearRun + 1;
-                anyClear = true;
-            }
-            inKept = k;
-        }
-    };
-    // At most 64 rows and 64 columns, whole: once at upload.
-    const int stepY = std::max(1, int(height) / 64), stepX = std::max(1, int(width) / 64);
-    for (int y = 0; y < height; y += stepY) {
-        walk(alpha + size_t(y) * row, size_t(channels), width, level.x);
-    }
-    for (int x = 0; x < width; x += stepX) {
-        walk(alpha + size_t(x) * size_t(channels), row, height, level.y);
-    }
-    if (kept.empty()) return 0.0f;
-    if (!anyClear) return kKeptWhole; // its shape is its polygons
-    auto median = [](std::vector<float>& runs) {
-        auto middle = runs.begin() + std::ptrdiff_t(runs.size() / 2);
-        std::nth_element(runs.begin(), middle, runs.end());
-        return *middle;
-    };
-    const float keptMedian = median(kept);
-    return enclosed.empty() ? keptMedian : std::min(keptMedian, median(enclosed));
 }
 
 uint64_t StateTracker::textureHash(GLuint texture) const

@@ -5,6 +5,7 @@
 #include "frame/LeaveRules.h"
 #include "frame/MatrixStacks.h"
 #include "frame/ShadowArrays.h"
+#include "frame/TextureImage.h"
 #include "reconstruct/Batch.h"
 #include "shim/Api.h"
 #include "stream/CallReader.h"
@@ -29,10 +30,6 @@ enum class Attrib { Vertex, Normal, Color, TexCoord };
 // Kept as reconstruction's own vertex, so the compositor hands the tracker's vectors to the
 // Reconstructor without converting them. hasNormal always equals its batch's hasNormals.
 using TrackedVertex = reconstruct::Vertex;
-
-// TrackedBatch::cutFeature of a texture an alpha test at one half keeps whole: one texture
-// coordinate unit, never fine on screen.
-inline constexpr float kKeptWhole = 1.0f;
 
 
 // One polygonal draw of a frame, with the state reconstruction and the styles need.
@@ -74,7 +71,7 @@ struct TrackedBatch {
     GLenum depthFunc = GL_LESS;
     GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
     float alphaRef = 0.0f;
-    // Under the alpha test, how fine its texture's cut is (StateTracker::cutFeature), in
+    // Under the alpha test, how fine its texture's cut is (TextureImage::cutFeature), in
     // texture coordinate units; 0 when not known, kKeptWhole when the test cuts nothing of
     // the texture (a mostly opaque blended surface, shaped by its polygons).
     float cutFeature = 0.0f;
@@ -396,16 +393,6 @@ private:
     bool repeatsHeld(const TrackedBatch& batch, bool layer) const;
     static uint64_t passKey(const TrackedBatch& batch);
     void indexBatch(const TrackedBatch& batch);
-    // Whether an uploaded image (of the call being decoded) has alpha 1 everywhere.
-    bool opaqueImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                     const void* pixels) const;
-    // The median length, in texture coordinate units of a level `level` texels wide and high,
-    // of the runs of texels an alpha test at one half keeps and of the clear runs they
-    // enclose, whichever is shorter, along rows and columns of an uploaded image or part
-    // (0: not known, or the test keeps nothing; kKeptWhole: it keeps every texel): how fine
-    // its cut-out is.
-    float cutFeature(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                     const void* pixels, glm::ivec2 level) const;
     // Why surfaceUnit() is -1.
     const char* multitexturing() const;
     // What of the fixed pipeline's state the styles cannot follow (stencil, lines or points,
@@ -440,11 +427,6 @@ private:
     // A generated texture on GL_OBJECT_LINEAR planes becomes the batch's texture on
     // coordinates made from its vertices.
     void bakeObjectLinear(TrackedBatch& batch) const;
-    void noteTextureMean(GLuint texture, GLsizei width, GLsizei height, GLenum format,
-                         GLenum type, const void* pixels);
-    // The mean colour of an image of the call being decoded (8-bit formats); false: unknown.
-    bool imageMean(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                   const void* pixels, glm::vec3& mean) const;
     bool cubeMean(GLuint texture, glm::vec3& mean) const;
     bool keep(TrackedBatch& batch);
     std::vector<TrackedVertex> takeVertices();

@@ -6,6 +6,7 @@
 #include "frame/CaptureBlobs.h"
 #include "frame/MatrixStacks.h"
 #include "frame/StateTracker.h"
+#include "frame/TextureImage.h"
 #include "stream/CallWriter.h"
 #include "stream/Opcodes.h"
 #include "tests/support/Process.h"
@@ -1239,6 +1240,31 @@ TEST(StateTracker, ACutOutsTextureTellsHowFineItsCutIs)
     EXPECT_FLOAT_EQ(batches[3].cutFeature, 0.5f);
     EXPECT_EQ(batches[4].cutFeature, kKeptWhole) << "a texture the test keeps whole";
     EXPECT_EQ(batches[5].cutFeature, 0.0f) << "faded by its colour: no shape known";
+}
+
+// An upload's rows as the recorder keeps them, each padded to the unpack alignment: the
+// padding is no texel (here 0 bytes, where every texel is opaque white).
+TEST(TextureImage, ReadsRowsWithoutTheirUnpackPadding)
+{
+    // 1 x 2 RGBA at an alignment of 8: 4 bytes of texel, 4 of padding a row.
+    const uint8_t rgba[16] = {255, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0};
+    const TextureImage tall(1, 2, GL_RGBA, GL_UNSIGNED_BYTE, rgba, sizeof rgba);
+    EXPECT_TRUE(tall.opaque()) << "the padding's zero bytes read as alpha";
+    glm::vec3 mean(0.0f);
+    ASSERT_TRUE(tall.mean(mean));
+    EXPECT_FLOAT_EQ(mean.r, 1.0f);
+    EXPECT_EQ(tall.cutFeature({1, 2}), kKeptWhole) << "nothing clear in it";
+    // 3 x 2 RGB at an alignment of 4: 9 bytes of texels, 3 of padding (255) a row.
+    uint8_t rgb[24] = {};
+    for (int row = 0; row < 2; ++row) {
+        for (int i = 9; i < 12; ++i) rgb[row * 12 + i] = 255;
+    }
+    ASSERT_TRUE(TextureImage(3, 2, GL_RGB, GL_UNSIGNED_BYTE, rgb, sizeof rgb).mean(mean));
+    EXPECT_EQ(mean, glm::vec3(0.0f)) << "black texels; the padding counted";
+    // Too few bytes for the image, or no pixels: nothing known.
+    EXPECT_FALSE(TextureImage(3, 2, GL_RGB, GL_UNSIGNED_BYTE, rgb, 12).mean(mean));
+    EXPECT_FALSE(TextureImage(1, 2, GL_RGBA, GL_UNSIGNED_BYTE, nullptr, 16).opaque());
+    EXPECT_EQ(TextureImage(1, 2, GL_RGBA, GL_UNSIGNED_BYTE, rgba, 4).cutFeature({1, 2}), 0.0f);
 }
 
 // GL has one default 2D texture for all units (Mesa draws unit 0 with the image given to
