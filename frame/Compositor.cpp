@@ -211,9 +211,12 @@ Compositor::Compositor(Context& ctx, Recorder& recorder)
     mHasStyles = mSettings.chain().front()->create != nullptr;
 }
 
-Compositor::~Compositor()
+Compositor::~Compositor() { reportRunCounts(); }
+
+void Compositor::reportRunCounts()
 {
-    if (mRunCounts.styled() == 0 && mRunCounts.left() == 0) return;
+    if (mRunCountsReported || (mRunCounts.styled() == 0 && mRunCounts.left() == 0)) return;
+    mRunCountsReported = true;
     NPRGL_INFO("context %u: 3D polygon draws: %s", mContext.serial(),
                mRunCounts.describe().c_str());
 }

@@ -66,6 +66,9 @@ public:
     void endFrameCounts();
     const DrawCounts& lastFrameCounts() const { return mLastFrameCounts; }
     const DrawCounts& runCounts() const { return mRunCounts; }
+    // Logs the run's counts, once: when the context goes, or at exit for a context the
+    // program never destroyed (most programs just exit).
+    void reportRunCounts();
     // The object of the last flush under window pixel (x, y), y from the window's top: for
     // the overlay's pick. PickResult::texture's content hash in `textureHash`.
     PickResult pick(int x, int y, int windowHeight, uint64_t& textureHash) const;
@@ -194,6 +197,7 @@ private:
     // in this frame: styled, and left as the program draws them by reason (each reason said
     // at its first).
     DrawCounts mRunCounts, mFrameCounts, mLastFrameCounts;
+    bool mRunCountsReported = false;
     uint64_t mMergedSeen = 0; // the tracker's merged passes already counted
     bool mMergeSaid = false;
     double mFrameComposeMs = 0.0, mLastFrameComposeMs = 0.0;

@@ -1,8 +1,11 @@
 #include "shim/ContextRegistry.h"
 
+#include "frame/Compositor.h"
 #include "shim/RealGl.h"
 #include "shim/Config.h"
 #include "shim/ThreadState.h"
+
+#include <cstdlib>
 
 namespace nprgl {
 
@@ -15,8 +18,22 @@ thread_local std::shared_ptr<Context> tCurrent;
 
 ContextRegistry& ContextRegistry::instance()
 {
-    static ContextRegistry* registry = new ContextRegistry; // never destroyed: exit-safe
+    static ContextRegistry* registry = [] {
+        auto* r = new ContextRegistry; // never destroyed: exit-safe
+        std::atexit([] { instance().reportAtExit(); });
+        return r;
+    }();
     return *registry;
+}
+
+void ContextRegistry::reportAtExit()
+{
+    // Not waiting: exit() called by a thread holding the lock would never return.
+    std::unique_lock lock(mMutex, std::try_to_lock);
+    if (!lock.owns_lock()) return;
+    for (auto& [key, ctx] : mContexts) {
+        if (Compositor* c = ctx->compositor()) c->reportRunCounts();
+    }
 }
 
 void ContextRegistry::makeCurrent(WindowSystem ws, const void* handle)

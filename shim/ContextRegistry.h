@@ -22,6 +22,9 @@ public:
     void destroy(WindowSystem ws, const void* handle);
 
 private:
+    // At exit: the counts of the contexts the program never destroyed.
+    void reportAtExit();
+
     using Key = std::pair<WindowSystem, const void*>;
 
     std::mutex mMutex;

@@ -491,6 +491,24 @@ TEST(Compositor, ATranslucentBackdropOverAnOpaqueOneStaysTranslucent)
     EXPECT_NEAR(styled, native, 20) << "the haze is not translucent";
 }
 
+// Most programs end by exit() without destroying their GL context: the run's counts are
+// still logged, once; a program that destroys its context logs them once too.
+TEST(Compositor, TheRunsCountsAreLoggedAtExitWithTheContextAlive)
+{
+    for (bool undestroyed : {true, false}) {
+        std::vector<std::string> args = {demo("immediate"), "--offscreen", "--frames", "3",
+                                         "--size", "128x128"};
+        if (undestroyed) args.push_back("--exit-undestroyed");
+        ProcessResult r = runProcess(under({nprglCommand()}, args));
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const size_t first = r.err.find("3D polygon draws: ");
+        ASSERT_NE(first, std::string::npos) << (undestroyed ? "exit, context alive: " : "")
+                                            << r.err;
+        EXPECT_EQ(r.err.find("3D polygon draws: ", first + 1), std::string::npos)
+            << "logged twice: " << r.err;
+    }
+}
+
 // Lists called together and left (the plate added to the scene, GL_ONE, GL_ONE, by the one
 // glCallLists of demo_displaylist) are counted with their reason and painted red by the
 // coverage style, as a glCallList is: they were neither (a 3D draw nobody was told of).

@@ -6,6 +6,7 @@
 #include "PngWriter.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -82,6 +83,8 @@ int runFrames(const Options& options, const GlApi& gl, Scene& scene)
         std::printf("frames=%d seconds=%.6f fps=%.3f\n", framesDone, seconds, fps);
         std::fflush(stdout);
     }
+    // As most programs end: the surface and its context are never destroyed.
+    if (options.exitUndestroyed) std::exit(0);
     return 0;
 }
 

@@ -38,6 +38,7 @@ void printHelp(const Options& options, const std::vector<ExtraOption>& extraOpti
                 "  --save-dir DIR     write DIR/%s_<frame>.png (every frame unless --save-frames)\n"
                 "  --save-frames LIST frames to save, 1-based, e.g. 1,5,10 or 1-3,7\n"
                 "  --report           print 'frames=N seconds=S fps=F' at exit\n"
+                "  --exit-undestroyed end by exit() without destroying the GL context\n"
                 "  --grow-at N        window: resize it to twice --size before frame N\n"
                 "  --press N KEYS     window: hold KEYS (e.g. Shift_R+F11) down during frame N\n"
                 "  --help             show this help\n",
@@ -114,7 +115,8 @@ int parseOptions(int argc, char** argv, const std::string& shortName,
         };
         auto isFlag = [&](const char* name) { return arg == name && !hasInlineValue; };
 
-        if (hasInlineValue && (arg == "--help" || arg == "--offscreen" || arg == "--report")) {
+        if (hasInlineValue && (arg == "--help" || arg == "--offscreen" || arg == "--report" ||
+                               arg == "--exit-undestroyed")) {
             return usageError(options, arg + " takes no value");
         }
         if (isFlag("--help") || isFlag("-h")) {
@@ -124,6 +126,8 @@ int parseOptions(int argc, char** argv, const std::string& shortName,
             options.offscreen = true;
         } else if (isFlag("--report")) {
             options.report = true;
+        } else if (isFlag("--exit-undestroyed")) {
+            options.exitUndestroyed = true;
         } else if (arg == "--frames") {
             if (!takeValue() || !parseInt(value, 0, INT_MAX, options.frames)) {
                 return usageError(options, "--frames needs a non-negative integer");
