@@ -33,6 +33,8 @@ public:
     static Recorder& current() { return *tThread.context->recorder(); }
 
     CallWriter& writer() { return mWriter; }
+    // The calls held since the last frame ended.
+    size_t streamBytes() const { return mWriter.size(); }
     bool hasSink() const { return mSession != nullptr; }
     // A call nprgl neither follows nor records: counted by name (the capture says it lacks
     // it) and a barrier for the compositor (what is held is drawn first, so order is kept).

@@ -42,7 +42,37 @@ void APIENTRY osmesaFinish()
     }
 }
 
+// See Context::endUnswappedFrame.
+void APIENTRY boundedFlush()
+{
+    Context* ctx = tThread.context;
+    if (!ctx) return gRealGl.glFlush();
+    ctx->flushBelowHook();
+    ctx->endUnswappedFrame();
+}
+
+void APIENTRY boundedFinish()
+{
+    Context* ctx = tThread.context;
+    if (!ctx) return gRealGl.glFinish();
+    ctx->finishBelowHook();
+    ctx->endUnswappedFrame();
+}
+
 } // namespace
+
+void Context::endUnswappedFrame()
+{
+    if (!mRecorder || mRecorder->streamBytes() < kUnswappedFrameBytes) return;
+    if (!mUnswappedSaid) {
+        NPRGL_INFO("context %u: %zu bytes of calls without a swap; its frames end at glFlush or "
+                   "glFinish past %zu MiB (a single-buffered window, or a view drawn off screen "
+                   "and shown by another context)",
+                   mSerial, mRecorder->streamBytes(), kUnswappedFrameBytes >> 20);
+        mUnswappedSaid = true;
+    }
+    if (endFrame(false) && mWidth > 0 && mHeight > 0) writeScreenshot(mWidth, mHeight);
+}
 
 Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Config& config)
     : mConfig(config), mDispatch(gRealGl), mWs(ws), mHandle(handle), mSerial(serial),
@@ -67,7 +97,12 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Con
         mCompositor->setRules(mConfig.rules);
     }
     mFinish = mDispatch.glFinish;
+    mFlush = mDispatch.glFlush;
     if (ws == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
+    if (mRecorder) {
+        mDispatch.glFlush = &boundedFlush;
+        if (ws != WindowSystem::OSMesa) mDispatch.glFinish = &boundedFinish;
+    }
 }
 
 Context::~Context() = default;
@@ -79,6 +114,7 @@ void Context::stopStyling()
     if (!mRecorder || mRecorder->hasSink()) return;
     mDispatch = gRealGl;
     mFinish = mDispatch.glFinish;
+    mFlush = mDispatch.glFlush;
     if (mWs == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
 }
 

@@ -4,6 +4,7 @@
 #include "shim/Config.h"
 #include "shim/Hotkeys.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -29,6 +30,10 @@ struct ContextCaps {
 
 // nprgl's view of one GL context of the program: created on its first MakeCurrent, it owns
 // the dispatch table the thunks use while it is current, and counts frames.
+// Calls held without a frame's end past which a glFlush or glFinish ends one
+// (Context::endUnswappedFrame): far above what a frame of a real program holds.
+inline constexpr size_t kUnswappedFrameBytes = size_t(32) << 20;
+
 class Context {
 public:
     Context(WindowSystem ws, const void* handle, uint32_t serial, const Config& config);
@@ -72,6 +77,12 @@ public:
     Compositor* compositor() const { return mCompositor.get(); }
     // The glFinish below our OSMesa frame hook (the recording one or the driver's).
     void finishBelowHook() const { mFinish(); }
+    void flushBelowHook() const { mFlush(); }
+    // A glFlush or glFinish of a context whose calls since its last frame passed
+    // kUnswappedFrameBytes ends a frame (not shown): a context that never swaps (a
+    // single-buffered window, an off-screen view another context shows) would otherwise
+    // hold its calls for ever.
+    void endUnswappedFrame();
 
     const GlDispatch& dispatch() const { return mDispatch; }
     const ContextCaps& caps() const { return mCaps; }
@@ -101,6 +112,8 @@ private:
     const Config& mConfig; // the process's (Config::process), which outlives every context
     GlDispatch mDispatch;
     void(APIENTRY* mFinish)() = nullptr;
+    void(APIENTRY* mFlush)() = nullptr;
+    bool mUnswappedSaid = false;
     std::unique_ptr<Recorder> mRecorder;
     std::unique_ptr<Compositor> mCompositor;
     std::string mVendor, mRenderer, mVersion;

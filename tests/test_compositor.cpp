@@ -509,6 +509,25 @@ TEST(Compositor, TheRunsCountsAreLoggedAtExitWithTheContextAlive)
     }
 }
 
+// A context that never swaps (a single-buffered window ending its frames by glFlush, a
+// toolkit's view drawn off screen and shown by another context) held every call it made for
+// the whole run. Past kUnswappedFrameBytes its glFlush ends a frame: the memory is bounded,
+// the frames counted, screenshots written, and the log says so.
+TEST(Frames, AContextThatNeverSwapsStillEndsItsFrames)
+{
+    const std::string dir = freshDir("never_swaps");
+    ProcessResult r = runProcess(under({nprglCommand(), "--screenshot", "frames=1;dir=" + dir},
+                                       {demo("immediate"), "--flush-frames", "--frames", "700",
+                                        "--size", "128x128"}));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("bytes of calls without a swap"), std::string::npos) << r.err;
+    bool shot = false;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        shot = shot || entry.path().extension() == ".png";
+    }
+    EXPECT_TRUE(shot) << "no frame ever ended: " << r.err.substr(0, 2000);
+}
+
 // Lists called together and left (the plate added to the scene, GL_ONE, GL_ONE, by the one
 // glCallLists of demo_displaylist) are counted with their reason and painted red by the
 // coverage style, as a glCallList is: they were neither (a 3D draw nobody was told of).

@@ -20,6 +20,7 @@ GlApi linkedGlApi()
     gl.pixelStorei = &glPixelStorei;
     gl.getIntegerv = &glGetIntegerv;
     gl.finish = &glFinish;
+    gl.flush = &glFlush;
     gl.glXChooseVisual = &glXChooseVisual;
     gl.glXCreateContext = &glXCreateContext;
     gl.glXMakeCurrent = &glXMakeCurrent;

@@ -70,7 +70,8 @@ int runFrames(const Options& options, const GlApi& gl, Scene& scene)
                 return fail(options, error);
             }
         }
-        surface->present();
+        if (options.flushFrames) gl.flush();
+        else surface->present();
         if (press) surface->pressKeys(options.pressKeys, false);
         ++framesDone;
     }

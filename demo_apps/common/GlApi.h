@@ -13,6 +13,7 @@ struct GlApi {
     void (*pixelStorei)(GLenum, GLint) = nullptr;
     void (*getIntegerv)(GLenum, GLint*) = nullptr;
     void (*finish)() = nullptr;
+    void (*flush)() = nullptr;
 
     XVisualInfo* (*glXChooseVisual)(Display*, int, int*) = nullptr;
     GLXContext (*glXCreateContext)(Display*, XVisualInfo*, GLXContext, Bool) = nullptr;

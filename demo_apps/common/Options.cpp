@@ -39,6 +39,7 @@ void printHelp(const Options& options, const std::vector<ExtraOption>& extraOpti
                 "  --save-frames LIST frames to save, 1-based, e.g. 1,5,10 or 1-3,7\n"
                 "  --report           print 'frames=N seconds=S fps=F' at exit\n"
                 "  --exit-undestroyed end by exit() without destroying the GL context\n"
+                "  --flush-frames     end each frame by glFlush, never swapping\n"
                 "  --grow-at N        window: resize it to twice --size before frame N\n"
                 "  --press N KEYS     window: hold KEYS (e.g. Shift_R+F11) down during frame N\n"
                 "  --help             show this help\n",
@@ -116,7 +117,7 @@ int parseOptions(int argc, char** argv, const std::string& shortName,
         auto isFlag = [&](const char* name) { return arg == name && !hasInlineValue; };
 
         if (hasInlineValue && (arg == "--help" || arg == "--offscreen" || arg == "--report" ||
-                               arg == "--exit-undestroyed")) {
+                               arg == "--exit-undestroyed" || arg == "--flush-frames")) {
             return usageError(options, arg + " takes no value");
         }
         if (isFlag("--help") || isFlag("-h")) {
@@ -126,6 +127,8 @@ int parseOptions(int argc, char** argv, const std::string& shortName,
             options.offscreen = true;
         } else if (isFlag("--report")) {
             options.report = true;
+        } else if (isFlag("--flush-frames")) {
+            options.flushFrames = true;
         } else if (isFlag("--exit-undestroyed")) {
             options.exitUndestroyed = true;
         } else if (arg == "--frames") {

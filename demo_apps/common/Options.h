@@ -30,6 +30,7 @@ struct Options {
     FrameList saveFrames;
     bool saveFramesGiven = false;
     bool report = false;
+    bool flushFrames = false; // end frames by glFlush, never swapping (a single-buffered program)
     bool exitUndestroyed = false; // end by exit() with the GL context still alive (most programs)
     int growAt = 0; // GLX: the window doubles its size before this frame (0: never)
     // GLX: keys (X keysym names joined by '+') held down with XTEST during this frame, as a

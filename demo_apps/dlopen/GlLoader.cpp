@@ -50,6 +50,7 @@ bool GlLoader::load(const std::string& libraryName, bool offscreen, std::string&
     resolve(api_.pixelStorei, "glPixelStorei", true);
     resolve(api_.getIntegerv, "glGetIntegerv", false);
     resolve(api_.finish, "glFinish", true);
+    resolve(api_.flush, "glFlush", true);
     resolve(draw_.clear, "glClear", true);
     resolve(draw_.clearColor, "glClearColor", false);
     resolve(draw_.viewport, "glViewport", true);
