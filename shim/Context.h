@@ -28,12 +28,12 @@ struct ContextCaps {
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }
 };
 
-// nprgl's view of one GL context of the program: created on its first MakeCurrent, it owns
-// the dispatch table the thunks use while it is current, and counts frames.
 // Calls held without a frame's end past which a glFlush or glFinish ends one
 // (Context::endUnswappedFrame): far above what a frame of a real program holds.
 inline constexpr size_t kUnswappedFrameBytes = size_t(32) << 20;
 
+// nprgl's view of one GL context of the program: created on its first MakeCurrent, it owns
+// the dispatch table the thunks use while it is current, and counts frames.
 class Context {
 public:
     Context(WindowSystem ws, const void* handle, uint32_t serial, const Config& config);
@@ -75,7 +75,7 @@ public:
     Recorder* recorder() const { return mRecorder.get(); }
     // Null when the style is none.
     Compositor* compositor() const { return mCompositor.get(); }
-    // The glFinish below our OSMesa frame hook (the recording one or the driver's).
+    // The glFinish and glFlush below nprgl's frame hooks (the recording ones or the driver's).
     void finishBelowHook() const { mFinish(); }
     void flushBelowHook() const { mFlush(); }
     // A glFlush or glFinish of a context whose calls since its last frame passed
