@@ -215,10 +215,20 @@ Compositor::~Compositor() { reportRunCounts(); }
 
 void Compositor::reportRunCounts()
 {
-    if (mRunCountsReported || (mRunCounts.styled() == 0 && mRunCounts.left() == 0)) return;
-    mRunCountsReported = true;
+    if (mRunCounts.styled() == 0 && mRunCounts.left() == 0) return;
+    if (mRunCountsReported.exchange(true)) return;
     NPRGL_INFO("context %u: 3D polygon draws: %s", mContext.serial(),
                mRunCounts.describe().c_str());
+}
+
+void Compositor::reportRunCountsAtFrameEnd()
+{
+    std::lock_guard lock(mFrameEndCountsMutex);
+    if (mFrameEndCounts.styled() == 0 && mFrameEndCounts.left() == 0) return;
+    if (mRunCountsReported.exchange(true)) return;
+    NPRGL_INFO("context %u: 3D polygon draws: %s (to its last frame end: it is current on "
+               "another thread)",
+               mContext.serial(), mFrameEndCounts.describe().c_str());
 }
 
 void Compositor::install(GlDispatch& d)
@@ -428,6 +438,10 @@ void Compositor::endFrameCounts()
 {
     mLastFrameCounts = mFrameCounts;
     mFrameCounts.clear();
+    {
+        std::lock_guard lock(mFrameEndCountsMutex); // taken only here and at exit
+        mFrameEndCounts = mRunCounts;
+    }
     mLastFrameComposeMs = std::exchange(mFrameComposeMs, 0.0);
 }
 

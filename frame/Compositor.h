@@ -9,8 +9,10 @@
 #include "styles/Scene.h"
 #include "styles/StyleChain.h"
 
+#include <atomic>
 #include <deque>
 #include <map>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,8 +69,12 @@ public:
     const DrawCounts& lastFrameCounts() const { return mLastFrameCounts; }
     const DrawCounts& runCounts() const { return mRunCounts; }
     // Logs the run's counts, once: when the context goes, or at exit for a context the
-    // program never destroyed (most programs just exit).
+    // program never destroyed (most programs just exit). On the context's thread, or where
+    // no thread has it current.
     void reportRunCounts();
+    // At exit, for a context current on another thread (which may be drawing with it): the
+    // run's counts as they stood at its last frame end, once.
+    void reportRunCountsAtFrameEnd();
     // The object of the last flush under window pixel (x, y), y from the window's top: for
     // the overlay's pick. PickResult::texture's content hash in `textureHash`.
     PickResult pick(int x, int y, int windowHeight, uint64_t& textureHash) const;
@@ -197,7 +203,10 @@ private:
     // in this frame: styled, and left as the program draws them by reason (each reason said
     // at its first).
     DrawCounts mRunCounts, mFrameCounts, mLastFrameCounts;
-    bool mRunCountsReported = false;
+    // mRunCounts at the last frame end, for a thread that may not read mRunCounts itself.
+    std::mutex mFrameEndCountsMutex;
+    DrawCounts mFrameEndCounts;
+    std::atomic<bool> mRunCountsReported{false};
     uint64_t mMergedSeen = 0; // the tracker's merged passes already counted
     bool mMergeSaid = false;
     double mFrameComposeMs = 0.0, mLastFrameComposeMs = 0.0;

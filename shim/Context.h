@@ -4,6 +4,7 @@
 #include "shim/Config.h"
 #include "shim/Hotkeys.h"
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -84,6 +85,11 @@ public:
     // hold its calls for ever.
     void endUnswappedFrame();
 
+    // The threads it is current on (ContextRegistry keeps the count): at exit its run's
+    // counts are read as they stand only where no other thread may be drawing with it.
+    void noteCurrent(int delta) { mThreadsCurrent.fetch_add(delta, std::memory_order_acq_rel); }
+    int threadsCurrent() const { return mThreadsCurrent.load(std::memory_order_acquire); }
+
     const GlDispatch& dispatch() const { return mDispatch; }
     const ContextCaps& caps() const { return mCaps; }
     WindowSystem windowSystem() const { return mWs; }
@@ -114,6 +120,7 @@ private:
     void(APIENTRY* mFinish)() = nullptr;
     void(APIENTRY* mFlush)() = nullptr;
     bool mUnswappedSaid = false;
+    std::atomic<int> mThreadsCurrent{0};
     std::unique_ptr<Recorder> mRecorder;
     std::unique_ptr<Compositor> mCompositor;
     std::string mVendor, mRenderer, mVersion;

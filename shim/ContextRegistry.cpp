@@ -11,8 +11,21 @@ namespace nprgl {
 
 namespace {
 
-// Keeps the thread's current Context alive while the program destroys it on another thread.
-thread_local std::shared_ptr<Context> tCurrent;
+// Keeps the thread's current Context alive while the program destroys it on another thread,
+// and counts the threads it is current on. A thread's thread-locals go before the atexit
+// handlers run (the C++ rules for exit()), so at exit the exiting thread holds none.
+struct CurrentContext {
+    std::shared_ptr<Context> context;
+    void set(std::shared_ptr<Context> next)
+    {
+        if (next == context) return;
+        if (context) context->noteCurrent(-1);
+        if (next) next->noteCurrent(1);
+        context = std::move(next);
+    }
+    ~CurrentContext() { set(nullptr); }
+};
+thread_local CurrentContext tCurrent;
 
 } // namespace
 
@@ -32,14 +45,19 @@ void ContextRegistry::reportAtExit()
     std::unique_lock lock(mMutex, std::try_to_lock);
     if (!lock.owns_lock()) return;
     for (auto& [key, ctx] : mContexts) {
-        if (Compositor* c = ctx->compositor()) c->reportRunCounts();
+        Compositor* c = ctx->compositor();
+        if (!c) continue;
+        // Current on a thread still running (a render thread the program did not stop): its
+        // counts may be changing; the copy taken at its last frame end is not.
+        if (ctx->threadsCurrent() == 0) c->reportRunCounts();
+        else c->reportRunCountsAtFrameEnd();
     }
 }
 
 void ContextRegistry::makeCurrent(WindowSystem ws, const void* handle)
 {
     if (!handle) {
-        tCurrent.reset();
+        tCurrent.set(nullptr);
         tThread.context = nullptr;
         tThread.dispatch = &gRealGl;
         return;
@@ -53,7 +71,7 @@ void ContextRegistry::makeCurrent(WindowSystem ws, const void* handle)
         if (!slot) slot = std::make_shared<Context>(ws, handle, mNextSerial++, config);
         ctx = slot;
     }
-    tCurrent = ctx;
+    tCurrent.set(ctx);
     tThread.context = ctx.get();
     tThread.dispatch = &ctx->dispatch();
     ctx->onMakeCurrent();

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -120,4 +121,33 @@ TEST(GlxThreads, TheRecordingHasOneStreamPerContextAndBothReplay)
     }
     EXPECT_EQ(matched[0], 1);
     EXPECT_EQ(matched[1], 1);
+}
+
+// A program that exits while another thread has its context current (a render thread it never
+// stopped, here in the middle of a frame) logs that context's counts as they stood at its last
+// frame end, said so, and not the counts that thread may be changing; the context no thread
+// holds any more logs its counts as they stand. Each once, and the program's exit is its own.
+TEST(GlxThreads, AtExitAContextCurrentOnAnotherThreadLogsItsLastFrameEndsCounts)
+{
+    requireDisplay();
+    const std::string dir = freshDir("threads_exit_mid_frame");
+    ProcessResult r = runProcess(
+        {nprglCommand(), "--", probe(), std::to_string(kFrames), dir, "exit-mid-frame"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, "ok\n");
+    std::vector<std::string> lines;
+    for (size_t at = r.err.find("3D polygon draws: "); at != std::string::npos;
+         at = r.err.find("3D polygon draws: ", at + 1)) {
+        lines.push_back(r.err.substr(at, r.err.find('\n', at) - at));
+    }
+    ASSERT_EQ(lines.size(), 2u) << r.err;
+    const std::string kElsewhere = "(to its last frame end: it is current on another thread)";
+    const size_t elsewhere = std::count_if(lines.begin(), lines.end(), [&](const auto& l) {
+        return l.find(kElsewhere) != std::string::npos;
+    });
+    EXPECT_EQ(elsewhere, 1u) << r.err;
+    // Its frames' draws, one a frame (the box), and not the frame it stopped in.
+    EXPECT_NE(r.err.find("3D polygon draws: " + std::to_string(kFrames) + " styled"),
+              std::string::npos)
+        << r.err;
 }

@@ -2,12 +2,17 @@
 // lit 3D shapes at the same time for a number of frames. Each reads its last frame back before
 // the swap (after nprgl styled it) and writes it as <dir>/thread<N>.png.
 //
-// Usage: probe_glx_threads FRAMES DIR
+// With exit-mid-frame, the second thread draws on without waiting for the first and, after
+// its frames, starts one more and stops there, its context still current (a render thread the
+// program never stops); the program prints ok and calls exit() once the first thread is done.
+//
+// Usage: probe_glx_threads FRAMES DIR [exit-mid-frame]
 #include "common/PngImage.h"
 
 #include <GL/gl.h>
 #include <GL/glx.h>
 #include <X11/Xlib.h>
+#include <atomic>
 #include <barrier>
 #include <cmath>
 #include <cstdio>
@@ -118,8 +123,9 @@ bool writeBackBuffer(const std::string& path)
 
 int main(int argc, char** argv)
 {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: probe_glx_threads FRAMES DIR\n");
+    const bool exitMidFrame = argc == 4 && std::string(argv[3]) == "exit-mid-frame";
+    if (argc != 3 && !exitMidFrame) {
+        std::fprintf(stderr, "usage: probe_glx_threads FRAMES DIR [exit-mid-frame]\n");
         return 2;
     }
     const int frames = std::atoi(argv[1]);
@@ -157,8 +163,9 @@ int main(int argc, char** argv)
     XFree(visual);
 
     // Both threads start each frame together, so their GL calls and frame ends overlap.
-    std::barrier sync(2);
+    std::barrier sync(exitMidFrame ? 1 : 2);
     bool ok[2] = {false, false};
+    std::atomic<bool> stopped{false}; // exit-mid-frame: the second thread is in its last frame
     auto run = [&](int t) {
         if (!glXMakeCurrent(dpy, windows[t].window, windows[t].context)) {
             sync.arrive_and_drop(); // the other thread must not wait for this one
@@ -166,18 +173,29 @@ int main(int argc, char** argv)
         }
         bool written = true;
         for (int frame = 1; frame <= frames; ++frame) {
-            sync.arrive_and_wait();
+            if (!exitMidFrame) sync.arrive_and_wait();
             drawFrame(t, frame);
             if (frame == frames) {
                 written = writeBackBuffer(dir + "/thread" + std::to_string(t) + ".png");
             }
             glXSwapBuffers(dpy, windows[t].window);
         }
+        if (exitMidFrame && t == 1) {
+            drawFrame(t, frames + 1);
+            stopped = true;
+            for (;;) pause(); // until the process exits
+        }
         glXMakeCurrent(dpy, None, nullptr);
         ok[t] = written;
     };
     std::thread a(run, 0), b(run, 1);
     a.join();
+    if (exitMidFrame) {
+        while (!stopped) usleep(1000);
+        std::printf(ok[0] ? "ok\n" : "failed\n");
+        std::fflush(stdout);
+        std::exit(ok[0] ? 0 : 7); // the second thread still in its frame
+    }
     b.join();
     for (View& w : windows) {
         glXDestroyContext(dpy, w.context);
