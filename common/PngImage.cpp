@@ -59,6 +59,11 @@ bool PngImage::read(const std::string& path, PngImage& out, std::string& error)
     return true;
 }
 
+void PngImage::makeOpaque()
+{
+    for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
+}
+
 void PngImage::flipRows()
 {
     const size_t stride = size_t(width) * 4;

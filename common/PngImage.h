@@ -18,6 +18,9 @@ struct PngImage {
     static bool read(const std::string& path, PngImage& out, std::string& error);
     // Reverses the row order (GL reads the bottom row first).
     void flipRows();
+    // Alpha 255 everywhere: a framebuffer's picture as a window shows it (the window system
+    // ignores the alpha a program leaves; a viewer of the PNG would not).
+    void makeOpaque();
 };
 
 } // namespace nprgl

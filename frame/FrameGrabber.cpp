@@ -69,6 +69,7 @@ bool FrameGrabber::writeFrame(const ContextCaps& caps, int width, int height,
     }
 
     image.flipRows();
+    image.makeOpaque();
     std::string error;
     if (!image.write(path, error)) {
         NPRGL_ERROR("screenshot: %s", error.c_str());

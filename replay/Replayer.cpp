@@ -107,6 +107,7 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         image.height = height;
         image.rgba = buffer; // OSMesa's buffer: bottom row first
         image.flipRows();
+        image.makeOpaque();
         char name[64];
         std::snprintf(name, sizeof name, "/frame_%010llu.png",
                       static_cast<unsigned long long>(frame));

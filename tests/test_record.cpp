@@ -157,6 +157,44 @@ TEST(RecordReplay, AStyledReplayKeepsTheProgramsShadersApartFromTheStyles)
     expectStyledReplayAsLive("rec_shader", {"--late-shader", "--hud-bar"});
 }
 
+// A program that leaves alpha below 1 in its framebuffer (glhanoi's materials have alpha 0;
+// here the demo clears it to 0.25 and masks it) shows an opaque picture: the window system
+// ignores the alpha. nprgl's screenshots and replayed frames are that picture, opaque; with
+// the framebuffer's alpha in them a viewer showed the objects see-through or white.
+TEST(Record, ScreenshotsAndReplayedFramesAreOpaqueAsTheWindowShowsThem)
+{
+    const std::string dir = freshDir("opaque_frames"), file = dir + "/capture.nprgl";
+    const std::vector<std::string> app = {demo("textured"), "--offscreen", "--alpha-mask",
+                                          "--frames", "3", "--size", "64x48"};
+    std::vector<std::string> shot = {nprglCommand(), "--style", "none", "--screenshot",
+                                     "frames=3;dir=" + dir + "/shots", "--"};
+    std::vector<std::string> rec = {nprglCommand(), "record", "--style", "none", "-o", file, "--"};
+    shot.insert(shot.end(), app.begin(), app.end());
+    rec.insert(rec.end(), app.begin(), app.end());
+    ProcessResult r = runProcess(shot);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("alpha frame 3: 64 64 64 64 64"), std::string::npos)
+        << "the framebuffer's alpha is not 0.25: no test: " << r.out;
+    r = runProcess(rec);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ProcessResult p =
+        runProcess({nprglCommand(), "replay", file, "-o", dir + "/replay", "--frames", "3"});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    std::vector<std::string> pngs = {framePng(dir + "/replay", 3)};
+    for (const auto& entry : fs::directory_iterator(dir + "/shots")) {
+        pngs.push_back(entry.path().string());
+    }
+    ASSERT_EQ(pngs.size(), 2u) << "no screenshot written";
+    for (const std::string& path : pngs) {
+        PngImage image;
+        std::string error;
+        ASSERT_TRUE(PngImage::read(path, image, error)) << error;
+        size_t seeThrough = 0;
+        for (size_t i = 3; i < image.rgba.size(); i += 4) seeThrough += image.rgba[i] != 255;
+        EXPECT_EQ(seeThrough, 0u) << path;
+    }
+}
+
 TEST(Fixtures, EveryDemoFixtureReplaysAsTheDemoDrawsToday)
 {
     const std::vector<std::pair<std::string, std::vector<std::string>>> fixtures = {
