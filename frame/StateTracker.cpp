@@ -1686,6 +1686,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
     batch.culled = culledWinding();
     batch.texture = detailTexture();
+    replacedByTexture(batch);
     // Blending by alpha where every alpha is 1 changes no pixel: the program blends all its
     // drawing (neverball does), and such surfaces are opaque ones (with outlines); so does a
     // pass over a held surface (merged below).
@@ -2006,6 +2007,21 @@ bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
     return true;
 }
 
+void StateTracker::replacedByTexture(TrackedBatch& batch) const
+{
+    const int u = surfaceUnit();
+    if (batch.texture == 0 || u < 0) return;
+    const GLenum mode = mAttrib.envMode[size_t(u)];
+    const GLuint name = styles::textureName(batch.texture);
+    const bool opaque = mOpaqueTextures.contains(name);
+    // GL_REPLACE takes the texture's alpha too where it has one (kept opaque: opaqueAlpha);
+    // an alpha-only texture replaces the alpha alone. GL_DECAL keeps the fragment's alpha and
+    // mixes the colours by the texture's, so only an opaque texture replaces them.
+    if ((mode == GL_REPLACE && !mAlphaTextures.contains(name)) || (mode == GL_DECAL && opaque)) {
+        for (TrackedVertex& v : batch.vertices) v.color = glm::vec4(glm::vec3(1.0f), v.color.a);
+    }
+}
+
 void StateTracker::texEnv(GLenum target, GLenum pname, GLenum mode)
 {
     if (target != GL_TEXTURE_ENV || mActiveUnit >= 8) return;
@@ -2128,6 +2144,8 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     if (texture == 0) mDefaultImage = width > 0 && height > 0;
     if (depthFormat(format)) mDepthTextures.insert(texture);
     else mDepthTextures.erase(texture);
+    if (format == GL_ALPHA) mAlphaTextures.insert(texture);
+    else mAlphaTextures.erase(texture);
     mOpaqueTextures.erase(texture);
     mFilledLater.erase(texture);
     mCutFeatures.erase(texture);
@@ -2171,6 +2189,13 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     const bool isDepth = depthFormat(internalFormat);
     if (isDepth) mDepthTextures.insert(texture);
     else mDepthTextures.erase(texture);
+    const GLenum alphaOnly[] = {GL_ALPHA, GL_ALPHA4, GL_ALPHA8, GL_ALPHA12, GL_ALPHA16};
+    if (std::find(std::begin(alphaOnly), std::end(alphaOnly), internalFormat) !=
+        std::end(alphaOnly)) {
+        mAlphaTextures.insert(texture);
+    } else {
+        mAlphaTextures.erase(texture);
+    }
     if (isDepth || std::find(std::begin(noAlpha), std::end(noAlpha), internalFormat) !=
                        std::end(noAlpha)) {
         mOpaqueTextures.insert(texture);

@@ -382,6 +382,9 @@ private:
     int lightUnit() const;
     // A batch blended by alpha whose alpha is 1 everywhere (its colours', its texture's).
     bool opaqueAlpha(const TrackedBatch& batch) const;
+    // Under GL_REPLACE (or GL_DECAL with an opaque texture) the picture shows the texture's
+    // colour, not the lit or current one: the batch's colours become white.
+    void replacedByTexture(TrackedBatch& batch) const;
     // A rule (leave_texture or leave_state) leaves a draw issued now.
     bool leftByRule() const;
     // The winding the current culling removes (TrackedBatch::culled).
@@ -462,6 +465,7 @@ private:
     int mLightUnit = -1;  // mCurrent.lightcoord is this unit's (-1: no lightmap)
     std::map<GLuint, uint64_t> mTextureHashes;
     std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
+    std::set<GLuint> mAlphaTextures;  // level 0 of GL_ALPHA: GL_REPLACE keeps the colour
     std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
     std::map<GLuint, float> mCutFeatures; // level 0's cutFeature, where it is known
     std::map<GLuint, glm::ivec2> mTextureSizes; // level 0's size as glTexImage2D gave it

@@ -1291,6 +1291,36 @@ TEST(Compositor, EveryEnabledLightShadesTheStyledScene)
     EXPECT_GT(at.differingPixels, 2000u) << "a spot aimed at the shapes lit nothing";
 }
 
+// A texture drawn with GL_REPLACE shows its own colours, not the lit or current colour's
+// (timetunnel's tunnel under a yellow glColor came out yellow-green): demo_textured --replace
+// draws its white and red cube under a blue material. The white checks stay white (or grey in
+// the shadow band) in the shading styles (without paper, which is near white itself);
+// modulated by the material they were blue.
+TEST(Compositor, AReplacingTextureShowsItsOwnColours)
+{
+    auto whiteChecks = [](const std::string& style) {
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(demoFrame("textured", "replace_" + style, {"--style", style},
+                                             {"--replace"}),
+                                   image, error))
+            << error;
+        int white = 0;
+        for (int y = 80; y < 190 && !image.rgba.empty(); ++y) {
+            for (int x = 40; x < 160; ++x) {
+                const uint8_t* p = pixel(image, x, y);
+                white += p[0] > 90 && std::abs(p[0] - p[2]) < 30 && std::abs(p[1] - p[2]) < 30;
+            }
+        }
+        return white;
+    };
+    const int native = whiteChecks("none");
+    EXPECT_GT(native, 1500) << "the cube's white checks are not there natively: no test";
+    for (const char* style : {"toon", "textured"}) {
+        EXPECT_GT(whiteChecks(style), native / 2) << style << ": the material tints the texture";
+    }
+}
+
 // The program's fog (linear, 6 to 11 units, pale) is applied to the styled colours: the far
 // floor fades into the fog colour as it does natively, and does not without fog.
 TEST(Compositor, TheProgramsFogFadesTheStyledScene)

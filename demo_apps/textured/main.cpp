@@ -18,7 +18,8 @@
 // it at the same depth; --late-shader makes a GLSL program of its own in frame 2 and draws an
 // orange pane with it from then on, as games make theirs while they load; --alpha-mask draws
 // the scene with alpha writes off over a colour cleared to alpha 0.25 and prints the
-// destination alpha.
+// destination alpha; --replace draws the cube's texture with GL_REPLACE under a blue
+// material, which its picture then does not show (timetunnel's tunnel).
 
 // Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
@@ -236,6 +237,9 @@ public:
                 {"pushed-back", demo::ExtraOption::Kind::Flag,
                  "the cube drawn with glPolygonOffset(0.005, 0), pushed back a little (as "
                  "megaglest draws its models, behind marks drawn over them)"},
+                {"replace", demo::ExtraOption::Kind::Flag,
+                 "the cube's texture drawn with GL_REPLACE under a blue material: the picture "
+                 "shows the texture alone"},
                 {"cutout-fine", demo::ExtraOption::Kind::Flag,
                  "the cube a fine grille instead: bars and square holes two texels wide "
                  "(about two pixels on screen at 320x240)"},
@@ -307,6 +311,7 @@ public:
         if (options.has("cutout")) cutoutTexture_ = uploadHoles();
         cutoutBlend_ = options.has("cutout-blend");
         pushedBack_ = options.has("pushed-back");
+        replace_ = options.has("replace");
         if (options.has("cutout-fine")) cutoutTexture_ = uploadGrille();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -647,11 +652,20 @@ public:
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(0.005f, 0.0f);
         }
+        const float blue[] = {0.1f, 0.2f, 1.0f, 1.0f}, white[] = {1.0f, 1.0f, 1.0f, 1.0f};
+        if (replace_) {
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+            glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, blue);
+        }
         glPushMatrix();
         glTranslatef(-1.3f, 0.0f, 0.0f);
         glRotatef(frame * 2.0f, 0.3f, 1.0f, 0.2f);
         drawCube(0.8f, faceTextures_[0] ? faceTextures_ : nullptr);
         glPopMatrix();
+        if (replace_) {
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+            glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, white);
+        }
         glDisable(GL_POLYGON_OFFSET_FILL);
         glDisable(GL_ALPHA_TEST);
         glDisable(GL_BLEND);
@@ -747,6 +761,7 @@ public:
 
 private:
     GLuint cubeTexture_ = 0;
+    bool replace_ = false;
     GLuint floorTexture_ = 0;
     GLuint sphereTexture_ = 0;
     GLuint faceTextures_[6] = {};
