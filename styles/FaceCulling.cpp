@@ -24,9 +24,8 @@ GLenum FaceCulling::shownWinding(const SceneObject& object)
     if (object.culled == GL_CCW) return GL_CW;
     if (object.culled == GL_CW || !object.mesh) return GL_CCW;
     // The program culls nothing: its normals say which side is the outside (a mirroring
-    // modelview turns the window-space winding around).
-    const bool mirrored = glm::determinant(glm::mat3(object.modelview)) < 0.0f;
-    return ShadingCommon::normalsFollowCcw(*object.mesh) != mirrored ? GL_CCW : GL_CW;
+    // modelview or projection turns the window-space winding around).
+    return ShadingCommon::normalsFollowCcw(*object.mesh) != object.mirrored() ? GL_CCW : GL_CW;
 }
 
 } // namespace nprgl::styles

@@ -163,6 +163,15 @@ struct SceneObject {
     }
     // A projection without a perspective row looks along -z everywhere.
     bool orthographic() const { return !perspective(projection); }
+    // Whether the window-space winding of its faces is the mirror of their eye-facing one: a
+    // mirroring modelview, or a projection that mirrors x against y (glOrtho(0, w, h, 0, ...),
+    // the top-down 2D view many programs draw in; a z flip alone turns no winding).
+    bool mirrored() const
+    {
+        const glm::mat4& p = projection;
+        const bool projects = p[0][0] * p[1][1] - p[1][0] * p[0][1] < 0.0f;
+        return (glm::determinant(glm::mat3(modelview)) < 0.0f) != projects;
+    }
 };
 
 // What one flush of the compositor hands to the styles.

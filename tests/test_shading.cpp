@@ -209,6 +209,44 @@ TEST(Toon, SphereShowsOnlyItsBandColours)
     EXPECT_LE(colours.size(), 3u);
 }
 
+// A projection that mirrors y (glOrtho(0, w, h, 0, ...) and its perspective kin: the top-down
+// view of 2D-minded programs, xscreensaver's voronoi) turns the faces' window winding around,
+// as a mirroring modelview does. The lit side stays lit: the picture is the unmirrored one
+// upside down. (The normals were turned away from the eye: voronoi's cells all in the
+// shadow band, at half their colour.)
+TEST(Toon, AProjectionThatMirrorsKeepsTheLitSide)
+{
+    StyleHarness harness(128, 128);
+    ASSERT_TRUE(harness.ok());
+    auto render = [&](bool mirror) {
+        auto scene = sphereScene(harness, glm::vec4(0.8f, 0.1f, 0.1f, 1.0f),
+                                 glm::normalize(glm::vec3(0.0f, 1.0f, 0.3f)));
+        for (auto& o : scene.objects) {
+            if (mirror) o.projection = glm::scale(glm::mat4(1.0f), {1, -1, 1}) * o.projection;
+        }
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+        return image;
+    };
+    const PngImage upright = render(false);
+    PngImage mirrored = render(true);
+    ASSERT_EQ(upright.rgba.size(), mirrored.rgba.size());
+    mirrored.flipRows();
+    int diffuse = 0, differing = 0;
+    for (size_t i = 0; i < upright.rgba.size(); i += 4) {
+        diffuse += near(Rgb{upright.rgba[i], upright.rgba[i + 1], upright.rgba[i + 2]}, kDiffuse);
+        for (int c = 0; c < 3; ++c) {
+            if (std::abs(upright.rgba[i + c] - mirrored.rgba[i + c]) > 24) {
+                ++differing;
+                break;
+            }
+        }
+    }
+    EXPECT_GT(diffuse, 500) << "no lit band: no test";
+    EXPECT_LT(differing, 40) << "the mirrored view is lit from the other side";
+}
+
 // A sky or backdrop the program drew without the depth test and did not light is shaded in
 // one even light (the diffuse band: its own colour), not by the head-light, which would put
 // half of a sky box's faces into the shadow band. Lit or depth-tested, the same sphere shows

@@ -219,14 +219,12 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
 {
     gl.UniformMatrix4fv(modelview, 1, GL_FALSE, glm::value_ptr(object.modelview));
     gl.UniformMatrix4fv(projection, 1, GL_FALSE, glm::value_ptr(object.projection));
-    const glm::mat3 linear(object.modelview);
     const glm::mat3 normals = ShadingCommon::normalMatrix(object.modelview);
     gl.UniformMatrix3fv(normalMatrix, 1, GL_FALSE, glm::value_ptr(normals));
     // gl_FrontFacing is by the styles' counter-clockwise front (StyleChain's baseline). A
-    // mirroring modelview turns the faces' winding around, and so do normals that follow the
-    // clockwise side.
-    const bool mirrored = glm::determinant(linear) < 0.0f;
-    const bool flip = mirrored ^ !normalsFollowCcw(*object.mesh);
+    // mirroring modelview or projection turns the faces' winding around, and so do normals
+    // that follow the clockwise side.
+    const bool flip = object.mirrored() ^ !normalsFollowCcw(*object.mesh);
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
     setLights(gl, object.lights);
