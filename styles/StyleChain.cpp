@@ -8,6 +8,26 @@
 
 namespace nprgl::styles {
 
+namespace {
+
+// Whether every vertex of the object lies at the far plane (a backdrop quad drawn at z = 1
+// in NDC with the depth test on, as xscreensaver's atlantis draws its water): its pixels keep
+// the cleared depth, so a page laid where that depth remains would cover it. Most objects
+// answer at their first vertex.
+bool atFarPlane(const SceneObject& o)
+{
+    if (!o.mesh || o.mesh->faceCorners.empty()) return false;
+    const glm::mat4 m = o.projection * o.modelview;
+    for (uint32_t corner : o.mesh->faceCorners) {
+        const glm::vec4 c = m * glm::vec4(o.mesh->sourceVertices[corner].position, 1.0f);
+        // Rounds to the cleared depth of 24 bits (1e-6 in NDC: a few of its steps).
+        if (!(c.w > 0.0f) || !(c.z >= (1.0f - 1e-6f) * c.w)) return false;
+    }
+    return true;
+}
+
+} // namespace
+
 bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getProc,
                       std::string& error)
 {
@@ -181,8 +201,10 @@ void StyleChain::render(const Scene& scene)
     // floor), stays the program's and does not become page. Without a backdrop it is laid
     // after the opaque scene (the background style's render), where the scene's depth
     // rejects its pixels before any of the page's work, but not over what goes at the far
-    // plane (a sky in a depth range of its own).
-    const bool layLater = mBackdrop.objects.empty() && scene.depthRange.x < 1.0f;
+    // plane (a sky in a depth range of its own, a backdrop drawn at the far plane).
+    const bool layLater =
+        mBackdrop.objects.empty() && scene.depthRange.x < 1.0f &&
+        std::none_of(mOpaque.objects.begin(), mOpaque.objects.end(), atFarPlane);
     for (size_t i : mBackgrounds) {
         setBaseline(scene, i == 0 && mHasShading);
         if (layLater) mStyles[i]->keepBackground(scene, mContext);

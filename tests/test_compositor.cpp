@@ -1291,6 +1291,40 @@ TEST(Compositor, EveryEnabledLightShadesTheStyledScene)
     EXPECT_GT(at.differingPixels, 2000u) << "a spot aimed at the shapes lit nothing";
 }
 
+// A backdrop drawn at the far plane with the depth test on (xscreensaver's atlantis draws its
+// water so: identity matrices, z = 1, GL_LEQUAL) keeps the cleared depth, and the page, laid
+// after the opaque scene where that depth remains, covered it: the program's backdrop became
+// paper. Such a flush lays its page first, and the backdrop is drawn over it.
+TEST(Compositor, ABackdropAtTheFarPlaneIsNotPaper)
+{
+    // The three corners' colours, one int a channel.
+    auto corners = [](const std::string& style) {
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(demoFrame("textured", "far_backdrop_" + style,
+                                             {"--style", style}, {"--far-backdrop"}),
+                                   image, error))
+            << error;
+        std::vector<int> out;
+        for (auto [x, y] : {std::pair{4, 4}, std::pair{315, 4}, std::pair{4, 235}}) {
+            if (image.rgba.empty()) break;
+            const uint8_t* p = pixel(image, x, y);
+            out.insert(out.end(), {p[0], p[1], p[2]});
+        }
+        return out;
+    };
+    const std::vector<int> native = corners("none");
+    ASSERT_EQ(native.size(), 9u);
+    EXPECT_GT(native[2], 120) << "no blue backdrop natively: no test";
+    for (const char* style : {"toon+paper+edges", "paper"}) {
+        const std::vector<int> styled = corners(style);
+        ASSERT_EQ(styled.size(), 9u);
+        for (size_t i = 0; i < 9; ++i) {
+            EXPECT_NEAR(styled[i], native[i], 24) << style << ": corner " << i / 3 << " is paper";
+        }
+    }
+}
+
 // A texture drawn with GL_REPLACE shows its own colours, not the lit or current colour's
 // (timetunnel's tunnel under a yellow glColor came out yellow-green): demo_textured --replace
 // draws its white and red cube under a blue material. The white checks stay white (or grey in

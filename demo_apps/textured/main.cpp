@@ -19,7 +19,9 @@
 // orange pane with it from then on, as games make theirs while they load; --alpha-mask draws
 // the scene with alpha writes off over a colour cleared to alpha 0.25 and prints the
 // destination alpha; --replace draws the cube's texture with GL_REPLACE under a blue
-// material, which its picture then does not show (timetunnel's tunnel).
+// material, which its picture then does not show (timetunnel's tunnel); --far-backdrop draws
+// a dark blue gradient over the window at the far plane (identity matrices, z = 1, depth test
+// GL_LEQUAL) before the scene, as xscreensaver's atlantis draws its water.
 
 // Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
@@ -237,6 +239,9 @@ public:
                 {"pushed-back", demo::ExtraOption::Kind::Flag,
                  "the cube drawn with glPolygonOffset(0.005, 0), pushed back a little (as "
                  "megaglest draws its models, behind marks drawn over them)"},
+                {"far-backdrop", demo::ExtraOption::Kind::Flag,
+                 "a dark blue gradient over the window at the far plane (z = 1, identity "
+                 "matrices, GL_LEQUAL) before the scene"},
                 {"replace", demo::ExtraOption::Kind::Flag,
                  "the cube's texture drawn with GL_REPLACE under a blue material: the picture "
                  "shows the texture alone"},
@@ -312,6 +317,7 @@ public:
         cutoutBlend_ = options.has("cutout-blend");
         pushedBack_ = options.has("pushed-back");
         replace_ = options.has("replace");
+        farBackdrop_ = options.has("far-backdrop");
         if (options.has("cutout-fine")) cutoutTexture_ = uploadGrille();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -360,6 +366,7 @@ public:
                                          : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         if (alphaMask_) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
         if (stalePanel_ && frame == 1) drawPanel();
+        if (farBackdrop_) drawFarBackdrop();
         if (depthPrepass_) {
             // Depth first, colour off; then the colours on equal depth.
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -573,6 +580,33 @@ public:
         glPopAttrib();
     }
 
+    void drawFarBackdrop()
+    {
+        glPushAttrib(GL_ENABLE_BIT | GL_DEPTH_BUFFER_BIT | GL_CURRENT_BIT);
+        glDisable(GL_LIGHTING);
+        glDisable(GL_TEXTURE_2D);
+        glDepthFunc(GL_LEQUAL);
+        glMatrixMode(GL_PROJECTION);
+        glPushMatrix();
+        glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW);
+        glPushMatrix();
+        glLoadIdentity();
+        glBegin(GL_QUADS);
+        glColor3f(0.0f, 0.05f, 0.2f);
+        glVertex3f(-1.0f, -1.0f, 1.0f);
+        glVertex3f(1.0f, -1.0f, 1.0f);
+        glColor3f(0.0f, 0.3f, 0.6f);
+        glVertex3f(1.0f, 1.0f, 1.0f);
+        glVertex3f(-1.0f, 1.0f, 1.0f);
+        glEnd();
+        glPopMatrix();
+        glMatrixMode(GL_PROJECTION);
+        glPopMatrix();
+        glMatrixMode(GL_MODELVIEW);
+        glPopAttrib();
+    }
+
     void drawScene(int frame)
     {
         glMatrixMode(GL_MODELVIEW);
@@ -762,6 +796,7 @@ public:
 private:
     GLuint cubeTexture_ = 0;
     bool replace_ = false;
+    bool farBackdrop_ = false;
     GLuint floorTexture_ = 0;
     GLuint sphereTexture_ = 0;
     GLuint faceTextures_[6] = {};
