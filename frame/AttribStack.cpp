@@ -38,9 +38,12 @@ void AttribStack::pop()
         a.lightsOn = saved.lightsOn;
         a.materialDiffuse = saved.materialDiffuse;
         a.materialEmission = saved.materialEmission;
+        a.materialSpecular = saved.materialSpecular;
+        a.materialShininess = saved.materialShininess;
         a.colorMaterialMode = saved.colorMaterialMode;
         a.lightPosition = saved.lightPosition;
         a.lightDiffuse = saved.lightDiffuse;
+        a.lightSpecular = saved.lightSpecular;
         a.lightAmbient = saved.lightAmbient;
         a.modelAmbient = saved.modelAmbient;
         a.spotDirection = saved.spotDirection;

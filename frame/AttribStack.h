@@ -60,12 +60,15 @@ struct AttribState {
     glm::vec3 fogColour{0.0f};
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
     glm::vec3 materialEmission{0.0f}; // front: the light the surface gives itself
+    glm::vec3 materialSpecular{0.0f}; // front: GL_SPECULAR and GL_SHININESS
+    float materialShininess = 0.0f;
     GLenum colorMaterialMode = GL_AMBIENT_AND_DIFFUSE; // what glColor sets under GL_COLOR_MATERIAL
     uint8_t lightsOn = 0; // bit i: GL_LIGHTi enabled
     // GL_POSITION in eye space (transformed by the modelview of the call), and GL_DIFFUSE:
     // GL's defaults, white for light 0 and black for the others.
     std::array<glm::vec4, 8> lightPosition = defaultPositions();
     std::array<glm::vec3, 8> lightDiffuse = defaultDiffuse();
+    std::array<glm::vec3, 8> lightSpecular = defaultDiffuse(); // GL's default is the same
     // GL_AMBIENT of each light (black by default) and GL_LIGHT_MODEL_AMBIENT.
     std::array<glm::vec3, 8> lightAmbient{};
     glm::vec3 modelAmbient{0.2f};

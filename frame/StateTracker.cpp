@@ -5,6 +5,7 @@
 #include "stream/CallDecoder.h"
 #include "stream/Opcodes.h"
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <xxhash.h>
@@ -188,6 +189,7 @@ void APIENTRY tMaterialiv(GLenum face, GLenum pname, const GLint* v)
 {
     float f[4];
     for (size_t i = 0; i < pnameCount(pname) && i < 4; ++i) f[i] = float(v[i]) / 2147483647.0f;
+    if (pname == GL_SHININESS) f[0] = float(v[0]); // an exponent, not a colour
     T().material(face, pname, f);
 }
 void APIENTRY tNewList(GLuint list, GLenum mode) { T().newList(list, mode); }
@@ -1123,6 +1125,8 @@ void StateTracker::light(GLenum light, GLenum pname, const float* v)
         mAttrib.lightPosition[i] = mMatrices.modelview() * glm::vec4(v[0], v[1], v[2], v[3]);
     } else if (pname == GL_DIFFUSE) {
         mAttrib.lightDiffuse[i] = glm::vec3(v[0], v[1], v[2]);
+    } else if (pname == GL_SPECULAR) {
+        mAttrib.lightSpecular[i] = glm::vec3(v[0], v[1], v[2]);
     } else if (pname == GL_AMBIENT) {
         mAttrib.lightAmbient[i] = glm::vec3(v[0], v[1], v[2]);
     } else if (pname == GL_SPOT_DIRECTION) {
@@ -1682,6 +1686,7 @@ bool StateTracker::keep(TrackedBatch& batch)
         } else if (light != glm::vec4(1.0f) || emission != glm::vec4(0.0f)) {
             for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
         }
+        addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
     batch.culled = culledWinding();
@@ -1846,6 +1851,8 @@ void StateTracker::material(GLenum face, GLenum pname, const float* v)
         mAttrib.materialDiffuse = {v[0], v[1], v[2], v[3]};
     }
     if (pname == GL_EMISSION) mAttrib.materialEmission = {v[0], v[1], v[2]};
+    if (pname == GL_SPECULAR) mAttrib.materialSpecular = {v[0], v[1], v[2]};
+    if (pname == GL_SHININESS) mAttrib.materialShininess = std::clamp(v[0], 0.0f, 128.0f);
 }
 
 void StateTracker::newList(GLuint list, GLenum mode)
@@ -2005,6 +2012,58 @@ bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
         if (!(v.color.a >= kOpaque)) return false;
     }
     return true;
+}
+
+void StateTracker::addEvenSpecular(TrackedBatch& batch) const
+{
+    // GL's specular term at each vertex (Blinn's half-vector, an infinite viewer), per light;
+    // the least of it over the batch lights all of the batch. A flat face under a light near
+    // its mirror angle (sproingies' stairs: a dark material made pale by its shine) is that
+    // bright all over; on a curved surface the least is about nothing, and its highlight is
+    // the styles' highlight band.
+    const AttribState& a = mAttrib;
+    if (!(glm::dot(a.materialSpecular, a.materialSpecular) > 0.0f)) return;
+    const glm::mat4& modelview = batch.modelview;
+    const glm::mat3 normals = glm::inverseTranspose(glm::mat3(modelview));
+    glm::vec3 even(0.0f);
+    for (size_t i = 0; i < 8; ++i) {
+        const glm::vec3 colour = glm::max(a.lightSpecular[i], 0.0f) * a.materialSpecular;
+        if (!(a.lightsOn & (1u << i)) || !(glm::dot(colour, colour) > 0.0f)) continue;
+        const glm::vec4 p = a.lightPosition[i];
+        const bool spot = p.w != 0.0f && a.spotCutoff[i] < 180.0f;
+        const glm::vec3 spotAxis = glm::normalize(a.spotDirection[i]);
+        const float cutoff = std::cos(glm::radians(a.spotCutoff[i]));
+        float lowest = INFINITY;
+        for (const TrackedVertex& v : batch.vertices) {
+            const glm::vec3 eye = glm::vec3(modelview * glm::vec4(v.position, 1.0f));
+            glm::vec3 l = p.w != 0.0f ? glm::vec3(p) / p.w - eye : glm::vec3(p);
+            const float length = glm::length(l);
+            const glm::vec3 n = glm::normalize(normals * v.normal);
+            float s = 0.0f;
+            if (length > 1e-12f && std::isfinite(length)) {
+                l /= length;
+                const float nh = glm::dot(n, glm::normalize(l + glm::vec3(0.0f, 0.0f, 1.0f)));
+                if (glm::dot(n, l) > 0.0f && nh > 0.0f) {
+                    s = std::pow(nh, a.materialShininess);
+                    if (p.w != 0.0f) {
+                        const glm::vec3 k = a.attenuation[i];
+                        s /= std::max(k.x + (k.y + k.z * length) * length, 1e-6f);
+                    }
+                    if (spot) {
+                        const float c = glm::dot(-l, spotAxis);
+                        s = c < cutoff ? 0.0f : s * std::pow(std::max(c, 0.0f), a.spotExponent[i]);
+                    }
+                }
+            }
+            lowest = std::min(lowest, std::isfinite(s) ? s : 0.0f);
+            if (!(lowest > 1e-3f)) break; // a vertex without it: nothing even
+        }
+        if (lowest > 1e-3f && std::isfinite(lowest)) even += colour * std::min(lowest, 1.0f);
+    }
+    if (even == glm::vec3(0.0f)) return;
+    for (TrackedVertex& v : batch.vertices) {
+        v.color = glm::min(v.color + glm::vec4(even, 0.0f), glm::vec4(1.0f));
+    }
 }
 
 void StateTracker::replacedByTexture(TrackedBatch& batch) const

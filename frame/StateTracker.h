@@ -382,6 +382,9 @@ private:
     int lightUnit() const;
     // A batch blended by alpha whose alpha is 1 everywhere (its colours', its texture's).
     bool opaqueAlpha(const TrackedBatch& batch) const;
+    // The specular light a lit batch shows evenly (the least over its vertices) added to
+    // its colours.
+    void addEvenSpecular(TrackedBatch& batch) const;
     // Under GL_REPLACE (or GL_DECAL with an opaque texture) the picture shows the texture's
     // colour, not the lit or current one: the batch's colours become white.
     void replacedByTexture(TrackedBatch& batch) const;

@@ -1065,6 +1065,80 @@ TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
     EXPECT_GT(deep.r, 0.3f) << "glLightiv's integer colour was taken as a huge number";
 }
 
+// A lit batch whose every vertex shows the program's specular light shows it all over (a flat
+// face near the mirror angle: sproingies' pale lavender stairs, a dark navy material made pale
+// by its shine, were dark navy in every style): the least of it over the batch is added to
+// its colours. Where one vertex has none (a curved surface turning from the light) nothing
+// is added: that highlight is the styles' own band. A light without specular adds none.
+TEST(StateTracker, ASpecularLightShownEvenlyOverABatchBrightensIt)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto material = [&](GLenum pname, std::array<float, 4> v) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glMaterialfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(GL_FRONT_AND_BACK);
+            w.put<GLenum>(pname);
+            w.putBytes(v.data(), sizeof v);
+            w.endPayload(mark);
+        });
+    };
+    // A flat triangle facing the eye, and one whose third normal turns across the light
+    // (the default light 0 shines along the view: its half-vector is the view's).
+    auto triangle = [&](bool turning) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (int k = 0; k < 3; ++k) {
+                w.op(op::glNormal3f);
+                for (float c : {turning && k == 2 ? 1.0f : 0.0f, 0.0f,
+                                turning && k == 2 ? 0.0f : 1.0f}) {
+                    w.put<float>(c);
+                }
+                w.op(op::glVertex3f);
+                for (float c : {k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f, -2.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    material(GL_AMBIENT_AND_DIFFUSE, {0.15f, 0.15f, 0.4f, 1.0f});
+    triangle(false);
+    material(GL_SPECULAR, {0.5f, 0.5f, 0.5f, 1.0f});
+    feed.run([](CallWriter& w) {
+        w.op(op::glMateriali);
+        w.put<GLenum>(GL_FRONT_AND_BACK);
+        w.put<GLenum>(GL_SHININESS);
+        w.put<GLint>(50);
+    });
+    triangle(false);
+    triangle(true);
+    feed.run([](CallWriter& w) {
+        const std::array<float, 4> none = {0.0f, 0.0f, 0.0f, 1.0f};
+        w.op(op::glLightfv);
+        const size_t mark = w.beginPayload();
+        w.put<GLenum>(GL_LIGHT0);
+        w.put<GLenum>(GL_SPECULAR);
+        w.putBytes(none.data(), sizeof none);
+        w.endPayload(mark);
+    });
+    triangle(false);
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 4u);
+    const glm::vec4 matte = batches[0].vertices[0].color;
+    const glm::vec4 shiny = batches[1].vertices[2].color;
+    EXPECT_LT(matte.r, 0.5f) << "no dark material: no test";
+    EXPECT_NEAR(shiny.r, std::min(matte.r + 0.5f, 1.0f), 0.02f) << "the even shine is missing";
+    EXPECT_NEAR(shiny.b, std::min(matte.b + 0.5f, 1.0f), 0.02f);
+    EXPECT_NEAR(batches[2].vertices[0].color.r, matte.r, 0.02f) << "an uneven shine was added";
+    EXPECT_NEAR(batches[3].vertices[0].color.r, matte.r, 0.02f) << "a light without specular";
+}
+
 // GL clamps its light sum per channel: extremetuxracer's pinkish sun (1, 0.9, 1) over its
 // bluish ambient (0.45, 0.53, 0.75), with a grey fill light, passes 1 in every channel on the
 // lit side, and its snow is white there, not the lavender of the sum's hue (0.87, 0.86, 1).
