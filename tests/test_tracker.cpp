@@ -1075,15 +1075,19 @@ TEST(StateTracker, ASpecularLightShownEvenlyOverABatchBrightensIt)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    auto material = [&](GLenum pname, std::array<float, 4> v) {
+    // glMaterialfv or glLightfv: (which, pname, four values).
+    auto vector = [&](uint16_t opcode, GLenum which, GLenum pname, std::array<float, 4> v) {
         feed.run([&](CallWriter& w) {
-            w.op(op::glMaterialfv);
+            w.op(opcode);
             const size_t mark = w.beginPayload();
-            w.put<GLenum>(GL_FRONT_AND_BACK);
+            w.put<GLenum>(which);
             w.put<GLenum>(pname);
             w.putBytes(v.data(), sizeof v);
             w.endPayload(mark);
         });
+    };
+    auto material = [&](GLenum pname, std::array<float, 4> v) {
+        vector(op::glMaterialfv, GL_FRONT_AND_BACK, pname, v);
     };
     // A flat triangle facing the eye, and one whose third normal turns across the light
     // (the default light 0 shines along the view: its half-vector is the view's).
@@ -1117,15 +1121,7 @@ TEST(StateTracker, ASpecularLightShownEvenlyOverABatchBrightensIt)
     });
     triangle(false);
     triangle(true);
-    feed.run([](CallWriter& w) {
-        const std::array<float, 4> none = {0.0f, 0.0f, 0.0f, 1.0f};
-        w.op(op::glLightfv);
-        const size_t mark = w.beginPayload();
-        w.put<GLenum>(GL_LIGHT0);
-        w.put<GLenum>(GL_SPECULAR);
-        w.putBytes(none.data(), sizeof none);
-        w.endPayload(mark);
-    });
+    vector(op::glLightfv, GL_LIGHT0, GL_SPECULAR, {0.0f, 0.0f, 0.0f, 1.0f});
     triangle(false);
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
