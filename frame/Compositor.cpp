@@ -213,22 +213,20 @@ Compositor::Compositor(Context& ctx, Recorder& recorder)
 
 Compositor::~Compositor() { reportRunCounts(); }
 
-void Compositor::reportRunCounts()
-{
-    if (mRunCounts.styled() == 0 && mRunCounts.left() == 0) return;
-    if (mRunCountsReported.exchange(true)) return;
-    NPRGL_INFO("context %u: 3D polygon draws: %s", mContext.serial(),
-               mRunCounts.describe().c_str());
-}
+void Compositor::reportRunCounts() { report(mRunCounts, ""); }
 
 void Compositor::reportRunCountsAtFrameEnd()
 {
     std::lock_guard lock(mFrameEndCountsMutex);
-    if (mFrameEndCounts.styled() == 0 && mFrameEndCounts.left() == 0) return;
+    report(mFrameEndCounts, " (to its last frame end: it is current on another thread)");
+}
+
+void Compositor::report(const DrawCounts& counts, const char* note)
+{
+    if (counts.styled() == 0 && counts.left() == 0) return;
     if (mRunCountsReported.exchange(true)) return;
-    NPRGL_INFO("context %u: 3D polygon draws: %s (to its last frame end: it is current on "
-               "another thread)",
-               mContext.serial(), mFrameEndCounts.describe().c_str());
+    NPRGL_INFO("context %u: 3D polygon draws: %s%s", mContext.serial(),
+               counts.describe().c_str(), note);
 }
 
 void Compositor::install(GlDispatch& d)

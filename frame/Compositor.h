@@ -203,6 +203,8 @@ private:
     // in this frame: styled, and left as the program draws them by reason (each reason said
     // at its first).
     DrawCounts mRunCounts, mFrameCounts, mLastFrameCounts;
+    // Logs `counts` (the run's, or their copy at a frame end), with `note` after, once.
+    void report(const DrawCounts& counts, const char* note);
     // mRunCounts at the last frame end, for a thread that may not read mRunCounts itself.
     std::mutex mFrameEndCountsMutex;
     DrawCounts mFrameEndCounts;

@@ -2023,22 +2023,34 @@ void StateTracker::addEvenSpecular(TrackedBatch& batch) const
     // the styles' highlight band.
     const AttribState& a = mAttrib;
     if (!(glm::dot(a.materialSpecular, a.materialSpecular) > 0.0f)) return;
-    const glm::mat4& modelview = batch.modelview;
-    const glm::mat3 normals = glm::inverseTranspose(glm::mat3(modelview));
-    glm::vec3 even(0.0f);
+    struct Shine {
+        glm::vec3 colour;
+        size_t light;
+        float lowest = INFINITY;
+    };
+    std::array<Shine, 8> shines;
+    size_t count = 0;
     for (size_t i = 0; i < 8; ++i) {
         const glm::vec3 colour = glm::max(a.lightSpecular[i], 0.0f) * a.materialSpecular;
-        if (!(a.lightsOn & (1u << i)) || !(glm::dot(colour, colour) > 0.0f)) continue;
-        const glm::vec4 p = a.lightPosition[i];
-        const bool spot = p.w != 0.0f && a.spotCutoff[i] < 180.0f;
-        const glm::vec3 spotAxis = glm::normalize(a.spotDirection[i]);
-        const float cutoff = std::cos(glm::radians(a.spotCutoff[i]));
-        float lowest = INFINITY;
-        for (const TrackedVertex& v : batch.vertices) {
-            const glm::vec3 eye = glm::vec3(modelview * glm::vec4(v.position, 1.0f));
+        if ((a.lightsOn & (1u << i)) && glm::dot(colour, colour) > 0.0f) {
+            shines[count++] = {colour, i};
+        }
+    }
+    constexpr float kNone = 1e-3f;
+    const glm::mat4& modelview = batch.modelview;
+    const glm::mat3 normals = glm::inverseTranspose(glm::mat3(modelview));
+    size_t shining = count; // lights every vertex so far has some of
+    for (const TrackedVertex& v : batch.vertices) {
+        if (shining == 0) return; // a vertex without any: nothing even
+        const glm::vec3 eye = glm::vec3(modelview * glm::vec4(v.position, 1.0f));
+        const glm::vec3 n = glm::normalize(normals * v.normal);
+        for (size_t k = 0; k < count; ++k) {
+            Shine& shine = shines[k];
+            if (!(shine.lowest > kNone)) continue;
+            const size_t i = shine.light;
+            const glm::vec4 p = a.lightPosition[i];
             glm::vec3 l = p.w != 0.0f ? glm::vec3(p) / p.w - eye : glm::vec3(p);
             const float length = glm::length(l);
-            const glm::vec3 n = glm::normalize(normals * v.normal);
             float s = 0.0f;
             if (length > 1e-12f && std::isfinite(length)) {
                 l /= length;
@@ -2046,19 +2058,27 @@ void StateTracker::addEvenSpecular(TrackedBatch& batch) const
                 if (glm::dot(n, l) > 0.0f && nh > 0.0f) {
                     s = std::pow(nh, a.materialShininess);
                     if (p.w != 0.0f) {
-                        const glm::vec3 k = a.attenuation[i];
-                        s /= std::max(k.x + (k.y + k.z * length) * length, 1e-6f);
+                        const glm::vec3 k3 = a.attenuation[i];
+                        s /= std::max(k3.x + (k3.y + k3.z * length) * length, 1e-6f);
                     }
-                    if (spot) {
-                        const float c = glm::dot(-l, spotAxis);
-                        s = c < cutoff ? 0.0f : s * std::pow(std::max(c, 0.0f), a.spotExponent[i]);
+                    if (p.w != 0.0f && a.spotCutoff[i] < 180.0f) {
+                        const float c = glm::dot(-l, glm::normalize(a.spotDirection[i]));
+                        s = c < std::cos(glm::radians(a.spotCutoff[i]))
+                                ? 0.0f
+                                : s * std::pow(std::max(c, 0.0f), a.spotExponent[i]);
                     }
                 }
             }
-            lowest = std::min(lowest, std::isfinite(s) ? s : 0.0f);
-            if (!(lowest > 1e-3f)) break; // a vertex without it: nothing even
+            shine.lowest = std::min(shine.lowest, std::isfinite(s) ? s : 0.0f);
+            if (!(shine.lowest > kNone)) --shining;
         }
-        if (lowest > 1e-3f && std::isfinite(lowest)) even += colour * std::min(lowest, 1.0f);
+    }
+    glm::vec3 even(0.0f);
+    for (size_t k = 0; k < count; ++k) {
+        const float lowest = shines[k].lowest;
+        if (lowest > kNone && std::isfinite(lowest)) {
+            even += shines[k].colour * std::min(lowest, 1.0f);
+        }
     }
     if (even == glm::vec3(0.0f)) return;
     for (TrackedVertex& v : batch.vertices) {
