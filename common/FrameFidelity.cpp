@@ -136,29 +136,48 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
         out.diff.height = h;
         out.diff.rgba.assign(size_t(3 * w) * h * 4, 255);
     }
+    // Per pixel: its colours and the object of the style's that covers it (0: none): an id
+    // in the ids frame where the program's own frame shows something else.
+    const size_t count = size_t(w) * h;
+    std::vector<Lab> nativeLab(count), styledLab(count);
+    std::vector<uint32_t> idAt(count, 0);
+    // The style's background: what it shows where the program drew nothing and no object
+    // covers (the clear colour again, or a page); its mean tells a pixel lost to it.
+    double bgL = 0.0, bgA = 0.0, bgB = 0.0;
+    uint64_t bgCount = 0;
+    for (size_t p = 0; p < count; ++p) {
+        const uint8_t* n = &native.rgba[p * 4];
+        nativeLab[p] = Lab::fromSrgb(n);
+        styledLab[p] = Lab::fromSrgb(&styled.rgba[p * 4]);
+        if (!ids.rgba.empty()) {
+            const uint8_t* d = &ids.rgba[p * 4];
+            if (d[0] != n[0] || d[1] != n[1] || d[2] != n[2]) idAt[p] = idOf(d);
+        }
+        if (idAt[p] == 0 && !(Lab::deltaE(nativeLab[p], clear) > kDrawn)) {
+            bgL += styledLab[p].l, bgA += styledLab[p].a, bgB += styledLab[p].b;
+            ++bgCount;
+        }
+    }
+    const Lab background = bgCount ? Lab{float(bgL / bgCount), float(bgA / bgCount),
+                                         float(bgB / bgCount)}
+                                   : clear;
     std::unordered_map<uint32_t, Accumulator> perObject;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const size_t i = (size_t(y) * w + x) * 4;
-            const uint8_t* n = &native.rgba[i];
-            const uint8_t* s = &styled.rgba[i];
-            const Lab ln = Lab::fromSrgb(n), ls = Lab::fromSrgb(s);
+            const size_t p = size_t(y) * w + x;
+            const Lab& ln = nativeLab[p];
+            const Lab& ls = styledLab[p];
+            const uint32_t id = idAt[p];
             const bool nativeDrawn = Lab::deltaE(ln, clear) > kDrawn;
-            // An object of the style's covers it: the ids frame shows an id where the
-            // program's own frame shows something else.
-            uint32_t id = 0;
-            if (!ids.rgba.empty()) {
-                const uint8_t* d = &ids.rgba[i];
-                const bool changed = d[0] != n[0] || d[1] != n[1] || d[2] != n[2];
-                if (changed) id = idOf(d);
-            }
             const float de = Lab::deltaE(ln, ls);
             const bool match = de <= kMatch;
             const bool drawn = nativeDrawn || id != 0;
             out.nativeDrawn += nativeDrawn;
             out.drawn += drawn;
             out.matching += drawn && match;
-            const bool lost = nativeDrawn && id == 0 && !match;
+            // Drawn natively; in the style no object there, and the background or page shows.
+            const bool lost = nativeDrawn && id == 0 && !match &&
+                              Lab::deltaE(ls, background) <= kMatch;
             out.missing += lost;
             if (id != 0) {
                 Accumulator& a = perObject[id];
@@ -172,6 +191,8 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
                 b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
             }
             if (makeDiff) {
+                const uint8_t* n = &native.rgba[p * 4];
+                const uint8_t* s = &styled.rgba[p * 4];
                 uint8_t* d = out.diff.rgba.data();
                 const size_t row = size_t(y) * 3 * w;
                 std::copy(n, n + 3, d + (row + x) * 4);

@@ -48,7 +48,9 @@ struct FrameFidelity {
     uint64_t drawn = 0;          // drawn natively or by an object in the style
     uint64_t nativeDrawn = 0;
     uint64_t matching = 0;       // drawn pixels within kMatch of native
-    uint64_t missing = 0;        // drawn natively; no object there in the style, and unlike
+    // Drawn natively; in the style no object covers it and it shows the style's background
+    // (the clear colour or the page, as where the program drew nothing).
+    uint64_t missing = 0;
     std::vector<Object> objects; // by id
     PngImage diff;               // native | styled | where they differ (measure(..., true))
 

@@ -213,3 +213,24 @@ TEST(FrameFidelity, FramesOfDifferentSizesAreRefused)
                                         error));
     EXPECT_NE(error.find("size"), std::string::npos);
 }
+
+TEST(FrameFidelity, OnlyWhatTheStylesBackgroundShowsIsMissing)
+{
+    // The style lays a page (pale) where the program cleared (dark): a translucent panel the
+    // program left is there, blended over the page, and is not missing; a square that shows
+    // the page is.
+    const uint8_t panel[3] = {70, 70, 90}, panelOnPage[3] = {150, 150, 160};
+    const uint8_t square[3] = {200, 40, 40};
+    PngImage native = filled(40, 40, 20, 20, 20);
+    PngImage styled = filled(40, 40, 235, 228, 210);
+    paint(native, 0, 0, 40, 8, panel);
+    paint(styled, 0, 0, 40, 8, panelOnPage);
+    paint(native, 20, 20, 30, 30, square);
+    FrameFidelity m;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(native, styled, filled(40, 40, 20, 20, 20), false, m,
+                                       error))
+        << error;
+    EXPECT_EQ(m.nativeDrawn, 40u * 8u + 100u);
+    EXPECT_EQ(m.missing, 100u);
+}

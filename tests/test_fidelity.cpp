@@ -1,0 +1,105 @@
+// The fidelity oracle on the project's own captures: in the `replica` style every fixture
+// must come out as the program drew it (nprgl compare), and the default style must lose
+// nothing the program drew and keep every object's hue.
+
+#include "tests/support/Process.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace nprgl::test;
+
+namespace {
+
+struct Summary {
+    double median = -1.0, min = -1.0, missing = -1.0;
+    long paletteObjects = -1, paletteFailures = -1;
+    std::string json;
+};
+
+// A number after "key": in compare's JSON.
+double field(const std::string& json, const std::string& key)
+{
+    const size_t at = json.rfind("\"" + key + "\":");
+    if (at == std::string::npos) return -1.0;
+    return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
+}
+
+Summary compare(const std::string& capture, const std::vector<std::string>& style,
+                const std::string& name)
+{
+    const std::string json = freshDir("fidelity_" + name) + "/out.json";
+    std::vector<std::string> argv = {nprglCommand(), "compare", capture, "--json", json};
+    argv.insert(argv.end(), style.begin(), style.end());
+    const ProcessResult r = runProcess(argv);
+    Summary s;
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream in(json);
+    std::stringstream text;
+    text << in.rdbuf();
+    s.json = text.str();
+    s.median = field(s.json, "fidelityMedian");
+    s.min = field(s.json, "fidelityMin");
+    s.missing = field(s.json, "missing");
+    s.paletteObjects = long(field(s.json, "paletteObjects"));
+    s.paletteFailures = long(field(s.json, "paletteFailures"));
+    return s;
+}
+
+std::string fixture(const std::string& name)
+{
+    return std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
+}
+
+class FixtureFidelity : public ::testing::TestWithParam<std::string> {};
+
+} // namespace
+
+// Where nprgl followed the program, replica equals native up to rasterisation.
+TEST_P(FixtureFidelity, ReplicaIsThePicture)
+{
+    const Summary s = compare(fixture(GetParam()), {"--style", "replica"}, GetParam() + "_r");
+    std::printf("fidelity: %-16s replica median %.3f min %.3f missing %.4f\n",
+                GetParam().c_str(), s.median, s.min, s.missing);
+    EXPECT_GE(s.median, 0.97);
+    EXPECT_GE(s.min, 0.95);
+    EXPECT_LE(s.missing, 0.005);
+}
+
+// The default style restyles, but loses nothing the program drew and keeps each object's hue.
+TEST_P(FixtureFidelity, DefaultStyleLosesNothingAndKeepsHues)
+{
+    const Summary s = compare(fixture(GetParam()), {}, GetParam() + "_d");
+    EXPECT_LE(s.missing, 0.005);
+    EXPECT_GT(s.paletteObjects, 0) << "no object judged: no test";
+    EXPECT_EQ(s.json.find("\"hueKept\": false"), std::string::npos) << s.json.substr(0, 3000);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, FixtureFidelity,
+                         ::testing::Values("arrays", "arrays_vbo", "character_morph",
+                                           "character_rigid", "character_skin", "displaylist",
+                                           "dlopen", "glxgears", "immediate", "overlay",
+                                           "textured"));
+
+TEST(Compare, AFileThatIsNoCaptureExitsOneWithItsName)
+{
+    const std::string dir = freshDir("compare_bad");
+    const std::string bad = dir + "/notes.nprgl";
+    std::ofstream(bad) << "not a capture\n";
+    const ProcessResult r = runProcess({nprglCommand(), "compare", bad, "--style", "replica"});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("notes.nprgl"), std::string::npos) << r.err;
+}
+
+TEST(Compare, FramesThatSelectNothingAreAnError)
+{
+    const ProcessResult r = runProcess(
+        {nprglCommand(), "compare", fixture("glxgears"), "--frames", "500-600"});
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find("no frame"), std::string::npos) << r.err;
+}
