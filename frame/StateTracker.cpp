@@ -185,6 +185,8 @@ void APIENTRY tMaterialf(GLenum face, GLenum pname, GLfloat v)
     const float values[4] = {v, 0.0f, 0.0f, 0.0f};
     if (pnameCount(pname) == 1) T().material(face, pname, values);
 }
+// glMateriali is glMaterialf's integer twin: its one value (the shininess) an exponent.
+void APIENTRY tMateriali(GLenum face, GLenum pname, GLint v) { tMaterialf(face, pname, float(v)); }
 void APIENTRY tMaterialiv(GLenum face, GLenum pname, const GLint* v)
 {
     float f[4];
@@ -482,6 +484,7 @@ StateTracker::StateTracker()
     d.glUseProgram = tUseProgram;
     d.glMaterialfv = tMaterialfv;
     d.glMaterialf = tMaterialf;
+    d.glMateriali = tMateriali;
     d.glMaterialiv = tMaterialiv;
     d.glNewList = tNewList;
     d.glEndList = tEndList;

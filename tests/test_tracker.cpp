@@ -1135,6 +1135,61 @@ TEST(StateTracker, ASpecularLightShownEvenlyOverABatchBrightensIt)
     EXPECT_NEAR(batches[3].vertices[0].color.r, matte.r, 0.02f) << "a light without specular";
 }
 
+// glMateriali sets the shininess as glMaterialf does (xscreensaver's cubestorm and the
+// involute gears set it so, 128). Not followed, the shininess stayed GL's default 0, whose
+// specular term is 1 wherever a face is lit: their cyan specular light turned every face of
+// cubestorm's many-coloured cubes cyan. Under 128 a face turned 30 degrees from the mirror
+// angle shows no shine.
+TEST(StateTracker, GlMaterialiSetsTheShininess)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto vector = [&](uint16_t opcode, GLenum which, GLenum pname, std::array<float, 4> v) {
+        feed.run([&](CallWriter& w) { vectorCall(w, opcode, which, pname, v.data(), sizeof v); });
+    };
+    auto shininess = [&](GLint exponent) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glMateriali);
+            w.put<GLenum>(GL_FRONT);
+            w.put<GLenum>(GL_SHININESS);
+            w.put<GLint>(exponent);
+        });
+    };
+    // A flat triangle whose normal is 30 degrees off the view (and so off the default light
+    // 0's half-vector, which is the view's).
+    auto triangle = [&] {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            w.op(op::glNormal3f);
+            for (float c : {0.5f, 0.0f, 0.8660254f}) w.put<float>(c);
+            for (int k = 0; k < 3; ++k) {
+                w.op(op::glVertex3f);
+                for (float c : {k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f, -2.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    vector(op::glLightfv, GL_LIGHT0, GL_SPECULAR, {0.0f, 1.0f, 1.0f, 1.0f});
+    vector(op::glMaterialfv, GL_FRONT, GL_SPECULAR, {1.0f, 1.0f, 1.0f, 1.0f});
+    vector(op::glMaterialfv, GL_FRONT, GL_AMBIENT_AND_DIFFUSE, {0.8f, 0.2f, 0.8f, 1.0f});
+    shininess(128);
+    triangle();
+    shininess(0);
+    triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 2u);
+    const glm::vec4 narrow = batches[0].vertices[0].color;
+    const glm::vec4 broad = batches[1].vertices[0].color;
+    EXPECT_GT(narrow.r, narrow.g + 0.3f) << "a shine far from the mirror angle was added";
+    EXPECT_NEAR(broad.g, std::min(narrow.g + 1.0f, 1.0f), 0.02f) << "shininess 0 shines all over";
+}
+
 // GL clamps its light sum per channel: extremetuxracer's pinkish sun (1, 0.9, 1) over its
 // bluish ambient (0.45, 0.53, 0.75), with a grey fill light, passes 1 in every channel on the
 // lit side, and its snow is white there, not the lavender of the sum's hue (0.87, 0.86, 1).
