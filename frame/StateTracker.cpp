@@ -233,10 +233,10 @@ void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* params)
         T().texEnv(target, pname, enumOf(params[0]));
     }
 }
-void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsizei height, GLint,
-                          GLenum format, GLenum type, const void* pixels)
+void APIENTRY tTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                          GLsizei height, GLint, GLenum format, GLenum type, const void* pixels)
 {
-    T().texImage2D(target, level, width, height, format, type, pixels);
+    T().texImage2D(target, level, internalFormat, width, height, format, type, pixels);
 }
 void APIENTRY tCopyTexImage2D(GLenum target, GLint level, GLenum internalFormat, GLint, GLint,
                               GLsizei, GLsizei, GLint)
@@ -2204,8 +2204,9 @@ bool StateTracker::cubeMean(GLuint texture, glm::vec3& mean) const
     return true;
 }
 
-void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
-                              GLenum format, GLenum type, const void* pixels)
+void StateTracker::texImage2D(GLenum target, GLint level, GLint internalFormat,
+                              GLsizei width, GLsizei height, GLenum format, GLenum type,
+                              const void* pixels)
 {
     if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z &&
         level == 0 && size_t(mActiveUnit) < mUnitCubeTextures.size()) {
@@ -2232,6 +2233,8 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     mFilledLater.erase(texture);
     mCutFeatures.erase(texture);
     mTextureSizes[texture] = {width, height};
+    const TextureAlpha alpha = textureAlpha(internalFormat);
+    mTextureAlphas[texture] = alpha;
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
     // Storage alone is filled by glTexSubImage2D next (SFML's way): those decide.
     if (!pixels || mImageBytes == 0) {
@@ -2240,7 +2243,7 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
         if (!pixels) mFilledLater.insert(texture);
         return;
     }
-    const TextureImage image(width, height, format, type, pixels, mImageBytes);
+    const TextureImage image(width, height, format, type, pixels, mImageBytes, alpha);
     if (image.opaque()) mOpaqueTextures.insert(texture);
     glm::vec3 mean;
     if (image.mean(mean)) mTextureMeans[texture] = mean;
@@ -2266,8 +2269,8 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     mTextureSizes.erase(texture); // its size is not followed here
     if (empty) mFilledLater.insert(texture);
     else mFilledLater.erase(texture);
-    const GLenum noAlpha[] = {1, 3, GL_RGB, GL_RGB8, GL_RGB5, GL_R3_G3_B2, GL_LUMINANCE,
-                              GL_LUMINANCE8, GL_RED, GL_R8, GL_SRGB8};
+    const TextureAlpha alpha = textureAlpha(GLint(internalFormat));
+    mTextureAlphas[texture] = alpha;
     const bool isDepth = depthFormat(internalFormat);
     if (isDepth) mDepthTextures.insert(texture);
     else mDepthTextures.erase(texture);
@@ -2278,8 +2281,7 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     } else {
         mAlphaTextures.erase(texture);
     }
-    if (isDepth || std::find(std::begin(noAlpha), std::end(noAlpha), internalFormat) !=
-                       std::end(noAlpha)) {
+    if (isDepth || alpha == TextureAlpha::One) {
         mOpaqueTextures.insert(texture);
     } else {
         mOpaqueTextures.erase(texture);
@@ -2296,8 +2298,13 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
     // filled are undefined in GL). Into an image of known pixels: a part with alpha below 1
     // makes it not opaque; an opaque part changes nothing.
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
-    const TextureImage image(width, height, format, type, pixels, mImageBytes);
-    const bool opaque = pixels && mImageBytes != 0 && image.opaque();
+    // The texture's internal format decides which of the part's channels is its alpha.
+    auto made = mTextureAlphas.find(texture);
+    const TextureAlpha alpha =
+        made != mTextureAlphas.end() ? made->second : TextureAlpha::FromAlpha;
+    const TextureImage image(width, height, format, type, pixels, mImageBytes, alpha);
+    const bool opaque =
+        alpha == TextureAlpha::One || (pixels && mImageBytes != 0 && image.opaque());
     mTextureHashes.erase(texture); // its content is no longer the hashed upload
     mTextureMeans.erase(texture);
     // The finest cut of the parts filled (an image given in parts, or by parts only).

@@ -249,9 +249,10 @@ public:
     void bindTexture(GLenum target, GLuint texture);
     // glTexEnv: the active unit's GL_TEXTURE_ENV_MODE.
     void texEnv(GLenum target, GLenum pname, GLenum mode);
-    // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed).
-    void texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
-                    GLenum type, const void* pixels);
+    // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed); its
+    // alpha is its internal format's (TextureAlpha).
+    void texImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                    GLsizei height, GLenum format, GLenum type, const void* pixels);
     // glCopyTexImage2D and glTexStorage2D: level 0 of the bound 2D texture is made in
     // `internalFormat` with content not known here: a copy of the framebuffer, or none yet
     // (`empty`: glTexSubImage2D fills it, as after glTexImage2D without pixels).
@@ -472,6 +473,7 @@ private:
     std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
     std::map<GLuint, float> mCutFeatures; // level 0's cutFeature, where it is known
     std::map<GLuint, glm::ivec2> mTextureSizes; // level 0's size as glTexImage2D gave it
+    std::map<GLuint, TextureAlpha> mTextureAlphas; // level 0's, by its internal format
     std::array<GLuint, 8> mUnitCubeTextures{}; // every unit's GL_TEXTURE_CUBE_MAP
     // Each cube map's faces' level-0 means (w 1 where known), +X -X +Y -Y +Z -Z.
     std::map<GLuint, std::array<glm::vec4, 6>> mCubeFaceMeans;

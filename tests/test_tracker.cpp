@@ -1730,6 +1730,65 @@ TEST(StateTracker, AlphaThatCannotBeBelowOneIsOpaque)
     EXPECT_EQ(batches[2].alphaFunc, GLenum(GL_GEQUAL));
 }
 
+// A texture's alpha is its internal format's, whatever the pixels it was made from (GL keeps
+// the internal format's channels). xscreensaver's texfont gives its glyphs as GL_LUMINANCE
+// bytes to a GL_INTENSITY texture, whose alpha is each byte: its labels, blended by that
+// alpha, were taken for opaque (luminance has no alpha) and drawn as black squares. An RGB
+// texture from RGBA bytes is opaque, whatever their alpha.
+TEST(StateTracker, ATexturesAlphaIsItsInternalFormats)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_BLEND, true);
+    feed.blendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    feed.enable(GL_ALPHA_TEST, true);
+    feed.run([](CallWriter& w) {
+        w.op(op::glAlphaFunc);
+        w.put<GLenum>(GL_GREATER);
+        w.put<float>(0.01f);
+    });
+    feed.enable(GL_TEXTURE_2D, true);
+    // Texture `name`'s level 0, 4 x 4 texels of `format` bytes in `internalFormat`, then a
+    // triangle drawn with it (each somewhere else: not a pass over the one before).
+    auto draw = [&](GLuint name, GLint internalFormat, GLenum format,
+                    const std::vector<uint8_t>& pixels) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(name);
+            w.op(op::glTexImage2D);
+            const size_t mark = w.beginPayload();
+            for (GLint v : {GLint(GL_TEXTURE_2D), 0, internalFormat, 4, 4, 0}) w.put<GLint>(v);
+            w.put<GLenum>(format);
+            w.put<GLenum>(GL_UNSIGNED_BYTE);
+            w.put<uint8_t>(1);
+            w.putBytes(pixels.data(), pixels.size());
+            w.endPayload(mark);
+            w.op(op::glTranslatef);
+            for (float c : {2.0f, 0.0f, 0.0f}) w.put<float>(c);
+        });
+        feed.triangle();
+    };
+    std::vector<uint8_t> glyph(16, 0); // a bar of ink on a clear ground
+    for (size_t i = 4; i < 8; ++i) glyph[i] = 255;
+    draw(5, GL_INTENSITY, GL_LUMINANCE, glyph);
+    draw(6, GL_INTENSITY, GL_LUMINANCE, std::vector<uint8_t>(16, 255));
+    std::vector<uint8_t> clear(4 * 16, 200);
+    for (size_t i = 3; i < clear.size(); i += 4) clear[i] = 0;
+    draw(7, GL_RGB, GL_RGBA, clear);
+    draw(8, GL_RGBA, GL_RGBA, clear);
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 4u);
+    EXPECT_TRUE(batches[0].translucent) << "an intensity texture's clear texels were opaque";
+    EXPECT_EQ(batches[0].alphaFunc, GLenum(GL_GREATER));
+    EXPECT_FALSE(batches[1].translucent) << "intensity 1 is alpha 1";
+    EXPECT_FALSE(batches[2].translucent) << "an RGB texture has no alpha to blend by";
+    EXPECT_TRUE(batches[3].translucent);
+}
+
 // Multi-pass surfaces (ioquake3 draws each stage of a shader over the same vertices): a
 // blended pass over geometry held just before is merged into that object, not drawn again
 // nor styled twice. Other geometry, other culling, or nothing held: not a pass over it.
