@@ -733,11 +733,12 @@ bool StateTracker::leftByRule() const
 
 GLenum StateTracker::culledWinding() const
 {
+    // Batches are assembled with the program's front faces counter-clockwise
+    // (TrackedBatch::clockwise): its back faces are the clockwise ones there.
     const AttribState& a = mAttrib;
     if (!a.cullFace) return 0;
     if (a.cullMode == GL_FRONT_AND_BACK) return GL_FRONT_AND_BACK;
-    const GLenum back = a.frontFace == GL_CCW ? GL_CW : GL_CCW;
-    return a.cullMode == GL_FRONT ? a.frontFace : back;
+    return a.cullMode == GL_FRONT ? GL_CCW : GL_CW;
 }
 
 // What a pass over a batch shares with it, hashed: mode, size, culling, matrices and three of
@@ -1692,6 +1693,7 @@ bool StateTracker::keep(TrackedBatch& batch)
         addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
+    batch.clockwise = a.frontFace == GL_CW;
     batch.culled = culledWinding();
     batch.texture = detailTexture();
     replacedByTexture(batch);

@@ -82,8 +82,12 @@ struct TrackedBatch {
     glm::vec3 fogColour{0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
-    // The winding culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0): two passes over
-    // one mesh that cull opposite faces draw different triangles.
+    // Drawn under glFrontFace(GL_CW): reconstruction assembles it the other way round, so
+    // that the program's front faces are counter-clockwise in every batch of an object
+    // (xscreensaver's involute gears turn the front face between the rings of one gear).
+    bool clockwise = false;
+    // The winding culled (GL_CW, GL_CCW) in that assembled winding, all (GL_FRONT_AND_BACK) or
+    // none (0): two passes over one mesh that cull opposite faces draw different triangles.
     GLenum culled = 0;
 };
 
@@ -391,7 +395,8 @@ private:
     void replacedByTexture(TrackedBatch& batch) const;
     // A rule (leave_texture or leave_state) leaves a draw issued now.
     bool leftByRule() const;
-    // The winding the current culling removes (TrackedBatch::culled).
+    // The winding the current culling removes, in the winding batches are assembled in
+    // (TrackedBatch::culled).
     GLenum culledWinding() const;
     // Does a batch draw the same triangles as one held this frame (a pass over it)? An
     // alpha-blended layer over a translucent batch is not a pass over a surface but the next
