@@ -918,6 +918,7 @@ void Compositor::buildScene()
         b.mode = t.mode;
         b.modelview = t.modelview;
         b.materialId = t.materialId;
+        b.clockwise = t.clockwise;
         // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render),
         // also among those drawn without the depth test or depth writes (bzflag's cloud layer,
         // blended, joined the opaque ground drawn before it and covered its sky in white).
@@ -966,7 +967,14 @@ void Compositor::buildScene()
         s.depthTest = t.depthTest;
         s.depthAlways = t.depthAlways;
         s.depthFunc = t.depthFunc;
+        // One cull state for the object: its batches' when they agree (the first batch's
+        // lost the others' faces where they did not). Where they do not, no one state culls
+        // what each of them culled: the object is drawn whole, and depth hides the back of a
+        // closed one as the culling did.
         s.culled = t.culled;
+        for (uint32_t b = 1; b < o.batchCount; ++b) {
+            if (mTracked[o.firstBatch + b].culled != t.culled) s.culled = 0;
+        }
         s.generated = t.generated;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;

@@ -187,6 +187,8 @@ void APIENTRY tMaterialf(GLenum face, GLenum pname, GLfloat v)
     const float values[4] = {v, 0.0f, 0.0f, 0.0f};
     if (pnameCount(pname) == 1) T().material(face, pname, values);
 }
+// glMateriali is glMaterialf's integer twin: its one value (the shininess) an exponent.
+void APIENTRY tMateriali(GLenum face, GLenum pname, GLint v) { tMaterialf(face, pname, float(v)); }
 void APIENTRY tMaterialiv(GLenum face, GLenum pname, const GLint* v)
 {
     float f[4];
@@ -233,10 +235,10 @@ void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* params)
         T().texEnv(target, pname, enumOf(params[0]));
     }
 }
-void APIENTRY tTexImage2D(GLenum target, GLint level, GLint, GLsizei width, GLsizei height, GLint,
-                          GLenum format, GLenum type, const void* pixels)
+void APIENTRY tTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                          GLsizei height, GLint, GLenum format, GLenum type, const void* pixels)
 {
-    T().texImage2D(target, level, width, height, format, type, pixels);
+    T().texImage2D(target, level, internalFormat, width, height, format, type, pixels);
 }
 void APIENTRY tCopyTexImage2D(GLenum target, GLint level, GLenum internalFormat, GLint, GLint,
                               GLsizei, GLsizei, GLint)
@@ -494,6 +496,7 @@ StateTracker::StateTracker()
     d.glUseProgram = tUseProgram;
     d.glMaterialfv = tMaterialfv;
     d.glMaterialf = tMaterialf;
+    d.glMateriali = tMateriali;
     d.glMaterialiv = tMaterialiv;
     d.glNewList = tNewList;
     d.glEndList = tEndList;
@@ -745,11 +748,12 @@ bool StateTracker::leftByRule() const
 
 GLenum StateTracker::culledWinding() const
 {
+    // Batches are assembled with the program's front faces counter-clockwise
+    // (TrackedBatch::clockwise): its back faces are the clockwise ones there.
     const AttribState& a = mAttrib;
     if (!a.cullFace) return 0;
     if (a.cullMode == GL_FRONT_AND_BACK) return GL_FRONT_AND_BACK;
-    const GLenum back = a.frontFace == GL_CCW ? GL_CW : GL_CCW;
-    return a.cullMode == GL_FRONT ? a.frontFace : back;
+    return a.cullMode == GL_FRONT ? GL_CCW : GL_CW;
 }
 
 // What a pass over a batch shares with it, hashed: mode, size, culling, matrices and three of
@@ -1711,6 +1715,7 @@ bool StateTracker::keep(TrackedBatch& batch)
         addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
+    batch.clockwise = a.frontFace == GL_CW;
     batch.culled = culledWinding();
     batch.texture = detailTexture();
     replacedByTexture(batch);
@@ -2228,8 +2233,9 @@ bool StateTracker::cubeMean(GLuint texture, glm::vec3& mean) const
     return true;
 }
 
-void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
-                              GLenum format, GLenum type, const void* pixels)
+void StateTracker::texImage2D(GLenum target, GLint level, GLint internalFormat,
+                              GLsizei width, GLsizei height, GLenum format, GLenum type,
+                              const void* pixels)
 {
     if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z &&
         level == 0 && size_t(mActiveUnit) < mUnitCubeTextures.size()) {
@@ -2256,6 +2262,8 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
     mFilledLater.erase(texture);
     mCutFeatures.erase(texture);
     mTextureSizes[texture] = {width, height};
+    const TextureAlpha alpha = textureAlpha(internalFormat);
+    mTextureAlphas[texture] = alpha;
     // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
     // Storage alone is filled by glTexSubImage2D next (SFML's way): those decide.
     if (!pixels || mImageBytes == 0) {
@@ -2264,7 +2272,7 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLsizei width, GLsizei
         if (!pixels) mFilledLater.insert(texture);
         return;
     }
-    const TextureImage image(width, height, format, type, pixels, mImageBytes);
+    const TextureImage image(width, height, format, type, pixels, mImageBytes, alpha);
     if (image.opaque()) mOpaqueTextures.insert(texture);
     glm::vec3 mean;
     if (image.mean(mean)) mTextureMeans[texture] = mean;
@@ -2290,8 +2298,8 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     mTextureSizes.erase(texture); // its size is not followed here
     if (empty) mFilledLater.insert(texture);
     else mFilledLater.erase(texture);
-    const GLenum noAlpha[] = {1, 3, GL_RGB, GL_RGB8, GL_RGB5, GL_R3_G3_B2, GL_LUMINANCE,
-                              GL_LUMINANCE8, GL_RED, GL_R8, GL_SRGB8};
+    const TextureAlpha alpha = textureAlpha(GLint(internalFormat));
+    mTextureAlphas[texture] = alpha;
     const bool isDepth = depthFormat(internalFormat);
     if (isDepth) mDepthTextures.insert(texture);
     else mDepthTextures.erase(texture);
@@ -2302,8 +2310,7 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     } else {
         mAlphaTextures.erase(texture);
     }
-    if (isDepth || std::find(std::begin(noAlpha), std::end(noAlpha), internalFormat) !=
-                       std::end(noAlpha)) {
+    if (isDepth || alpha == TextureAlpha::One) {
         mOpaqueTextures.insert(texture);
     } else {
         mOpaqueTextures.erase(texture);
@@ -2320,8 +2327,13 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
     // filled are undefined in GL). Into an image of known pixels: a part with alpha below 1
     // makes it not opaque; an opaque part changes nothing.
     const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
-    const TextureImage image(width, height, format, type, pixels, mImageBytes);
-    const bool opaque = pixels && mImageBytes != 0 && image.opaque();
+    // The texture's internal format decides which of the part's channels is its alpha.
+    auto made = mTextureAlphas.find(texture);
+    const TextureAlpha alpha =
+        made != mTextureAlphas.end() ? made->second : TextureAlpha::FromAlpha;
+    const TextureImage image(width, height, format, type, pixels, mImageBytes, alpha);
+    const bool opaque =
+        alpha == TextureAlpha::One || (pixels && mImageBytes != 0 && image.opaque());
     mTextureHashes.erase(texture); // its content is no longer the hashed upload
     mTextureMeans.erase(texture);
     // The finest cut of the parts filled (an image given in parts, or by parts only).

@@ -82,8 +82,12 @@ struct TrackedBatch {
     glm::vec3 fogColour{0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
-    // The winding culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0): two passes over
-    // one mesh that cull opposite faces draw different triangles.
+    // Drawn under glFrontFace(GL_CW): reconstruction assembles it the other way round, so
+    // that the program's front faces are counter-clockwise in every batch of an object
+    // (xscreensaver's involute gears turn the front face between the rings of one gear).
+    bool clockwise = false;
+    // The winding culled (GL_CW, GL_CCW) in that assembled winding, all (GL_FRONT_AND_BACK) or
+    // none (0): two passes over one mesh that cull opposite faces draw different triangles.
     GLenum culled = 0;
 };
 
@@ -253,9 +257,10 @@ public:
     void bindTexture(GLenum target, GLuint texture);
     // glTexEnv: the active unit's GL_TEXTURE_ENV_MODE.
     void texEnv(GLenum target, GLenum pname, GLenum mode);
-    // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed).
-    void texImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
-                    GLenum type, const void* pixels);
+    // glTexImage2D: level 0 of a 2D texture names the bound texture's content (hashed); its
+    // alpha is its internal format's (TextureAlpha).
+    void texImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                    GLsizei height, GLenum format, GLenum type, const void* pixels);
     // glCopyTexImage2D and glTexStorage2D: level 0 of the bound 2D texture is made in
     // `internalFormat` with content not known here: a copy of the framebuffer, or none yet
     // (`empty`: glTexSubImage2D fills it, as after glTexImage2D without pixels).
@@ -395,7 +400,8 @@ private:
     void replacedByTexture(TrackedBatch& batch) const;
     // A rule (leave_texture or leave_state) leaves a draw issued now.
     bool leftByRule() const;
-    // The winding the current culling removes (TrackedBatch::culled).
+    // The winding the current culling removes, in the winding batches are assembled in
+    // (TrackedBatch::culled).
     GLenum culledWinding() const;
     // Does a batch draw the same triangles as one held this frame (a pass over it)? An
     // alpha-blended layer over a translucent batch is not a pass over a surface but the next
@@ -477,6 +483,7 @@ private:
     std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
     std::map<GLuint, float> mCutFeatures; // level 0's cutFeature, where it is known
     std::map<GLuint, glm::ivec2> mTextureSizes; // level 0's size as glTexImage2D gave it
+    std::map<GLuint, TextureAlpha> mTextureAlphas; // level 0's, by its internal format
     std::array<GLuint, 8> mUnitCubeTextures{}; // every unit's GL_TEXTURE_CUBE_MAP
     // Each cube map's faces' level-0 means (w 1 where known), +X -X +Y -Y +Z -Z.
     std::map<GLuint, std::array<glm::vec4, 6>> mCubeFaceMeans;

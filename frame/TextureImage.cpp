@@ -5,10 +5,28 @@
 
 namespace nprgl {
 
+TextureAlpha textureAlpha(GLint internalFormat)
+{
+    switch (GLenum(internalFormat)) {
+    case 1: case 3: case GL_RGB: case GL_RGB4: case GL_RGB5: case GL_RGB8: case GL_RGB10:
+    case GL_RGB12: case GL_RGB16: case GL_R3_G3_B2: case GL_SRGB: case GL_SRGB8:
+    case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12:
+    case GL_LUMINANCE16: case GL_RED: case GL_R8: case GL_R16: case GL_RG: case GL_RG8:
+    case GL_RG16:
+        return TextureAlpha::One;
+    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12:
+    case GL_INTENSITY16: case GL_INTENSITY16F_ARB: case GL_INTENSITY32F_ARB:
+        return TextureAlpha::FromIntensity;
+    default:
+        return TextureAlpha::FromAlpha;
+    }
+}
+
 TextureImage::TextureImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
-                           const void* pixels, size_t bytes)
+                           const void* pixels, size_t bytes, TextureAlpha alpha)
     : mWidth(width), mHeight(height), mFormat(format), mType(type),
-      mPixels(static_cast<const unsigned char*>(pixels)), mBytes(pixels ? bytes : 0)
+      mPixels(static_cast<const unsigned char*>(pixels)), mBytes(pixels ? bytes : 0),
+      mAlpha(alpha)
 {
 }
 
@@ -34,19 +52,30 @@ size_t TextureImage::rowBytes(int channels) const
     return row >= size_t(mWidth) * size_t(channels) ? row : 0;
 }
 
+int TextureImage::alphaByte(int channels, bool hasAlpha) const
+{
+    if (channels <= 0 || mAlpha == TextureAlpha::One) return -1;
+    if (mAlpha == TextureAlpha::FromAlpha) return hasAlpha ? channels - 1 : -1;
+    // The intensity is the pixels' red (luminance) channel; GL_ALPHA pixels have none (0).
+    if (mFormat == GL_ALPHA) return -1;
+    return mFormat == GL_BGR || mFormat == GL_BGRA ? 2 : 0;
+}
+
 bool TextureImage::opaque() const
 {
-    if (mFormat == GL_RGB || mFormat == GL_BGR || mFormat == GL_LUMINANCE || mFormat == GL_RED) {
-        return true;
-    }
+    if (mAlpha == TextureAlpha::One) return true;
+    const bool noAlpha =
+        mFormat == GL_RGB || mFormat == GL_BGR || mFormat == GL_LUMINANCE || mFormat == GL_RED;
+    if (mAlpha == TextureAlpha::FromAlpha && noAlpha) return true;
     bool hasAlpha = false;
     const int n = channels(hasAlpha);
-    const size_t row = n == 4 ? rowBytes(n) : 0;
+    const int a = alphaByte(n, hasAlpha);
+    const size_t row = a >= 0 ? rowBytes(n) : 0;
     if (row == 0) return false;
     for (GLsizei y = 0; y < mHeight; ++y) {
-        const unsigned char* p = mPixels + size_t(y) * row;
+        const unsigned char* p = mPixels + size_t(y) * row + size_t(a);
         for (GLsizei x = 0; x < mWidth; ++x) {
-            if (p[size_t(x) * 4 + 3] != 255) return false;
+            if (p[size_t(x) * size_t(n)] != 255) return false;
         }
     }
     return true;
@@ -79,9 +108,10 @@ float TextureImage::cutFeature(glm::ivec2 level) const
 {
     bool hasAlpha = false;
     const int n = channels(hasAlpha);
-    const size_t row = hasAlpha ? rowBytes(n) : 0;
+    const int a = alphaByte(n, hasAlpha);
+    const size_t row = a >= 0 ? rowBytes(n) : 0;
     if (row == 0 || level.x <= 0 || level.y <= 0) return 0.0f;
-    const unsigned char* alpha = mPixels + (n - 1);
+    const unsigned char* alpha = mPixels + a;
     // The runs of the lines walked, each as a fraction of its line. Medians, not means: a
     // font's few long bars would hide its thin strokes, a tree's trunk its twigs.
     std::vector<float> kept, enclosed;

@@ -29,9 +29,18 @@ struct Batch {
     uint32_t materialId = 0;    // distinct material/colour state -> distinct id
     uint32_t pass = 0;          // batches of different passes (opaque, translucent) never
                                 // form one object
+    // Drawn under glFrontFace(GL_CW): its triangles are assembled the other way round, so
+    // that an object's front faces are counter-clockwise whichever way each batch was wound.
+    bool clockwise = false;
     uint64_t contentHash = 0;   // hashBatch(*this); 0 means "not given", the Reconstructor
                                 // then computes it (a cost per frame for large batches)
 };
+
+// The mode with the winding the batch is assembled in: what its triangles depend on.
+inline uint32_t assemblyMode(const Batch& batch)
+{
+    return batch.mode | (batch.clockwise ? 0x80000000u : 0u);
+}
 
 // XXH3 of the vertex bytes seeded with the mode; never 0. The producer should store it in
 // Batch::contentHash when it copies the vertices, while they are hot in the cache.

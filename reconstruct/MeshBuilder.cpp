@@ -418,7 +418,7 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
         const std::vector<Vertex>& vertices = batches[b].vertices;
         object.sourceVertices.insert(object.sourceVertices.end(), vertices.begin(),
                                      vertices.end());
-        state.batchModes.push_back(batches[b].mode);
+        state.batchModes.push_back(assemblyMode(batches[b]));
         state.batchCounts.push_back(uint32_t(vertices.size()));
     }
     state.batchMaterials.resize(count);
@@ -447,8 +447,10 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
     uint32_t base = 0;
     for (size_t b = 0; b < count; ++b) {
         const uint32_t n = state.batchCounts[b];
+        const bool clockwise = batches[b].clockwise;
         stats.incompleteVertices += assembleTriangles(
             batches[b].mode, n, [&](uint32_t i0, uint32_t i1, uint32_t i2) {
+                if (clockwise) std::swap(i1, i2);
                 i0 += base;
                 i1 += base;
                 i2 += base;
@@ -493,7 +495,7 @@ bool MeshBuilder::prepareUpdate(const ObjectMesh& object, const Batch* batches, 
     const ObjectMesh::UpdateState& state = object.updateState;
     if (count != state.batchModes.size()) return false;
     for (size_t b = 0; b < count; ++b) {
-        if (batches[b].mode != state.batchModes[b]) return false;
+        if (assemblyMode(batches[b]) != state.batchModes[b]) return false;
         if (batches[b].vertices.size() != state.batchCounts[b]) return false;
     }
     // One pass, a batch at a time while it is in the cache: copy, check, gather.

@@ -55,7 +55,7 @@ void Reconstructor::groupBatches(const std::vector<Batch>& batches)
             KeyItem item{};
             item.contentHash = batch.contentHash != 0 ? batch.contentHash : hashBatch(batch);
             item.materialId = batch.materialId;
-            item.mode = batch.mode;
+            item.mode = assemblyMode(batch);
             item.vertexCount = uint32_t(batch.vertices.size());
             mKeyItems.push_back(item);
         }

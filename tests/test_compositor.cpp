@@ -631,6 +631,25 @@ TEST(Compositor, ListsCalledTogetherAreDrawnOnce)
     EXPECT_EQ(left, 0u) << "pixels of the program's own plate under gooch";
 }
 
+// A program may turn glFrontFace between the batches of one object, each culled by its own
+// front face: xscreensaver's involute gears (moebiusgears) wind each ring and face their own
+// way. The styles culled the whole object by its first batch's winding and lost the other
+// batches' front faces (gears with missing faces). demo_displaylist --clockwise-fronts draws
+// its gears' front faces clockwise under glFrontFace(GL_CW), the same picture as without:
+// styled, it must stay the same picture too.
+TEST(Compositor, BatchesCulledByTheirOwnFrontFaceKeepTheirFaces)
+{
+    for (const char* style : {"none", "toon"}) {
+        const std::string name = std::string("clockwise_fronts_") + style;
+        const std::string plain = demoFrame("displaylist", name, {"--style", style}, {});
+        const std::string turned =
+            demoFrame("displaylist", name + "_turned", {"--style", style}, {"--clockwise-fronts"});
+        ImageDiff diff = compareImages(plain, turned, 24);
+        ASSERT_TRUE(diff.comparable) << diff.error;
+        EXPECT_LT(diff.differingPixels, 320u * 240u / 200) << style << ": faces were lost";
+    }
+}
+
 // glxgears turns its gears by the time between frames, and its first frame has had none:
 // frame 1 shows the gears at angle 0 in every run, so style none and toon can be compared.
 TEST(Compositor, GlxgearsInToonKeepsItsRedGreenAndBlueGears)

@@ -1215,6 +1215,61 @@ TEST(StateTracker, ASpecularLightShownEvenlyOverABatchBrightensIt)
     EXPECT_NEAR(batches[3].vertices[0].color.r, matte.r, 0.02f) << "a light without specular";
 }
 
+// glMateriali sets the shininess as glMaterialf does (xscreensaver's cubestorm and the
+// involute gears set it so, 128). Not followed, the shininess stayed GL's default 0, whose
+// specular term is 1 wherever a face is lit: their cyan specular light turned every face of
+// cubestorm's many-coloured cubes cyan. Under 128 a face turned 30 degrees from the mirror
+// angle shows no shine.
+TEST(StateTracker, GlMaterialiSetsTheShininess)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto vector = [&](uint16_t opcode, GLenum which, GLenum pname, std::array<float, 4> v) {
+        feed.run([&](CallWriter& w) { vectorCall(w, opcode, which, pname, v.data(), sizeof v); });
+    };
+    auto shininess = [&](GLint exponent) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glMateriali);
+            w.put<GLenum>(GL_FRONT);
+            w.put<GLenum>(GL_SHININESS);
+            w.put<GLint>(exponent);
+        });
+    };
+    // A flat triangle whose normal is 30 degrees off the view (and so off the default light
+    // 0's half-vector, which is the view's).
+    auto triangle = [&] {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            w.op(op::glNormal3f);
+            for (float c : {0.5f, 0.0f, 0.8660254f}) w.put<float>(c);
+            for (int k = 0; k < 3; ++k) {
+                w.op(op::glVertex3f);
+                for (float c : {k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f, -2.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    vector(op::glLightfv, GL_LIGHT0, GL_SPECULAR, {0.0f, 1.0f, 1.0f, 1.0f});
+    vector(op::glMaterialfv, GL_FRONT, GL_SPECULAR, {1.0f, 1.0f, 1.0f, 1.0f});
+    vector(op::glMaterialfv, GL_FRONT, GL_AMBIENT_AND_DIFFUSE, {0.8f, 0.2f, 0.8f, 1.0f});
+    shininess(128);
+    triangle();
+    shininess(0);
+    triangle();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 2u);
+    const glm::vec4 narrow = batches[0].vertices[0].color;
+    const glm::vec4 broad = batches[1].vertices[0].color;
+    EXPECT_GT(narrow.r, narrow.g + 0.3f) << "a shine far from the mirror angle was added";
+    EXPECT_NEAR(broad.g, std::min(narrow.g + 1.0f, 1.0f), 0.02f) << "shininess 0 shines all over";
+}
+
 // GL clamps its light sum per channel: extremetuxracer's pinkish sun (1, 0.9, 1) over its
 // bluish ambient (0.45, 0.53, 0.75), with a grey fill light, passes 1 in every channel on the
 // lit side, and its snow is white there, not the lavender of the sum's hue (0.87, 0.86, 1).
@@ -1753,6 +1808,65 @@ TEST(StateTracker, AlphaThatCannotBeBelowOneIsOpaque)
     EXPECT_EQ(batches[2].texture, 6u);
     EXPECT_TRUE(batches[2].translucent);
     EXPECT_EQ(batches[2].alphaFunc, GLenum(GL_GEQUAL));
+}
+
+// A texture's alpha is its internal format's, whatever the pixels it was made from (GL keeps
+// the internal format's channels). xscreensaver's texfont gives its glyphs as GL_LUMINANCE
+// bytes to a GL_INTENSITY texture, whose alpha is each byte: its labels, blended by that
+// alpha, were taken for opaque (luminance has no alpha) and drawn as black squares. An RGB
+// texture from RGBA bytes is opaque, whatever their alpha.
+TEST(StateTracker, ATexturesAlphaIsItsInternalFormats)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_BLEND, true);
+    feed.blendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    feed.enable(GL_ALPHA_TEST, true);
+    feed.run([](CallWriter& w) {
+        w.op(op::glAlphaFunc);
+        w.put<GLenum>(GL_GREATER);
+        w.put<float>(0.01f);
+    });
+    feed.enable(GL_TEXTURE_2D, true);
+    // Texture `name`'s level 0, 4 x 4 texels of `format` bytes in `internalFormat`, then a
+    // triangle drawn with it (each somewhere else: not a pass over the one before).
+    auto draw = [&](GLuint name, GLint internalFormat, GLenum format,
+                    const std::vector<uint8_t>& pixels) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBindTexture);
+            w.put<GLenum>(GL_TEXTURE_2D);
+            w.put<GLuint>(name);
+            w.op(op::glTexImage2D);
+            const size_t mark = w.beginPayload();
+            for (GLint v : {GLint(GL_TEXTURE_2D), 0, internalFormat, 4, 4, 0}) w.put<GLint>(v);
+            w.put<GLenum>(format);
+            w.put<GLenum>(GL_UNSIGNED_BYTE);
+            w.put<uint8_t>(1);
+            w.putBytes(pixels.data(), pixels.size());
+            w.endPayload(mark);
+            w.op(op::glTranslatef);
+            for (float c : {2.0f, 0.0f, 0.0f}) w.put<float>(c);
+        });
+        feed.triangle();
+    };
+    std::vector<uint8_t> glyph(16, 0); // a bar of ink on a clear ground
+    for (size_t i = 4; i < 8; ++i) glyph[i] = 255;
+    draw(5, GL_INTENSITY, GL_LUMINANCE, glyph);
+    draw(6, GL_INTENSITY, GL_LUMINANCE, std::vector<uint8_t>(16, 255));
+    std::vector<uint8_t> clear(4 * 16, 200);
+    for (size_t i = 3; i < clear.size(); i += 4) clear[i] = 0;
+    draw(7, GL_RGB, GL_RGBA, clear);
+    draw(8, GL_RGBA, GL_RGBA, clear);
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 4u);
+    EXPECT_TRUE(batches[0].translucent) << "an intensity texture's clear texels were opaque";
+    EXPECT_EQ(batches[0].alphaFunc, GLenum(GL_GREATER));
+    EXPECT_FALSE(batches[1].translucent) << "intensity 1 is alpha 1";
+    EXPECT_FALSE(batches[2].translucent) << "an RGB texture has no alpha to blend by";
+    EXPECT_TRUE(batches[3].translucent);
 }
 
 // Multi-pass surfaces (ioquake3 draws each stage of a shader over the same vertices): a

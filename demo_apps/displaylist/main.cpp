@@ -29,8 +29,11 @@ void setMaterial(float r, float g, float b)
     glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, colour);
 }
 
-// A gear in the z = 0 plane centred on the origin, flat shaded.
-void drawGear(float innerRadius, float outerRadius, float width, int teeth, float toothDepth)
+// A gear in the z = 0 plane centred on the origin, flat shaded. clockwiseFront: its front
+// faces wound clockwise seen from outside, drawn under glFrontFace(GL_CW), as xscreensaver's
+// involute gears set the front face per ring and face (the same picture).
+void drawGear(float innerRadius, float outerRadius, float width, int teeth, float toothDepth,
+              bool clockwiseFront)
 {
     float r0 = innerRadius;
     float r1 = outerRadius - toothDepth / 2.0f;
@@ -40,24 +43,28 @@ void drawGear(float innerRadius, float outerRadius, float width, int teeth, floa
 
     glShadeModel(GL_FLAT);
     for (float side : {1.0f, -1.0f}) {
+        const bool clockwise = clockwiseFront && side > 0;
+        const bool reversed = (side < 0) != clockwise;
+        const float z = side * hw;
+        if (clockwise) glFrontFace(GL_CW);
         glNormal3f(0.0f, 0.0f, side);
         // Face between the hole and the tooth roots; the back face is wound the other way.
         glBegin(GL_QUAD_STRIP);
         for (int i = 0; i <= teeth; ++i) {
             float a = i * 2.0f * pi / teeth;
-            if (side > 0) {
-                glVertex3f(r0 * std::cos(a), r0 * std::sin(a), hw);
-                glVertex3f(r1 * std::cos(a), r1 * std::sin(a), hw);
+            if (!reversed) {
+                glVertex3f(r0 * std::cos(a), r0 * std::sin(a), z);
+                glVertex3f(r1 * std::cos(a), r1 * std::sin(a), z);
                 if (i < teeth) {
-                    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), hw);
-                    glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), hw);
+                    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), z);
+                    glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), z);
                 }
             } else {
-                glVertex3f(r1 * std::cos(a), r1 * std::sin(a), -hw);
-                glVertex3f(r0 * std::cos(a), r0 * std::sin(a), -hw);
+                glVertex3f(r1 * std::cos(a), r1 * std::sin(a), z);
+                glVertex3f(r0 * std::cos(a), r0 * std::sin(a), z);
                 if (i < teeth) {
-                    glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), -hw);
-                    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), -hw);
+                    glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), z);
+                    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), z);
                 }
             }
         }
@@ -66,17 +73,17 @@ void drawGear(float innerRadius, float outerRadius, float width, int teeth, floa
         glBegin(GL_QUADS);
         for (int i = 0; i < teeth; ++i) {
             float a = i * 2.0f * pi / teeth;
-            float z = side * hw;
             float p[4][2] = {{r1 * std::cos(a), r1 * std::sin(a)},
                              {r2 * std::cos(a + da), r2 * std::sin(a + da)},
                              {r2 * std::cos(a + 2 * da), r2 * std::sin(a + 2 * da)},
                              {r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da)}};
             for (int k = 0; k < 4; ++k) {
-                int j = side > 0 ? k : 3 - k;
+                int j = reversed ? 3 - k : k;
                 glVertex3f(p[j][0], p[j][1], z);
             }
         }
         glEnd();
+        if (clockwise) glFrontFace(GL_CCW);
     }
 
     // Outward faces of the teeth.
@@ -141,7 +148,11 @@ public:
                  "alpha is on: a ball's shadow in a pool game"},
                 {"glowing-plate", demo::ExtraOption::Kind::Flag,
                  "the plate (called with the state list by one glCallLists) is added to the "
-                 "scene (GL_ONE, GL_ONE), as effects drawn from lists of lists are"}};
+                 "scene (GL_ONE, GL_ONE), as effects drawn from lists of lists are"},
+                {"clockwise-fronts", demo::ExtraOption::Kind::Flag,
+                 "the gears' front faces are wound clockwise and drawn under "
+                 "glFrontFace(GL_CW) inside their lists, the rest counter-clockwise (the "
+                 "same picture), as xscreensaver's involute gears turn the front face"}};
     }
 
     bool init(const demo::Options& options, std::string& error) override
@@ -149,6 +160,7 @@ public:
         shine_ = options.has("shine");
         glowingPlate_ = options.has("glowing-plate");
         shadowList_ = options.has("shadow-list");
+        clockwiseFronts_ = options.has("clockwise-fronts");
         base_ = glGenLists(listCount);
         if (base_ == 0) {
             error = "glGenLists failed";
@@ -264,7 +276,7 @@ private:
         // Nested call: the axle list is shared by all gears.
         glCallList(base_ + axleList);
         setMaterial(r, g, b);
-        drawGear(inner, outer, width, teeth, 0.7f);
+        drawGear(inner, outer, width, teeth, 0.7f, clockwiseFronts_);
         glEndList();
     }
 
@@ -281,6 +293,7 @@ private:
     bool shine_ = false;
     bool glowingPlate_ = false;
     bool shadowList_ = false;
+    bool clockwiseFronts_ = false;
     GLuint shadow_ = 0;
 };
 
