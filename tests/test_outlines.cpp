@@ -716,6 +716,44 @@ TEST(Edges, AnObjectOfOnePixelGetsNoOutline)
     EXPECT_GT(inkAround(20), 12);
 }
 
+// What the program's depth test hides draws no line: a strip seen nearly edge-on just behind a
+// wall's face (a tooth's flank behind a gear's face, in xscreensaver's gears) stays hidden in
+// the edge style's attributes too. Its polygon offset was by slope as well as by units, which
+// pulled steep faces further towards the eye than flat ones, through the face in front of
+// them: glxgears' face got a cross of ink five pixels big where no edge is.
+TEST(Edges, AFaceSeenEdgeOnBehindAnotherDrawsNoLine)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const reconstruct::Batch wall =
+        boxBatch(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -kDistance)),
+                 glm::vec3(1.2f, 1.2f, 0.2f), kRed);
+    // Turned 75 degrees about y: about 5 pixels wide, 0.29 deep; its nearest edge 0.03 behind
+    // the wall's face (z = -5.8).
+    auto strip = [&](float behind) {
+        glm::mat4 mv = glm::translate(glm::mat4(1.0f),
+                                      glm::vec3(0.0f, 0.0f, -5.8f - behind - 0.145f));
+        mv = glm::rotate(mv, glm::radians(75.0f), glm::vec3(0, 1, 0));
+        return boxBatch(mv, glm::vec3(0.15f, 0.6f, 0.002f), kPale);
+    };
+    auto inkInside = [&](const PngImage& image) {
+        int n = 0;
+        for (int y = kSize / 2 - 30; y < kSize / 2 + 30; ++y) {
+            for (int x = kSize / 2 - 12; x <= kSize / 2 + 12; ++x) n += isInk(image, x, y);
+        }
+        return n;
+    };
+    // In front of the wall (it pokes through by 0.05) it is outlined: the test can see ink.
+    const PngImage poking = render(harness, harness.makeScene({wall, strip(-0.05f)},
+                                                              perspective()),
+                                   "toon+edges", "", "edges_edge_on_poking");
+    EXPECT_GT(inkInside(poking), 60) << "no ink where the strip shows: no test";
+    const PngImage hidden = render(harness, harness.makeScene({wall, strip(0.03f)},
+                                                              perspective()),
+                                   "toon+edges", "", "edges_edge_on_hidden");
+    EXPECT_EQ(inkInside(hidden), 0);
+}
+
 // Thin geometry (a wire, a beam, a rail far off: one or two pixels across) keeps its colour
 // between its outlines: they are drawn on its neighbours' pixels, not over it. Before, the
 // line's two-pixel band covered such a wire whole.

@@ -209,6 +209,47 @@ TEST(Toon, SphereShowsOnlyItsBandColours)
     EXPECT_LE(colours.size(), 3u);
 }
 
+// The lit band shows the material's own colour, as GL shows it lit head-on, also under two
+// lights: pymol's head-light (diffuse 0.45) and its second light from the upper right (0.48)
+// sum to nearly twice one light over most of a stick, and the sum, weighted against the
+// brightest light alone, put most of the surface in the highlight band: its carbon green
+// (0.2, 1, 0.2) came out pale (163, 255, 163). The light term is now 1 where the lights
+// together light the surface most, so the highlight is a cap, as with one light.
+TEST(Toon, TwoLightsOfOneStrengthKeepTheLitBandTheMaterialsColour)
+{
+    StyleHarness harness(128, 128);
+    ASSERT_TRUE(harness.ok());
+    const glm::vec4 green(0.2f, 1.0f, 0.2f, 1.0f);
+    auto bands = [&](bool second, const char* name) {
+        auto scene = sphereScene(harness, green);
+        styles::SceneLights& lights = scene.objects[0].lights;
+        lights.count = second ? 2 : 1;
+        lights.lights[0].position = glm::vec4(0.348f, 0.348f, 0.870f, 0.0f);
+        lights.lights[0].weight = 1.0f;
+        lights.lights[1].position = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+        lights.lights[1].weight = 0.45f / 0.48f; // against the brightest, as StateTracker::litBy
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+        image.write(std::string("/tmp/toon_two_lights_") + name + ".png", error);
+        // Over the sphere: pixels in the lit band (the material's colour) and in the highlight.
+        std::pair<int, int> n{0, 0};
+        for (int y = 0; y < 128; ++y) {
+            for (int x = 0; x < 128; ++x) {
+                const Rgb p = pixel(image, x, y);
+                n.first += p.r == 51 && p.g == 255 && p.b == 51;
+                n.second += p.r == 163 && p.g == 255 && p.b == 163;
+            }
+        }
+        return n;
+    };
+    const auto one = bands(false, "one");
+    const auto two = bands(true, "two");
+    ASSERT_GT(one.first, 1000) << "no lit band with one light: no test";
+    EXPECT_GT(two.first, 3 * two.second) << "the highlight covers the lit band";
+    EXPECT_LT(two.second, 2 * one.second) << "the second light widened the highlight";
+}
+
 // A projection that mirrors y (glOrtho(0, w, h, 0, ...) and its perspective kin: the top-down
 // view of 2D-minded programs, xscreensaver's voronoi) turns the faces' window winding around,
 // as a mirroring modelview does. The lit side stays lit: the picture is the unmirrored one

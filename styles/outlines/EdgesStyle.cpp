@@ -812,7 +812,9 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     gl.Scissor(rect.x, rect.y, rect.z - rect.x, rect.w - rect.y);
 
     // 1. The scene's attributes off screen. The polygon offset is stronger than the one a
-    // shading style draws with, so the stored depth never loses against the program's.
+    // shading style draws with, so the stored depth never loses against the program's. By
+    // units only: one by slope pulls a face seen edge-on further than the face in front of
+    // it, through it (a cross of ink on glxgears' face where a flank poked through).
     gl.BindFramebuffer(GL_FRAMEBUFFER, mTargets.geometryFbo());
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); // every channel of its own targets
     gl.Viewport(0, 0, width, height);
@@ -822,7 +824,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     gl.ClearBufferuiv(GL_COLOR, 0, background);
     gl.Clear(GL_DEPTH_BUFFER_BIT);
     gl.DepthFunc(GL_LESS);
-    gl.PolygonOffset(-2.0f, -4.0f);
+    gl.PolygonOffset(0.0f, -4.0f);
     mFootprints.clear();
     for (const SceneObject& o : scene.objects) {
         mFootprints.push_back(footprint(o, width, height));

@@ -227,7 +227,7 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     const bool flip = object.mirrored() ^ !normalsFollowCcw(*object.mesh);
     gl.Uniform1f(faceSign, flip ? -1.0f : 1.0f);
     gl.Uniform3fv(lightDir, 1, glm::value_ptr(object.lightDir));
-    setLights(gl, object.lights);
+    setLights(gl, object.lights, glm::vec3(object.modelview[3]));
     // The generated coordinates where the object shows its generated texture as its own
     // (withGenerated), else the program's.
     const GeneratedTexture& g = object.generated;
@@ -259,8 +259,43 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     }
 }
 
-void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
-                                              const SceneLights& lights) const
+float ShadingCommon::brightestLitSum(const SceneLights& lights, glm::vec3 at)
+{
+    // Each light as the shader takes it at `at`: towards it, weighted, attenuated, cut by its
+    // spot. The sum of w max(n.l, 0) is largest at the normal along the sum of the lights it
+    // faces: every set of lights' sum direction is tried (at most 255 for 8 lights).
+    const uint32_t n = std::min<uint32_t>(lights.count, 8);
+    glm::vec3 towards[8];
+    for (uint32_t i = 0; i < n; ++i) {
+        const SceneLights::Light& l = lights.lights[i];
+        glm::vec3 d = glm::vec3(l.position) - at * l.position.w;
+        const float dist = glm::length(d);
+        d /= std::max(dist, 1e-6f);
+        const float c = glm::dot(-d, l.spotDirection);
+        const float spot = c < l.spotCosCutoff ? 0.0f
+                                               : std::pow(std::max(c, 1e-4f), l.falloff.w);
+        const glm::vec4& f = l.falloff;
+        const float reach = spot / std::max(f.x + (f.y + f.z * dist) * dist, 1e-6f);
+        towards[i] = d * (std::max(l.weight, 0.0f) * std::min(reach, 1.0f));
+    }
+    float best = 0.0f;
+    for (uint32_t set = 1; set < (1u << n); ++set) {
+        glm::vec3 sum(0.0f);
+        for (uint32_t i = 0; i < n; ++i) {
+            if (set & (1u << i)) sum += towards[i];
+        }
+        const float length = glm::length(sum);
+        if (!(length > 1e-6f)) continue;
+        const glm::vec3 normal = sum / length;
+        float lit = 0.0f;
+        for (uint32_t i = 0; i < n; ++i) lit += std::max(glm::dot(normal, towards[i]), 0.0f);
+        best = std::max(best, lit);
+    }
+    return best;
+}
+
+void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl, const SceneLights& lights,
+                                              glm::vec3 at) const
 {
     if (lightPosition < 0) return; // a variant without the program's lights
     // The shader sums all 8 in its largest variant: the ones past the object's weigh nothing.
@@ -268,6 +303,11 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
     glm::vec4 position[8], spot[8], falloff[8];
     float weight[8];
     const uint32_t n = std::min<uint32_t>(lights.count, 8);
+    // Lit 1 where GL lights the object most: two lights of about one strength from nearby
+    // directions (pymol's head-light and its second light) sum to nearly 2 over most of a
+    // surface, all of it then in the highlight band, pale, where GL shows the material's
+    // own colour. One light, or lights that never shine on one face together, change nothing.
+    const float peak = std::max(brightestLitSum(lights, at), 1.0f);
     for (uint32_t i = 0; i < 8; ++i) {
         SceneLights::Light l;
         if (i < n) l = lights.lights[i];
@@ -275,7 +315,7 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl,
         position[i] = l.position;
         spot[i] = glm::vec4(l.spotDirection, l.spotCosCutoff);
         falloff[i] = l.falloff;
-        weight[i] = l.weight;
+        weight[i] = l.weight / peak;
     }
     gl.Uniform4fv(lightPosition, 8, glm::value_ptr(position[0]));
     gl.Uniform4fv(lightSpot, 8, glm::value_ptr(spot[0]));

@@ -73,6 +73,9 @@ public:
     static const char* fogFactorFunction();
     // GL_LINEAR, GL_EXP, GL_EXP2 as 1, 2, 3 for fogFactor(); 0 (no fog) for anything else.
     static float fogModeCode(GLenum mode);
+    // The largest sum the shader's light term (litDot) reaches over all normals at eye-space
+    // point `at`: each light's weight times its L.n, where positive, attenuated and spot-cut.
+    static float brightestLitSum(const SceneLights& lights, glm::vec3 at);
     // The per-object uniforms of vertexShader(), plus the fragment shaders' lightDir and fog.
     struct ObjectUniforms {
         GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
@@ -83,7 +86,8 @@ public:
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object) const;
-        void setLights(const GlFunctions& gl, const SceneLights& lights) const;
+        // `at`: the object's origin in eye space, where positional lights are judged from.
+        void setLights(const GlFunctions& gl, const SceneLights& lights, glm::vec3 at) const;
     };
     // Builds a variant's program (vertexShader() and `fragment`) and finds its ObjectUniforms;
     // false with the driver's log in error.
