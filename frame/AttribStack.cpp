@@ -51,6 +51,7 @@ void AttribStack::pop()
         a.materialSpecular = saved.materialSpecular;
         a.materialShininess = saved.materialShininess;
         a.colorMaterialMode = saved.colorMaterialMode;
+        a.colorMaterialFace = saved.colorMaterialFace;
         a.lightPosition = saved.lightPosition;
         a.lightDiffuse = saved.lightDiffuse;
         a.lightSpecular = saved.lightSpecular;

@@ -64,6 +64,10 @@ struct AttribState {
     glm::vec3 materialSpecular{0.0f}; // front: GL_SPECULAR and GL_SHININESS
     float materialShininess = 0.0f;
     GLenum colorMaterialMode = GL_AMBIENT_AND_DIFFUSE; // what glColor sets under GL_COLOR_MATERIAL
+    // The faces glColorMaterial names: a program that names GL_BACK alone leaves the front
+    // (what the picture mostly shows) its material, whatever glColor says.
+    GLenum colorMaterialFace = GL_FRONT_AND_BACK;
+    bool frontColorMaterial() const { return colorMaterial && colorMaterialFace != GL_BACK; }
     uint8_t lightsOn = 0; // bit i: GL_LIGHTi enabled
     // GL_POSITION in eye space (transformed by the modelview of the call), and GL_DIFFUSE:
     // GL's defaults, white for light 0 and black for the others.

@@ -66,25 +66,17 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
     const float rescale = a.rescaleNormal ? glm::length(glm::vec3(normals[0][2], normals[1][2],
                                                                   normals[2][2]))
                                           : 1.0f;
+    // Which faces glColor's colour applies to (GL_COLOR_MATERIAL's face): the front's
+    // vertices, or those lit from the back (two-sided), may each keep the material.
     const GLenum colourMode = a.colorMaterial ? a.colorMaterialMode : 0;
+    const bool colourFront = a.colorMaterialFace != GL_BACK;
+    const bool colourBack = a.colorMaterialFace != GL_FRONT;
     Material m = base;
     size_t next = 0;
     for (size_t i = 0; i < batch.vertices.size(); ++i) {
         TrackedVertex& v = batch.vertices[i];
         while (next < batch.materials.size() && batch.materials[next].first <= i) {
             m.diffuse = batch.materials[next++].diffuse;
-        }
-        Material here = m;
-        switch (colourMode) {
-        case GL_AMBIENT: here.ambient = glm::vec3(v.color); break;
-        case GL_DIFFUSE: here.diffuse = v.color; break;
-        case GL_AMBIENT_AND_DIFFUSE:
-            here.ambient = glm::vec3(v.color);
-            here.diffuse = v.color;
-            break;
-        case GL_SPECULAR: here.specular = glm::vec3(v.color); break;
-        case GL_EMISSION: here.emission = glm::vec3(v.color); break;
-        default: break;
         }
         const glm::vec3 eye = glm::vec3(modelview * glm::vec4(v.position, 1.0f));
         glm::vec3 n = normals * v.normal;
@@ -97,7 +89,20 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
         // Two-sided: the side facing the eye is the one lit (an approximation per vertex of
         // GL's per-face choice; exact for faces whose vertex normals agree with their face).
         const glm::vec3 towardsEye = glm::dot(eye, eye) > 0.0f ? -eye : glm::vec3(0, 0, 1);
-        if (a.twoSide && glm::dot(n, towardsEye) < 0.0f) n = -n;
+        const bool back = a.twoSide && glm::dot(n, towardsEye) < 0.0f;
+        if (back) n = -n;
+        Material here = m;
+        switch (back ? (colourBack ? colourMode : 0) : (colourFront ? colourMode : 0)) {
+        case GL_AMBIENT: here.ambient = glm::vec3(v.color); break;
+        case GL_DIFFUSE: here.diffuse = v.color; break;
+        case GL_AMBIENT_AND_DIFFUSE:
+            here.ambient = glm::vec3(v.color);
+            here.diffuse = v.color;
+            break;
+        case GL_SPECULAR: here.specular = glm::vec3(v.color); break;
+        case GL_EMISSION: here.emission = glm::vec3(v.color); break;
+        default: break;
+        }
         v.color = shade(a, here, eye, n);
     }
 }

@@ -1616,9 +1616,9 @@ uint32_t StateTracker::currentMaterialId()
     const AttribState& a = mAttrib;
     // Unlit or colour-material keys leave the diffuse zero; their first two entries tell
     // them apart from lit ones.
-    std::array<float, 7> key = {float(a.lighting), float(a.colorMaterial),
+    std::array<float, 7> key = {float(a.lighting), float(a.frontColorMaterial()),
                                 float(detailTexture()), 0.0f, 0.0f, 0.0f, 0.0f};
-    if (a.lighting && !a.colorMaterial) {
+    if (a.lighting && !a.frontColorMaterial()) {
         const glm::vec4& d = a.materialDiffuse;
         key[3] = d.r;
         key[4] = d.g;
@@ -1687,16 +1687,16 @@ bool StateTracker::keep(TrackedBatch& batch)
         // glColor sets the diffuse colour only under GL_COLOR_MATERIAL's diffuse modes; as
         // the emission it adds to the material's lit colour; as the ambient or specular it
         // leaves the material's diffuse colour what the eye mostly sees.
-        const GLenum mode = a.colorMaterial ? a.colorMaterialMode : GL_AMBIENT_AND_DIFFUSE;
-        if (a.colorMaterial && mode == GL_EMISSION) {
+        const GLenum mode = a.frontColorMaterial() ? a.colorMaterialMode : GL_AMBIENT_AND_DIFFUSE;
+        if (a.frontColorMaterial() && mode == GL_EMISSION) {
             const glm::vec4 c = glm::min(a.materialDiffuse * light, glm::vec4(1.0f));
             for (TrackedVertex& v : batch.vertices) {
                 v.color = glm::min(c + glm::vec4(glm::vec3(v.color), 0.0f), glm::vec4(1.0f));
             }
-        } else if (a.colorMaterial && mode != GL_DIFFUSE && mode != GL_AMBIENT_AND_DIFFUSE) {
+        } else if (a.frontColorMaterial() && mode != GL_DIFFUSE && mode != GL_AMBIENT_AND_DIFFUSE) {
             const glm::vec4 c = lit(a.materialDiffuse);
             for (TrackedVertex& v : batch.vertices) v.color = c;
-        } else if (!a.colorMaterial && !batch.materials.empty()) {
+        } else if (!a.frontColorMaterial() && !batch.materials.empty()) {
             // Materials set between glBegin and glEnd: each colours its run of vertices.
             glm::vec4 c = lit(batch.beginMaterial);
             size_t next = 0;
@@ -1706,7 +1706,7 @@ bool StateTracker::keep(TrackedBatch& batch)
                 }
                 batch.vertices[i].color = c;
             }
-        } else if (!a.colorMaterial) {
+        } else if (!a.frontColorMaterial()) {
             const glm::vec4 c = lit(a.materialDiffuse);
             for (TrackedVertex& v : batch.vertices) v.color = c;
         } else if (light != glm::vec4(1.0f) || emission != glm::vec4(0.0f)) {

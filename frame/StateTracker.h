@@ -332,11 +332,12 @@ public:
     void polygonMode(GLenum face, GLenum mode);
     void colorMaterial(GLenum face, GLenum mode)
     {
-        // The front's (the side the styles colour); another value is refused by the driver.
-        if (face != GL_FRONT && face != GL_FRONT_AND_BACK) return;
+        // Another value is refused by the driver.
+        if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return;
         if (mode == GL_EMISSION || mode == GL_AMBIENT || mode == GL_DIFFUSE ||
             mode == GL_SPECULAR || mode == GL_AMBIENT_AND_DIFFUSE) {
             mAttrib.colorMaterialMode = mode;
+            mAttrib.colorMaterialFace = face;
         }
     }
     void colorMask(bool r, bool g, bool b, bool a)

@@ -1145,6 +1145,54 @@ TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
     }
 }
 
+// glColorMaterial(GL_BACK, ...) leaves the front its material: extrusion names the front,
+// then the back, and its yellow material came out in its cyan glColor in every style.
+TEST(StateTracker, ColourMaterialOnTheBackLeavesTheFrontItsMaterial)
+{
+    for (const bool program : {false, true}) {
+        StateTracker tracker;
+        tracker.setHolding(true);
+        tracker.setProgramLighting(program);
+        Feed feed{tracker};
+        feed.enable(GL_DEPTH_TEST, true);
+        feed.enable(GL_LIGHTING, true);
+        feed.enable(GL_LIGHT0, true);
+        feed.enable(GL_COLOR_MATERIAL, true);
+        feed.run([](CallWriter& w) {
+            w.op(op::glMaterialfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(GL_FRONT_AND_BACK);
+            w.put<GLenum>(GL_AMBIENT_AND_DIFFUSE);
+            const float v[4] = {0.6f, 0.6f, 0.2f, 1.0f};
+            w.putBytes(v, sizeof v);
+            w.endPayload(mark);
+            for (const GLenum face : {GLenum(GL_FRONT), GLenum(GL_BACK)}) {
+                w.op(op::glColorMaterial);
+                w.put<GLenum>(face);
+                w.put<GLenum>(GL_DIFFUSE);
+            }
+            w.op(op::glColor3f);
+            for (float c : {0.1f, 0.6f, 0.6f}) w.put<float>(c);
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_TRIANGLES);
+            for (int k = 0; k < 3; ++k) {
+                w.op(op::glNormal3f);
+                for (float c : {0.0f, 0.0f, 1.0f}) w.put<float>(c);
+                w.op(op::glVertex3f);
+                for (float c : {k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f, -2.0f}) w.put<float>(c);
+            }
+            w.op(op::glEnd);
+        });
+        std::vector<TrackedBatch> batches;
+        tracker.takeBatches(batches);
+        ASSERT_EQ(batches.size(), 1u);
+        const glm::vec4 c = batches[0].vertices[0].color;
+        EXPECT_GT(c.r, c.b + 0.2f) << (program ? "replica: " : "styles: ")
+                                   << "the front took the glColor (" << c.r << ", " << c.g
+                                   << ", " << c.b << ")";
+    }
+}
+
 // A lit batch whose every vertex shows the program's specular light shows it all over (a flat
 // face near the mirror angle: sproingies' pale lavender stairs, a dark navy material made pale
 // by its shine, were dark navy in every style): the least of it over the batch is added to
