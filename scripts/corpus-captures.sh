@@ -191,8 +191,9 @@ record() {
     [ -s "$work/status" ] && read -r outcome rc _ <"$work/status"
     local count=0
     if [ -f "$out/$name.nprgl" ]; then
-        count=$("$nprgl" info "$out/$name.nprgl" 2>/dev/null | sed -n 's/^frames: *\([0-9]*\).*/\1/p' |
-            head -n1)
+        # "frames: N  (context 1: A, context 2: B)": the longest context's frames.
+        count=$("$nprgl" info "$out/$name.nprgl" 2>/dev/null | sed -n 's/^frames: *//p' |
+            grep -o '[0-9][0-9]*' | sort -n | tail -n1)
         count=${count:-0}
     fi
     local status=ok reason="-"

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # The corpus benchmark in one command from a fresh clone: installs, builds, records every Debian GL hack and the games, compares each in replica and the default style, runs each live under every preset, writes docs/compat.md.
 #
-# Usage: scripts/corpus.sh [OUTDIR] [--quick] [--no-live] [--no-install] [--no-doc]
+# Usage: scripts/corpus.sh [OUTDIR] [--quick] [--no-record] [--no-compare] [--no-live]
+#                          [--no-install] [--no-build] [--no-doc]
 #   OUTDIR      where captures and results go (default: build/corpus in this clone)
-#   --quick     the small regression set of scripts/corpus-captures.sh (31 hacks, 4 frames)
-#   --no-live   skip the live runs under every preset
+#   --quick     the small regression set of scripts/corpus-captures.sh (32 hacks, 4 frames)
+#   --no-record, --no-compare, --no-live  skip a step, keeping what an earlier run left in
+#               OUTDIR (captures and manifest, results/, live.tsv) for the report
 #   --no-install, --no-build  skip scripts/install-deps.sh, scripts/build.sh (a clone set up)
 #   --no-doc    write the report to OUTDIR/compat.md only, not docs/compat.md
+# CORPUS_LIVE_GAME_FRAMES=N runs the games live for N frames (default: to their scene's frame).
 #
 # Steps:
 #   1. scripts/install-deps.sh, scripts/build.sh (NPRGL_BUILD, default build/ in the clone);
@@ -25,16 +28,19 @@ set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=""
-quick=0 live=1 install=1 build_it=1 doc=1
+quick=0 record=1 compare=1 live=1 install=1 build_it=1 doc=1
 for arg in "$@"; do
     case $arg in
         --quick) quick=1 ;;
+        --no-record) record=0 ;;
+        --no-compare) compare=0 ;;
         --no-live) live=0 ;;
         --no-install) install=0 ;;
         --no-build) build_it=0 ;;
         --no-doc) doc=0 ;;
         -*)
-            echo "usage: $0 [OUTDIR] [--quick] [--no-live] [--no-install] [--no-build] [--no-doc]" >&2
+            echo "usage: $0 [OUTDIR] [--quick] [--no-record] [--no-compare] [--no-live]" \
+                "[--no-install] [--no-build] [--no-doc]" >&2
             exit 1
             ;;
         *) out=$arg ;;
@@ -61,18 +67,23 @@ fi
 captures_args=("$out")
 [ "$quick" = 0 ] || captures_args+=(--quick)
 [ "$install" = 1 ] || export CORPUS_NO_INSTALL=1
-NPRGL_BUILD=$build "$root/scripts/corpus-captures.sh" "${captures_args[@]}"
+if [ "$record" = 1 ]; then
+    NPRGL_BUILD=$build "$root/scripts/corpus-captures.sh" "${captures_args[@]}"
+elif [ ! -s "$out/manifest.tsv" ]; then
+    log "--no-record: $out holds no captures (no manifest.tsv)"
+    exit 1
+fi
 
 # --- compare ---------------------------------------------------------------------------------
 results=$out/results
 mkdir -p "$results"
 compare_limit=${CORPUS_COMPARE_LIMIT:-1800}
-: >"$results/runs.tsv"
-if ! "$nprgl" compare --help >/dev/null 2>&1; then
+if [ "$compare" = 1 ] && ! "$nprgl" compare --help >/dev/null 2>&1; then
     log "this nprgl has no 'compare' command: fidelity columns will be empty"
 fi
+[ "$compare" = 0 ] || : >"$results/runs.tsv"
 # The loops read their lists on fd 3: the programs and nprgl get the script's stdin.
-while IFS=$'\t' read -r -u 3 name kind status first last _; do
+while [ "$compare" = 1 ] && IFS=$'\t' read -r -u 3 name kind status first last _; do
     [ "$status" = ok ] || continue
     capture=$out/$name.nprgl
     for style in replica default; do
@@ -115,7 +126,7 @@ if [ "$live" = 1 ]; then
         rm -rf "$work"
         mkdir -p "$work"
         if [ "$kind" = game ]; then
-            frame=$last limit=$game_limit native=$native_game
+            frame=${CORPUS_LIVE_GAME_FRAMES:-$last} limit=$game_limit native=$native_game
         else
             frame=$live_frames limit=$hack_limit native=$native_hack
         fi
