@@ -23,7 +23,9 @@
 #     script mapscroller runs to fetch its map tiles (skipped);
 #   - xscreensaver-gl-visual prints the GL visual xscreensaver should use and draws nothing
 #     (skipped);
-#   - every other hack runs with `-window -geometry WxH` and no argument of its own.
+#   - every other hack runs with `-window -geometry WxH` and no argument of its own, with
+#     /usr/libexec/xscreensaver first in PATH as xscreensaver runs them (mapscroller starts
+#     mapscroller.pl by name; offline, it fetches no map tiles and ends).
 #
 # Writes only inside OUTDIR: OUTDIR/NAME.nprgl (a program that forks a drawing child also
 # leaves OUTDIR/NAME.PID.nprgl), OUTDIR/logs/, OUTDIR/work/ (screenshots, homes) and
@@ -120,6 +122,9 @@ if [ "${#hacks[@]}" -eq 0 ]; then
     exit 1
 fi
 
+# As xscreensaver runs them: their own folder first in PATH (mapscroller starts its helper
+# mapscroller.pl by name).
+hackdir=/usr/libexec/xscreensaver
 index=0
 for path in "${hacks[@]}"; do
     name=$(basename "$path")
@@ -133,7 +138,7 @@ for path in "${hacks[@]}"; do
     fi
     index=$((index + 1))
     if [ "$quick" = 1 ] && [ $(((index - 1) % 4)) != 0 ]; then continue; fi
-    add_program "$name" hack "$frames" 1280x1024 "$name" "" "" -- \
+    add_program "$name" hack "$frames" 1280x1024 "$name" "" "PATH=$hackdir:$PATH" -- \
         "$path" -window -geometry "$geometry"
 done
 

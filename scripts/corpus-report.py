@@ -191,6 +191,7 @@ def main():
             row["replica"] = summary_of(read_json(os.path.join(res, f"{name}.replica.json")))
             row["default"] = summary_of(read_json(os.path.join(res, f"{name}.default.json")))
             row["stats"] = read_stats(os.path.join(res, f"{name}.stats.txt"), f, l)
+            row["features"] = last_line(os.path.join(res, f"{name}.features.txt")) or "-"
             for style in ("replica", "default"):
                 rc = runs.get((name, f"compare-{style}"))
                 if row[style] is None and rc is not None:
@@ -279,8 +280,8 @@ def main():
     w("")
     w("| program | frames | replica fidelity (median / min @frame) | default fidelity | "
       "missing (replica / default) | palette (objects / failures) | styled / left | live | "
-      "reasons |")
-    w("|---|---|---|---|---|---|---|---|---|")
+      "reasons | GL features in the stream |")
+    w("|---|---|---|---|---|---|---|---|---|---|")
 
     def sort_key(r):
         rp = r.get("replica")
@@ -298,7 +299,7 @@ def main():
             reasons.append(f"not recorded: {r['reason']}")
             lv = live.get(r["name"])
             live_cell = f"{lv[0]}/{lv[1]}" if lv else "-"
-            w(f"| {name} | - | - | - | - | - | - | {live_cell} | {'; '.join(reasons)} |")
+            w(f"| {name} | - | - | - | - | - | - | {live_cell} | {'; '.join(reasons)} | - |")
             continue
         if r["reason"] not in ("-", ""):
             reasons.append(r["reason"])
@@ -329,7 +330,8 @@ def main():
         else:
             live_cell = "-"
         w(f"| {name} | {r['first']}-{r['last']} | {rep_cell} | {df_cell} | {miss_cell} | "
-          f"{pal_cell} | {st_cell} | {live_cell} | {'; '.join(reasons) or '-'} |")
+          f"{pal_cell} | {st_cell} | {live_cell} | {'; '.join(reasons) or '-'} | "
+          f"{r.get('features', '-')} |")
     w("")
     w("Launch: every hack with `-window -geometry WxH` and no other argument; the games as "
       "`scripts/corpus-captures.sh` says (neverball `-l map-easy/coins.sol`, openarena into "

@@ -16,7 +16,8 @@
 #   2. scripts/corpus-captures.sh OUTDIR: the captures (OUTDIR/manifest.tsv says which);
 #   3. per capture, over its recorded frames: `nprgl compare --style replica` and
 #      `nprgl compare` (the default style), each with --json and -o (diff pictures), and
-#      `nprgl replay --stats` (the default style's styled/left counts), into OUTDIR/results/;
+#      `nprgl replay --stats` (the default style's styled/left counts), and the GL features
+#      its stream uses (scripts/corpus-features.py), into OUTDIR/results/;
 #   4. live: each program run natively (stopped after a few seconds: its status when
 #      stopped, or when it ends by itself), then under `nprgl --preset P` for every preset
 #      `nprgl styles` lists, until nprgl's screenshot of its frame (a hack's 5th, a game's
@@ -98,6 +99,8 @@ while [ "$compare" = 1 ] && IFS=$'\t' read -r -u 3 name kind status first last _
         printf '%s\tcompare-%s\t%s\n' "$name" "$style" "$rc" >>"$results/runs.tsv"
         log "$name: compare $style: $(tail -n1 "$results/$name.$style.txt") (status $rc)"
     done
+    python3 "$root/scripts/corpus-features.py" "$nprgl" "$capture" --frames "$first-$last" \
+        >"$results/$name.features.txt" 2>/dev/null || true
     rc=0
     timeout -k 10 "$compare_limit" "$nprgl" replay "$capture" --stats >"$results/$name.stats.txt" \
         2>"$results/$name.stats.log" || rc=$?
