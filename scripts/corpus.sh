@@ -65,6 +65,11 @@ if [ "$build_it" = 1 ]; then
     "$root/scripts/build.sh" "$build"
 fi
 
+if [ ! -x "$nprgl" ]; then
+    log "no $nprgl (build first, or set NPRGL_BUILD to a build directory)"
+    exit 1
+fi
+
 captures_args=("$out")
 [ "$quick" = 0 ] || captures_args+=(--quick)
 [ "$install" = 1 ] || export CORPUS_NO_INSTALL=1
@@ -113,6 +118,10 @@ if [ "$live" = 1 ]; then
     : >"$live_tsv"
     mapfile -t presets < <("$nprgl" styles | awk '/^Presets/ { p = 1; next }
         p && /^    [a-z]/ { print $1 }')
+    if [ "${#presets[@]}" -eq 0 ]; then
+        log "'nprgl styles' lists no presets"
+        exit 1
+    fi
     log "live runs under ${#presets[@]} presets: ${presets[*]}"
     live_frames=${CORPUS_LIVE_FRAMES:-5}
     native_hack=${CORPUS_NATIVE_SECONDS:-5}
