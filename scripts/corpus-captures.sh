@@ -11,7 +11,7 @@
 #   - a game: the 12 frames ending at the frame where it shows its 3D scene (its launch line
 #     below: arguments, keys sent with xdotool, frame, display size);
 #   - --quick, the small regression set: every 4th hack in alphabetical order (the 1st, 5th,
-#     9th...; 31 of them), frames 1-4 in a 320x240 window, no games.
+#     9th...; 32 of the 125), frames 1-4 in a 320x240 window, no games.
 # A program is stopped (SIGTERM) once nprgl has written the screenshot of the frame after the
 # last one recorded; one that does not get there within its time limit (CORPUS_LIMIT, 120 s
 # for a hack, 600 s for a game) is killed and reported as hung. The hacks and games animate by

@@ -338,7 +338,7 @@ def main():
       "`oa_dm1` with its opengl1 renderer, extremetuxracer and crack-attack driven by keys with "
       "xdotool, foobillardplus's intro, billard-gl's attract mode, gl-117's intro and menu). "
       "Re-run: `scripts/corpus.sh` (everything, from a fresh clone), `scripts/corpus.sh "
-      "--quick` (the 31-hack regression set). Per-frame diff pictures are in "
+      "--quick` (the 32-hack regression set). Per-frame diff pictures are in "
       "`build/corpus/results/PROGRAM/{replica,default}/`.")
     text = "\n".join(lines) + "\n"
 
