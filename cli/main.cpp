@@ -4,6 +4,7 @@
 //   nprgl styles
 
 #include "cli/CaptureCommands.h"
+#include "cli/CompareCommand.h"
 #include "cli/RunCommand.h"
 #include "cli/StylesCommand.h"
 
@@ -23,6 +24,8 @@ Commands:
                   [--] PROGRAM ARGS... (default FILE: <program>.nprgl)
   replay          render a capture headless into PNGs: nprgl replay FILE -o DIR [--style S]
                   [--set k=v]... [--frames A-B] [--size WxH] [--context N] [--stats]
+  compare         replay a capture natively and in a style and measure how alike they are:
+                  nprgl compare FILE [--style S|--preset P] [--frames A-B] [--json OUT] [-o DIR]
   dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
   info            print a capture's metadata, frames, calls and what was not captured
   export          write a frame's reconstructed meshes: nprgl export FILE --frame N -o out.obj
@@ -92,6 +95,29 @@ int replayMain(int argc, char** argv)
     return nprgl::cli::replayCommand(o);
 }
 
+int compareMain(int argc, char** argv)
+{
+    nprgl::cli::CompareOptions o;
+    CLI::App app{"Replay a capture natively (style none) and in a style, and measure per frame "
+                 "the share of drawn pixels within CIELAB dE 10 of native (fidelity), the "
+                 "pixels drawn natively that no styled object covers and that changed "
+                 "(missing), and per object its colour against native (palette)",
+                 "nprgl compare"};
+    app.add_option("file", o.file, "the capture")->required();
+    app.add_option("-s,--style", o.style, "style chain (default: the default style)");
+    app.add_option("--preset", o.preset, "a shipped preset or a preset file");
+    app.add_option("--set", o.settings, "style parameter, style.param=value (repeatable)")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_option("--frames", o.frames, "frames to compare, e.g. 1-10 (default: all)");
+    app.add_option("--json", o.json, "write the figures per frame and per object to this file");
+    app.add_option("-o,--output", o.outDir,
+                   "directory for a diff picture per frame: native | style | difference");
+    app.add_option("--context", o.context, "which context's stream (default: the longest)");
+    CLI11_PARSE(app, argc, argv);
+    return nprgl::cli::compareCommand(o);
+}
+
 int dumpMain(int argc, char** argv)
 {
     std::string file, frames, grep;
@@ -138,6 +164,7 @@ int main(int argc, char** argv)
     }
     if (std::strcmp(command, "replay") == 0) return replayMain(argc - 1, argv + 1);
     if (std::strcmp(command, "dump") == 0) return dumpMain(argc - 1, argv + 1);
+    if (std::strcmp(command, "compare") == 0) return compareMain(argc - 1, argv + 1);
     if (std::strcmp(command, "info") == 0) return infoMain(argc - 1, argv + 1);
     if (std::strcmp(command, "export") == 0) return exportMain(argc - 1, argv + 1);
     // "run" is the default command and may be left out; "record" is run plus a capture.

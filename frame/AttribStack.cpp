@@ -31,6 +31,12 @@ void AttribStack::pop()
         a.vertexProgram = saved.vertexProgram;
         a.fragmentProgram = saved.fragmentProgram;
         a.scissorTest = saved.scissorTest;
+        a.normalize = saved.normalize;
+        a.rescaleNormal = saved.rescaleNormal;
+    }
+    if (mask & GL_TRANSFORM_BIT) {
+        a.normalize = saved.normalize;
+        a.rescaleNormal = saved.rescaleNormal;
     }
     if (mask & GL_LIGHTING_BIT) {
         a.lighting = saved.lighting;
@@ -38,6 +44,10 @@ void AttribStack::pop()
         a.lightsOn = saved.lightsOn;
         a.materialDiffuse = saved.materialDiffuse;
         a.materialEmission = saved.materialEmission;
+        a.materialAmbient = saved.materialAmbient;
+        a.localViewer = saved.localViewer;
+        a.twoSide = saved.twoSide;
+        a.flatShade = saved.flatShade;
         a.materialSpecular = saved.materialSpecular;
         a.materialShininess = saved.materialShininess;
         a.colorMaterialMode = saved.colorMaterialMode;

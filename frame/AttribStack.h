@@ -59,6 +59,7 @@ struct AttribState {
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
     glm::vec3 fogColour{0.0f};
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
+    glm::vec3 materialAmbient{0.2f}; // front: what the ambient light reflects
     glm::vec3 materialEmission{0.0f}; // front: the light the surface gives itself
     glm::vec3 materialSpecular{0.0f}; // front: GL_SPECULAR and GL_SHININESS
     float materialShininess = 0.0f;
@@ -72,6 +73,11 @@ struct AttribState {
     // GL_AMBIENT of each light (black by default) and GL_LIGHT_MODEL_AMBIENT.
     std::array<glm::vec3, 8> lightAmbient{};
     glm::vec3 modelAmbient{0.2f};
+    // GL_LIGHT_MODEL_LOCAL_VIEWER and GL_LIGHT_MODEL_TWO_SIDE; glShadeModel(GL_FLAT).
+    bool localViewer = false, twoSide = false, flatShade = false;
+    // GL_NORMALIZE and GL_RESCALE_NORMAL: without them GL lights with the normal as the
+    // modelview scaled it.
+    bool normalize = false, rescaleNormal = false;
     // GL_SPOT_DIRECTION (eye space, as GL_POSITION), GL_SPOT_CUTOFF (180: no spot),
     // GL_SPOT_EXPONENT, and the constant, linear and quadratic attenuation of each light.
     std::array<glm::vec3, 8> spotDirection = filled(glm::vec3(0.0f, 0.0f, -1.0f));

@@ -396,9 +396,12 @@ bool Compositor::startChain(bool restart, std::string& error)
     if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
     mShading = ok && mHasStyles && mChain.hasShading();
     mTintLeft = false;
+    bool programLighting = false;
     for (const StyleInfo* info : mSettings.chain()) {
         mTintLeft = mTintLeft || info->name == "coverage";
+        programLighting = programLighting || info->programLighting;
     }
+    mTracker.setProgramLighting(mShading && programLighting);
     return ok;
 }
 

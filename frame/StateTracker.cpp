@@ -1,5 +1,7 @@
 #include "frame/StateTracker.h"
 
+#include "frame/FixedLighting.h"
+
 #include "common/Log.h"
 
 #include "stream/CallDecoder.h"
@@ -333,9 +335,19 @@ void APIENTRY tLightModeliv(GLenum pname, const GLint* v)
     float f[4] = {0, 0, 0, 0};
     if (pname == GL_LIGHT_MODEL_AMBIENT) {
         for (size_t i = 0; i < 4; ++i) f[i] = float(v[i]) / 2147483647.0f;
+    } else if (v) {
+        f[0] = float(v[0]);
     }
     T().lightModel(pname, f);
 }
+// Scalar forms (GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE): as a vector's first.
+void APIENTRY tLightModelf(GLenum pname, GLfloat v)
+{
+    const float f[4] = {v, 0, 0, 0};
+    if (pname != GL_LIGHT_MODEL_AMBIENT) T().lightModel(pname, f);
+}
+void APIENTRY tLightModeli(GLenum pname, GLint v) { tLightModelf(pname, float(v)); }
+void APIENTRY tShadeModel(GLenum mode) { T().shadeModel(mode); }
 void APIENTRY tPolygonMode(GLenum face, GLenum mode) { T().polygonMode(face, mode); }
 void APIENTRY tColorMaterial(GLenum face, GLenum mode) { T().colorMaterial(face, mode); }
 void APIENTRY tColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
@@ -530,6 +542,9 @@ StateTracker::StateTracker()
     d.glLightiv = tLightiv;
     d.glLightModelfv = tLightModelfv;
     d.glLightModeliv = tLightModeliv;
+    d.glLightModelf = tLightModelf;
+    d.glLightModeli = tLightModeli;
+    d.glShadeModel = tShadeModel;
     d.glPolygonMode = tPolygonMode;
     d.glColorMask = tColorMask;
     d.glColorMaterial = tColorMaterial;
@@ -1181,7 +1196,10 @@ void StateTracker::litBy(styles::SceneLights& out) const
 
 void StateTracker::lightModel(GLenum pname, const float* v)
 {
-    if (pname == GL_LIGHT_MODEL_AMBIENT && v) mAttrib.modelAmbient = glm::vec3(v[0], v[1], v[2]);
+    if (!v) return;
+    if (pname == GL_LIGHT_MODEL_AMBIENT) mAttrib.modelAmbient = glm::vec3(v[0], v[1], v[2]);
+    if (pname == GL_LIGHT_MODEL_LOCAL_VIEWER) mAttrib.localViewer = v[0] != 0.0f;
+    if (pname == GL_LIGHT_MODEL_TWO_SIDE) mAttrib.twoSide = v[0] != 0.0f;
 }
 
 size_t StateTracker::keyLight() const
@@ -1648,10 +1666,14 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.projection = mMatrices.projection();
     batch.materialId = currentMaterialId();
     const AttribState& a = mAttrib;
+    if (mProgramLighting) {
+        if (a.lighting) FixedLighting::lightBatch(a, batch);
+        if (a.flatShade) FixedLighting::flattenBatch(batch);
+    }
     // What the program's picture shows: lit surfaces take the material's colour in the light
     // on their lit side, plus the light the material emits, clamped per channel as GL clamps
     // (a track whose materials are mostly emission, as torcs's are, was far too dark).
-    if (a.lighting) {
+    else if (a.lighting) {
         // One pass over the vertices: the material's colour (or the vertex's), lit.
         const glm::vec4 light(litSideLight(), 1.0f);
         const glm::vec4 emission(glm::max(a.materialEmission, glm::vec3(0.0f)), 0.0f);
@@ -1777,6 +1799,8 @@ void StateTracker::setEnabled(GLenum cap, bool on)
     switch (cap) {
     case GL_LIGHTING: a.lighting = on; break;
     case GL_COLOR_MATERIAL: a.colorMaterial = on; break;
+    case GL_NORMALIZE: a.normalize = on; break;
+    case GL_RESCALE_NORMAL: a.rescaleNormal = on; break;
     case GL_DEPTH_TEST: a.depthTest = on; break;
     case GL_SCISSOR_TEST: a.scissorTest = on; break;
     case GL_TEXTURE_2D:
@@ -1849,6 +1873,9 @@ void StateTracker::material(GLenum face, GLenum pname, const float* v)
     if (face == GL_BACK || !v) return;
     if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
         mAttrib.materialDiffuse = {v[0], v[1], v[2], v[3]};
+    }
+    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) {
+        mAttrib.materialAmbient = {v[0], v[1], v[2]};
     }
     if (pname == GL_EMISSION) mAttrib.materialEmission = {v[0], v[1], v[2]};
     if (pname == GL_SPECULAR) mAttrib.materialSpecular = {v[0], v[1], v[2]};

@@ -110,6 +110,10 @@ public:
     bool feed(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error);
     // Holding: batches the compositor holds back are marked `held`, and only those are kept.
     void setHolding(bool on) { mHolding = on; }
+    // Lit batches take the colours GL's lighting gives each vertex (FixedLighting), and flat
+    // shading its provoking colours, instead of the material's colour the shading styles
+    // shade from: for the `replica` style.
+    void setProgramLighting(bool on) { mProgramLighting = on; }
     // The program draws into a framebuffer it reads back (colour-coded picking, results
     // computed by drawing): its pixels are data, so nothing is held (the reason below).
     void setDrawingData(bool on) { mDrawingData = on; }
@@ -294,6 +298,7 @@ public:
     bool compiling() const { return mCompiling; }
     void light(GLenum light, GLenum pname, const float* v);
     void lightModel(GLenum pname, const float* v);
+    void shadeModel(GLenum mode) { mAttrib.flatShade = mode == GL_FLAT; }
     void blendFunc(GLenum src, GLenum dst);
     void depthMask(bool on);
     void depthFunc(GLenum func);
@@ -499,6 +504,7 @@ private:
     // from the state when the list is called).
     bool mListSetsColor = false, mListSetsNormal = false, mListSetsTexCoord = false;
     bool mHolding = false;
+    bool mProgramLighting = false;
     bool mDrawingData = false; // setDrawingData
     int mHoldingList = 0; // > 0 while a held glCallList expands
     int mPassingList = 0; // > 0 while a list the driver draws itself expands

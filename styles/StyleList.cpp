@@ -18,6 +18,8 @@ StyleInfo pencilStyleInfo();
 StyleInfo motionStyleInfo();
 StyleInfo coverageStyleInfo();
 StyleInfo xtoonStyleInfo();
+StyleInfo replicaStyleInfo();
+StyleInfo idsStyleInfo();
 
 const char* const kDefaultChain = "toon+paper+edges";
 
@@ -38,6 +40,8 @@ void registerStyles(std::vector<StyleInfo>& out)
     out.push_back(pencilStyleInfo());
     out.push_back(motionStyleInfo());
     out.push_back(coverageStyleInfo());
+    out.push_back(replicaStyleInfo());
+    out.push_back(idsStyleInfo());
 }
 
 } // namespace nprgl::styles

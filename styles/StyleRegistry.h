@@ -54,6 +54,9 @@ struct StyleInfo {
     styles::StyleRole role{};
     // A background style the style draws on: added to a chain that names no background.
     std::string background;
+    // The style draws the colours GL's own lighting and flat shading give each vertex (the
+    // tracker computes them: StateTracker::setProgramLighting), not the material's colour.
+    bool programLighting = false;
     std::unique_ptr<styles::Style> (*create)() = nullptr; // null for "none"
 
     const ParamInfo* findParam(std::string_view param) const;

@@ -1,3 +1,4 @@
+#include "common/FrameFidelity.h"
 #include "common/FrameSet.h"
 #include "common/KeyValue.h"
 #include "common/PngImage.h"
@@ -78,4 +79,137 @@ TEST(ScreenshotSpec, ParsesFramesAndDirAndRefusesTheRest)
     EXPECT_FALSE(ScreenshotSpec::parse("frames=1;size=3", spec, error));
     EXPECT_NE(error.find("'size'"), std::string::npos) << error;
     EXPECT_FALSE(ScreenshotSpec::parse("frames=0", spec, error));
+}
+
+namespace {
+
+PngImage filled(int w, int h, uint8_t r, uint8_t g, uint8_t b)
+{
+    PngImage image;
+    image.width = w;
+    image.height = h;
+    image.rgba.resize(size_t(w) * h * 4);
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        image.rgba[i] = r, image.rgba[i + 1] = g, image.rgba[i + 2] = b, image.rgba[i + 3] = 255;
+    }
+    return image;
+}
+
+// Paints the rectangle [x0, x1) x [y0, y1).
+void paint(PngImage& image, int x0, int y0, int x1, int y1, const uint8_t rgb[3])
+{
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            std::copy(rgb, rgb + 3, &image.rgba[(size_t(y) * image.width + x) * 4]);
+        }
+    }
+}
+
+// A 40x40 frame cleared dark grey with a green square (the program's) at 10..30.
+struct Frames {
+    const uint8_t green[3] = {39, 183, 39};
+    PngImage native = filled(40, 40, 30, 30, 30);
+    PngImage ids = filled(40, 40, 30, 30, 30);
+    Frames()
+    {
+        paint(native, 10, 10, 30, 30, green);
+        uint8_t id[3];
+        FrameFidelity::idColour(1, id);
+        paint(ids, 10, 10, 30, 30, id);
+    }
+};
+
+} // namespace
+
+TEST(FrameFidelity, LabOfKnownColours)
+{
+    const uint8_t white[3] = {255, 255, 255}, red[3] = {255, 0, 0};
+    const Lab w = Lab::fromSrgb(white), r = Lab::fromSrgb(red);
+    EXPECT_NEAR(w.l, 100.0f, 0.1f);
+    EXPECT_NEAR(w.a, 0.0f, 0.1f);
+    EXPECT_NEAR(r.l, 53.24f, 0.1f);
+    EXPECT_NEAR(r.a, 80.09f, 0.2f);
+    EXPECT_NEAR(r.b, 67.20f, 0.2f);
+}
+
+TEST(FrameFidelity, AnIdenticalFrameIsFaithful)
+{
+    Frames f;
+    FrameFidelity m;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(f.native, f.native, f.ids, false, m, error)) << error;
+    EXPECT_EQ(m.drawn, 400u);
+    EXPECT_DOUBLE_EQ(m.fidelity(), 1.0);
+    EXPECT_EQ(m.missing, 0u);
+    ASSERT_EQ(m.objects.size(), 1u);
+    EXPECT_EQ(m.objects[0].pixels, 400u);
+    EXPECT_EQ(m.objects[0].box, (std::array<int, 4>{10, 10, 29, 29}));
+    EXPECT_TRUE(m.objects[0].paletteOk());
+}
+
+TEST(FrameFidelity, AnObjectLostIsMissing)
+{
+    Frames f;
+    // The style drew nothing there, and no object of its covers it.
+    const PngImage styled = filled(40, 40, 30, 30, 30);
+    const PngImage ids = filled(40, 40, 30, 30, 30);
+    FrameFidelity m;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(f.native, styled, ids, false, m, error)) << error;
+    EXPECT_EQ(m.missing, 400u);
+    EXPECT_DOUBLE_EQ(m.missingShare(), 1.0);
+    EXPECT_DOUBLE_EQ(m.fidelity(), 0.0);
+}
+
+TEST(FrameFidelity, AHueChangeFailsThePaletteAndTheFidelity)
+{
+    Frames f;
+    // pymol's defect: carbon green (39,183,39) drawn cyan.
+    PngImage styled = f.native;
+    const uint8_t cyan[3] = {39, 183, 183};
+    paint(styled, 10, 10, 30, 30, cyan);
+    FrameFidelity m;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(f.native, styled, f.ids, true, m, error)) << error;
+    EXPECT_DOUBLE_EQ(m.fidelity(), 0.0);
+    EXPECT_EQ(m.missing, 0u) << "an object is there, in the wrong colour";
+    ASSERT_EQ(m.objects.size(), 1u);
+    EXPECT_FALSE(m.objects[0].hueKept);
+    EXPECT_EQ(m.paletteFailures(), 1u);
+    EXPECT_EQ(m.diff.width, 120);
+    // A lighter green of the same hue keeps the palette but not the fidelity.
+    PngImage lighter = f.native;
+    const uint8_t pale[3] = {129, 224, 129};
+    paint(lighter, 10, 10, 30, 30, pale);
+    ASSERT_TRUE(FrameFidelity::measure(f.native, lighter, f.ids, false, m, error)) << error;
+    EXPECT_TRUE(m.objects[0].hueKept);
+    EXPECT_LT(m.fidelity(), 0.5);
+}
+
+TEST(FrameFidelity, TheLighterObjectStaysTheLighter)
+{
+    Frames f;
+    const uint8_t dark[3] = {20, 60, 20}, light[3] = {200, 240, 200};
+    PngImage native = f.native, styled = f.native, ids = f.ids;
+    paint(native, 0, 30, 40, 40, light);
+    paint(styled, 0, 30, 40, 40, dark); // the light object drawn darker than the green one
+    uint8_t id[3];
+    FrameFidelity::idColour(2, id);
+    paint(ids, 0, 30, 40, 40, id);
+    FrameFidelity m;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(native, styled, ids, false, m, error)) << error;
+    ASSERT_EQ(m.objects.size(), 2u);
+    EXPECT_FALSE(m.objects[0].orderKept);
+    EXPECT_FALSE(m.objects[1].orderKept);
+}
+
+TEST(FrameFidelity, FramesOfDifferentSizesAreRefused)
+{
+    Frames f;
+    FrameFidelity m;
+    std::string error;
+    EXPECT_FALSE(FrameFidelity::measure(f.native, filled(20, 20, 0, 0, 0), PngImage(), false, m,
+                                        error));
+    EXPECT_NE(error.find("size"), std::string::npos);
 }

@@ -1065,6 +1065,86 @@ TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
     EXPECT_GT(deep.r, 0.3f) << "glLightiv's integer colour was taken as a huge number";
 }
 
+// For the replica style, lit vertices take the colour GL's lighting equation gives them
+// (emission, the scene's ambient on the material's ambient, N·L on the diffuse), not the
+// material's colour the shading styles shade from; two-sided lighting lights a normal turned
+// from the eye from its other side; GL_FLAT gives a quad its last vertex's colour.
+TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    tracker.setProgramLighting(true);
+    Feed feed{tracker};
+    auto material = [&](GLenum pname, std::array<float, 4> v) {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glMaterialfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(GL_FRONT_AND_BACK);
+            w.put<GLenum>(pname);
+            w.putBytes(v.data(), sizeof v);
+            w.endPayload(mark);
+        });
+    };
+    // A quad at z -2 whose vertices' normals turn from the eye (0 degrees) to 60 degrees off
+    // it, and the last one away from it.
+    const float s60 = std::sqrt(3.0f) / 2.0f;
+    const std::array<glm::vec3, 4> normals = {glm::vec3(0, 0, 1), glm::vec3(s60, 0, 0.5f),
+                                              glm::vec3(1, 0, 0), glm::vec3(0, 0, -1)};
+    auto quad = [&] {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_QUADS);
+            for (int k = 0; k < 4; ++k) {
+                w.op(op::glNormal3f);
+                for (int c = 0; c < 3; ++c) w.put<float>(normals[size_t(k)][c]);
+                w.op(op::glVertex3f);
+                for (float c : {k == 1 || k == 2 ? 1.0f : 0.0f, k >= 2 ? 1.0f : 0.0f, -2.0f}) {
+                    w.put<float>(c);
+                }
+            }
+            w.op(op::glEnd);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    material(GL_AMBIENT, {0.2f, 0.1f, 0.1f, 1.0f});
+    material(GL_DIFFUSE, {0.5f, 0.2f, 0.1f, 1.0f});
+    material(GL_EMISSION, {0.0f, 0.0f, 0.25f, 1.0f});
+    quad();
+    feed.run([](CallWriter& w) {
+        w.op(op::glLightModeli);
+        w.put<GLenum>(GL_LIGHT_MODEL_TWO_SIDE);
+        w.put<GLint>(1);
+    });
+    quad();
+    feed.run([](CallWriter& w) {
+        w.op(op::glShadeModel);
+        w.put<GLenum>(GL_FLAT);
+    });
+    quad();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    // The scene's ambient (GL's 0.2) on the material's ambient, plus N·L on the diffuse.
+    auto expected = [](float nl) {
+        return glm::vec3(0.2f * 0.2f, 0.2f * 0.1f, 0.2f * 0.1f + 0.25f) +
+               nl * glm::vec3(0.5f, 0.2f, 0.1f);
+    };
+    const std::vector<TrackedVertex>& one = batches[0].vertices;
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(one[0].color[c], expected(1.0f)[c], 1e-4f) << c;
+        EXPECT_NEAR(one[1].color[c], expected(0.5f)[c], 1e-4f) << c;
+        EXPECT_NEAR(one[2].color[c], expected(0.0f)[c], 1e-4f) << c;
+        EXPECT_NEAR(one[3].color[c], expected(0.0f)[c], 1e-4f) << "one-sided: unlit back";
+        EXPECT_NEAR(batches[1].vertices[3].color[c], expected(1.0f)[c], 1e-4f) << "two-sided";
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(batches[2].vertices[size_t(k)].color[c], expected(1.0f)[c], 1e-4f)
+                << "flat: the quad's last vertex provokes its colour";
+        }
+    }
+}
+
 // A lit batch whose every vertex shows the program's specular light shows it all over (a flat
 // face near the mirror angle: sproingies' pale lavender stairs, a dark navy material made pale
 // by its shine, were dark navy in every style): the least of it over the batch is added to

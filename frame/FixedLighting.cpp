@@ -1,0 +1,159 @@
+#include "frame/FixedLighting.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace nprgl {
+
+glm::vec4 FixedLighting::shade(const AttribState& a, const Material& m, const glm::vec3& eye,
+                               glm::vec3 normal)
+{
+    glm::vec3 c = m.emission + m.ambient * a.modelAmbient;
+    const glm::vec3 towardsEye =
+        a.localViewer ? glm::normalize(-eye) : glm::vec3(0.0f, 0.0f, 1.0f);
+    for (size_t i = 0; i < 8; ++i) {
+        if (!(a.lightsOn & (1u << i))) continue;
+        const glm::vec4 p = a.lightPosition[i];
+        glm::vec3 l = p.w != 0.0f ? glm::vec3(p) / p.w - eye : glm::vec3(p);
+        const float distance = glm::length(l);
+        if (!(distance > 1e-12f) || !std::isfinite(distance)) continue;
+        l /= distance;
+        float reach = 1.0f;
+        if (p.w != 0.0f) {
+            const glm::vec3 k = a.attenuation[i];
+            reach = 1.0f / std::max(k.x + (k.y + k.z * distance) * distance, 1e-6f);
+            if (a.spotCutoff[i] != 180.0f) {
+                const float cosine = glm::dot(-l, glm::normalize(a.spotDirection[i]));
+                reach *= cosine < std::cos(glm::radians(a.spotCutoff[i]))
+                             ? 0.0f
+                             : std::pow(std::max(cosine, 0.0f), a.spotExponent[i]);
+            }
+        }
+        glm::vec3 term = m.ambient * a.lightAmbient[i];
+        const float nl = glm::dot(normal, l);
+        if (nl > 0.0f) {
+            term += nl * glm::vec3(m.diffuse) * a.lightDiffuse[i];
+            const glm::vec3 h = l + towardsEye;
+            const float hl = glm::length(h);
+            const float nh = hl > 1e-12f ? glm::dot(normal, h / hl) : 0.0f;
+            if (nh > 0.0f) {
+                // GL's 0^0 is 1: a shininess of 0 gives the full specular colour.
+                const float s = m.shininess > 0.0f ? std::pow(nh, m.shininess) : 1.0f;
+                term += s * m.specular * a.lightSpecular[i];
+            }
+        }
+        c += reach * term;
+    }
+    c = glm::clamp(c, 0.0f, 1.0f);
+    if (!std::isfinite(c.r + c.g + c.b)) c = glm::vec3(0.0f);
+    return {c, std::clamp(m.diffuse.a, 0.0f, 1.0f)};
+}
+
+void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
+{
+    Material base;
+    base.ambient = a.materialAmbient;
+    base.diffuse = a.materialDiffuse;
+    base.specular = a.materialSpecular;
+    base.emission = a.materialEmission;
+    base.shininess = a.materialShininess;
+    const glm::mat4& modelview = batch.modelview;
+    const glm::mat3 normals = glm::inverseTranspose(glm::mat3(modelview));
+    // GL_RESCALE_NORMAL divides by the modelview's scale (its third row's length, as the
+    // spec has it for a uniform scale); GL_NORMALIZE makes every normal unit.
+    const float rescale = a.rescaleNormal ? glm::length(glm::vec3(normals[0][2], normals[1][2],
+                                                                  normals[2][2]))
+                                          : 1.0f;
+    const GLenum colourMode = a.colorMaterial ? a.colorMaterialMode : 0;
+    Material m = base;
+    size_t next = 0;
+    for (size_t i = 0; i < batch.vertices.size(); ++i) {
+        TrackedVertex& v = batch.vertices[i];
+        while (next < batch.materials.size() && batch.materials[next].first <= i) {
+            m.diffuse = batch.materials[next++].diffuse;
+        }
+        Material here = m;
+        switch (colourMode) {
+        case GL_AMBIENT: here.ambient = glm::vec3(v.color); break;
+        case GL_DIFFUSE: here.diffuse = v.color; break;
+        case GL_AMBIENT_AND_DIFFUSE:
+            here.ambient = glm::vec3(v.color);
+            here.diffuse = v.color;
+            break;
+        case GL_SPECULAR: here.specular = glm::vec3(v.color); break;
+        case GL_EMISSION: here.emission = glm::vec3(v.color); break;
+        default: break;
+        }
+        const glm::vec3 eye = glm::vec3(modelview * glm::vec4(v.position, 1.0f));
+        glm::vec3 n = normals * v.normal;
+        if (a.normalize) {
+            const float length = glm::length(n);
+            n = length > 1e-12f ? n / length : n;
+        } else if (a.rescaleNormal && rescale > 1e-12f) {
+            n /= rescale;
+        }
+        // Two-sided: the side facing the eye is the one lit (an approximation per vertex of
+        // GL's per-face choice; exact for faces whose vertex normals agree with their face).
+        const glm::vec3 towardsEye = glm::dot(eye, eye) > 0.0f ? -eye : glm::vec3(0, 0, 1);
+        if (a.twoSide && glm::dot(n, towardsEye) < 0.0f) n = -n;
+        v.color = shade(a, here, eye, n);
+    }
+}
+
+void FixedLighting::flattenBatch(TrackedBatch& batch)
+{
+    std::vector<TrackedVertex>& v = batch.vertices;
+    if (v.empty()) return;
+    const size_t n = v.size();
+    // Independent primitives: each takes its provoking (last; a polygon's first) vertex's.
+    if (batch.mode == GL_TRIANGLES || batch.mode == GL_QUADS) {
+        const size_t stride = batch.mode == GL_TRIANGLES ? 3 : 4;
+        for (size_t first = 0; first + stride <= n; first += stride) {
+            const glm::vec4 c = v[first + stride - 1].color;
+            for (size_t k = 0; k + 1 < stride; ++k) v[first + k].color = c;
+        }
+        return;
+    }
+    if (batch.mode == GL_POLYGON) {
+        for (TrackedVertex& x : v) x.color = v.front().color;
+        return;
+    }
+    // Strips and fans share vertices between primitives of different colours: they become
+    // their separate primitives (the same faces, welded again by position downstream), each
+    // in its provoking vertex's colour, in the winding GL gives each.
+    std::vector<TrackedVertex> out;
+    auto put = [&](std::initializer_list<size_t> corners, size_t provoking) {
+        for (size_t k : corners) {
+            out.push_back(v[k]);
+            out.back().color = v[provoking].color;
+        }
+    };
+    switch (batch.mode) {
+    case GL_TRIANGLE_STRIP:
+        out.reserve(3 * n);
+        for (size_t i = 0; i + 2 < n; ++i) {
+            if (i % 2 == 0) put({i, i + 1, i + 2}, i + 2);
+            else put({i + 1, i, i + 2}, i + 2);
+        }
+        batch.mode = GL_TRIANGLES;
+        break;
+    case GL_TRIANGLE_FAN:
+        out.reserve(3 * n);
+        for (size_t i = 1; i + 1 < n; ++i) put({0, i, i + 1}, i + 1);
+        batch.mode = GL_TRIANGLES;
+        break;
+    case GL_QUAD_STRIP:
+        out.reserve(2 * n);
+        for (size_t i = 0; 2 * i + 3 < n; ++i) {
+            put({2 * i, 2 * i + 1, 2 * i + 3, 2 * i + 2}, 2 * i + 3);
+        }
+        batch.mode = GL_QUADS;
+        break;
+    default: return;
+    }
+    v.swap(out);
+}
+
+} // namespace nprgl

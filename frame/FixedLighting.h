@@ -1,0 +1,42 @@
+#pragma once
+
+// FixedLighting: GL's fixed-function lighting and flat shading, per vertex, on the CPU.
+
+#include "frame/AttribStack.h"
+#include "frame/StateTracker.h"
+
+#include <glm/glm.hpp>
+
+namespace nprgl {
+
+// The colours the fixed pipeline gives a batch's vertices (OpenGL 2.1, section 2.14.1): the
+// material's emission, the scene's ambient, and per enabled light its ambient, diffuse
+// (N·L) and specular (Blinn's N·H, at the infinite or the local viewer), attenuated and cut
+// by its spot; clamped per channel. For the `replica` style, which must draw what the
+// program's picture shows; the other styles shade from the material's colour instead.
+class FixedLighting {
+public:
+    struct Material {
+        glm::vec3 ambient{0.2f};
+        glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+        glm::vec3 specular{0.0f};
+        glm::vec3 emission{0.0f};
+        float shininess = 0.0f;
+    };
+
+    // Lights every vertex of `batch` (batch.modelview set, colours still the current colour
+    // per vertex) with the material state `a`, its colour-material mode and the diffuse
+    // changes between glBegin and glEnd (batch.materials). Front faces' lighting: with
+    // GL_LIGHT_MODEL_TWO_SIDE, a vertex whose normal faces away from the eye is lit from its
+    // other side, as the back face through it would be.
+    static void lightBatch(const AttribState& a, TrackedBatch& batch);
+    // Under glShadeModel(GL_FLAT): each primitive in its provoking vertex's colour, as GL's
+    // flat shading draws it (OpenGL 2.1, table 2.2). Strips and fans are unrolled into
+    // separate triangles or quads (their vertices differ in colour from face to face).
+    static void flattenBatch(TrackedBatch& batch);
+    // One vertex: eye-space position and normal (as GL transformed them, not normalised).
+    static glm::vec4 shade(const AttribState& a, const Material& m, const glm::vec3& eye,
+                           glm::vec3 normal);
+};
+
+} // namespace nprgl
