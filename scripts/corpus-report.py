@@ -329,7 +329,10 @@ def main():
                 reasons.append("live: " + "; ".join(lv[2]))
         else:
             live_cell = "-"
-        w(f"| {name} | {r['first']}-{r['last']} | {rep_cell} | {df_cell} | {miss_cell} | "
+        frames_cell = f"{r['first']}-{r['last']}"
+        if rp and rp["frames"] and str(rp["frames"]) != str(int(r["last"]) - int(r["first"]) + 1):
+            frames_cell += f" (compared: {rp['frames']})"
+        w(f"| {name} | {frames_cell} | {rep_cell} | {df_cell} | {miss_cell} | "
           f"{pal_cell} | {st_cell} | {live_cell} | {'; '.join(reasons) or '-'} | "
           f"{r.get('features', '-')} |")
     w("")
