@@ -170,7 +170,15 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
             const uint32_t id = idAt[p];
             const bool nativeDrawn = Lab::deltaE(ln, clear) > kDrawn;
             const float de = Lab::deltaE(ln, ls);
-            const bool match = de <= kMatch;
+            // Up to rasterisation: the two may cover an edge or a speck a pixel apart.
+            bool match = de <= kMatch;
+            for (int dy = -1; dy <= 1 && !match; ++dy) {
+                for (int dx = -1; dx <= 1 && !match; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    match = Lab::deltaE(ln, styledLab[size_t(ny) * w + nx]) <= kMatch;
+                }
+            }
             const bool drawn = nativeDrawn || id != 0;
             out.nativeDrawn += nativeDrawn;
             out.drawn += drawn;
@@ -219,8 +227,8 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
     }
     std::sort(out.objects.begin(), out.objects.end(),
               [](const Object& x, const Object& y) { return x.id < y.id; });
-    // Lightness order: of two judged objects clearly apart natively, the lighter stays the
-    // lighter.
+    // Lightness order: of two judged objects clearly apart natively, the lighter does not
+    // become clearly the darker (a style that evens them, as cel bands do, keeps the order).
     for (Object& p : out.objects) {
         if (!p.judged) continue;
         for (const Object& q : out.objects) {
@@ -228,7 +236,7 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
             const float apart = p.native.lightness - q.native.lightness;
             if (std::fabs(apart) < kLighterBy) continue;
             const float now = p.styled.lightness - q.styled.lightness;
-            if ((apart > 0.0f) != (now > 0.0f)) p.orderKept = false;
+            if (apart > 0.0f ? now < -kOrderSlack : now > kOrderSlack) p.orderKept = false;
         }
     }
     return true;

@@ -27,6 +27,7 @@ struct FrameFidelity {
     static constexpr float kChromatic = 10.0f; // chroma below it: no hue to keep
     static constexpr float kHueKept = 20.0f;  // degrees
     static constexpr float kLighterBy = 10.0f; // L* apart: an order the style must keep
+    static constexpr float kOrderSlack = 5.0f; // L* the other way: reversed (less: evened)
     static constexpr uint32_t kPaletteMinPixels = 64; // fewer: too small to judge
 
     struct Tone {
@@ -47,7 +48,9 @@ struct FrameFidelity {
     uint8_t clear[3] = {0, 0, 0}; // the frame's clear colour, as the native frame shows it
     uint64_t drawn = 0;          // drawn natively or by an object in the style
     uint64_t nativeDrawn = 0;
-    uint64_t matching = 0;       // drawn pixels within kMatch of native
+    // Drawn pixels within kMatch of native, the style's pixel or one of its eight neighbours
+    // (rasterisation may put an edge or a speck a pixel apart).
+    uint64_t matching = 0;
     // Drawn natively; in the style no object covers it and it shows the style's background
     // (the clear colour or the page, as where the program drew nothing).
     uint64_t missing = 0;

@@ -45,6 +45,7 @@ void AttribStack::pop()
         a.materialDiffuse = saved.materialDiffuse;
         a.materialEmission = saved.materialEmission;
         a.materialAmbient = saved.materialAmbient;
+        a.backMaterial = saved.backMaterial;
         a.localViewer = saved.localViewer;
         a.twoSide = saved.twoSide;
         a.flatShade = saved.flatShade;

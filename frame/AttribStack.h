@@ -60,6 +60,14 @@ struct AttribState {
     glm::vec3 fogColour{0.0f};
     glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
     glm::vec3 materialAmbient{0.2f}; // front: what the ambient light reflects
+    // The back faces' material, which GL's two-sided lighting shows (defaults as the front's).
+    struct Material {
+        glm::vec3 ambient{0.2f};
+        glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+        glm::vec3 specular{0.0f};
+        glm::vec3 emission{0.0f};
+        float shininess = 0.0f;
+    } backMaterial;
     glm::vec3 materialEmission{0.0f}; // front: the light the surface gives itself
     glm::vec3 materialSpecular{0.0f}; // front: GL_SPECULAR and GL_SHININESS
     float materialShininess = 0.0f;

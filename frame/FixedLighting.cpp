@@ -51,6 +51,17 @@ glm::vec4 FixedLighting::shade(const AttribState& a, const Material& m, const gl
     return {c, std::clamp(m.diffuse.a, 0.0f, 1.0f)};
 }
 
+void FixedLighting::setMaterial(Material& m, GLenum pname, const float* v)
+{
+    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
+        m.diffuse = {v[0], v[1], v[2], v[3]};
+    }
+    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) m.ambient = {v[0], v[1], v[2]};
+    if (pname == GL_EMISSION) m.emission = {v[0], v[1], v[2]};
+    if (pname == GL_SPECULAR) m.specular = {v[0], v[1], v[2]};
+    if (pname == GL_SHININESS) m.shininess = std::clamp(v[0], 0.0f, 128.0f);
+}
+
 void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
 {
     Material base;
@@ -91,7 +102,7 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
         const glm::vec3 towardsEye = glm::dot(eye, eye) > 0.0f ? -eye : glm::vec3(0, 0, 1);
         const bool back = a.twoSide && glm::dot(n, towardsEye) < 0.0f;
         if (back) n = -n;
-        Material here = m;
+        Material here = back ? a.backMaterial : m;
         switch (back ? (colourBack ? colourMode : 0) : (colourFront ? colourMode : 0)) {
         case GL_AMBIENT: here.ambient = glm::vec3(v.color); break;
         case GL_DIFFUSE: here.diffuse = v.color; break;

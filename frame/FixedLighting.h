@@ -16,19 +16,15 @@ namespace nprgl {
 // program's picture shows; the other styles shade from the material's colour instead.
 class FixedLighting {
 public:
-    struct Material {
-        glm::vec3 ambient{0.2f};
-        glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
-        glm::vec3 specular{0.0f};
-        glm::vec3 emission{0.0f};
-        float shininess = 0.0f;
-    };
+    using Material = AttribState::Material;
+    // glMaterial's pname and values into a material.
+    static void setMaterial(Material& m, GLenum pname, const float* v);
 
     // Lights every vertex of `batch` (batch.modelview set, colours still the current colour
     // per vertex) with the material state `a`, its colour-material mode and the diffuse
     // changes between glBegin and glEnd (batch.materials). Front faces' lighting: with
     // GL_LIGHT_MODEL_TWO_SIDE, a vertex whose normal faces away from the eye is lit from its
-    // other side, as the back face through it would be.
+    // other side with the back material, as the back face through it would be.
     static void lightBatch(const AttribState& a, TrackedBatch& batch);
     // Under glShadeModel(GL_FLAT): each primitive in its provoking vertex's colour, as GL's
     // flat shading draws it (OpenGL 2.1, table 2.2). Strips and fans are unrolled into

@@ -1875,7 +1875,12 @@ void StateTracker::batchMaterial(GLenum face, GLenum pname, const float* v)
 void StateTracker::material(GLenum face, GLenum pname, const float* v)
 {
     batchMaterial(face, pname, v);
-    if (face == GL_BACK || !v) return;
+    if (!v) return;
+    if (face == GL_BACK || face == GL_FRONT_AND_BACK) {
+        // Only GL's two-sided lighting shows it (FixedLighting, for the replica).
+        FixedLighting::setMaterial(mAttrib.backMaterial, pname, v);
+    }
+    if (face == GL_BACK) return;
     if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
         mAttrib.materialDiffuse = {v[0], v[1], v[2], v[3]};
     }

@@ -12,6 +12,10 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 export XDG_CONFIG_HOME="$root/build/test-config-home"
 unset NPRGL_CONFIG_FILE NPRGL_STYLE NPRGL_CONFIG NPRGL_PRESET
 mkdir -p "$XDG_CONFIG_HOME"
+# The quick corpus of real programs (every 4th GL hack of Debian's xscreensaver-gl and
+# -extra, 4 frames each) for the fidelity guard (tests/compat/test_corpus_fidelity.cpp).
+rm -rf "$root/build/corpus-quick"
+"$root/scripts/corpus-captures.sh" "$root/build/corpus-quick" --quick
 cd "$root/build"
 "$root/scripts/with-display.sh" ctest --output-on-failure -j 2
 

@@ -234,3 +234,22 @@ TEST(FrameFidelity, OnlyWhatTheStylesBackgroundShowsIsMissing)
     EXPECT_EQ(m.nativeDrawn, 40u * 8u + 100u);
     EXPECT_EQ(m.missing, 100u);
 }
+
+TEST(FrameFidelity, ASpeckAPixelApartIsRasterisationNotAnError)
+{
+    // Sub-pixel objects (splodesic's specks) land a pixel apart natively and restyled.
+    const uint8_t white[3] = {240, 240, 240};
+    PngImage native = filled(40, 40, 0, 0, 0), styled = filled(40, 40, 0, 0, 0);
+    paint(native, 10, 10, 11, 11, white);
+    paint(styled, 11, 10, 12, 11, white);
+    FrameFidelity m;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(native, styled, PngImage(), false, m, error)) << error;
+    EXPECT_EQ(m.drawn, 1u);
+    EXPECT_DOUBLE_EQ(m.fidelity(), 1.0);
+    // Two pixels apart is a different picture.
+    styled = filled(40, 40, 0, 0, 0);
+    paint(styled, 12, 10, 13, 11, white);
+    ASSERT_TRUE(FrameFidelity::measure(native, styled, PngImage(), false, m, error)) << error;
+    EXPECT_DOUBLE_EQ(m.fidelity(), 0.0);
+}

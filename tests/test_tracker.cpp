@@ -1123,14 +1123,30 @@ TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
         w.put<GLenum>(GL_FLAT);
     });
     quad();
+    // The back's own material lights the side turned away (splodesic's yellow insides).
+    feed.run([](CallWriter& w) { w.op(op::glShadeModel), w.put<GLenum>(GL_SMOOTH); });
+    feed.run([](CallWriter& w) {
+        w.op(op::glMaterialfv);
+        const size_t mark = w.beginPayload();
+        w.put<GLenum>(GL_BACK);
+        w.put<GLenum>(GL_DIFFUSE);
+        const float green[4] = {0.0f, 1.0f, 0.0f, 1.0f};
+        w.putBytes(green, sizeof green);
+        w.endPayload(mark);
+    });
+    quad();
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
-    ASSERT_EQ(batches.size(), 3u);
+    ASSERT_EQ(batches.size(), 4u);
     // The scene's ambient (GL's 0.2) on the material's ambient, plus N·L on the diffuse.
     auto expected = [](float nl) {
         return glm::vec3(0.2f * 0.2f, 0.2f * 0.1f, 0.2f * 0.1f + 0.25f) +
                nl * glm::vec3(0.5f, 0.2f, 0.1f);
     };
+    const glm::vec4 inside = batches[3].vertices[3].color;
+    EXPECT_GT(inside.g, 0.9f) << "the back material";
+    EXPECT_LT(inside.r, 0.1f);
+    EXPECT_NEAR(batches[3].vertices[0].color.r, expected(1.0f).r, 1e-4f) << "the front's";
     const std::vector<TrackedVertex>& one = batches[0].vertices;
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(one[0].color[c], expected(1.0f)[c], 1e-4f) << c;

@@ -1,6 +1,6 @@
 #pragma once
 
-// ObjectIdStyle: the `ids` debug style: each styled object flat in a colour that encodes its id.
+// ObjectIdStyle: the `ids` debug style: each styled object in a colour encoding its id.
 
 #include "styles/Style.h"
 #include "styles/shading/ShadingCommon.h"
