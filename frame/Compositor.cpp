@@ -132,21 +132,32 @@ NPRGL_DRAWING(void, glBitmap,
 NPRGL_DRAWING(void, glDrawPixels,
               (GLsizei w, GLsizei h, GLenum format, GLenum type, const void* p),
               (w, h, format, type, p))
-NPRGL_BARRIER(void, glCopyTexImage1D,
-              (GLenum t, GLint l, GLenum f, GLint x, GLint y, GLsizei w, GLint b),
-              (t, l, f, x, y, w, b))
-NPRGL_BARRIER(void, glCopyTexImage2D,
-              (GLenum t, GLint l, GLenum f, GLint x, GLint y, GLsizei w, GLsizei h, GLint b),
-              (t, l, f, x, y, w, h, b))
-NPRGL_BARRIER(void, glCopyTexSubImage1D,
-              (GLenum t, GLint l, GLint xo, GLint x, GLint y, GLsizei w), (t, l, xo, x, y, w))
-NPRGL_BARRIER(void, glCopyTexSubImage2D,
-              (GLenum t, GLint l, GLint xo, GLint yo, GLint x, GLint y, GLsizei w, GLsizei h),
-              (t, l, xo, yo, x, y, w, h))
-NPRGL_BARRIER(void, glCopyTexSubImage3D,
-              (GLenum t, GLint l, GLint xo, GLint yo, GLint zo, GLint x, GLint y, GLsizei w,
-               GLsizei h),
-              (t, l, xo, yo, zo, x, y, w, h))
+// Copies into a texture: barriers whose flush is the texture's content, not the window's.
+#define NPRGL_COPY_TO_TEXTURE(name, params, args)                                               \
+    void APIENTRY c_##name params                                                               \
+    {                                                                                           \
+        C().copyToTexture();                                                                    \
+        C().next().name args;                                                                   \
+    }
+NPRGL_COPY_TO_TEXTURE(glCopyTexImage1D,
+                      (GLenum t, GLint l, GLenum f, GLint x, GLint y, GLsizei w, GLint b),
+                      (t, l, f, x, y, w, b))
+NPRGL_COPY_TO_TEXTURE(glCopyTexImage2D,
+                      (GLenum t, GLint l, GLenum f, GLint x, GLint y, GLsizei w, GLsizei h,
+                       GLint b),
+                      (t, l, f, x, y, w, h, b))
+NPRGL_COPY_TO_TEXTURE(glCopyTexSubImage1D,
+                      (GLenum t, GLint l, GLint xo, GLint x, GLint y, GLsizei w),
+                      (t, l, xo, x, y, w))
+NPRGL_COPY_TO_TEXTURE(glCopyTexSubImage2D,
+                      (GLenum t, GLint l, GLint xo, GLint yo, GLint x, GLint y, GLsizei w,
+                       GLsizei h),
+                      (t, l, xo, yo, x, y, w, h))
+NPRGL_COPY_TO_TEXTURE(glCopyTexSubImage3D,
+                      (GLenum t, GLint l, GLint xo, GLint yo, GLint zo, GLint x, GLint y,
+                       GLsizei w, GLsizei h),
+                      (t, l, xo, yo, zo, x, y, w, h))
+#undef NPRGL_COPY_TO_TEXTURE
 NPRGL_BARRIER(void, glFinish, (), ())
 NPRGL_BARRIER(void, glFlush, (), ())
 NPRGL_BARRIER(void, glDrawBuffer, (GLenum mode), (mode))
@@ -809,6 +820,13 @@ void Compositor::readPixels()
     framebufferBound();
 }
 
+void Compositor::copyToTexture()
+{
+    mCopyFlush = true;
+    barrier();
+    mCopyFlush = false;
+}
+
 bool Compositor::readBack(GLint framebuffer) const
 {
     return std::find(mReadBack.begin(), mReadBack.end(), framebuffer) != mReadBack.end();
@@ -998,6 +1016,7 @@ void Compositor::buildScene()
     mScene.depthRange = mHeldDepthRange;
     mScene.alphaWrites = !mHeldColoured || mHeldAlphaWrites;
     mScene.colourClears = colourClearsOf(mHeldFramebuffer);
+    mScene.copiedToTexture = mCopyFlush;
     // Fresh when the cleared (or shown) rectangle holds the scene's viewport, as confined.
     const glm::ivec4 area = mScene.confined(mScene.viewport);
     const glm::ivec4& fresh = mFresh.rect;

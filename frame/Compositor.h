@@ -116,6 +116,8 @@ public:
     void barrier();
     // Before the program's glReadPixels (see mReadBack).
     void readPixels();
+    // Before the program copies the framebuffer into a texture (Scene::copiedToTexture).
+    void copyToTexture();
     // After the program bound a framebuffer: tells the tracker whether it draws data.
     void framebufferBound();
     // A clear of the colour buffer (colour) or of others: a barrier, counted.
@@ -228,6 +230,7 @@ private:
     // draws into them are left as drawn; the flush its first read forces is drawn unstyled.
     std::vector<GLint> mReadBack;
     bool mPlainFlush = false;
+    bool mCopyFlush = false; // the flush under way is for a glCopyTex* (copyToTexture)
     bool readBack(GLint framebuffer) const;
     // Where one framebuffer's colour holds nothing drawn since it was cleared or shown
     // (Scene::colourFresh): its window rectangle, unless something drew since.

@@ -1,32 +1,34 @@
 #include "frame/TextureImage.h"
 
 #include <algorithm>
+#include <iterator>
 #include <vector>
 
 namespace nprgl {
 
 TextureAlpha textureAlpha(GLint internalFormat)
 {
-    switch (GLenum(internalFormat)) {
-    case 1: case 3: case GL_RGB: case GL_RGB4: case GL_RGB5: case GL_RGB8: case GL_RGB10:
-    case GL_RGB12: case GL_RGB16: case GL_R3_G3_B2: case GL_SRGB: case GL_SRGB8:
-    case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12:
-    case GL_LUMINANCE16: case GL_RED: case GL_R8: case GL_R16: case GL_RG: case GL_RG8:
-    case GL_RG16:
+    static constexpr GLenum noAlpha[] = {
+        1, 3, GL_RGB, GL_RGB4, GL_RGB5, GL_RGB8, GL_RGB10, GL_RGB12, GL_RGB16, GL_R3_G3_B2,
+        GL_SRGB, GL_SRGB8, GL_LUMINANCE, GL_LUMINANCE4, GL_LUMINANCE8, GL_LUMINANCE12,
+        GL_LUMINANCE16, GL_RED, GL_R8, GL_R16, GL_RG, GL_RG8, GL_RG16};
+    static constexpr GLenum intensity[] = {GL_INTENSITY,   GL_INTENSITY4,  GL_INTENSITY8,
+                                           GL_INTENSITY12, GL_INTENSITY16, GL_INTENSITY16F_ARB,
+                                           GL_INTENSITY32F_ARB};
+    const GLenum format = GLenum(internalFormat);
+    if (std::find(std::begin(noAlpha), std::end(noAlpha), format) != std::end(noAlpha)) {
         return TextureAlpha::One;
-    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12:
-    case GL_INTENSITY16: case GL_INTENSITY16F_ARB: case GL_INTENSITY32F_ARB:
-        return TextureAlpha::FromIntensity;
-    default:
-        return TextureAlpha::FromAlpha;
     }
+    if (std::find(std::begin(intensity), std::end(intensity), format) != std::end(intensity)) {
+        return TextureAlpha::FromIntensity;
+    }
+    return TextureAlpha::FromAlpha;
 }
 
 TextureImage::TextureImage(GLsizei width, GLsizei height, GLenum format, GLenum type,
                            const void* pixels, size_t bytes, TextureAlpha alpha)
     : mWidth(width), mHeight(height), mFormat(format), mType(type),
-      mPixels(static_cast<const unsigned char*>(pixels)), mBytes(pixels ? bytes : 0),
-      mAlpha(alpha)
+      mPixels(static_cast<const unsigned char*>(pixels)), mBytes(pixels ? bytes : 0), mAlpha(alpha)
 {
 }
 

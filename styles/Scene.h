@@ -195,6 +195,10 @@ struct Scene {
     // The program's draws write alpha (one per scene: a change flushes); when they do not,
     // neither do the styles in its framebuffer (a program may keep data there).
     bool alphaWrites = true;
+    // The flush comes before the program copies the framebuffer into a texture (glCopyTex*):
+    // these pixels are that texture's content (a reflection, an environment map), not the
+    // window's picture, so no page is laid in them (PaperStyle).
+    bool copiedToTexture = false;
 
     // Everything but the objects, from `whole` (for a part of it drawn on its own).
     void takeFrameOf(const Scene& whole)
@@ -209,6 +213,7 @@ struct Scene {
         scissor = whole.scissor;
         depthRange = whole.depthRange;
         alphaWrites = whole.alphaWrites;
+        copiedToTexture = whole.copiedToTexture;
     }
     // `rect` (x, y, width, height, window pixels) within the scissor box, when scissored.
     glm::ivec4 confined(glm::ivec4 rect) const

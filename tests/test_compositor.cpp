@@ -1310,6 +1310,39 @@ TEST(Compositor, EveryEnabledLightShadesTheStyledScene)
     EXPECT_GT(at.differingPixels, 2000u) << "a spot aimed at the shapes lit nothing";
 }
 
+// Pixels the program copies into a texture are that texture's content, not the window's
+// page: foobillardplus draws each ball's surroundings into a corner of the window, copies them
+// into a cube map, clears, and adds the map over the ball (GL_ONE_MINUS_DST_COLOR, GL_ONE).
+// Paper laid in the corner went into the maps and washed every ball white. demo_textured
+// --env-map copies its scene from a 64x64 corner and shows the texture at the top left: its
+// corners, background when copied, keep the program's clear colour.
+TEST(Compositor, PixelsCopiedIntoATextureGetNoPage)
+{
+    auto corner = [](const std::string& style) {
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(PngImage::read(demoFrame("textured", "env_map_" + style, {"--style", style},
+                                             {"--env-map"}),
+                                   image, error))
+            << error;
+        std::vector<int> out;
+        for (auto [x, y] : {std::pair{2, 2}, std::pair{61, 2}, std::pair{2, 61}}) {
+            if (image.rgba.empty()) break;
+            const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+            out.insert(out.end(), {p[0], p[1], p[2]});
+        }
+        return out;
+    };
+    const std::vector<int> native = corner("none");
+    ASSERT_EQ(native.size(), 9u);
+    EXPECT_LT(native[0], 100) << "the copied corner is not the dark clear colour: no test";
+    const std::vector<int> styled = corner("toon+paper+edges");
+    ASSERT_EQ(styled.size(), 9u);
+    for (size_t i = 0; i < 9; ++i) {
+        EXPECT_NEAR(styled[i], native[i], 12) << "channel " << i % 3 << " of corner " << i / 3;
+    }
+}
+
 // A backdrop drawn at the far plane with the depth test on (xscreensaver's atlantis draws its
 // water so: identity matrices, z = 1, GL_LEQUAL) keeps the cleared depth, and the page, laid
 // after the opaque scene where that depth remains, covered it: the program's backdrop became

@@ -21,7 +21,10 @@
 // destination alpha; --replace draws the cube's texture with GL_REPLACE under a blue
 // material, which its picture then does not show (timetunnel's tunnel); --far-backdrop draws
 // a dark blue gradient over the window at the far plane (identity matrices, z = 1, depth test
-// GL_LEQUAL) before the scene, as xscreensaver's atlantis draws its water.
+// GL_LEQUAL) before the scene, as xscreensaver's atlantis draws its water; --env-map first
+// draws the scene into a 64x64 corner, copies it into a texture (glCopyTexSubImage2D, as
+// foobillardplus makes its balls' environment maps), clears again, and after the scene shows
+// that texture in 2D in the top-left corner (GL_REPLACE).
 
 // Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
@@ -242,6 +245,9 @@ public:
                 {"far-backdrop", demo::ExtraOption::Kind::Flag,
                  "a dark blue gradient over the window at the far plane (z = 1, identity "
                  "matrices, GL_LEQUAL) before the scene"},
+                {"env-map", demo::ExtraOption::Kind::Flag,
+                 "the scene drawn into a 64x64 corner first and copied into a texture, then "
+                 "cleared; the texture shown in 2D in the top-left corner after the scene"},
                 {"replace", demo::ExtraOption::Kind::Flag,
                  "the cube's texture drawn with GL_REPLACE under a blue material: the picture "
                  "shows the texture alone"},
@@ -318,6 +324,15 @@ public:
         pushedBack_ = options.has("pushed-back");
         replace_ = options.has("replace");
         farBackdrop_ = options.has("far-backdrop");
+        if (options.has("env-map")) {
+            glGenTextures(1, &envTexture_);
+            glBindTexture(GL_TEXTURE_2D, envTexture_);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, kEnvSize, kEnvSize, 0, GL_RGB,
+                         GL_UNSIGNED_BYTE, nullptr);
+            glBindTexture(GL_TEXTURE_2D, 0);
+        }
         if (options.has("cutout-fine")) cutoutTexture_ = uploadGrille();
         if (options.has("fog")) {
             const float fogColour[] = {0.7f, 0.72f, 0.78f, 1.0f};
@@ -366,6 +381,7 @@ public:
                                          : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         if (alphaMask_) glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
         if (stalePanel_ && frame == 1) drawPanel();
+        if (envTexture_) makeEnvMap(frame);
         if (farBackdrop_) drawFarBackdrop();
         if (depthPrepass_) {
             // Depth first, colour off; then the colours on equal depth.
@@ -381,6 +397,7 @@ public:
         if (alphaMask_) printAlpha(frame);
         if (lateShader_ && frame >= 2) drawShaderPane();
         if (hudBar_) drawHudBar();
+        if (envTexture_) showEnvMap();
         // Between the scene and the weapon: another framebuffer's colour is cleared.
         if (pickFbo_) pick(frame);
         if (weapon_) {
@@ -573,6 +590,51 @@ public:
         const float white[] = {1.0f, 1.0f, 1.0f};
         bar(x0, y0, x1, y1, white, white);
         bar(x0 + 2.0f, y0 + 2.0f, x1 - 2.0f, y1 - 2.0f, dark, light);
+        glPopMatrix();
+        glMatrixMode(GL_PROJECTION);
+        glPopMatrix();
+        glMatrixMode(GL_MODELVIEW);
+        glPopAttrib();
+    }
+
+    // The scene in a corner of the window, copied into envTexture_; then cleared again.
+    void makeEnvMap(int frame)
+    {
+        glViewport(0, 0, kEnvSize, kEnvSize);
+        drawScene(frame);
+        glBindTexture(GL_TEXTURE_2D, envTexture_);
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, kEnvSize, kEnvSize);
+        glViewport(0, 0, width_, height_);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+
+    // envTexture_ as it is, 2D, in the window's top-left kEnvSize pixels.
+    void showEnvMap()
+    {
+        glPushAttrib(GL_ENABLE_BIT | GL_TEXTURE_BIT);
+        glDisable(GL_LIGHTING);
+        glDisable(GL_DEPTH_TEST);
+        glEnable(GL_TEXTURE_2D);
+        glBindTexture(GL_TEXTURE_2D, envTexture_);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+        glMatrixMode(GL_PROJECTION);
+        glPushMatrix();
+        glLoadIdentity();
+        glOrtho(0.0, width_, 0.0, height_, -1.0, 1.0);
+        glMatrixMode(GL_MODELVIEW);
+        glPushMatrix();
+        glLoadIdentity();
+        const float x0 = 0.0f, y0 = float(height_ - kEnvSize), s = float(kEnvSize);
+        glBegin(GL_QUADS);
+        glTexCoord2f(0.0f, 0.0f);
+        glVertex2f(x0, y0);
+        glTexCoord2f(1.0f, 0.0f);
+        glVertex2f(x0 + s, y0);
+        glTexCoord2f(1.0f, 1.0f);
+        glVertex2f(x0 + s, y0 + s);
+        glTexCoord2f(0.0f, 1.0f);
+        glVertex2f(x0, y0 + s);
+        glEnd();
         glPopMatrix();
         glMatrixMode(GL_PROJECTION);
         glPopMatrix();
@@ -790,6 +852,7 @@ public:
         if (cutoutTexture_) glDeleteTextures(1, &cutoutTexture_);
         if (glowList_) glDeleteLists(glowList_, 1);
         if (lateFloorTexture_) glDeleteTextures(1, &lateFloorTexture_);
+        if (envTexture_) glDeleteTextures(1, &envTexture_);
         if (paneProgram_) glDeleteProgram(paneProgram_);
     }
 
@@ -797,6 +860,8 @@ private:
     GLuint cubeTexture_ = 0;
     bool replace_ = false;
     bool farBackdrop_ = false;
+    static constexpr int kEnvSize = 64;
+    GLuint envTexture_ = 0; // --env-map
     GLuint floorTexture_ = 0;
     GLuint sphereTexture_ = 0;
     GLuint faceTextures_[6] = {};

@@ -249,7 +249,7 @@ void PaperStyle::keepBackground(const Scene& scene, StyleContext& ctx)
     const glm::ivec4 vp = scene.viewport;
     // A fresh buffer needs no copy: nothing in it is the program's but the clear.
     if (!mFill || scene.objects.empty() || vp.z <= 0 || vp.w <= 0 || scene.colourFresh ||
-        filledAlready(scene, false)) {
+        scene.copiedToTexture || filledAlready(scene, false)) {
         return;
     }
     mKept = copyBackground(scene, ctx);
@@ -262,8 +262,11 @@ void PaperStyle::layBackground(const Scene& scene, StyleContext& ctx)
     const GlFunctions& gl = ctx.gl;
     const glm::ivec4 vp = scene.viewport;
     const bool kept = std::exchange(mKept, false);
-    // An empty flush drew nothing; its page is whatever the program left.
-    if (!mFill || scene.objects.empty() || vp.z <= 0 || vp.w <= 0 ||
+    // An empty flush drew nothing; its page is whatever the program left. Pixels the program
+    // copies into a texture (a ball's environment map: foobillardplus's balls reflect it,
+    // added by GL_ONE_MINUS_DST_COLOR) keep its background: paper there is paper in the
+    // reflection, and washed its balls white.
+    if (!mFill || scene.objects.empty() || vp.z <= 0 || vp.w <= 0 || scene.copiedToTexture ||
         filledAlready(scene, true)) {
         return;
     }
@@ -294,7 +297,7 @@ void PaperStyle::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
     const glm::ivec4 vp = scene.viewport;
-    if (scene.objects.empty() || vp.z <= 0 || vp.w <= 0) return;
+    if (scene.objects.empty() || vp.z <= 0 || vp.w <= 0 || scene.copiedToTexture) return;
     // Laid already when the chain called layBackground first in this flush.
     layBackground(scene, ctx);
     if (!mGrainScene || mGrain <= 0.0f || grainedThisFrame(scene, true)) return;
