@@ -10,6 +10,7 @@
 #   --no-install, --no-build  skip scripts/install-deps.sh, scripts/build.sh (a clone set up)
 #   --no-doc    write the report to OUTDIR/compat.md only, not docs/compat.md
 # CORPUS_LIVE_GAME_FRAMES=N runs the games live for N frames (default: to their scene's frame).
+# CORPUS_COMPARE_FRAMES=N compares only the last N recorded frames of each capture.
 #
 # Steps:
 #   1. scripts/install-deps.sh, scripts/build.sh (NPRGL_BUILD, default build/ in the clone);
@@ -92,6 +93,11 @@ fi
 while [ "$compare" = 1 ] && IFS=$'\t' read -r -u 3 name kind status first last _; do
     [ "$status" = ok ] || continue
     capture=$out/$name.nprgl
+    # CORPUS_COMPARE_FRAMES=N: only the last N recorded frames (a quicker run).
+    keep=${CORPUS_COMPARE_FRAMES:-0}
+    if [ "$keep" -gt 0 ] && [ "$((last - keep + 1))" -gt "$first" ]; then
+        first=$((last - keep + 1))
+    fi
     for style in replica default; do
         rm -rf "${results:?}/$name/$style"
         mkdir -p "$results/$name/$style"
@@ -107,7 +113,8 @@ while [ "$compare" = 1 ] && IFS=$'\t' read -r -u 3 name kind status first last _
     python3 "$root/scripts/corpus-features.py" "$nprgl" "$capture" --frames "$first-$last" \
         >"$results/$name.features.txt" 2>/dev/null || true
     rc=0
-    timeout -k 10 "$compare_limit" "$nprgl" replay "$capture" --stats >"$results/$name.stats.txt" \
+    timeout -k 10 "$compare_limit" "$nprgl" replay "$capture" --stats --frames "$first-$last" \
+        >"$results/$name.stats.txt" \
         2>"$results/$name.stats.log" || rc=$?
     printf '%s\tstats\t%s\n' "$name" "$rc" >>"$results/runs.tsv"
 done 3<"$out/manifest.tsv"
