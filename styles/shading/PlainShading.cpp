@@ -6,8 +6,11 @@ namespace {
 
 const char* kFragment = R"(
 uniform sampler2D detail;
+uniform sampler2D lightmap;
+uniform float lightmapped;
 in vec4 baseColor;
 in vec2 uv;
+in vec2 lightUv;
 in vec3 eyePosition;
 out vec4 fragColor;
 void main()
@@ -16,6 +19,8 @@ void main()
 #if TEXTURED
     c *= texture(detail, uv);
 #endif
+    // GL_MODULATE on the lightmap's unit too.
+    if (lightmapped > 0.5) c.rgb *= texture(lightmap, lightUv).rgb;
     fragColor = vec4(programFog(c.rgb, eyePosition), c.a);
 }
 )";
@@ -37,7 +42,9 @@ bool PlainShading::init(const GlFunctions& gl, std::string& error)
 void PlainShading::render(const Scene& scene, StyleContext& ctx)
 {
     const GlFunctions& gl = ctx.gl;
-    for (const SceneObject& object : scene.objects) {
+    for (const SceneObject& original : scene.objects) {
+        // GL draws a sphere map or a projected texture where the program generates them.
+        const SceneObject& object = ShadingCommon::withGenerated(original, true, mGenerated);
         const bool textured = object.textured();
         const Variant& v = mVariants[textured ? 1 : 0];
         gl.UseProgram(v.program.id());

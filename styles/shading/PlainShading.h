@@ -7,9 +7,10 @@
 
 namespace nprgl::styles {
 
-// Objects drawn as the fixed pipeline drew them unlit: the program's colour (lit colours as
-// the tracker took them), its texture modulating, its fog; no style. For a scene the program
-// reads back (colour-coded picking), whose pixels are data, not picture.
+// Objects drawn as the fixed pipeline drew them: the program's colour (lit colours as the
+// tracker took them), its textures and lightmaps modulating (generated coordinates as GL
+// generates them), its fog; no style. For a scene the program reads back (colour-coded
+// picking), whose pixels are data, not picture; and the `replica` style.
 class PlainShading {
 public:
     bool init(const GlFunctions& gl, std::string& error);
@@ -23,6 +24,7 @@ private:
         ShadingCommon::ObjectUniforms u;
     };
     Variant mVariants[2]; // untextured, textured
+    SceneObject mGenerated; // an object with its generated texture as its own
 };
 
 } // namespace nprgl::styles

@@ -3,7 +3,7 @@
 // ReplicaStyle: the `replica` style: the held scene redrawn as GL would draw it, no NPR.
 
 #include "styles/Style.h"
-#include "styles/shading/ShadingCommon.h"
+#include "styles/shading/PlainShading.h"
 
 #include <string>
 
@@ -11,9 +11,9 @@ namespace nprgl::styles {
 
 // The fidelity oracle. Everything the other styles draw goes through the same tracking,
 // reconstruction, welding and chain; here the objects are drawn with the colours GL's own
-// lighting and shade model gave their vertices (StyleInfo::programLighting), the program's
-// textures (its sphere-mapped reflections too) and lightmaps modulating, the layers the
-// styles do not draw on average, and its fog; the chain applies its alpha test, blending,
+// lighting and shade model gave their vertices (StyleInfo::programLighting) by PlainShading:
+// the program's textures (sphere maps too) and lightmaps modulating, the layers the styles do
+// not draw on average, and its fog; the chain applies its alpha test, blending,
 // polygon offset and depth state. Where nprgl followed the program, the frame equals the
 // program's own up to rasterisation; anywhere else the difference is nprgl's (`nprgl compare`).
 class ReplicaStyle : public Style {
@@ -23,12 +23,7 @@ public:
     void shutdown(StyleContext& ctx) override;
 
 private:
-    struct Variant {
-        ShaderProgram program;
-        ShadingCommon::ObjectUniforms u;
-    };
-    Variant mVariants[2]; // untextured, textured
-    SceneObject mReflected; // an object with its generated texture as its own
+    PlainShading mPlain; // the fixed pipeline's draw, as for scenes the program reads back
 };
 
 } // namespace nprgl::styles
