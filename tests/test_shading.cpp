@@ -1267,3 +1267,26 @@ TEST_F(Shading, PencilHatchesADecalByItsTexture)
                                   << left << " against " << right;
     gl.DeleteTextures(1, &texture);
 }
+
+// A texture the program bound but never gave an image is incomplete: GL draws as if its unit
+// were off, the surface in its own colour (atunnel's lit tunnel came out black in every style).
+TEST_F(Shading, ATextureWithoutAnImageLeavesTheSurfaceItsColour)
+{
+    ASSERT_TRUE(harness.ok());
+    const styles::GlFunctions& gl = harness.gl();
+    GLuint empty = 0;
+    glGenTextures(1, &empty);
+    gl.BindTexture(GL_TEXTURE_2D, empty); // created, no image
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    const reconstruct::Batch quad = facingQuad(glm::vec4(0.9f, 0.6f, 0.2f, 1.0f), true);
+    auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+    for (auto& o : scene.objects) o.texture = empty;
+    PngImage image;
+    std::string error;
+    EXPECT_TRUE(harness.render(scene, "replica", "", image, error)) << error;
+    save(image, "replica_incomplete_texture");
+    const Rgb centre = pixel(image, kSize / 2, kSize / 2);
+    EXPECT_NEAR(centre.r, 230, 3) << "the surface sampled the empty texture";
+    EXPECT_NEAR(centre.g, 153, 3);
+    gl.DeleteTextures(1, &empty);
+}

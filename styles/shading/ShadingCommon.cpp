@@ -358,10 +358,36 @@ namespace {
 // pipeline keeps the fragment's (modulating only its alpha), but a shader samples it black,
 // so text and sprites drawn with one vanished. While the styles draw with it its colour
 // channels read one (texture swizzle); unbindProgramTexture puts the program's back.
-bool bindProgramTexture(const GlFunctions& gl, GLuint texture, GLint (&swizzle)[4])
+// A 1x1 white texture, made on first use: the textured shader then shows the faces' own
+// colours.
+GLuint blankTexture(StyleContext& ctx)
 {
+    const GlFunctions& gl = ctx.gl;
+    if (!ctx.blankTexture) {
+        GlTexture::resetUnpack(gl);
+        ObjectNames::reserve(gl, ObjectNames::Kind::Texture, 1, &ctx.blankTexture);
+        gl.BindTexture(GL_TEXTURE_2D, ctx.blankTexture);
+        const uint8_t white[4] = {255, 255, 255, 255};
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+    }
+    return ctx.blankTexture;
+}
+
+bool bindProgramTexture(StyleContext& ctx, GLuint texture, GLint (&swizzle)[4])
+{
+    const GlFunctions& gl = ctx.gl;
     gl.BindTexture(GL_TEXTURE_2D, textureName(texture));
     if (texture == 0) return false;
+    // A texture the program bound but never gave an image is incomplete: GL draws as if its
+    // unit were off (atunnel's lit tunnel), where sampling it would give black.
+    GLint width = 0;
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+    if (width == 0) {
+        gl.BindTexture(GL_TEXTURE_2D, blankTexture(ctx));
+        return false;
+    }
     GLint format = 0;
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
     if (format != GL_ALPHA && format != GL_ALPHA4 && format != GL_ALPHA8 &&
@@ -396,30 +422,17 @@ void ShadingCommon::drawTextured(StyleContext& ctx, const SceneObject& object,
     if (object.textureRuns.empty()) {
         useLightmap(object.lightmap);
         GLint swizzle[4];
-        const bool swizzled = bindProgramTexture(gl, object.texture, swizzle);
+        const bool swizzled = bindProgramTexture(ctx, object.texture, swizzle);
         ctx.meshes.draw(gl, *object.mesh);
         unbindProgramTexture(gl, swizzled, swizzle);
         return;
     }
     for (const SceneObject::TextureRun& run : object.textureRuns) {
         GLuint texture = run.texture;
-        if (texture == 0) {
-            if (!ctx.blankTexture) {
-                // White: the textured shader then shows the faces' own colours.
-                GlTexture::resetUnpack(gl);
-                ObjectNames::reserve(gl, ObjectNames::Kind::Texture, 1, &ctx.blankTexture);
-                gl.BindTexture(GL_TEXTURE_2D, ctx.blankTexture);
-                const uint8_t white[4] = {255, 255, 255, 255};
-                gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-                gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-                gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                              white);
-            }
-            texture = ctx.blankTexture;
-        }
+        if (texture == 0) texture = blankTexture(ctx);
         useLightmap(run.lightmap);
         GLint swizzle[4];
-        const bool swizzled = bindProgramTexture(gl, texture, swizzle);
+        const bool swizzled = bindProgramTexture(ctx, texture, swizzle);
         ctx.meshes.drawFaces(gl, *object.mesh, run.firstFace, run.faceCount);
         unbindProgramTexture(gl, swizzled, swizzle);
     }

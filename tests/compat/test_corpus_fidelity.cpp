@@ -121,7 +121,7 @@ TEST(CorpusFidelity, ReplicaIsThePictureAndTheDefaultStyleLosesNothing)
         EXPECT_LE(defaultMissing, floor.missing) << floor.why;
     }
     // A program may meet, at the moment this run recorded, a scene nprgl does not follow yet
-    // (atunnel's lit tunnel, extrusion's shapes with normals away from the side shown): one
+    // (extrusion's shapes with normals away from the side shown, splodesic's back material): one
     // such program is a finding for the corpus benchmark, not a regression; a change that
     // breaks what nprgl follows puts many below.
     std::string list;
