@@ -141,6 +141,7 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
     const size_t count = size_t(w) * h;
     std::vector<Lab> nativeLab(count), styledLab(count);
     std::vector<uint32_t> idAt(count, 0);
+    std::vector<bool> drawnNatively(count);
     // The style's background: what it shows where the program drew nothing and no object
     // covers (the clear colour again, or a page); its mean tells a pixel lost to it.
     double bgL = 0.0, bgA = 0.0, bgB = 0.0;
@@ -153,7 +154,8 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
             const uint8_t* d = &ids.rgba[p * 4];
             if (d[0] != n[0] || d[1] != n[1] || d[2] != n[2]) idAt[p] = idOf(d);
         }
-        if (idAt[p] == 0 && !(Lab::deltaE(nativeLab[p], clear) > kDrawn)) {
+        drawnNatively[p] = Lab::deltaE(nativeLab[p], clear) > kDrawn;
+        if (idAt[p] == 0 && !drawnNatively[p]) {
             bgL += styledLab[p].l, bgA += styledLab[p].a, bgB += styledLab[p].b;
             ++bgCount;
         }
@@ -168,7 +170,7 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
             const Lab& ln = nativeLab[p];
             const Lab& ls = styledLab[p];
             const uint32_t id = idAt[p];
-            const bool nativeDrawn = Lab::deltaE(ln, clear) > kDrawn;
+            const bool nativeDrawn = drawnNatively[p];
             const float de = Lab::deltaE(ln, ls);
             // Up to rasterisation: the two may cover an edge or a speck a pixel apart.
             bool match = de <= kMatch;

@@ -1,6 +1,19 @@
 #include "frame/AttribStack.h"
 
+#include <algorithm>
+
 namespace nprgl {
+
+void AttribState::Material::set(GLenum pname, const float* v)
+{
+    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
+        diffuse = {v[0], v[1], v[2], v[3]};
+    }
+    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) ambient = {v[0], v[1], v[2]};
+    if (pname == GL_EMISSION) emission = {v[0], v[1], v[2]};
+    if (pname == GL_SPECULAR) specular = {v[0], v[1], v[2]};
+    if (pname == GL_SHININESS) shininess = std::clamp(v[0], 0.0f, 128.0f);
+}
 
 void AttribStack::push(GLbitfield mask)
 {
@@ -42,15 +55,11 @@ void AttribStack::pop()
         a.lighting = saved.lighting;
         a.colorMaterial = saved.colorMaterial;
         a.lightsOn = saved.lightsOn;
-        a.materialDiffuse = saved.materialDiffuse;
-        a.materialEmission = saved.materialEmission;
-        a.materialAmbient = saved.materialAmbient;
+        a.material = saved.material;
         a.backMaterial = saved.backMaterial;
         a.localViewer = saved.localViewer;
         a.twoSide = saved.twoSide;
         a.flatShade = saved.flatShade;
-        a.materialSpecular = saved.materialSpecular;
-        a.materialShininess = saved.materialShininess;
         a.colorMaterialMode = saved.colorMaterialMode;
         a.colorMaterialFace = saved.colorMaterialFace;
         a.lightPosition = saved.lightPosition;

@@ -58,19 +58,18 @@ struct AttribState {
     GLenum fogMode = GL_EXP;
     float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
     glm::vec3 fogColour{0.0f};
-    glm::vec4 materialDiffuse{0.8f, 0.8f, 0.8f, 1.0f}; // front, as glMaterial set it
-    glm::vec3 materialAmbient{0.2f}; // front: what the ambient light reflects
-    // The back faces' material, which GL's two-sided lighting shows (defaults as the front's).
+    // A face's glMaterial state (GL's defaults).
     struct Material {
-        glm::vec3 ambient{0.2f};
+        glm::vec3 ambient{0.2f};                   // what the ambient light reflects
         glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
-        glm::vec3 specular{0.0f};
-        glm::vec3 emission{0.0f};
+        glm::vec3 specular{0.0f};                  // with shininess, Blinn's exponent
+        glm::vec3 emission{0.0f};                  // the light the surface gives itself
         float shininess = 0.0f;
-    } backMaterial;
-    glm::vec3 materialEmission{0.0f}; // front: the light the surface gives itself
-    glm::vec3 materialSpecular{0.0f}; // front: GL_SPECULAR and GL_SHININESS
-    float materialShininess = 0.0f;
+        // glMaterial's pname and values.
+        void set(GLenum pname, const float* v);
+    };
+    // The front's, and the back's that GL's two-sided lighting shows.
+    Material material, backMaterial;
     GLenum colorMaterialMode = GL_AMBIENT_AND_DIFFUSE; // what glColor sets under GL_COLOR_MATERIAL
     // The faces glColorMaterial names: a program that names GL_BACK alone leaves the front
     // (what the picture mostly shows) its material, whatever glColor says.

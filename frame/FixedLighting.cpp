@@ -7,6 +7,28 @@
 
 namespace nprgl {
 
+bool FixedLighting::towardsLight(const AttribState& a, size_t i, const glm::vec3& eye,
+                                 glm::vec3& l, float& reach)
+{
+    const glm::vec4 p = a.lightPosition[i];
+    l = p.w != 0.0f ? glm::vec3(p) / p.w - eye : glm::vec3(p);
+    const float distance = glm::length(l);
+    if (!(distance > 1e-12f) || !std::isfinite(distance)) return false;
+    l /= distance;
+    reach = 1.0f;
+    if (p.w != 0.0f) {
+        const glm::vec3 k = a.attenuation[i];
+        reach = 1.0f / std::max(k.x + (k.y + k.z * distance) * distance, 1e-6f);
+        if (a.spotCutoff[i] != 180.0f) {
+            const float cosine = glm::dot(-l, glm::normalize(a.spotDirection[i]));
+            reach *= cosine < std::cos(glm::radians(a.spotCutoff[i]))
+                         ? 0.0f
+                         : std::pow(std::max(cosine, 0.0f), a.spotExponent[i]);
+        }
+    }
+    return true;
+}
+
 glm::vec4 FixedLighting::shade(const AttribState& a, const Material& m, const glm::vec3& eye,
                                glm::vec3 normal)
 {
@@ -14,23 +36,9 @@ glm::vec4 FixedLighting::shade(const AttribState& a, const Material& m, const gl
     const glm::vec3 towardsEye =
         a.localViewer ? glm::normalize(-eye) : glm::vec3(0.0f, 0.0f, 1.0f);
     for (size_t i = 0; i < 8; ++i) {
-        if (!(a.lightsOn & (1u << i))) continue;
-        const glm::vec4 p = a.lightPosition[i];
-        glm::vec3 l = p.w != 0.0f ? glm::vec3(p) / p.w - eye : glm::vec3(p);
-        const float distance = glm::length(l);
-        if (!(distance > 1e-12f) || !std::isfinite(distance)) continue;
-        l /= distance;
-        float reach = 1.0f;
-        if (p.w != 0.0f) {
-            const glm::vec3 k = a.attenuation[i];
-            reach = 1.0f / std::max(k.x + (k.y + k.z * distance) * distance, 1e-6f);
-            if (a.spotCutoff[i] != 180.0f) {
-                const float cosine = glm::dot(-l, glm::normalize(a.spotDirection[i]));
-                reach *= cosine < std::cos(glm::radians(a.spotCutoff[i]))
-                             ? 0.0f
-                             : std::pow(std::max(cosine, 0.0f), a.spotExponent[i]);
-            }
-        }
+        glm::vec3 l;
+        float reach = 0.0f;
+        if (!(a.lightsOn & (1u << i)) || !towardsLight(a, i, eye, l, reach)) continue;
         glm::vec3 term = m.ambient * a.lightAmbient[i];
         const float nl = glm::dot(normal, l);
         if (nl > 0.0f) {
@@ -51,25 +59,8 @@ glm::vec4 FixedLighting::shade(const AttribState& a, const Material& m, const gl
     return {c, std::clamp(m.diffuse.a, 0.0f, 1.0f)};
 }
 
-void FixedLighting::setMaterial(Material& m, GLenum pname, const float* v)
-{
-    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
-        m.diffuse = {v[0], v[1], v[2], v[3]};
-    }
-    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) m.ambient = {v[0], v[1], v[2]};
-    if (pname == GL_EMISSION) m.emission = {v[0], v[1], v[2]};
-    if (pname == GL_SPECULAR) m.specular = {v[0], v[1], v[2]};
-    if (pname == GL_SHININESS) m.shininess = std::clamp(v[0], 0.0f, 128.0f);
-}
-
 void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
 {
-    Material base;
-    base.ambient = a.materialAmbient;
-    base.diffuse = a.materialDiffuse;
-    base.specular = a.materialSpecular;
-    base.emission = a.materialEmission;
-    base.shininess = a.materialShininess;
     const glm::mat4& modelview = batch.modelview;
     const glm::mat3 normals = glm::inverseTranspose(glm::mat3(modelview));
     // GL_RESCALE_NORMAL divides by the modelview's scale (its third row's length, as the
@@ -82,7 +73,7 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
     const GLenum colourMode = a.colorMaterial ? a.colorMaterialMode : 0;
     const bool colourFront = a.colorMaterialFace != GL_BACK;
     const bool colourBack = a.colorMaterialFace != GL_FRONT;
-    Material m = base;
+    Material m = a.material;
     size_t next = 0;
     for (size_t i = 0; i < batch.vertices.size(); ++i) {
         TrackedVertex& v = batch.vertices[i];

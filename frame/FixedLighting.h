@@ -17,8 +17,6 @@ namespace nprgl {
 class FixedLighting {
 public:
     using Material = AttribState::Material;
-    // glMaterial's pname and values into a material.
-    static void setMaterial(Material& m, GLenum pname, const float* v);
 
     // Lights every vertex of `batch` (batch.modelview set, colours still the current colour
     // per vertex) with the material state `a`, its colour-material mode and the diffuse
@@ -30,6 +28,11 @@ public:
     // flat shading draws it (OpenGL 2.1, table 2.2). Strips and fans are unrolled into
     // separate triangles or quads (their vertices differ in colour from face to face).
     static void flattenBatch(TrackedBatch& batch);
+    // Towards light i from the eye-space point `eye` (unit, into l), and how much of the
+    // light reaches it (attenuation and spot; 1 for a far light). False where the point is
+    // at the light, or not finite.
+    static bool towardsLight(const AttribState& a, size_t i, const glm::vec3& eye, glm::vec3& l,
+                             float& reach);
     // One vertex: eye-space position and normal (as GL transformed them, not normalised).
     static glm::vec4 shade(const AttribState& a, const Material& m, const glm::vec3& eye,
                            glm::vec3 normal);

@@ -1593,7 +1593,7 @@ void StateTracker::begin(GLenum mode)
     mBatch.vertices = takeVertices();
     mBatch.mode = mode;
     mBatch.hasNormals = currentNormalCounts();
-    mBatch.beginMaterial = mAttrib.materialDiffuse;
+    mBatch.beginMaterial = mAttrib.material.diffuse;
     mNormalFresh = false; // from here: whether the batch sets normals itself
 }
 
@@ -1619,7 +1619,7 @@ uint32_t StateTracker::currentMaterialId()
     std::array<float, 7> key = {float(a.lighting), float(a.frontColorMaterial()),
                                 float(detailTexture()), 0.0f, 0.0f, 0.0f, 0.0f};
     if (a.lighting && !a.frontColorMaterial()) {
-        const glm::vec4& d = a.materialDiffuse;
+        const glm::vec4& d = a.material.diffuse;
         key[3] = d.r;
         key[4] = d.g;
         key[5] = d.b;
@@ -1680,7 +1680,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     else if (a.lighting) {
         // One pass over the vertices: the material's colour (or the vertex's), lit.
         const glm::vec4 light(litSideLight(), 1.0f);
-        const glm::vec4 emission(glm::max(a.materialEmission, glm::vec3(0.0f)), 0.0f);
+        const glm::vec4 emission(glm::max(a.material.emission, glm::vec3(0.0f)), 0.0f);
         auto lit = [&](const glm::vec4& c) {
             return glm::min(c * light + emission, glm::vec4(1.0f));
         };
@@ -1689,12 +1689,12 @@ bool StateTracker::keep(TrackedBatch& batch)
         // leaves the material's diffuse colour what the eye mostly sees.
         const GLenum mode = a.frontColorMaterial() ? a.colorMaterialMode : GL_AMBIENT_AND_DIFFUSE;
         if (a.frontColorMaterial() && mode == GL_EMISSION) {
-            const glm::vec4 c = glm::min(a.materialDiffuse * light, glm::vec4(1.0f));
+            const glm::vec4 c = glm::min(a.material.diffuse * light, glm::vec4(1.0f));
             for (TrackedVertex& v : batch.vertices) {
                 v.color = glm::min(c + glm::vec4(glm::vec3(v.color), 0.0f), glm::vec4(1.0f));
             }
         } else if (a.frontColorMaterial() && mode != GL_DIFFUSE && mode != GL_AMBIENT_AND_DIFFUSE) {
-            const glm::vec4 c = lit(a.materialDiffuse);
+            const glm::vec4 c = lit(a.material.diffuse);
             for (TrackedVertex& v : batch.vertices) v.color = c;
         } else if (!a.frontColorMaterial() && !batch.materials.empty()) {
             // Materials set between glBegin and glEnd: each colours its run of vertices.
@@ -1707,7 +1707,7 @@ bool StateTracker::keep(TrackedBatch& batch)
                 batch.vertices[i].color = c;
             }
         } else if (!a.frontColorMaterial()) {
-            const glm::vec4 c = lit(a.materialDiffuse);
+            const glm::vec4 c = lit(a.material.diffuse);
             for (TrackedVertex& v : batch.vertices) v.color = c;
         } else if (light != glm::vec4(1.0f) || emission != glm::vec4(0.0f)) {
             for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
@@ -1876,20 +1876,9 @@ void StateTracker::material(GLenum face, GLenum pname, const float* v)
 {
     batchMaterial(face, pname, v);
     if (!v) return;
-    if (face == GL_BACK || face == GL_FRONT_AND_BACK) {
-        // Only GL's two-sided lighting shows it (FixedLighting, for the replica).
-        FixedLighting::setMaterial(mAttrib.backMaterial, pname, v);
-    }
-    if (face == GL_BACK) return;
-    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) {
-        mAttrib.materialDiffuse = {v[0], v[1], v[2], v[3]};
-    }
-    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) {
-        mAttrib.materialAmbient = {v[0], v[1], v[2]};
-    }
-    if (pname == GL_EMISSION) mAttrib.materialEmission = {v[0], v[1], v[2]};
-    if (pname == GL_SPECULAR) mAttrib.materialSpecular = {v[0], v[1], v[2]};
-    if (pname == GL_SHININESS) mAttrib.materialShininess = std::clamp(v[0], 0.0f, 128.0f);
+    if (face != GL_BACK) mAttrib.material.set(pname, v);
+    // Only GL's two-sided lighting shows it (FixedLighting, for the replica).
+    if (face == GL_BACK || face == GL_FRONT_AND_BACK) mAttrib.backMaterial.set(pname, v);
 }
 
 void StateTracker::newList(GLuint list, GLenum mode)
@@ -2059,7 +2048,7 @@ void StateTracker::addEvenSpecular(TrackedBatch& batch) const
     // bright all over; on a curved surface the least is about nothing, and its highlight is
     // the styles' highlight band.
     const AttribState& a = mAttrib;
-    if (!(glm::dot(a.materialSpecular, a.materialSpecular) > 0.0f)) return;
+    if (!(glm::dot(a.material.specular, a.material.specular) > 0.0f)) return;
     struct Shine {
         glm::vec3 colour;
         size_t light;
@@ -2068,7 +2057,7 @@ void StateTracker::addEvenSpecular(TrackedBatch& batch) const
     std::array<Shine, 8> shines;
     size_t count = 0;
     for (size_t i = 0; i < 8; ++i) {
-        const glm::vec3 colour = glm::max(a.lightSpecular[i], 0.0f) * a.materialSpecular;
+        const glm::vec3 colour = glm::max(a.lightSpecular[i], 0.0f) * a.material.specular;
         if ((a.lightsOn & (1u << i)) && glm::dot(colour, colour) > 0.0f) {
             shines[count++] = {colour, i};
         }
@@ -2085,25 +2074,13 @@ void StateTracker::addEvenSpecular(TrackedBatch& batch) const
             Shine& shine = shines[k];
             if (!(shine.lowest > kNone)) continue;
             const size_t i = shine.light;
-            const glm::vec4 p = a.lightPosition[i];
-            glm::vec3 l = p.w != 0.0f ? glm::vec3(p) / p.w - eye : glm::vec3(p);
-            const float length = glm::length(l);
+            glm::vec3 l;
+            float reach = 0.0f;
             float s = 0.0f;
-            if (length > 1e-12f && std::isfinite(length)) {
-                l /= length;
+            if (FixedLighting::towardsLight(a, i, eye, l, reach)) {
                 const float nh = glm::dot(n, glm::normalize(l + glm::vec3(0.0f, 0.0f, 1.0f)));
                 if (glm::dot(n, l) > 0.0f && nh > 0.0f) {
-                    s = std::pow(nh, a.materialShininess);
-                    if (p.w != 0.0f) {
-                        const glm::vec3 k3 = a.attenuation[i];
-                        s /= std::max(k3.x + (k3.y + k3.z * length) * length, 1e-6f);
-                    }
-                    if (p.w != 0.0f && a.spotCutoff[i] < 180.0f) {
-                        const float c = glm::dot(-l, glm::normalize(a.spotDirection[i]));
-                        s = c < std::cos(glm::radians(a.spotCutoff[i]))
-                                ? 0.0f
-                                : s * std::pow(std::max(c, 0.0f), a.spotExponent[i]);
-                    }
+                    s = std::pow(nh, a.material.shininess) * reach;
                 }
             }
             shine.lowest = std::min(shine.lowest, std::isfinite(s) ? s : 0.0f);
