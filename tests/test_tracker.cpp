@@ -400,6 +400,18 @@ struct Feed {
             w.put<GLint>(value);
         });
     }
+    // glMaterialfv(face, pname, v).
+    void material(GLenum face, GLenum pname, std::array<float, 4> v)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glMaterialfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(face);
+            w.put<GLenum>(pname);
+            w.putBytes(v.data(), sizeof v);
+            w.endPayload(mark);
+        });
+    }
     // Calls on GL_PROJECTION, then back to GL_MODELVIEW.
     template <typename Write>
     void projection(Write&& write)
@@ -1076,14 +1088,7 @@ TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
     tracker.setProgramLighting(true);
     Feed feed{tracker};
     auto material = [&](GLenum pname, std::array<float, 4> v) {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glMaterialfv);
-            const size_t mark = w.beginPayload();
-            w.put<GLenum>(GL_FRONT_AND_BACK);
-            w.put<GLenum>(pname);
-            w.putBytes(v.data(), sizeof v);
-            w.endPayload(mark);
-        });
+        feed.material(GL_FRONT_AND_BACK, pname, v);
     };
     // A quad at z -2 whose vertices' normals turn from the eye (0 degrees) to 60 degrees off
     // it, and the last one away from it.
@@ -1125,15 +1130,7 @@ TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
     quad();
     // The back's own material lights the side turned away (splodesic's yellow insides).
     feed.run([](CallWriter& w) { w.op(op::glShadeModel), w.put<GLenum>(GL_SMOOTH); });
-    feed.run([](CallWriter& w) {
-        w.op(op::glMaterialfv);
-        const size_t mark = w.beginPayload();
-        w.put<GLenum>(GL_BACK);
-        w.put<GLenum>(GL_DIFFUSE);
-        const float green[4] = {0.0f, 1.0f, 0.0f, 1.0f};
-        w.putBytes(green, sizeof green);
-        w.endPayload(mark);
-    });
+    feed.material(GL_BACK, GL_DIFFUSE, {0.0f, 1.0f, 0.0f, 1.0f});
     quad();
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
@@ -1174,14 +1171,8 @@ TEST(StateTracker, ColourMaterialOnTheBackLeavesTheFrontItsMaterial)
         feed.enable(GL_LIGHTING, true);
         feed.enable(GL_LIGHT0, true);
         feed.enable(GL_COLOR_MATERIAL, true);
+        feed.material(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, {0.6f, 0.6f, 0.2f, 1.0f});
         feed.run([](CallWriter& w) {
-            w.op(op::glMaterialfv);
-            const size_t mark = w.beginPayload();
-            w.put<GLenum>(GL_FRONT_AND_BACK);
-            w.put<GLenum>(GL_AMBIENT_AND_DIFFUSE);
-            const float v[4] = {0.6f, 0.6f, 0.2f, 1.0f};
-            w.putBytes(v, sizeof v);
-            w.endPayload(mark);
             for (const GLenum face : {GLenum(GL_FRONT), GLenum(GL_BACK)}) {
                 w.op(op::glColorMaterial);
                 w.put<GLenum>(face);
@@ -1231,7 +1222,7 @@ TEST(StateTracker, ASpecularLightShownEvenlyOverABatchBrightensIt)
         });
     };
     auto material = [&](GLenum pname, std::array<float, 4> v) {
-        vector(op::glMaterialfv, GL_FRONT_AND_BACK, pname, v);
+        feed.material(GL_FRONT_AND_BACK, pname, v);
     };
     // A flat triangle facing the eye, and one whose third normal turns across the light
     // (the default light 0 shines along the view: its half-vector is the view's).
