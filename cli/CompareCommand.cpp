@@ -2,6 +2,10 @@
 
 #include "common/FrameFidelity.h"
 #include "common/PngImage.h"
+#include "styles/Presets.h"
+#include "styles/Style.h"
+#include "styles/StyleRegistry.h"
+#include "styles/StyleSettings.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -153,6 +157,31 @@ void writeFrameJson(std::FILE* f, uint64_t frame, const FrameFidelity& m,
     std::fprintf(f, "]}%s\n", last ? "" : ",");
 }
 
+// The chain compare's style runs, without its outline styles: where it has a shading or
+// background style and an outline style. Empty otherwise (or when the chain does not parse:
+// the styled replay says why).
+std::string shadingChain(const CompareOptions& options)
+{
+    std::string chain = options.style, config, error;
+    for (const std::string& s : options.settings) config += (config.empty() ? "" : ",") + s;
+    StyleSettings settings;
+    if (!Presets::combine(options.preset, chain, config, error) ||
+        !StyleSettings::parse(chain, config, settings, error)) {
+        return {};
+    }
+    std::string kept;
+    bool outlines = false, shades = false;
+    for (const StyleInfo* info : settings.chain()) {
+        if (info->role == styles::StyleRole::Outline) {
+            outlines = true;
+            continue;
+        }
+        shades = shades || info->role == styles::StyleRole::Shading;
+        kept += (kept.empty() ? "" : "+") + info->name;
+    }
+    return outlines && shades ? kept : std::string();
+}
+
 } // namespace
 
 int compareCommand(const CompareOptions& options)
@@ -196,6 +225,18 @@ int compareCommand(const CompareOptions& options)
     if (!runSelf(styled, &statsText, error)) return fail(options.file + ": " + error);
     const std::map<uint64_t, std::string> stats = statsByFrame(statsText);
 
+    // The palette is the shading's: the same chain without its outline styles, when it has
+    // both (the ink over a thin part is most of its pixels, and no object's colour).
+    const std::string shading = shadingChain(options);
+    const std::string shadingDir = (scratch / "shading").string();
+    if (!shading.empty()) {
+        std::vector<std::string> a = replayArgs(shadingDir);
+        a.insert(a.end(), {"--style", shading});
+        if (!options.preset.empty()) a.insert(a.end(), {"--preset", options.preset});
+        for (const std::string& s : options.settings) a.insert(a.end(), {"--set", s});
+        if (!runSelf(a, nullptr, error)) return fail(options.file + ": " + error);
+    }
+
     const std::string idsDir = (scratch / "ids").string();
     std::vector<std::string> ids = replayArgs(idsDir);
     ids.insert(ids.end(), {"--style", "ids"});
@@ -212,13 +253,15 @@ int compareCommand(const CompareOptions& options)
         const std::string chain = !options.style.empty()    ? options.style
                                   : !options.preset.empty() ? "preset " + options.preset
                                                             : "default";
-        std::fprintf(json, "{\"file\": %s, \"style\": %s, \"frames\": [\n",
-                     jsonString(options.file).c_str(), jsonString(chain).c_str());
+        std::fprintf(json, "{\"file\": %s, \"style\": %s, \"paletteOf\": %s, \"frames\": [\n",
+                     jsonString(options.file).c_str(), jsonString(chain).c_str(),
+                     jsonString(shading.empty() ? "the style" : shading).c_str());
     }
 
     const auto nativeFrames = framesIn(nativeDir);
     const auto styleFrames = framesIn(styleDir);
     const auto idsFrames = framesIn(idsDir);
+    const auto shadingFrames = shading.empty() ? decltype(idsFrames)() : framesIn(shadingDir);
     std::vector<double> fidelities;
     uint64_t nativeDrawn = 0, missing = 0, judged = 0, failures = 0;
     size_t index = 0;
@@ -230,15 +273,19 @@ int compareCommand(const CompareOptions& options)
                          static_cast<unsigned long long>(frame));
             continue;
         }
-        PngImage a, b, c;
+        PngImage a, b, c, e;
         if (!PngImage::read(nativePath.string(), a, error) ||
             !PngImage::read(s->second.string(), b, error)) {
             return fail(error);
         }
         const auto d = idsFrames.find(frame);
         if (d != idsFrames.end() && !PngImage::read(d->second.string(), c, error)) c = PngImage();
+        const auto sh = shadingFrames.find(frame);
+        if (sh != shadingFrames.end() && !PngImage::read(sh->second.string(), e, error)) {
+            e = PngImage();
+        }
         FrameFidelity m;
-        if (!FrameFidelity::measure(a, b, c, !options.outDir.empty(), m, error)) {
+        if (!FrameFidelity::measure(a, b, c, !options.outDir.empty(), m, error, e)) {
             return fail("frame " + std::to_string(frame) + ": " + error);
         }
         if (!options.outDir.empty()) {

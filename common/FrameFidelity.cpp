@@ -118,12 +118,14 @@ uint32_t FrameFidelity::paletteJudged() const
 }
 
 bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, const PngImage& ids,
-                            bool makeDiff, FrameFidelity& out, std::string& error)
+                            bool makeDiff, FrameFidelity& out, std::string& error,
+                            const PngImage& shading)
 {
     out = FrameFidelity();
     const int w = native.width, h = native.height;
     if (w <= 0 || h <= 0 || styled.width != w || styled.height != h ||
-        (!ids.rgba.empty() && (ids.width != w || ids.height != h))) {
+        (!ids.rgba.empty() && (ids.width != w || ids.height != h)) ||
+        (!shading.rgba.empty() && (shading.width != w || shading.height != h))) {
         error = "the frames differ in size (" + std::to_string(w) + "x" + std::to_string(h) +
                 " natively, " + std::to_string(styled.width) + "x" +
                 std::to_string(styled.height) + " styled)";
@@ -185,9 +187,12 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
             out.nativeDrawn += nativeDrawn;
             out.drawn += drawn;
             out.matching += drawn && match;
-            // Drawn natively; in the style no object there, and the background or page shows.
+            // Drawn natively; in the style no object there, and the background or page shows
+            // where the program's pixel did not look like it (a dim fringe or a faint star
+            // that looks like a dark page lost nothing one could see).
             const bool lost = nativeDrawn && id == 0 && !match &&
-                              Lab::deltaE(ls, background) <= kMatch;
+                              Lab::deltaE(ls, background) <= kMatch &&
+                              Lab::deltaE(ln, background) > kMatch;
             out.missing += lost;
             if (id != 0) {
                 Accumulator& a = perObject[id];
@@ -196,7 +201,8 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
                 ++a.object.pixels;
                 a.deltaE += de;
                 a.native.add(ln);
-                a.styled.add(ls);
+                a.styled.add(shading.rgba.empty() ? ls
+                                                  : Lab::fromSrgb(&shading.rgba[p * 4]));
                 auto& b = a.object.box;
                 b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
             }

@@ -52,7 +52,8 @@ struct FrameFidelity {
     // (rasterisation may put an edge or a speck a pixel apart).
     uint64_t matching = 0;
     // Drawn natively; in the style no object covers it and it shows the style's background
-    // (the clear colour or the page, as where the program drew nothing).
+    // (the clear colour or the page, as where the program drew nothing), which the native
+    // pixel did not look like.
     uint64_t missing = 0;
     std::vector<Object> objects; // by id
     PngImage diff;               // native | styled | where they differ (measure(..., true))
@@ -66,8 +67,12 @@ struct FrameFidelity {
     uint32_t paletteJudged() const;
 
     // False with a message when the images cannot be compared (sizes differ).
+    // `shading`: the same frame in the chain without its outline styles (may be empty: the
+    // styled frame): the objects' styled tones, which the palette check judges, are its. Ink
+    // is no object's colour: on a thin part (a wire, a bar) it covers most of its pixels.
     static bool measure(const PngImage& native, const PngImage& styled, const PngImage& ids,
-                        bool makeDiff, FrameFidelity& out, std::string& error);
+                        bool makeDiff, FrameFidelity& out, std::string& error,
+                        const PngImage& shading = PngImage());
     // How the `ids` style writes object id 1..kMaxId: red the low byte, green the high one,
     // blue a fixed mark; idOf() is 0 for a colour that is no id.
     static constexpr uint32_t kMaxId = 0xFFFF;

@@ -822,9 +822,31 @@ void Compositor::readPixels()
 
 void Compositor::copyToTexture()
 {
+    if (ready()) {
+        GLint framebuffer = 0;
+        gRealGl.glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &framebuffer);
+        const uint64_t frame = mContext.frame();
+        std::erase_if(mCopied, [&](const Copied& c) { return c.frame + kCopyMemory < frame; });
+        const Copied copied{framebuffer, mTracker.viewport(), frame};
+        auto same = [&](const Copied& c) {
+            return c.framebuffer == copied.framebuffer && c.viewport == copied.viewport;
+        };
+        auto it = std::find_if(mCopied.begin(), mCopied.end(), same);
+        if (it != mCopied.end()) it->frame = frame;
+        else if (mCopied.size() < 64) mCopied.push_back(copied);
+    }
     mCopyFlush = true;
     barrier();
     mCopyFlush = false;
+}
+
+bool Compositor::copiedRecently(GLint framebuffer, const glm::ivec4& viewport) const
+{
+    const uint64_t frame = mContext.frame();
+    return std::any_of(mCopied.begin(), mCopied.end(), [&](const Copied& c) {
+        return c.framebuffer == framebuffer && c.viewport == viewport &&
+               c.frame + kCopyMemory >= frame;
+    });
 }
 
 bool Compositor::readBack(GLint framebuffer) const
@@ -1016,7 +1038,7 @@ void Compositor::buildScene()
     mScene.depthRange = mHeldDepthRange;
     mScene.alphaWrites = !mHeldColoured || mHeldAlphaWrites;
     mScene.colourClears = colourClearsOf(mHeldFramebuffer);
-    mScene.copiedToTexture = mCopyFlush;
+    mScene.copiedToTexture = mCopyFlush || copiedRecently(mHeldFramebuffer, mScene.viewport);
     // Fresh when the cleared (or shown) rectangle holds the scene's viewport, as confined.
     const glm::ivec4 area = mScene.confined(mScene.viewport);
     const glm::ivec4& fresh = mFresh.rect;

@@ -231,6 +231,18 @@ private:
     std::vector<GLint> mReadBack;
     bool mPlainFlush = false;
     bool mCopyFlush = false; // the flush under way is for a glCopyTex* (copyToTexture)
+    // Where the program copied its drawing into a texture (glCopyTex*) in the last few frames
+    // (a frame may end at a glFinish as well as at the swap): a flush there is that
+    // texture's content too, though another barrier (a draw the styles leave) came first.
+    // Programs render their textures the same way every frame.
+    static constexpr uint64_t kCopyMemory = 4;
+    struct Copied {
+        GLint framebuffer = 0;
+        glm::ivec4 viewport{0};
+        uint64_t frame = 0;
+    };
+    std::vector<Copied> mCopied;
+    bool copiedRecently(GLint framebuffer, const glm::ivec4& viewport) const;
     bool readBack(GLint framebuffer) const;
     // Where one framebuffer's colour holds nothing drawn since it was cleared or shown
     // (Scene::colourFresh): its window rectangle, unless something drew since.

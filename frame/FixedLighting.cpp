@@ -163,4 +163,25 @@ void FixedLighting::flattenBatch(TrackedBatch& batch)
     v.swap(out);
 }
 
+float FixedLighting::ambientShare(const AttribState& a, const glm::vec4& colour,
+                                  const glm::vec4& litSide)
+{
+    glm::vec3 ambientLight = glm::max(a.modelAmbient, glm::vec3(0.0f));
+    for (size_t i = 0; i < 8; ++i) {
+        if (a.lightsOn & (1u << i)) ambientLight += glm::max(a.lightAmbient[i], glm::vec3(0.0f));
+    }
+    const GLenum mode = a.frontColorMaterial() ? a.colorMaterialMode : 0;
+    const bool colourAmbient = mode == GL_AMBIENT || mode == GL_AMBIENT_AND_DIFFUSE;
+    const glm::vec3 reflects = colourAmbient ? glm::vec3(colour) : a.material.ambient;
+    const glm::vec3 emits = mode == GL_EMISSION ? glm::vec3(colour) : a.material.emission;
+    const glm::vec3 unlit =
+        glm::clamp(glm::max(emits, glm::vec3(0.0f)) + reflects * ambientLight, 0.0f, 1.0f);
+    // Luma of the encoded values: GL lights them as they are.
+    auto luma = [](const glm::vec3& c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
+    const float lit = luma(glm::vec3(litSide));
+    if (!(lit > 1e-4f)) return -1.0f;
+    const float share = luma(unlit) / lit;
+    return std::isfinite(share) ? std::clamp(share, 0.0f, 1.0f) : -1.0f;
+}
+
 } // namespace nprgl

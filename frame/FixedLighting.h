@@ -33,6 +33,11 @@ public:
     // at the light, or not finite.
     static bool towardsLight(const AttribState& a, size_t i, const glm::vec3& eye, glm::vec3& l,
                              float& reach);
+    // GL's colour where no light reaches a surface of colour `colour` (the current colour,
+    // for colour material), emission and ambient terms, as a share (0..1, by luma) of
+    // `litSide`, the colour the styles give its lit side.
+    static float ambientShare(const AttribState& a, const glm::vec4& colour,
+                              const glm::vec4& litSide);
     // One vertex: eye-space position and normal (as GL transformed them, not normalised).
     static glm::vec4 shade(const AttribState& a, const Material& m, const glm::vec3& eye,
                            glm::vec3 normal);

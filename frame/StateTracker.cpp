@@ -1670,6 +1670,8 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.projection = mMatrices.projection();
     batch.materialId = currentMaterialId();
     const AttribState& a = mAttrib;
+    const glm::vec4 current = batch.vertices.front().color; // before lighting replaces it
+    float ambientShare = -1.0f;
     if (mProgramLighting) {
         if (a.lighting) FixedLighting::lightBatch(a, batch);
         if (a.flatShade) FixedLighting::flattenBatch(batch);
@@ -1712,6 +1714,7 @@ bool StateTracker::keep(TrackedBatch& batch)
         } else if (light != glm::vec4(1.0f) || emission != glm::vec4(0.0f)) {
             for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
         }
+        ambientShare = FixedLighting::ambientShare(a, current, batch.vertices.front().color);
         addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
@@ -1747,6 +1750,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     }
     if (a.lighting) litBy(batch.lights);
     else batch.lights.count = 0;
+    batch.lights.ambientShare = ambientShare;
     if (batch.texture == 0) {
         batch.generated = generatedTexture();
         bakeObjectLinear(batch);

@@ -2,13 +2,15 @@
 # The corpus benchmark in one command from a fresh clone: installs, builds, records every Debian GL hack and the games, compares each in replica and the default style, runs each live under every preset, writes docs/compat.md.
 #
 # Usage: scripts/corpus.sh [OUTDIR] [--quick] [--no-record] [--no-compare] [--no-live]
-#                          [--no-install] [--no-build] [--no-doc]
+#                          [--no-install] [--no-build] [--no-doc] [--live-resume]
 #   OUTDIR      where captures and results go (default: build/corpus in this clone)
 #   --quick     the small regression set of scripts/corpus-captures.sh (32 hacks, 4 frames)
 #   --no-record, --no-compare, --no-live  skip a step, keeping what an earlier run left in
 #               OUTDIR (captures and manifest, results/, live.tsv) for the report
 #   --no-install, --no-build  skip scripts/install-deps.sh, scripts/build.sh (a clone set up)
 #   --no-doc    write the report to OUTDIR/compat.md only, not docs/compat.md
+#   --live-resume  keep OUTDIR/live.tsv and run live only the programs it does not have yet
+#               (the live step takes hours on the whole corpus; a stopped run goes on)
 # CORPUS_LIVE_GAME_FRAMES=N runs the games live for N frames (default: to their scene's frame).
 # CORPUS_COMPARE_FRAMES=N compares only the last N recorded frames of each capture.
 #
@@ -30,7 +32,7 @@ set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=""
-quick=0 record=1 compare=1 live=1 install=1 build_it=1 doc=1
+quick=0 record=1 compare=1 live=1 install=1 build_it=1 doc=1 resume=0
 for arg in "$@"; do
     case $arg in
         --quick) quick=1 ;;
@@ -40,9 +42,10 @@ for arg in "$@"; do
         --no-install) install=0 ;;
         --no-build) build_it=0 ;;
         --no-doc) doc=0 ;;
+        --live-resume) resume=1 ;;
         -*)
             echo "usage: $0 [OUTDIR] [--quick] [--no-record] [--no-compare] [--no-live]" \
-                "[--no-install] [--no-build] [--no-doc]" >&2
+                "[--no-install] [--no-build] [--no-doc] [--live-resume]" >&2
             exit 1
             ;;
         *) out=$arg ;;
@@ -122,7 +125,7 @@ done 3<"$out/manifest.tsv"
 # --- live under every preset -----------------------------------------------------------------
 live_tsv=$out/live.tsv
 if [ "$live" = 1 ]; then
-    : >"$live_tsv"
+    [ "$resume" = 1 ] && [ -f "$live_tsv" ] || : >"$live_tsv"
     mapfile -t presets < <("$nprgl" styles | awk '/^Presets/ { p = 1; next }
         p && /^    [a-z]/ { print $1 }')
     if [ "${#presets[@]}" -eq 0 ]; then
@@ -141,6 +144,13 @@ if [ "$live" = 1 ]; then
         [ "$keys" != - ] || keys=""
         [ "$env" != - ] || env=""
         command=("${row[@]:8}")
+        if [ "$resume" = 1 ]; then
+            # Done: a row for native and every preset. A partial run is run again.
+            rows=$(awk -F'\t' -v n="$name" '$1 == n' "$live_tsv" | wc -l)
+            [ "$rows" -lt $((${#presets[@]} + 1)) ] || continue
+            awk -F'\t' -v n="$name" '$1 != n' "$live_tsv" >"$live_tsv.tmp"
+            mv "$live_tsv.tmp" "$live_tsv"
+        fi
         work=$out/live/$name
         rm -rf "$work"
         mkdir -p "$work"

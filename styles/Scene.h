@@ -25,6 +25,10 @@ struct SceneLights {
     };
     uint32_t count = 0; // 0: the object was not lit by the program
     Light lights[8];
+    // What GL shows where none of the lights reaches (the material's emission and what it
+    // reflects of the ambient light), as a share of the object's colour on its lit side:
+    // how dark the program's own shadowed side is. Below 0: not known.
+    float ambientShare = -1.0f;
 };
 
 // Texture object 0 (GL's default 2D texture, one for all units), where a program that never

@@ -2,6 +2,7 @@
 
 #include "styles/GlFunctions.h"
 #include "styles/MeshBuffers.h"
+#include "styles/PageTone.h"
 #include "styles/Scene.h"
 
 #include <string>
@@ -20,6 +21,7 @@ struct StyleContext {
     GLuint blankTexture = 0; // 1x1 white, made on first use (ShadingCommon::drawTextured)
     const StyleSettings* settings = nullptr;
     bool alphaWrites = true; // the scene's (Scene::alphaWrites), set by the chain per flush
+    PageTone page;           // dark or light this frame (the chain observes each flush)
 
     // The value of style.param (configured, else the registry's default).
     double param(const char* style, const char* name) const;

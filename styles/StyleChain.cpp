@@ -2,8 +2,10 @@
 
 #include "common/Log.h"
 #include "styles/StyleRegistry.h"
+#include "styles/background/PaperStyle.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace nprgl::styles {
@@ -28,6 +30,28 @@ bool atFarPlane(const SceneObject& o)
 
 } // namespace
 
+PageTone::Mode StyleChain::pageMode() const
+{
+    // The page's tone is the chain's, not only the paper's: without paper the program's own
+    // background stays, and the ink must still stand out on it.
+    const auto mode = PageTone::Mode(std::clamp(int(std::lround(mContext.param("paper", "tone"))),
+                                                0, int(PageTone::Mode::Dark)));
+    if (mode != PageTone::Mode::Auto) return mode;
+    // A page colour the user chose (a preset's blue blueprint paper) is the page: its own
+    // lightness decides the ink.
+    glm::vec3 colour(1.0f);
+    if (PaperStyle::colourConfigured(mContext, colour)) {
+        return PageTone::luminance(colour) < 0.5f * (PageTone::kDarkBelow + PageTone::kLightAbove)
+                   ? PageTone::Mode::Dark
+                   : PageTone::Mode::Light;
+    }
+    const auto& chain = mSettings.chain();
+    if (std::any_of(chain.begin(), chain.end(), [](const StyleInfo* s) { return s->lightPage; })) {
+        return PageTone::Mode::Light;
+    }
+    return mode;
+}
+
 bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getProc,
                       std::string& error)
 {
@@ -41,6 +65,7 @@ bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getPro
     }
     const GlFunctions& gl = mContext.gl;
     gl.GenVertexArrays(1, &mContext.vao);
+    mContext.page.setMode(pageMode());
     // Shading first, then the background (it must see the shaded surfaces' colours and
     // lie under the ink), then the outline styles in the order named.
     std::vector<const StyleInfo*> order = mSettings.chain();
@@ -149,6 +174,8 @@ void StyleChain::render(const Scene& scene)
     // Alpha-tested objects and decals are shaded with the program's alpha test and polygon
     // offset and left out of the styles after the shading (their edges are not their
     // cut-outs' edges; a decal's would fight its surface's).
+    // The window's background decides the page (an offscreen target's clear is a texture's).
+    if (scene.framebuffer == 0) mContext.page.observe(scene.frame, glm::vec3(scene.clearColor));
     mOpaque.objects.clear();
     mTranslucent.objects.clear();
     mCutOut.objects.clear();

@@ -27,9 +27,10 @@ public:
     void shutdown();
 
     bool hasShading() const { return mHasShading; }
-    // The chain draws a page (a background style): additive glows of the program's would
-    // wash out on it, so they are drawn as ink around their draws (GlowInk).
-    bool inksGlows() const { return mGlowInkReady; }
+    // The chain draws a light page (a background style): additive glows of the program's
+    // would wash out on it, so they are drawn as ink around their draws (GlowInk). On a dark
+    // page they add light as the program draws them.
+    bool inksGlows() const { return mGlowInkReady && !mContext.page.dark(); }
     void glowBegin(bool textured, bool sourceAlpha, GLenum fogMode)
     {
         mGlowInk.begin(mContext.gl, textured, sourceAlpha, fogMode);
@@ -37,6 +38,8 @@ public:
     void glowEnd() { mGlowInk.end(mContext.gl); }
     StyleContext& context() { return mContext; }
 
+    // paper.tone, or what the chain's paper colour and styles ask of the page.
+    PageTone::Mode pageMode() const;
     // Sets the baseline state of Style.h: the shading pass's, or the one of the passes after.
     void setBaseline(const Scene& scene, bool shadingPass = false);
 

@@ -57,6 +57,9 @@ struct StyleInfo {
     // The style draws the colours GL's own lighting and flat shading give each vertex (the
     // tracker computes them: StateTracker::setProgramLighting), not the material's colour.
     bool programLighting = false;
+    // The style draws dark marks that need a light page (graphite): paper.tone=auto keeps
+    // the page light for a chain with it.
+    bool lightPage = false;
     std::unique_ptr<styles::Style> (*create)() = nullptr; // null for "none"
 
     const ParamInfo* findParam(std::string_view param) const;

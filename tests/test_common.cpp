@@ -235,6 +235,24 @@ TEST(FrameFidelity, OnlyWhatTheStylesBackgroundShowsIsMissing)
     EXPECT_EQ(m.missing, 100u);
 }
 
+// A faint star or a dim fringe the program drew near its black background, which a dark page
+// now shows about as it was, lost nothing one can see: it is not missing. A bright one that
+// shows the page is.
+TEST(FrameFidelity, WhatLookedLikeThePageIsNotMissing)
+{
+    const uint8_t faint[3] = {34, 36, 40}, bright[3] = {200, 200, 200};
+    PngImage native = filled(40, 40, 0, 0, 0);
+    PngImage styled = filled(40, 40, 30, 33, 38);
+    paint(native, 0, 0, 10, 10, faint);
+    paint(native, 20, 20, 30, 30, bright);
+    FrameFidelity m;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(native, styled, filled(40, 40, 0, 0, 0), false, m, error))
+        << error;
+    EXPECT_EQ(m.nativeDrawn, 200u);
+    EXPECT_EQ(m.missing, 100u) << "only the bright square is lost";
+}
+
 TEST(FrameFidelity, ASpeckAPixelApartIsRasterisationNotAnError)
 {
     // Sub-pixel objects (splodesic's specks) land a pixel apart natively and restyled.

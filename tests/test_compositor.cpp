@@ -296,10 +296,10 @@ TEST(Compositor, ComicPresetDrawsInkBetweenTheBands)
 TEST(Compositor, ABackdropInTheClearColourStaysOnThePage)
 {
     const std::string dir = freshDir("backdrop_floor");
-    ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"},
-                                       {demo("textured"), "--backdrop-floor", "--offscreen",
-                                        "--size", "320x240", "--frames", "2", "--save-frames",
-                                        "2", "--save-dir", dir}));
+    ProcessResult r =
+        runProcess(under({nprglCommand(), "--style", "toon+paper", "--set", "paper.tone=light"},
+                         {demo("textured"), "--backdrop-floor", "--offscreen", "--size", "320x240",
+                          "--frames", "2", "--save-frames", "2", "--save-dir", dir}));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     PngImage image;
     std::string error;
@@ -328,11 +328,12 @@ TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
     // Frames 1 and 3 of one run; returns the directory they are in.
     auto run = [](bool window) {
         const std::string dir = freshDir(window ? "stale_panel_glx" : "stale_panel_osmesa");
-        std::vector<std::string> command = {demo("textured"), "--stale-panel", "--size",
-                                            "320x240", "--frames", "3", "--save-frames", "1,3",
-                                            "--save-dir", dir};
+        std::vector<std::string> command = {
+            demo("textured"), "--stale-panel", "--size",     "320x240", "--frames", "3",
+            "--save-frames",  "1,3",           "--save-dir", dir};
         if (!window) command.push_back("--offscreen");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"}, command));
+        ProcessResult r = runProcess(
+            under({nprglCommand(), "--style", "toon+paper", "--set", "paper.tone=light"}, command));
         EXPECT_EQ(r.exitCode, 0) << r.err;
         return dir;
     };
@@ -360,10 +361,10 @@ TEST(Compositor, PixelsLeftFromAShownFrameBecomePageAndTheFramesOwnStay)
 TEST(Compositor, ColourCodedPickingReadsWhatTheProgramDrew)
 {
     auto picks = [](const std::string& style, const std::string& dir) {
-        ProcessResult r = runProcess(
-            under({nprglCommand(), "--style", style},
-                  {demo("textured"), "--pick", "--offscreen", "--size", "320x240", "--frames",
-                   "3", "--save-frames", "3", "--save-dir", dir}));
+        ProcessResult r =
+            runProcess(under({nprglCommand(), "--style", style, "--set", "paper.tone=light"},
+                             {demo("textured"), "--pick", "--offscreen", "--size", "320x240",
+                              "--frames", "3", "--save-frames", "3", "--save-dir", dir}));
         EXPECT_EQ(r.exitCode, 0) << r.err;
         return r.out;
     };
@@ -457,7 +458,7 @@ TEST(Compositor, ALaterSurfaceAtEqualDepthCoversUnderLequal)
 TEST(Compositor, AnotherFramebuffersClearMakesNoNewBackground)
 {
     const PngImage image = readPng(demoFrame("textured", "other_clear",
-                                             {"--style", "toon+paper"},
+                                             {"--style", "toon+paper", "--set", "paper.tone=light"},
                                              {"--backdrop-floor", "--pick", "--weapon"}));
     ASSERT_FALSE(image.rgba.empty());
     // The floor near the bottom, in the clear colour (0.15, 0.15, 0.18); the page above.
@@ -739,8 +740,8 @@ TEST_P(DefaultStyle, EveryDemoAppRunsAndIsStylised)
         }
         argv.insert(argv.end(), args.begin(), args.end());
         argv.insert(argv.end(), {"--save-dir", dir});
-        ProcessResult r = runProcess(argv, {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""},
-                                            {"NPRGL_PRESET", ""}});
+        ProcessResult r =
+            runProcess(argv, {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""}, {"NPRGL_PRESET", ""}});
         std::string error;
         EXPECT_TRUE(PngImage::read(dir + file, image, error)) << chain << ": " << error;
         return r;
@@ -786,22 +787,41 @@ TEST_P(DefaultStyle, EveryDemoAppRunsAndIsStylised)
     // vivid pixels are mostly 2D (overlay, state).
     EXPECT_GT(redrawn * 100, covered * 12) << "the program's drawing is as it drew it: no toon";
     if (vivid * 20 >= covered) {
-        EXPECT_GE(vividKept * 10, vivid * 4) << "the program's objects are missing: toon drew nothing";
+        EXPECT_GE(vividKept * 10, vivid * 4)
+            << "the program's objects are missing: toon drew nothing";
     }
+    // What the program drew changed (its background may not: a dark page is about the
+    // colour of a program's own dark background).
     size_t changed = 0;
-    for (size_t i = 0; i < styled.rgba.size(); i += 4) changed += channelDelta(native, styled, i) > 24;
-    EXPECT_GT(changed, 160u * 120u / 20) << "the default style changed too little";
+    for (size_t i = 0; i < styled.rgba.size(); i += 4) {
+        changed += drawn[i / 4] && channelDelta(native, styled, i) > 24;
+    }
+    EXPECT_GT(changed * 10, covered) << "the default style changed too little";
 
-    // The edges' share: ink that toon+paper alone does not have.
-    size_t inked = 0, darker = 0;
+    // The edges' share: ink that toon+paper alone does not have, against the page: dark ink
+    // on a light page, light ink on the dark page of a program that clears to black.
+    auto sum = [](const PngImage& image, size_t i) {
+        return int(image.rgba[i]) + image.rgba[i + 1] + image.rgba[i + 2];
+    };
+    uint64_t pageSum = 0, pagePixels = 0;
+    for (size_t i = 0; i < styled.rgba.size(); i += 4) {
+        if (drawn[i / 4]) continue;
+        pageSum += uint64_t(sum(styled, i));
+        ++pagePixels;
+    }
+    ASSERT_GT(pagePixels, 0u) << "the program drew everywhere: no page to judge the ink by";
+    const bool darkPage = pageSum < pagePixels * 3 * 128;
+    size_t inked = 0, contrasting = 0;
     for (size_t i = 0; i < styled.rgba.size(); i += 4) {
         if (channelDelta(styled, inkless, i) <= 24) continue;
         ++inked;
-        darker += styled.rgba[i] + styled.rgba[i + 1] + styled.rgba[i + 2] <
-                  inkless.rgba[i] + inkless.rgba[i + 1] + inkless.rgba[i + 2];
+        contrasting +=
+            darkPage ? sum(styled, i) > sum(inkless, i) : sum(styled, i) < sum(inkless, i);
     }
     EXPECT_GT(inked, 160u * 120u / 200) << "the edges drew no ink";
-    EXPECT_GE(darker * 10, inked * 8) << "what the edges added is not ink";
+    EXPECT_GE(contrasting * 10, inked * 8)
+        << "what the edges added is not ink of the page's contrast (" << (darkPage ? "dark" : "light")
+        << " page)";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -1027,7 +1047,8 @@ TEST(Compositor, TheCoverageStylePaintsWhatIsLeftRed)
 
 // An additive glow (the demo's sphere, GL_ONE, GL_ONE) on a paper page is drawn as ink of its
 // colour: not washed out to the page's white, as it is added natively and over a chain
-// without a page; still counted as left (its geometry is the program's drawing). Also with
+// without a page; still counted as left (its geometry is the program's drawing). On a dark
+// page (paper.tone=dark, or auto over the demo's black) it adds light as natively. Also with
 // the program's alpha test on (gibson's glowing towers of text): the ink's fragments carry
 // the program's alpha, which the test passes (they carried none, and every one was dropped).
 class AdditiveGlows : public ::testing::TestWithParam<bool> {};
@@ -1036,19 +1057,21 @@ TEST_P(AdditiveGlows, ReadOverPaper)
 {
     // The share of the sphere's square washed out to white, and how many of its pixels show
     // its orange stripes (added natively; in ink of their colour on the page).
-    auto whiteInSphere = [](const std::string& style, int* orange = nullptr) {
+    auto whiteInSphere = [](const std::string& style, const char* tone, int* orange = nullptr) {
         const std::string dir = freshDir("glow");
         std::vector<std::string> app = {demo("textured"), "--additive", "--offscreen",
                                         "--size", "320x240", "--frames", "3", "--save-frames",
                                         "3", "--save-dir", dir};
         if (GetParam()) app.push_back("--glow-alpha-test");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", style}, app));
+        ProcessResult r = runProcess(
+            under({nprglCommand(), "--style", style, "--set", std::string("paper.tone=") + tone},
+                  app));
         EXPECT_EQ(r.exitCode, 0) << r.err;
         EXPECT_NE(r.err.find("left as the program drew them (blending other than"),
                   std::string::npos)
             << r.err;
         EXPECT_EQ(r.err.find("drawn as ink") != std::string::npos,
-                  style.find("paper") != std::string::npos)
+                  style.find("paper") != std::string::npos && std::string(tone) == "light")
             << r.err;
         PngImage image;
         std::string error;
@@ -1065,10 +1088,12 @@ TEST_P(AdditiveGlows, ReadOverPaper)
         if (orange) *orange = stripes;
         return float(white) / float(all);
     };
-    EXPECT_GT(whiteInSphere("toon"), 0.3f) << "the glow does not wash out here: no test";
+    EXPECT_GT(whiteInSphere("toon", "light"), 0.3f) << "the glow does not wash out here: no test";
     int orange = 0;
-    EXPECT_LT(whiteInSphere("toon+paper", &orange), 0.05f) << "the glow washed out on the page";
+    EXPECT_LT(whiteInSphere("toon+paper", "light", &orange), 0.05f)
+        << "the glow washed out on the page";
     EXPECT_GT(orange, 300) << "the glow is not on the page";
+    EXPECT_GT(whiteInSphere("toon+paper", "dark"), 0.3f) << "the glow was inked on a dark page";
 }
 
 INSTANTIATE_TEST_SUITE_P(Compositor, AdditiveGlows, ::testing::Bool(),
@@ -1085,10 +1110,10 @@ INSTANTIATE_TEST_SUITE_P(Compositor, AdditiveGlows, ::testing::Bool(),
 TEST(Compositor, AGlowListTurningItsTextureOffIsInkedPlain)
 {
     const std::string dir = freshDir("glowlist");
-    ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper"},
-                                       {demo("textured"), "--additive", "--glow-list-plain",
-                                        "--offscreen", "--size", "320x240", "--frames", "3",
-                                        "--save-frames", "3", "--save-dir", dir}));
+    ProcessResult r = runProcess(
+        under({nprglCommand(), "--style", "toon+paper", "--set", "paper.tone=light"},
+              {demo("textured"), "--additive", "--glow-list-plain", "--offscreen", "--size",
+               "320x240", "--frames", "3", "--save-frames", "3", "--save-dir", dir}));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_NE(r.err.find("drawn as ink"), std::string::npos) << r.err;
     // Compiled in frame 1 under the glow's state: nprgl's ink set-up was compiled into the
@@ -1117,11 +1142,12 @@ TEST(Compositor, AScissoredInsetStaysInItsBoxAndGetsItsOwnPage)
 {
     auto run = [](bool inset) {
         const std::string dir = freshDir("inset");
-        std::vector<std::string> args = {demo("textured"), "--offscreen", "--size", "320x240",
-                                         "--frames",       "3",           "--save-frames",
-                                         "3",              "--save-dir",  dir};
+        std::vector<std::string> args = {
+            demo("textured"), "--offscreen", "--size",     "320x240", "--frames", "3",
+            "--save-frames",  "3",           "--save-dir", dir};
         if (inset) args.push_back("--inset");
-        ProcessResult r = runProcess(under({nprglCommand(), "--style", "toon+paper+edges"}, args));
+        ProcessResult r = runProcess(under(
+            {nprglCommand(), "--style", "toon+paper+edges", "--set", "paper.tone=light"}, args));
         EXPECT_EQ(r.exitCode, 0) << r.err;
         PngImage image;
         std::string error;
@@ -1315,14 +1341,23 @@ TEST(Compositor, EveryEnabledLightShadesTheStyledScene)
 // into a cube map, clears, and adds the map over the ball (GL_ONE_MINUS_DST_COLOR, GL_ONE).
 // Paper laid in the corner went into the maps and washed every ball white. demo_textured
 // --env-map copies its scene from a 64x64 corner and shows the texture at the top left: its
-// corners, background when copied, keep the program's clear colour.
+// corners, background when copied, keep the program's clear colour. With --env-map-line a
+// line the styles leave is drawn over the corner before the copy: it flushes the scene before
+// the copy does, and that flush laid the page (glblur's blurred copies of its scene were
+// paper-coloured): a viewport the program copied into a texture before gets no page either.
 TEST(Compositor, PixelsCopiedIntoATextureGetNoPage)
 {
-    auto corner = [](const std::string& style) {
+    auto corner = [](const std::string& style, bool line) {
         PngImage image;
         std::string error;
-        EXPECT_TRUE(PngImage::read(demoFrame("textured", "env_map_" + style, {"--style", style},
-                                             {"--env-map"}),
+        std::vector<std::string> args = {"--env-map"};
+        if (line) args.push_back("--env-map-line");
+        // A light page: it differs from the dark clear colour (a dark page would not).
+        EXPECT_TRUE(PngImage::read(demoFrame("textured",
+                                             std::string("env_map_") + (line ? "line_" : "") +
+                                                 style,
+                                             {"--style", style, "--set", "paper.tone=light"},
+                                             args),
                                    image, error))
             << error;
         std::vector<int> out;
@@ -1333,13 +1368,17 @@ TEST(Compositor, PixelsCopiedIntoATextureGetNoPage)
         }
         return out;
     };
-    const std::vector<int> native = corner("none");
-    ASSERT_EQ(native.size(), 9u);
-    EXPECT_LT(native[0], 100) << "the copied corner is not the dark clear colour: no test";
-    const std::vector<int> styled = corner("toon+paper+edges");
-    ASSERT_EQ(styled.size(), 9u);
-    for (size_t i = 0; i < 9; ++i) {
-        EXPECT_NEAR(styled[i], native[i], 12) << "channel " << i % 3 << " of corner " << i / 3;
+    for (bool line : {false, true}) {
+        const std::vector<int> native = corner("none", line);
+        ASSERT_EQ(native.size(), 9u);
+        EXPECT_LT(native[0], 100) << "the copied corner is not the dark clear colour: no test";
+        const std::vector<int> styled = corner("toon+paper+edges", line);
+        ASSERT_EQ(styled.size(), 9u);
+        for (size_t i = 0; i < 9; ++i) {
+            EXPECT_NEAR(styled[i], native[i], 12)
+                << (line ? "with the line: " : "") << "channel " << i % 3 << " of corner "
+                << i / 3;
+        }
     }
 }
 
@@ -1614,7 +1653,9 @@ namespace {
 int cubeInk(const std::string& name, const std::string& style,
             const std::vector<std::string>& extra)
 {
-    const PngImage image = readPng(demoFrame("textured", name, {"--style", style}, extra));
+    // Black ink (a light page's): counted by its darkness.
+    const PngImage image = readPng(
+        demoFrame("textured", name, {"--style", style, "--set", "paper.tone=light"}, extra));
     int n = 0;
     for (int y = 85; y < 180 && !image.rgba.empty(); ++y) {
         for (int x = 75; x < 150; ++x) {

@@ -830,6 +830,7 @@ TEST(Edges, RecreatesBuffersWhenTheViewportChanges)
     ASSERT_TRUE(chain.init(settings, getProc, error)) << error;
     const styles::GlFunctions& gl = harness.gl();
     PngImage image;
+    scene.clearColor = glm::vec4(1.0f); // as cleared below: black ink on it
     for (int size : {96, kSize, 160}) {
         scene.viewport = {0, 0, size, size};
         gl.Viewport(0, 0, kSize, kSize);

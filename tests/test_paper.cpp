@@ -77,6 +77,14 @@ void save(const PngImage& image, const std::string& name)
     image.write("/tmp/paper/" + name + ".png", error);
 }
 
+// These tests are of the light page (PageTone's choice has its own): paper.tone=light unless
+// the test says otherwise.
+std::string lightPage(const std::string& config)
+{
+    if (config.find("paper.tone=") != std::string::npos) return config;
+    return "paper.tone=light" + (config.empty() ? "" : "," + config);
+}
+
 PngImage render(StyleHarness& harness, const styles::Scene& scene, const std::string& chain,
                 const std::string& config, glm::vec4 background = kBlack)
 {
@@ -87,7 +95,7 @@ PngImage render(StyleHarness& harness, const styles::Scene& scene, const std::st
     gl.Disable(GL_SCISSOR_TEST);
     PngImage image;
     std::string error;
-    EXPECT_TRUE(harness.render(scene, chain, config, image, error, background))
+    EXPECT_TRUE(harness.render(scene, chain, lightPage(config), image, error, background))
         << chain << ": " << error;
     return image;
 }
@@ -97,7 +105,7 @@ void startChain(styles::StyleChain& chain, const std::string& name, const std::s
 {
     StyleSettings settings;
     std::string error;
-    ASSERT_TRUE(StyleSettings::parse(name, config, settings, error)) << error;
+    ASSERT_TRUE(StyleSettings::parse(name, lightPage(config), settings, error)) << error;
     auto getProc = [](const char* entry) {
         return reinterpret_cast<void*>(OSMesaGetProcAddress(entry));
     };
@@ -191,6 +199,52 @@ TEST(Paper, FillsTheBackgroundAndKeepsTheToonBands)
     EXPECT_GT(background, kSize * kSize / 2);
     EXPECT_GT(sphere, 1000);
     EXPECT_GE(bands.size(), 3u); // shadow, diffuse and highlight survive
+}
+
+// The page follows the program's background (paper.tone=auto, the default): a program that
+// clears to black gets a dark page, and the ink of its outlines is light on it, not black on
+// black; one that clears to a light colour gets paper and black ink.
+TEST(Paper, APageAsDarkAsTheProgramsBackgroundWithLightInk)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const styles::Scene scene = sphereScene(harness);
+    const std::string config = "paper.tone=auto,paper.grain=0";
+    const PngImage dark = render(harness, scene, "toon+paper+edges", config, kBlack);
+    const glm::vec4 grey(0.85f, 0.85f, 0.85f, 1.0f);
+    const PngImage light = render(harness, scene, "toon+paper+edges", config, grey);
+    save(dark, "auto_dark");
+    save(light, "auto_light");
+    const Rgb slate{0x1e, 0x21, 0x26};
+    EXPECT_TRUE(near(pixel(dark, 2, 2), slate)) << "not the dark page on a black background";
+    EXPECT_TRUE(near(pixel(light, 2, 2), kPaper)) << "not paper on a light background";
+    // The silhouette's ink, just inside the sphere's outline on its horizontal axis.
+    const int rim = int(std::floor(kSize * 0.5f + silhouetteRadius())) - 1;
+    auto lightness = [](const Rgb& c) { return (c.r + c.g + c.b) / 3; };
+    int darkInk = 0, lightInk = 0;
+    for (int x = rim - 2; x <= rim; ++x) {
+        darkInk = std::max(darkInk, lightness(pixel(dark, x, kSize / 2)));
+        lightInk = std::max(lightInk, 255 - lightness(pixel(light, x, kSize / 2)));
+    }
+    EXPECT_GT(darkInk, 170) << "no light ink along the outline on the dark page";
+    EXPECT_GT(lightInk, 170) << "no dark ink along the outline on paper";
+}
+
+// A page colour the user chose is the page whatever the program's background (the blueprint
+// preset's blue paper over a black background stayed blue; the dark page replaced it), and
+// its own lightness decides the ink. Graphite needs a light sheet: a chain with the pencil
+// keeps paper on a black background.
+TEST(Paper, AChosenColourOrAPencilKeepsItsPage)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const styles::Scene scene = sphereScene(harness);
+    const PngImage blue = render(harness, scene, "toon+paper",
+                                 "paper.tone=auto,paper.grain=0,paper.color=1d4f91", kBlack);
+    EXPECT_TRUE(near(pixel(blue, 2, 2), Rgb{0x1d, 0x4f, 0x91})) << "not the chosen blue page";
+    const PngImage pencil =
+        render(harness, scene, "toon+paper+pencil", "paper.tone=auto,paper.grain=0", kBlack);
+    EXPECT_TRUE(near(pixel(pencil, 2, 2), kPaper)) << "the pencil's page is not paper";
 }
 
 TEST(Paper, GrainDarkensThePageSubtlyAndRepeatably)

@@ -1,3 +1,4 @@
+#include "styles/PageTone.h"
 #include "styles/StyleRegistry.h"
 #include "styles/StyleSettings.h"
 
@@ -87,4 +88,60 @@ TEST(StyleSettings, ChecksRangesAndNamesTheRange)
     EXPECT_NE(error.find("[-1, 1]"), std::string::npos) << error;
     EXPECT_FALSE(StyleSettings::parse("toon", "toon.tones=many", settings, error));
     EXPECT_NE(error.find("not a number"), std::string::npos) << error;
+}
+
+// The page follows the program's background: the first frame's clear colour decides, and
+// the page changes only after the other tone lasted kHoldFrames frames (a flash of a light
+// clear in a dark program, or a fade through grey, does not flip it back and forth).
+TEST(PageTone, FollowsTheClearColourWithoutFlicker)
+{
+    using styles::PageTone;
+    PageTone dark;
+    dark.observe(0, glm::vec3(0.0f));
+    EXPECT_TRUE(dark.dark());
+    PageTone light;
+    light.observe(0, glm::vec3(0.9f, 0.9f, 0.85f));
+    EXPECT_FALSE(light.dark());
+
+    uint64_t frame = 1;
+    // Flashes of white shorter than the hold, and a mid grey between the two thresholds.
+    for (int i = 0; i < PageTone::kHoldFrames - 1; ++i) dark.observe(frame++, glm::vec3(1.0f));
+    dark.observe(frame++, glm::vec3(0.0f));
+    for (int i = 0; i < 3 * PageTone::kHoldFrames; ++i) dark.observe(frame++, glm::vec3(0.5f));
+    EXPECT_TRUE(dark.dark()) << "a flash or a grey between the thresholds flipped the page";
+    // Only the first flush of a frame counts.
+    for (int i = 0; i < 2 * PageTone::kHoldFrames; ++i) dark.observe(frame, glm::vec3(1.0f));
+    EXPECT_TRUE(dark.dark());
+    // A background that stays light turns the page light.
+    for (int i = 0; i < PageTone::kHoldFrames; ++i) dark.observe(frame++, glm::vec3(1.0f));
+    EXPECT_FALSE(dark.dark());
+
+    PageTone forced;
+    forced.setMode(PageTone::Mode::Dark);
+    forced.observe(0, glm::vec3(1.0f));
+    EXPECT_TRUE(forced.dark()) << "paper.tone=dark was not kept";
+    forced.setMode(PageTone::Mode::Light);
+    forced.observe(1, glm::vec3(0.0f));
+    EXPECT_FALSE(forced.dark()) << "paper.tone=light was not kept";
+}
+
+// On a dark page black ink becomes light ink of the same hue, and the lighter line classes
+// move towards the page (black) instead of white; a light page keeps the configured ink.
+TEST(PageTone, InkStandsOutOnEitherPage)
+{
+    using styles::PageTone;
+    PageTone light, dark;
+    light.observe(0, glm::vec3(1.0f));
+    dark.observe(0, glm::vec3(0.0f));
+    const glm::vec3 black(0.0f), blue(0.0f, 0.0f, 0.4f);
+    EXPECT_EQ(light.ink(black), black);
+    EXPECT_EQ(light.line(black, 0.5f), glm::vec3(0.5f));
+    EXPECT_GT(PageTone::luminance(dark.ink(black)), 0.6f) << "black ink on a dark page";
+    EXPECT_GT(PageTone::luminance(dark.ink(blue)), 0.4f);
+    EXPECT_GT(dark.ink(blue).b, dark.ink(blue).r) << "the ink lost its blue";
+    EXPECT_LT(PageTone::luminance(dark.line(black, 0.5f)),
+              PageTone::luminance(dark.line(black, 0.0f)))
+        << "a lighter line class is not nearer the dark page";
+    const glm::vec3 chalk(0.9f, 0.9f, 0.8f);
+    EXPECT_EQ(dark.ink(chalk), chalk) << "a light ink was changed on a dark page";
 }

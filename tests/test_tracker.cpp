@@ -1081,6 +1081,62 @@ TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
 // (emission, the scene's ambient on the material's ambient, N·L on the diffuse), not the
 // material's colour the shading styles shade from; two-sided lighting lights a normal turned
 // from the eye from its other side; GL_FLAT gives a quad its last vertex's colour.
+// How dark the program's own shadowed side is, as a share of the lit colour the styles get:
+// GL's emission and ambient terms over the lit side's colour. cubestorm's faces turned from
+// its light are nearly black (0.2 of its colour: GL's default scene ambient, no light
+// ambient), and the cartoon's shadow band at 0.55 of the colour lit them brighter than the
+// faces towards the light. A strong ambient gives a large share, emission adds to it.
+TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    auto quad = [&] {
+        feed.run([&](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_QUADS);
+            for (int k = 0; k < 4; ++k) {
+                w.op(op::glNormal3f);
+                for (float c : {0.0f, 0.0f, 1.0f}) w.put<float>(c);
+                w.op(op::glVertex3f);
+                for (float c : {k == 1 || k == 2 ? 1.0f : 0.0f, k >= 2 ? 1.0f : 0.0f, -2.0f}) {
+                    w.put<float>(c);
+                }
+            }
+            w.op(op::glEnd);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    // GL's defaults: ambient material 0.2, diffuse 0.8, scene ambient 0.2, light 0 white.
+    quad();
+    feed.material(GL_FRONT_AND_BACK, GL_AMBIENT, {0.8f, 0.8f, 0.8f, 1.0f});
+    feed.run([](CallWriter& w) {
+        const std::array<float, 4> ambient = {0.5f, 0.5f, 0.5f, 1.0f};
+        w.op(op::glLightModelfv);
+        const size_t mark = w.beginPayload();
+        w.put<GLenum>(GL_LIGHT_MODEL_AMBIENT);
+        w.putBytes(ambient.data(), sizeof ambient);
+        w.endPayload(mark);
+    });
+    quad();
+    feed.enable(GL_LIGHTING, false);
+    quad();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 3u);
+    // The lit side: diffuse 0.8 in the light at full strength plus the ambient 0.04 (GL sums
+    // ambient, diffuse at N.L 0.75, normalised to 1); unlit, 0.2 x 0.2 of it.
+    const float lit = batches[0].vertices[0].color.r;
+    EXPECT_NEAR(batches[0].lights.ambientShare, 0.04f / lit, 0.01f);
+    EXPECT_LT(batches[0].lights.ambientShare, 0.1f);
+    EXPECT_NEAR(batches[1].lights.ambientShare,
+                std::min(0.4f / batches[1].vertices[0].color.r, 1.0f), 0.02f);
+    EXPECT_GT(batches[1].lights.ambientShare, 0.3f);
+    EXPECT_LT(batches[2].lights.ambientShare, 0.0f) << "unlit: no share known";
+}
+
 TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
 {
     StateTracker tracker;

@@ -24,7 +24,8 @@
 // GL_LEQUAL) before the scene, as xscreensaver's atlantis draws its water; --env-map first
 // draws the scene into a 64x64 corner, copies it into a texture (glCopyTexSubImage2D, as
 // foobillardplus makes its balls' environment maps), clears again, and after the scene shows
-// that texture in 2D in the top-left corner (GL_REPLACE).
+// that texture in 2D in the top-left corner (GL_REPLACE); --env-map-line draws a line over the
+// corner's scene before the copy (a draw the styles leave: it flushes the scene first).
 
 // Declares the GL 1.3-2.0 functions (glWindowPos); must precede every include of GL/gl.h.
 #define GL_GLEXT_PROTOTYPES
@@ -248,6 +249,8 @@ public:
                 {"env-map", demo::ExtraOption::Kind::Flag,
                  "the scene drawn into a 64x64 corner first and copied into a texture, then "
                  "cleared; the texture shown in 2D in the top-left corner after the scene"},
+                {"env-map-line", demo::ExtraOption::Kind::Flag,
+                 "with --env-map: a line drawn over the corner's scene before the copy"},
                 {"replace", demo::ExtraOption::Kind::Flag,
                  "the cube's texture drawn with GL_REPLACE under a blue material: the picture "
                  "shows the texture alone"},
@@ -323,6 +326,7 @@ public:
         cutoutBlend_ = options.has("cutout-blend");
         pushedBack_ = options.has("pushed-back");
         replace_ = options.has("replace");
+        envMapLine_ = options.has("env-map-line");
         farBackdrop_ = options.has("far-backdrop");
         if (options.has("env-map")) {
             glGenTextures(1, &envTexture_);
@@ -602,6 +606,27 @@ public:
     {
         glViewport(0, 0, kEnvSize, kEnvSize);
         drawScene(frame);
+        if (envMapLine_) {
+            glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT);
+            glDisable(GL_LIGHTING);
+            glDisable(GL_DEPTH_TEST);
+            glMatrixMode(GL_PROJECTION);
+            glPushMatrix();
+            glLoadIdentity();
+            glMatrixMode(GL_MODELVIEW);
+            glPushMatrix();
+            glLoadIdentity();
+            glColor3f(1.0f, 1.0f, 0.0f);
+            glBegin(GL_LINES);
+            glVertex2f(-0.3f, 0.0f);
+            glVertex2f(0.3f, 0.0f);
+            glEnd();
+            glPopMatrix();
+            glMatrixMode(GL_PROJECTION);
+            glPopMatrix();
+            glMatrixMode(GL_MODELVIEW);
+            glPopAttrib();
+        }
         glBindTexture(GL_TEXTURE_2D, envTexture_);
         glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, kEnvSize, kEnvSize);
         glViewport(0, 0, width_, height_);
@@ -862,6 +887,7 @@ private:
     bool farBackdrop_ = false;
     static constexpr int kEnvSize = 64;
     GLuint envTexture_ = 0; // --env-map
+    bool envMapLine_ = false;
     GLuint floorTexture_ = 0;
     GLuint sphereTexture_ = 0;
     GLuint faceTextures_[6] = {};

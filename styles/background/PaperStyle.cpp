@@ -16,6 +16,7 @@ namespace {
 
 const char* kStyle = "paper";
 const char* kDefaultColour = "f4efe1";
+const char* kDefaultDarkColour = "1e2126"; // a slate: the page of a program drawn on black
 
 // The triangle covers the viewport at the far plane: with depth test GL_LEQUAL the fill pass
 // reaches only pixels whose depth is still the cleared far value (the depth test rejects
@@ -87,7 +88,14 @@ StyleInfo paperStyleInfo()
     info.role = StyleRole::Background;
     info.create = &create;
     info.params = {
-        ParamInfo::colour("color", "paper colour, hex rrggbb", kDefaultColour),
+        ParamInfo::colour("color", "paper colour, hex rrggbb (a light page)", kDefaultColour),
+        ParamInfo::choice("tone",
+                          "the page's tone: auto follows the program's background (a dark "
+                          "page with light ink where it clears to a dark colour), or always "
+                          "light or dark",
+                          {"auto", "light", "dark"}, 0),
+        ParamInfo::colour("dark_color", "paper colour of a dark page, hex rrggbb",
+                          kDefaultDarkColour),
         ParamInfo::flag("background",
                         "replace the program's untouched background (far depth, clear "
                         "colour) with paper (on/off)",
@@ -107,6 +115,13 @@ StyleInfo paperStyleInfo()
     return info;
 }
 
+bool PaperStyle::colourConfigured(const StyleContext& ctx, glm::vec3& colour)
+{
+    glm::vec3 fallback(1.0f);
+    ParamInfo::parseColour(kDefaultColour, fallback);
+    return ParamInfo::parseColour(ctx.text(kStyle, "color"), colour) && colour != fallback;
+}
+
 bool PaperStyle::init(StyleContext& ctx, std::string& error)
 {
     const GlFunctions& gl = ctx.gl;
@@ -118,6 +133,9 @@ bool PaperStyle::init(StyleContext& ctx, std::string& error)
           at("compare")};
 
     mPaperColour = ctx.colour(kStyle, "color", kDefaultColour);
+    mDarkColour = ctx.colour(kStyle, "dark_color", kDefaultDarkColour);
+    glm::vec3 chosen(1.0f);
+    mColourChosen = colourConfigured(ctx, chosen);
     mFill = ctx.param(kStyle, "background") >= 0.5;
     mGrain = float(std::clamp(ctx.param(kStyle, "grain"), 0.0, 1.0));
     mGrainScene = ctx.param(kStyle, "grain_scene") >= 0.5;
@@ -187,7 +205,8 @@ void PaperStyle::beginPass(const Scene& scene, StyleContext& ctx)
     gl.Uniform1i(mU.paperTex, 3);
     gl.Uniform2i(mU.origin, vp.x, vp.y);
     gl.Uniform1i(mU.usePaperTex, mPaperTexture.valid() ? 1 : 0);
-    gl.Uniform3f(mU.paperColour, mPaperColour.r, mPaperColour.g, mPaperColour.b);
+    const glm::vec3 paper = ctx.page.dark() && !mColourChosen ? mDarkColour : mPaperColour;
+    gl.Uniform3f(mU.paperColour, paper.r, paper.g, paper.b);
     const glm::vec3 clear = glm::clamp(glm::vec3(scene.clearColor), 0.0f, 1.0f);
     gl.Uniform3f(mU.clearColour, clear.r, clear.g, clear.b);
     // One and a half steps of the coarser of the framebuffer and the 8-bit copy.

@@ -22,6 +22,10 @@ namespace nprgl::styles {
 // Style::keepBackground); the grain after shading, before the ink.
 class PaperStyle : public Style {
 public:
+    // Whether the settings give paper.color another colour than the default (then into
+    // `colour`): a chosen page, whatever the program's background.
+    static bool colourConfigured(const StyleContext& ctx, glm::vec3& colour);
+
     bool init(StyleContext& ctx, std::string& error) override;
     void keepBackground(const Scene& scene, StyleContext& ctx) override;
     void layBackground(const Scene& scene, StyleContext& ctx) override;
@@ -70,6 +74,8 @@ private:
     std::vector<Filled> mFilled;
     // Parameters, fixed for the chain's life.
     glm::vec3 mPaperColour{0.957f, 0.937f, 0.882f};
+    glm::vec3 mDarkColour{0.118f, 0.129f, 0.149f}; // the page when PageTone says dark
+    bool mColourChosen = false;                    // paper.color set: the page, dark or light
     bool mFill = true;
     float mGrain = 0.12f;
     bool mGrainScene = false; // grain over the scene too, not only the paper

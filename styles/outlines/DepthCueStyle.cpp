@@ -115,7 +115,8 @@ void DepthCueStyle::render(const Scene& scene, StyleContext& ctx)
     };
 
     gl.UseProgram(mProgram.id());
-    gl.Uniform3fv(mInk, 1, glm::value_ptr(mInkColour));
+    const glm::vec3 ink = ctx.page.ink(mInkColour);
+    gl.Uniform3fv(mInk, 1, glm::value_ptr(ink));
     gl.DepthMask(GL_FALSE);
     gl.Enable(GL_BLEND);
     gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);

@@ -503,9 +503,9 @@ bool EdgesStyle::init(StyleContext& ctx, std::string& error)
     mWidths = {float(ctx.param(kStyle, "silhouette_width")),
                float(ctx.param(kStyle, "crease_width")),
                float(ctx.param(kStyle, "material_width"))};
-    mColours[0] = classColour(ctx, kStyle, "silhouette_lightness");
-    mColours[1] = classColour(ctx, kStyle, "crease_lightness");
-    mColours[2] = classColour(ctx, kStyle, "material_lightness");
+    mInks[0] = inkClass(ctx, kStyle, "silhouette_lightness");
+    mInks[1] = inkClass(ctx, kStyle, "crease_lightness");
+    mInks[2] = inkClass(ctx, kStyle, "material_lightness");
     mDepthThreshold = float(ctx.param(kStyle, "depth_threshold"));
     mCreaseCosine = float(std::cos(glm::radians(ctx.param(kStyle, "crease_angle"))));
     mColourThreshold = float(ctx.param(kStyle, "colour_threshold"));
@@ -915,6 +915,8 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
     }
     if (2 * foggedCount <= scene.objects.size()) fogged = nullptr;
     const int f = fogged ? 1 : 0; // the programs with the ink's fog, or without
+    const glm::vec3 colours[3] = {mInks[0].on(ctx.page), mInks[1].on(ctx.page),
+                                  mInks[2].on(ctx.page)};
     auto setFog = [&](const InkFog& u) {
         if (!fogged) return;
         const SceneObject::Fog& fog = fogged->fog;
@@ -934,7 +936,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform2i(mDirU[f].origin, scene.viewport.x, scene.viewport.y);
         const glm::vec3 cover = glm::min(0.5f * mWidths, glm::vec3(1.0f));
         gl.Uniform3fv(mDirU[f].cover, 1, glm::value_ptr(cover));
-        gl.Uniform3fv(mDirU[f].colours, 3, glm::value_ptr(mColours[0]));
+        gl.Uniform3fv(mDirU[f].colours, 3, glm::value_ptr(colours[0]));
         gl.Uniform1f(mDirU[f].depthBias, depthBias);
         // The viewport's triangle (and an object's box) as is; feature lines set their own.
         const glm::mat4 identity(1.0f);
@@ -954,7 +956,7 @@ void EdgesStyle::render(const Scene& scene, StyleContext& ctx)
         gl.Uniform2i(u.origin, scene.viewport.x, scene.viewport.y);
         gl.Uniform1i(u.radius, mRadius);
         gl.Uniform3fv(u.widths, 1, glm::value_ptr(mWidths));
-        gl.Uniform3fv(u.colours, 3, glm::value_ptr(mColours[0]));
+        gl.Uniform3fv(u.colours, 3, glm::value_ptr(colours[0]));
         gl.Uniform1f(u.depthBias, depthBias);
     }
     const bool nearLines = direct && planNear(scene, ctx, rect);

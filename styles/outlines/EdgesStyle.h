@@ -3,6 +3,7 @@
 #include "styles/ShaderProgram.h"
 #include "styles/Style.h"
 #include "styles/outlines/EdgeTargets.h"
+#include "styles/outlines/OutlineParams.h"
 #include "styles/outlines/TileUnion.h"
 
 #include <glm/glm.hpp>
@@ -90,7 +91,7 @@ private:
     TileUnion mBoxes{16};               // planNear: the objects run over their boxes
     uint64_t mPasses[2] = {0, 0}; // direct or composite passes: [0] whole rectangle, [1] near
     glm::vec3 mWidths{2.0f};
-    glm::vec3 mColours[3];
+    InkClass mInks[3]; // silhouette, crease, material
     float mDepthThreshold = 0.05f;
     float mCreaseCosine = 0.6f;
     float mColourThreshold = 0.15f;

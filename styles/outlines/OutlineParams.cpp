@@ -28,10 +28,9 @@ glm::vec3 inkColour(const StyleContext& ctx, const char* style)
             float(ctx.param(style, "ink_blue"))};
 }
 
-glm::vec3 classColour(const StyleContext& ctx, const char* style, const char* lightnessParam)
+InkClass inkClass(const StyleContext& ctx, const char* style, const char* lightnessParam)
 {
-    return glm::mix(inkColour(ctx, style), glm::vec3(1.0f),
-                    float(ctx.param(style, lightnessParam)));
+    return {inkColour(ctx, style), float(ctx.param(style, lightnessParam))};
 }
 
 } // namespace nprgl::styles

@@ -100,6 +100,7 @@ StyleInfo pencilStyleInfo()
     info.summary = "pencil drawing (HijackGL): hatching on paper by L.n, outlines as "
                    "overdrawn tapered pencil strokes; draws on paper";
     info.role = StyleRole::Outline;
+    info.lightPage = true;
     info.background = "paper";
     info.create = &create;
     auto& p = info.params;

@@ -108,7 +108,8 @@ void PerPixelStyle::render(const Scene& scene, StyleContext& ctx)
     const GlFunctions& gl = ctx.gl;
     gl.UseProgram(mProgram.id());
     gl.Uniform1f(mLoc.epsilon, mEpsilon);
-    gl.Uniform3fv(mLoc.inkColor, 1, glm::value_ptr(mInk));
+    const glm::vec3 ink = ctx.page.ink(mInk);
+    gl.Uniform3fv(mLoc.inkColor, 1, glm::value_ptr(ink));
     gl.Uniform1i(mLoc.smoothEdges, mAntialias ? 1 : 0);
     // Over the surfaces already there: the baseline's LEQUAL and polygon offset let each
     // surface win against its own depth; the ink needs no depth of its own.

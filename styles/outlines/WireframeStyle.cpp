@@ -175,7 +175,7 @@ bool WireframeStyle::init(StyleContext& ctx, std::string& error)
         lc.enabled = !flags[c] || ctx.param(kStyle, flags[c]) != 0.0;
         lc.width = float(ctx.param(kStyle, widths[c]));
         const std::string lightness = std::string(kClassNames[c]) + "_lightness";
-        lc.colour = classColour(ctx, kStyle, lightness.c_str());
+        lc.ink = inkClass(ctx, kStyle, lightness.c_str());
     }
     mAntialias = ctx.param(kStyle, "antialias") != 0.0;
     mPoints = ctx.param(kStyle, "vertex_points") != 0.0;
@@ -189,14 +189,16 @@ bool WireframeStyle::init(StyleContext& ctx, std::string& error)
     return true;
 }
 
-void WireframeStyle::setClass(const GlFunctions& gl, const LineClass& c)
+void WireframeStyle::setClass(const StyleContext& ctx, const LineClass& c)
 {
+    const GlFunctions& gl = ctx.gl;
     const glm::vec2 range = mAntialias ? mSmoothLineRange : mLineRange;
     gl.LineWidth(std::clamp(c.width, range.x, std::max(range.x, range.y)));
     gl.PointSize(std::clamp(c.width, mPointRange.x, std::max(mPointRange.x, mPointRange.y)));
     gl.Uniform1f(mLoc.pointSize, c.width);
     gl.Uniform1f(mLoc.lineWidth, c.width);
-    gl.Uniform3fv(mLoc.inkColor, 1, glm::value_ptr(c.colour));
+    const glm::vec3 colour = c.ink.on(ctx.page);
+    gl.Uniform3fv(mLoc.inkColor, 1, glm::value_ptr(colour));
 }
 
 void WireframeStyle::depthCueRange(const Scene& scene, StyleContext& ctx)
@@ -314,7 +316,7 @@ void WireframeStyle::drawSilhouette(const SceneObject& object, StyleContext& ctx
     gl.Enable(GL_POLYGON_OFFSET_LINE);
     gl.Enable(GL_POLYGON_OFFSET_POINT);
     gl.PolygonOffset(-1.0f, -2.0f);
-    setClass(gl, mClasses[Silhouette]);
+    setClass(ctx, mClasses[Silhouette]);
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     ctx.meshes.draw(gl, *object.mesh);
     if (mPoints && mClasses[Silhouette].width > 2.0f) {
@@ -352,7 +354,7 @@ void WireframeStyle::drawFeatureEdges(const SceneObject& object, StyleContext& c
     for (int k = 0; k < EdgeLines::KindCount; ++k) {
         const LineClass& c = mClasses[k + 1];
         if (!c.enabled || lines.count[size_t(k)] == 0) continue;
-        setClass(gl, c);
+        setClass(ctx, c);
         gl.DrawArrays(GL_LINES, lines.first[size_t(k)], lines.count[size_t(k)]);
         if (mPoints && c.width > 2.0f) {
             gl.Enable(GL_POINT_SPRITE);

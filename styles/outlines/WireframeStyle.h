@@ -3,6 +3,7 @@
 #include "styles/ShaderProgram.h"
 #include "styles/Style.h"
 #include "styles/outlines/EdgeLines.h"
+#include "styles/outlines/OutlineParams.h"
 
 #include <glm/glm.hpp>
 
@@ -25,14 +26,14 @@ private:
     struct LineClass {
         bool enabled = true;
         float width = 1.0f;
-        glm::vec3 colour{0.0f};
+        InkClass ink;
     };
     // Order: silhouette, then EdgeLines::Kind + 1 (border, crease, material).
     enum { Silhouette = 0, ClassCount = 4 };
 
     void drawSilhouette(const SceneObject& object, StyleContext& ctx, uint8_t stencilId);
     void drawFeatureEdges(const SceneObject& object, StyleContext& ctx);
-    void setClass(const GlFunctions& gl, const LineClass& c);
+    void setClass(const StyleContext& ctx, const LineClass& c);
     void depthCueRange(const Scene& scene, StyleContext& ctx);
 
     ShaderProgram mProgram;

@@ -86,6 +86,7 @@ vec3 shadingNormal(vec3 eyeNormal)
 uniform sampler2D lightmap;
 uniform float lightmapped;
 uniform float flatLight; // above -2: the light everywhere (SceneObject::flatLight)
+uniform float ambientShare; // SceneLights::ambientShare of an object the program lit, else -1
 #if PROGRAM_LIGHTS
 uniform vec4 lightPosition[PROGRAM_LIGHTS];
 uniform vec4 lightSpot[PROGRAM_LIGHTS];    // where a spot points (unit); w: cos of its cutoff
@@ -181,6 +182,7 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightmapped = gl.GetUniformLocation(program, "lightmapped");
     lightmapSampler = gl.GetUniformLocation(program, "lightmap");
     flatLight = gl.GetUniformLocation(program, "flatLight");
+    ambientShare = gl.GetUniformLocation(program, "ambientShare");
     lightPosition = gl.GetUniformLocation(program, "lightPosition");
     lightSpot = gl.GetUniformLocation(program, "lightSpot");
     lightFalloff = gl.GetUniformLocation(program, "lightFalloff");
@@ -244,6 +246,8 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.UniformMatrix4fv(genMatrix, 1, GL_FALSE, glm::value_ptr(g.matrix));
     // Between the toon bands' thresholds (their base colour), halftone's light dots.
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
+    const bool lit = object.lights.count > 0 && !object.flatLight;
+    gl.Uniform1f(ambientShare, lit ? object.lights.ambientShare : -1.0f);
     gl.Uniform1i(lightmapSampler, 3);
     gl.Uniform1f(lightmapped, 0.0f); // drawTextured says where a lightmap is bound
     // A generated texture the styles drop keeps its average tint (GeneratedTexture::mean).

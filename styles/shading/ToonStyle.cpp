@@ -21,6 +21,13 @@ in vec4 baseColor;
 in vec2 uv;
 out vec4 fragColor;
 
+// The shadow band's share of the base colour: the style's, or the program's own where its
+// shadowed side is darker (GL's ambient terms, thesis eq. 3.3), down to the floor.
+float shadowShare()
+{
+    return ambientShare < 0.0 ? shadowScale : clamp(ambientShare, shadowFloor, shadowScale);
+}
+
 // 0 below the threshold, 1 above; with SMOOTH a one-pixel ramp (screen-space antialiasing of
 // the band boundary, thesis 3.1.4).
 float above(float d, float t, float pixel)
@@ -92,7 +99,15 @@ StyleInfo toonStyleInfo()
         ParamInfo::number("diffuse_threshold", "t_d: L.n below it is shadow", 0.0, -1.0, 1.0),
         ParamInfo::number("highlight_threshold",
                           "t_h: L.n above it is highlight (kept above t_d)", 0.92, -1.0, 1.0),
-        ParamInfo::number("shadow_scale", "shadow colour = base colour x this", 0.55, 0.0, 1.0),
+        ParamInfo::number("shadow_scale",
+                          "shadow colour = base colour x this; where the program's own "
+                          "shadowed side is darker (little ambient light), its share, down "
+                          "to shadow_floor",
+                          0.55, 0.0, 1.0),
+        ParamInfo::number("shadow_floor",
+                          "the darkest shadow colour, as a share of the base colour, that a "
+                          "program's dark shadowed side gives",
+                          0.3, 0.0, 1.0),
         ParamInfo::number("highlight_mix", "highlight colour = base mixed with white by this",
                           0.55, 0.0, 1.0),
         ParamInfo::colour("shadow_color", "fixed shadow colour, hex rrggbb (empty: derived)"),
@@ -124,10 +139,12 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
     s += "const float diffuseThreshold = " + f(mDiffuseThreshold) + ";\n";
     s += "const float highlightThreshold = " + f(mHighlightThreshold) + ";\n";
     s += "const float lineWidth = " + f(mLineWidth) + ";\n";
+    s += "const float shadowScale = " + f(mShadowScale) + ";\n";
+    s += "const float shadowFloor = " + f(std::min(mShadowFloor, mShadowScale)) + ";\n";
     // The band colours: configured constants, else derived from the program's colour.
     s += "#define SHADOW_COLOR " +
          ((mFixed & 1) ? ShadingCommon::glslVec3(mColors[0])
-                       : "(base * " + f(mShadowScale) + ")") +
+                       : std::string("(base * shadowShare())")) +
          "\n";
     s += "#define DIFFUSE_COLOR " +
          ((mFixed & 2) ? ShadingCommon::glslVec3(mColors[1]) : std::string("base")) + "\n";
@@ -169,6 +186,7 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
         mHighlightThreshold = th;
     }
     mShadowScale = float(ctx.param("toon", "shadow_scale"));
+    mShadowFloor = float(ctx.param("toon", "shadow_floor"));
     mHighlightMix = float(ctx.param("toon", "highlight_mix"));
     mSmooth = ctx.param("toon", "band") >= 0.5;
     mDetail = int(std::lround(ctx.param("toon", "detail")));

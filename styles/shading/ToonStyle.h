@@ -35,7 +35,7 @@ private:
     // Parameters: fixed for the chain's life, so read once at init.
     int mTones = 3;
     float mDiffuseThreshold = 0.0f, mHighlightThreshold = 0.9f;
-    float mShadowScale = 0.5f, mHighlightMix = 0.5f;
+    float mShadowScale = 0.55f, mShadowFloor = 0.3f, mHighlightMix = 0.5f;
     bool mSmooth = true, mBandLines = false;
     float mLineWidth = 1.5f;
     int mDetail = 1; // 0 off, 1 modulate, 2 decal

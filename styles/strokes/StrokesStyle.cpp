@@ -175,7 +175,8 @@ void StrokesStyle::render(const Scene& scene, StyleContext& ctx)
     draw.textured = renderer == kTextured;
     if (draw.textured) updateTexture(ctx);
     const float lightness = float(param("lightness"));
-    draw.color = glm::vec4(lightness, lightness, lightness, 1.0f);
+    // Grey on a light page by lightness; on a dark one the page's light ink.
+    draw.color = glm::vec4(ctx.page.line(glm::vec3(0.0f), lightness), 1.0f);
     draw.capLength = float(param("cap_length"));
     draw.tileLength = float(param("tile_length"));
     draw.u1 = float(param("texture_u1"));
