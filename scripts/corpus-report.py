@@ -135,6 +135,9 @@ def live_verdicts(rows):
                 problem = "hang"
             elif outcome in ("none", ""):
                 problem = "did not run"
+            elif outcome == "reached-ended":
+                if rc != n_rc:
+                    problem = f"ended with status {rc} after its frame; native ended with {n_rc}"
             elif outcome.startswith("reached"):
                 if outcome.endswith("killed") and not n_out.endswith("killed"):
                     problem = "did not stop on SIGTERM"

@@ -5,6 +5,8 @@
 #   SHOT_DIR/SHOT_PREFIX*_FRAME.png appeared and the program was then stopped with SIGTERM),
 #   ended (it ended by itself first), hung (LIMIT_S seconds passed without either; killed) or
 #   timed (FRAME 0: no screenshot is waited for; stopped after LIMIT_S seconds, a native run).
+#   With RUN_TO_END=1 (a program whose native run ends by itself) it is not stopped at the
+#   screenshot: reached-ended once it ends by itself after it, its own exit status to compare.
 #   STATUS is the program's exit status (128+N for signal N). Each key is sent with xdotool
 #   once the screenshot of its frame exists (NPRGL_SCREENSHOT must ask for those frames).
 #   The program runs in a session of its own; its whole process group is killed at the end.
@@ -28,10 +30,11 @@ elapsed() {
 }
 
 outcome=""
+reached=0
 pending=($keys)
 while :; do
     if ! alive; then
-        outcome=ended
+        if [ "$reached" = 1 ]; then outcome=reached-ended; else outcome=ended; fi
         break
     fi
     if [ "${#pending[@]}" -gt 0 ] && shot_exists "${pending[0]%%:*}"; then
@@ -39,9 +42,12 @@ while :; do
         pending=("${pending[@]:1}")
         continue
     fi
-    if [ "$frame" != 0 ] && shot_exists "$frame"; then
-        outcome=reached
-        break
+    if [ "$frame" != 0 ] && [ "$reached" = 0 ] && shot_exists "$frame"; then
+        reached=1
+        if [ "${RUN_TO_END:-0}" != 1 ]; then
+            outcome=reached
+            break
+        fi
     fi
     if [ "$(elapsed)" -ge "$limit" ]; then
         if [ "$frame" = 0 ]; then outcome=timed; else outcome=hung; fi
@@ -50,7 +56,7 @@ while :; do
     sleep 0.2
 done
 
-if [ "$outcome" != ended ]; then
+if [ "$outcome" != ended ] && [ "$outcome" != reached-ended ]; then
     kill -TERM "$pid" 2>/dev/null || true
     for _ in $(seq 1 50); do
         alive || break

@@ -164,6 +164,7 @@ if [ "$live" = 1 ]; then
             envs=("HOME=$work/$preset/home" "WITH_DISPLAY_SIZE=$size")
             # shellcheck disable=SC2206
             [ -z "$env" ] || envs+=($env)
+            to_end=0
             if [ "$preset" = native ]; then
                 # No screenshots natively: keys cannot be timed, the run is stopped by time.
                 run=(0 "" -- "${command[@]}")
@@ -174,8 +175,13 @@ if [ "$live" = 1 ]; then
                 run=("$frame" "$keys" -- "$nprgl" --preset "$preset"
                     --screenshot "frames=$shotframes;dir=$work/$preset/shots" -- "${command[@]}")
                 run_limit=$limit
+                # A program that ends by itself natively (a timed demo) runs to its end
+                # styled too: its exit status is then its own, not the stop's.
+                native_outcome=$(awk -F'\t' -v n="$name" '$1 == n && $2 == "native" { print $3 }' \
+                    "$live_tsv")
+                [ "$native_outcome" != ended ] || to_end=1
             fi
-            env "${envs[@]}" timeout -k 10 $((run_limit + 60)) "$root/scripts/with-display.sh" 3<&- \
+            env "${envs[@]}" RUN_TO_END=$to_end timeout -k 10 $((run_limit + 60)) "$root/scripts/with-display.sh" 3<&- \
                 "$root/scripts/corpus-run.sh" "$work/$preset/status" "$run_limit" \
                 "$work/$preset/shots" "$prefix" "${run[@]}" >"$work/$preset/log" 2>&1 || true
             outcome=none rc=- secs=0
