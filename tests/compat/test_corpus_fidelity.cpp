@@ -1,14 +1,21 @@
-// The regression guard on real programs: the quick corpus (every 4th GL hack of Debian's
+// The regression guard on real programs. CorpusGolden: small captures of real programs kept in
+// the repository (tests/compat/captures, made by scripts/corpus-goldens.sh from the quick
+// corpus) replayed in the default style and compared with their goldens (looked at when made).
+// CorpusFidelity: the quick corpus (every 4th GL hack of Debian's
 // xscreensaver-gl and -extra, a few frames each, recorded by scripts/corpus-captures.sh into
 // the build folder before the tests run) replayed in `replica` and in the default style by
 // `nprgl compare`. Nothing the program drew may be missing; at most a tenth of the programs
 // may fall below their replica floor (fidelity-floors.tsv lists programs known to, with the GL
 // feature nprgl does not follow yet).
 
+#include "tests/support/ImageCompare.h"
 #include "tests/support/Process.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -128,4 +135,73 @@ TEST(CorpusFidelity, ReplicaIsThePictureAndTheDefaultStyleLosesNothing)
     for (const std::string& b : below) list += " " + b;
     EXPECT_LE(below.size(), captures.size() / 10) << "replica below its floor:" << list;
     if (!below.empty()) std::printf("corpus: replica below its floor:%s\n", list.c_str());
+}
+
+namespace {
+
+std::vector<std::string> keptCaptures()
+{
+    std::vector<std::string> names;
+    const fs::path dir = fs::path(NPRGL_TEST_SOURCE_DIR) / "compat" / "captures";
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        if (entry.path().extension() == ".nprgl") names.push_back(entry.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+} // namespace
+
+class CorpusGolden : public ::testing::TestWithParam<std::string> {};
+
+// The last recorded frame of a kept capture of a real program, in the default style, is its
+// golden (within the tolerance of the style goldens: a channel 24 apart on at most 0.5% of the
+// pixels). A change of the default look is rebased with scripts/corpus-goldens.sh, and every
+// changed picture looked at.
+TEST_P(CorpusGolden, DefaultStyleFrameMatchesItsGolden)
+{
+    const std::string name = GetParam();
+    const std::string dir = std::string(NPRGL_TEST_SOURCE_DIR) + "/compat";
+    const std::string capture = dir + "/captures/" + name + ".nprgl";
+    const ProcessResult info = runProcess({nprglCommand(), "info", capture});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    const size_t at = info.out.find("recorded_frames:");
+    ASSERT_NE(at, std::string::npos) << info.out;
+    const size_t dash = info.out.find('-', at);
+    ASSERT_NE(dash, std::string::npos) << info.out;
+    const int last = std::atoi(info.out.c_str() + dash + 1);
+    ASSERT_GT(last, 0) << info.out;
+    const std::string out = freshDir("corpus_golden_" + name);
+    const ProcessResult r = runProcess({nprglCommand(), "replay", capture, "-o", out, "--frames",
+                                        std::to_string(last)},
+                                       {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""},
+                                        {"NPRGL_PRESET", ""}});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    char frame[64];
+    std::snprintf(frame, sizeof frame, "/frame_%010d.png", last);
+    const std::string golden = dir + "/golden/" + name + ".png";
+    ASSERT_TRUE(fs::exists(golden)) << golden << ": run scripts/corpus-goldens.sh";
+    const ImageDiff diff = compareImages(golden, out + frame, 24);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    nprgl::PngImage image;
+    std::string error;
+    ASSERT_TRUE(nprgl::PngImage::read(golden, image, error)) << error;
+    EXPECT_LE(diff.differingPixels, size_t(image.width) * image.height / 200)
+        << name << " in the default style differs from " << golden << " (see " << out << frame
+        << ")";
+}
+
+INSTANTIATE_TEST_SUITE_P(Kept, CorpusGolden, ::testing::ValuesIn(keptCaptures()),
+                         [](const auto& p) {
+                             std::string n = p.param;
+                             for (char& c : n) {
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             }
+                             return n;
+                         });
+
+TEST(CorpusGolden, TwentyFiveProgramsAreKept)
+{
+    EXPECT_GE(keptCaptures().size(), 25u) << "tests/compat/captures: scripts/corpus-goldens.sh";
 }
