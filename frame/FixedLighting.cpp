@@ -73,12 +73,17 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
     const GLenum colourMode = a.colorMaterial ? a.colorMaterialMode : 0;
     const bool colourFront = a.colorMaterialFace != GL_BACK;
     const bool colourBack = a.colorMaterialFace != GL_FRONT;
+    // The material at glBegin (the state now is the one after glEnd), then each change
+    // between glBegin and glEnd from its vertex on.
     Material m = a.material;
+    if (!batch.materials.empty()) m.diffuse = batch.beginMaterial, m.ambient = batch.beginAmbient;
     size_t next = 0;
     for (size_t i = 0; i < batch.vertices.size(); ++i) {
         TrackedVertex& v = batch.vertices[i];
         while (next < batch.materials.size() && batch.materials[next].first <= i) {
-            m.diffuse = batch.materials[next++].diffuse;
+            const TrackedBatch::MaterialChange& change = batch.materials[next++];
+            if (change.setsDiffuse) m.diffuse = change.diffuse;
+            if (change.setsAmbient) m.ambient = change.ambient;
         }
         const glm::vec3 eye = glm::vec3(modelview * glm::vec4(v.position, 1.0f));
         glm::vec3 n = normals * v.normal;

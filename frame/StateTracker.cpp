@@ -1594,6 +1594,7 @@ void StateTracker::begin(GLenum mode)
     mBatch.mode = mode;
     mBatch.hasNormals = currentNormalCounts();
     mBatch.beginMaterial = mAttrib.material.diffuse;
+    mBatch.beginAmbient = mAttrib.material.ambient;
     mNormalFresh = false; // from here: whether the batch sets normals itself
 }
 
@@ -1704,7 +1705,8 @@ bool StateTracker::keep(TrackedBatch& batch)
             size_t next = 0;
             for (size_t i = 0; i < batch.vertices.size(); ++i) {
                 while (next < batch.materials.size() && batch.materials[next].first <= i) {
-                    c = lit(batch.materials[next++].diffuse);
+                    const TrackedBatch::MaterialChange& change = batch.materials[next++];
+                    if (change.setsDiffuse) c = lit(change.diffuse);
                 }
                 batch.vertices[i].color = c;
             }
@@ -1872,8 +1874,14 @@ void StateTracker::setEnabled(GLenum cap, bool on)
 void StateTracker::batchMaterial(GLenum face, GLenum pname, const float* v)
 {
     if (!mInBegin || face == GL_BACK || !v) return;
-    if (pname != GL_DIFFUSE && pname != GL_AMBIENT_AND_DIFFUSE) return;
-    mBatch.materials.push_back({uint32_t(mBatch.vertices.size()), {v[0], v[1], v[2], v[3]}});
+    if (pname != GL_DIFFUSE && pname != GL_AMBIENT_AND_DIFFUSE && pname != GL_AMBIENT) return;
+    TrackedBatch::MaterialChange change;
+    change.first = uint32_t(mBatch.vertices.size());
+    change.setsDiffuse = pname != GL_AMBIENT;
+    change.setsAmbient = pname != GL_DIFFUSE;
+    if (change.setsDiffuse) change.diffuse = {v[0], v[1], v[2], v[3]};
+    if (change.setsAmbient) change.ambient = {v[0], v[1], v[2]};
+    mBatch.materials.push_back(change);
 }
 
 void StateTracker::material(GLenum face, GLenum pname, const float* v)
@@ -1980,6 +1988,7 @@ void StateTracker::callListBody(GLuint list)
             batch.hasNormals = compiled.hasNormals;
             batch.materials = compiled.materials;
             batch.beginMaterial = compiled.beginMaterial;
+            batch.beginAmbient = compiled.beginAmbient;
             const List::Inherits& from = body.inherits[size_t(item.batch)];
             if (from.normal) batch.hasNormals = batch.hasNormals || callerNormal;
             // What the list did not set itself comes from the state at this call.

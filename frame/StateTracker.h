@@ -45,15 +45,20 @@ struct TrackedBatch {
     // Every enabled light when the draw was lit, the brightest first (none: unlit, or no
     // light on).
     styles::SceneLights lights;
-    // glMaterial diffuse colours set between glBegin and glEnd (per face or per vertex, as
+    // glMaterial colours set between glBegin and glEnd (per face or per vertex, as
     // programs set them): each from vertex `first` on; before the first, the material at
     // glBegin. Empty: the material at the draw colours every vertex.
+    // GL_AMBIENT_AND_DIFFUSE sets both (skytentacles colours its tentacles so, vertex by
+    // vertex); GL_AMBIENT the ambient alone (what GL's lighting, the replica's, reflects).
     struct MaterialChange {
         uint32_t first = 0;
         glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+        glm::vec3 ambient{0.2f};
+        bool setsDiffuse = true, setsAmbient = false;
     };
     std::vector<MaterialChange> materials;
-    glm::vec4 beginMaterial{0.8f, 0.8f, 0.8f, 1.0f};
+    glm::vec4 beginMaterial{0.8f, 0.8f, 0.8f, 1.0f}; // the diffuse at glBegin
+    glm::vec3 beginAmbient{0.2f};                     // and the ambient
     GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
     // A texture on coordinates GL generates on the surface unit (texture is then 0).
     styles::GeneratedTexture generated;

@@ -1137,6 +1137,59 @@ TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
     EXPECT_LT(batches[2].lights.ambientShare, 0.0f) << "unlit: no share known";
 }
 
+// glMaterial(GL_AMBIENT_AND_DIFFUSE) between glBegin and glEnd sets the ambient of the
+// vertices after it too, and the vertices before the first change have the material of
+// glBegin, not the one left after glEnd (skytentacles colours its tentacles vertex by vertex;
+// the replica lit their shadowed sides with the last material's ambient).
+TEST(StateTracker, MaterialsInsideBeginEndSetTheAmbientToo)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    tracker.setProgramLighting(true);
+    Feed feed{tracker};
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    feed.material(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, {0.0f, 0.0f, 1.0f, 1.0f}); // at glBegin
+    const std::array<float, 4> red = {1.0f, 0.0f, 0.0f, 1.0f}, green = {0.0f, 1.0f, 0.0f, 1.0f};
+    feed.run([&](CallWriter& w) {
+        auto material = [&](const std::array<float, 4>& v) {
+            w.op(op::glMaterialfv);
+            const size_t mark = w.beginPayload();
+            w.put<GLenum>(GL_FRONT);
+            w.put<GLenum>(GL_AMBIENT_AND_DIFFUSE);
+            w.putBytes(v.data(), sizeof v);
+            w.endPayload(mark);
+        };
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_QUADS);
+        for (int k = 0; k < 4; ++k) {
+            if (k == 1) material(red);
+            if (k == 3) material(green);
+            // Turned from the light (at +z): GL shows the ambient terms alone.
+            w.op(op::glNormal3f);
+            for (float c : {0.0f, 0.0f, -1.0f}) w.put<float>(c);
+            w.op(op::glVertex3f);
+            for (float c : {k == 1 || k == 2 ? 1.0f : 0.0f, k >= 2 ? 1.0f : 0.0f, -2.0f}) {
+                w.put<float>(c);
+            }
+        }
+        w.op(op::glEnd);
+    });
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    const auto& v = batches[0].vertices;
+    ASSERT_EQ(v.size(), 4u);
+    // GL's scene ambient 0.2 on each vertex's ambient material.
+    EXPECT_NEAR(v[0].color.b, 0.2f, 0.01f) << "the material at glBegin";
+    EXPECT_NEAR(v[0].color.g, 0.0f, 0.01f) << "the material left after glEnd";
+    EXPECT_NEAR(v[1].color.r, 0.2f, 0.01f);
+    EXPECT_NEAR(v[2].color.r, 0.2f, 0.01f);
+    EXPECT_NEAR(v[3].color.g, 0.2f, 0.01f);
+    EXPECT_NEAR(v[3].color.r, 0.0f, 0.01f);
+}
+
 TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
 {
     StateTracker tracker;
