@@ -200,8 +200,7 @@ void StyleChain::render(const Scene& scene)
         }
         depthTested = true;
         if (o.depthOnly) {
-            // Its colours come from the program's colour pass over the same geometry; drawn
-            // first, its depth would hide that pass's styled surfaces (equal depth).
+            // Drawn first (below): an occluder's depth hides what lies behind it.
             if (mHasShading) mDepthOnly.objects.push_back(o);
         } else if (!mHasShading) {
             mOpaque.objects.push_back(o);
@@ -238,6 +237,18 @@ void StyleChain::render(const Scene& scene)
         else mStyles[i]->layBackground(scene, mContext);
     }
     renderAsDrawn(mBackdrop);
+    // Depth-only objects (a depth pre-pass, or an occluder drawn with no colour) before the
+    // scene, as the program draws them: what the program draws behind them stays hidden
+    // (razzledazzle's ship, drawn into depth alone, hides the sky and sea drawn after it and
+    // shows its pattern through; drawn after the scene it hid nothing). A colour pass over a
+    // pre-pass ties in depth, as the program's does: the program's GL_LEQUAL or GL_EQUAL
+    // lets it through (renderShading), drawn by the same shaders to the same depth.
+    if (!mDepthOnly.objects.empty()) {
+        setBaseline(mDepthOnly, true);
+        gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        mStyles.front()->render(mDepthOnly, mContext);
+        mContext.colourMaskOn();
+    }
     for (size_t i = 0; i < mStyles.size(); ++i) {
         const bool shading = mHasShading && i == 0; // the shading style is ordered first
         if (shading) {
@@ -264,12 +275,6 @@ void StyleChain::render(const Scene& scene)
         }
     }
     renderAsDrawn(mOnTop);
-    if (!mDepthOnly.objects.empty()) {
-        setBaseline(mDepthOnly, true);
-        gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        mStyles.front()->render(mDepthOnly, mContext);
-        mContext.colourMaskOn();
-    }
     renderBlended(mTranslucent);
     mContext.meshes.endFlush(mContext.gl);
 }

@@ -1501,6 +1501,32 @@ TEST(Compositor, DepthOnlyPassesSupplyDepthAndNothingElse)
     EXPECT_LT(diff.differingPixels, 320u * 240u / 200u) << "the pre-pass changed the picture";
 }
 
+// A square drawn into depth alone before the scene (an occluder: razzledazzle draws its ship so
+// and its sky and sea around it) hides the scene behind it, as natively: the hole shows the
+// clear colour. The styles drew depth-only objects after the scene, and the hole was filled.
+TEST(Compositor, ADepthOnlyOccluderHidesWhatIsDrawnBehindIt)
+{
+    auto centre = [](const std::string& style) {
+        const PngImage image = readPng(demoFrame("textured", "occluder_" + style,
+                                                 {"--style", style}, {"--depth-occluder"}));
+        if (image.rgba.empty()) return std::vector<int>{};
+        const uint8_t* p = pixel(image, 160, 120);
+        return std::vector<int>{p[0], p[1], p[2]};
+    };
+    const PngImage plain = readPng(demoFrame("textured", "occluder_off", {"--style", "none"}, {}));
+    ASSERT_FALSE(plain.rgba.empty());
+    const uint8_t* scene = pixel(plain, 160, 120);
+    const std::vector<int> native = centre("none");
+    ASSERT_EQ(native.size(), 3u);
+    ASSERT_GT(std::abs(native[0] - scene[0]) + std::abs(native[1] - scene[1]) +
+                  std::abs(native[2] - scene[2]),
+              60)
+        << "the scene does not differ from the hole natively: no test";
+    const std::vector<int> styled = centre("toon");
+    ASSERT_EQ(styled.size(), 3u);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(styled[size_t(c)], native[size_t(c)], 8) << c;
+}
+
 // A decal: a yellow square in the floor's plane, kept in front of it by glPolygonOffset. The
 // styled decal is whole, as it is natively, not striped by the floor fighting it.
 // A translucent decal (blended by its alpha, no depth writes, as neverball paints its goal

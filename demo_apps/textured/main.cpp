@@ -10,7 +10,8 @@
 // draws the cube with a small positive polygon offset; --fog fades the
 // scene into a pale linear fog between eye distances 6 and 11; --depth-prepass draws the
 // scene twice, depth
-// only (colour mask off), then colours at equal depth; --decal lays a yellow square on the
+// only (colour mask off), then colours at equal depth; --depth-occluder first draws a square
+// in front of the scene into depth alone (colour mask off), a hole the scene does not show in; --decal lays a yellow square on the
 // floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
 // depth) and draws the scene again there, turned, like a rear-view mirror; --stale-panel
 // leaves frame 1's panel in the buffer by clearing only depth later; --hud-bar draws a bar
@@ -261,6 +262,8 @@ public:
                  "with --cutout: the cube also blended by its alpha (GL_SRC_ALPHA, "
                  "GL_ONE_MINUS_SRC_ALPHA) with depth writes, as foliage is drawn"},
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
+                {"depth-occluder", demo::ExtraOption::Kind::Flag,
+                 "a square in front of the scene drawn into depth alone first: a hole in it"},
                 {"depth-prepass", demo::ExtraOption::Kind::Flag,
                  "draw the scene's depth first with the colour mask off, then its colours"},
                 {"decal", demo::ExtraOption::Kind::Flag,
@@ -312,6 +315,7 @@ public:
         backdropFloor_ = options.has("backdrop-floor");
         backdropHaze_ = options.has("backdrop-haze");
         depthPrepass_ = options.has("depth-prepass");
+        depthOccluder_ = options.has("depth-occluder");
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
         inset_ = options.has("inset");
@@ -387,6 +391,27 @@ public:
         if (stalePanel_ && frame == 1) drawPanel();
         if (envTexture_) makeEnvMap(frame);
         if (farBackdrop_) drawFarBackdrop();
+        if (depthOccluder_) {
+            // The middle fifth of the window at the near end of the depth range, depth only.
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glMatrixMode(GL_PROJECTION);
+            glPushMatrix();
+            glLoadIdentity();
+            glMatrixMode(GL_MODELVIEW);
+            glPushMatrix();
+            glLoadIdentity();
+            glBegin(GL_QUADS);
+            glVertex3f(-0.2f, -0.2f, -0.9f);
+            glVertex3f(0.2f, -0.2f, -0.9f);
+            glVertex3f(0.2f, 0.2f, -0.9f);
+            glVertex3f(-0.2f, 0.2f, -0.9f);
+            glEnd();
+            glPopMatrix();
+            glMatrixMode(GL_PROJECTION);
+            glPopMatrix();
+            glMatrixMode(GL_MODELVIEW);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        }
         if (depthPrepass_) {
             // Depth first, colour off; then the colours on equal depth.
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -912,6 +937,7 @@ private:
     GLuint lateFloorTexture_ = 0;
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;
+    bool depthOccluder_ = false;
     bool decal_ = false;
     bool inset_ = false;
     bool weapon_ = false;
