@@ -820,8 +820,8 @@ TEST_P(DefaultStyle, EveryDemoAppRunsAndIsStylised)
     }
     EXPECT_GT(inked, 160u * 120u / 200) << "the edges drew no ink";
     EXPECT_GE(contrasting * 10, inked * 8)
-        << "what the edges added is not ink of the page's contrast (" << (darkPage ? "dark" : "light")
-        << " page)";
+        << "what the edges added is not ink of the page's contrast ("
+        << (darkPage ? "dark" : "light") << " page)";
 }
 
 INSTANTIATE_TEST_SUITE_P(

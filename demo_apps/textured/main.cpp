@@ -9,10 +9,9 @@
 // (foliage's soft rims, depth written), --cutout-fine makes it a fine grille; --pushed-back
 // draws the cube with a small positive polygon offset; --fog fades the
 // scene into a pale linear fog between eye distances 6 and 11; --depth-prepass draws the
-// scene twice, depth
-// only (colour mask off), then colours at equal depth; --depth-occluder first draws a square
-// in front of the scene into depth alone (colour mask off), a hole the scene does not show in; --decal lays a yellow square on the
-// floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
+// scene twice, depth only (colour mask off), then colours at equal depth; --depth-occluder
+// first draws a square in front of the scene into depth alone (colour mask off), a hole the
+// scene does not show in; --decal lays a yellow square on the floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
 // depth) and draws the scene again there, turned, like a rear-view mirror; --stale-panel
 // leaves frame 1's panel in the buffer by clearing only depth later; --hud-bar draws a bar
 // over the scene in 2D with the depth test (GL_LEQUAL): a white frame, then a blue gradient in
