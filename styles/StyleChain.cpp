@@ -181,6 +181,7 @@ void StyleChain::render(const Scene& scene)
     mCutOut.objects.clear();
     mBlendedCutOut.objects.clear();
     mDepthOnly.objects.clear();
+    mDepthOnlyFirst.objects.clear();
     mBackdrop.objects.clear();
     mOnTop.objects.clear();
     bool depthTested = false; // an object drawn with the depth test came before
@@ -200,8 +201,13 @@ void StyleChain::render(const Scene& scene)
         }
         depthTested = true;
         if (o.depthOnly) {
-            // Drawn first (below): an occluder's depth hides what lies behind it.
-            if (mHasShading) mDepthOnly.objects.push_back(o);
+            // Where the program draws it: before every coloured object (an occluder, a
+            // pre-pass) it goes first and hides what the program draws behind it; after some
+            // (a mask over the ground drawn before it), after the opaque scene, so that it
+            // does not fight the surfaces drawn before it at their depth.
+            const bool first = mOpaque.objects.empty() && mTranslucent.objects.empty() &&
+                               mCutOut.objects.empty() && mBlendedCutOut.objects.empty();
+            if (mHasShading) (first ? mDepthOnlyFirst : mDepthOnly).objects.push_back(o);
         } else if (!mHasShading) {
             mOpaque.objects.push_back(o);
         } else if (o.translucent) {
@@ -217,12 +223,12 @@ void StyleChain::render(const Scene& scene)
             (o.special() ? mCutOut : mOpaque).objects.push_back(o);
         }
     }
-    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mBlendedCutOut, &mDepthOnly, &mRun,
+    for (Scene* part : {&mOpaque, &mTranslucent, &mCutOut, &mBlendedCutOut, &mDepthOnly,
+                        &mDepthOnlyFirst, &mRun,
                         &mBackdrop, &mOnTop}) {
         part->takeFrameOf(scene);
     }
     const bool outlineCutOuts = collectCutOuts();
-    const GlFunctions& gl = mContext.gl;
     // The page under everything: a backdrop in the clear colour, drawn without depth (a dark
     // floor), stays the program's and does not become page. Without a backdrop it is laid
     // after the opaque scene (the background style's render), where the scene's depth
@@ -237,18 +243,13 @@ void StyleChain::render(const Scene& scene)
         else mStyles[i]->layBackground(scene, mContext);
     }
     renderAsDrawn(mBackdrop);
-    // Depth-only objects (a depth pre-pass, or an occluder drawn with no colour) before the
-    // scene, as the program draws them: what the program draws behind them stays hidden
+    // Depth-only objects the program draws before its coloured ones (an occluder, a depth
+    // pre-pass) before the scene: what the program draws behind them stays hidden
     // (razzledazzle's ship, drawn into depth alone, hides the sky and sea drawn after it and
     // shows its pattern through; drawn after the scene it hid nothing). A colour pass over a
     // pre-pass ties in depth, as the program's does: the program's GL_LEQUAL or GL_EQUAL
     // lets it through (renderShading), drawn by the same shaders to the same depth.
-    if (!mDepthOnly.objects.empty()) {
-        setBaseline(mDepthOnly, true);
-        gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        mStyles.front()->render(mDepthOnly, mContext);
-        mContext.colourMaskOn();
-    }
+    renderDepthOnly(mDepthOnlyFirst);
     for (size_t i = 0; i < mStyles.size(); ++i) {
         const bool shading = mHasShading && i == 0; // the shading style is ordered first
         if (shading) {
@@ -275,8 +276,18 @@ void StyleChain::render(const Scene& scene)
         }
     }
     renderAsDrawn(mOnTop);
+    renderDepthOnly(mDepthOnly);
     renderBlended(mTranslucent);
     mContext.meshes.endFlush(mContext.gl);
+}
+
+void StyleChain::renderDepthOnly(const Scene& part)
+{
+    if (part.objects.empty()) return;
+    setBaseline(part, true);
+    mContext.gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    mStyles.front()->render(part, mContext);
+    mContext.colourMaskOn();
 }
 
 void StyleChain::renderBlended(const Scene& part)

@@ -69,6 +69,8 @@ private:
     void renderAsDrawn(const Scene& part);
     // The shading style's pass over the opaque scene, which lays its depth.
     void renderShading(const Scene& part, Style& shading);
+    // The shading style draws `part`'s objects into depth alone (its colour mask off).
+    void renderDepthOnly(const Scene& part);
     // The shading style's pass over translucent objects, blended by their alpha.
     void renderBlended(const Scene& part);
     // Whether the flush has cut-outs a style of the chain outlines (then mWithCutOuts holds
@@ -76,6 +78,7 @@ private:
     bool collectCutOuts();
 
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
+    Scene mDepthOnlyFirst; // depth-only objects drawn before every coloured one
     Scene mBlendedCutOut; // translucent, shaped by their alpha test and depth writes
     Scene mWithCutOuts; // the opaque scene and the cut-outs (Style::outlinesCutOuts)
     Scene mBackdrop, mOnTop; // drawn as the program did, before or after the scene

@@ -1527,6 +1527,27 @@ TEST(Compositor, ADepthOnlyOccluderHidesWhatIsDrawnBehindIt)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(styled[size_t(c)], native[size_t(c)], 8) << c;
 }
 
+// A depth-only pass drawn after the surfaces it covers (squirtorus masks its ground so) changes
+// nothing natively; drawn before the scene it tied with them in depth and hid them (black
+// rings on squirtorus's sand): it stays after the opaque scene.
+TEST(Compositor, ADepthOnlyPassAfterItsSurfacesChangesNothing)
+{
+    auto run = [](const std::string& name, bool after) {
+        return demoFrame("textured", name, {"--style", "toon"},
+                         after ? std::vector<std::string>{"--depth-after"}
+                               : std::vector<std::string>{});
+    };
+    const ImageDiff natively =
+        compareImages(demoFrame("textured", "after_none", {"--style", "none"}, {}),
+                      demoFrame("textured", "after_none_on", {"--style", "none"}, {"--depth-after"}),
+                      8);
+    ASSERT_TRUE(natively.comparable) << natively.error;
+    ASSERT_EQ(natively.differingPixels, 0u) << "the pass changes the picture natively: no test";
+    const ImageDiff diff = compareImages(run("after_off", false), run("after_on", true), 24);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_LT(diff.differingPixels, 320u * 240u / 200u) << "the depth-only pass hid the floor";
+}
+
 // A decal: a yellow square in the floor's plane, kept in front of it by glPolygonOffset. The
 // styled decal is whole, as it is natively, not striped by the floor fighting it.
 // A translucent decal (blended by its alpha, no depth writes, as neverball paints its goal

@@ -11,7 +11,8 @@
 // scene into a pale linear fog between eye distances 6 and 11; --depth-prepass draws the
 // scene twice, depth only (colour mask off), then colours at equal depth; --depth-occluder
 // first draws a square in front of the scene into depth alone (colour mask off), a hole the
-// scene does not show in; --decal lays a yellow square on the floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
+// scene does not show in; --depth-after draws the floor a second time, into depth alone, right
+// after it (no change natively); --decal lays a yellow square on the floor with glPolygonOffset; --inset clears the top right quarter (scissored, colour and
 // depth) and draws the scene again there, turned, like a rear-view mirror; --stale-panel
 // leaves frame 1's panel in the buffer by clearing only depth later; --hud-bar draws a bar
 // over the scene in 2D with the depth test (GL_LEQUAL): a white frame, then a blue gradient in
@@ -263,6 +264,8 @@ public:
                 {"fog", demo::ExtraOption::Kind::Flag, "linear fog from 6 to 11 units"},
                 {"depth-occluder", demo::ExtraOption::Kind::Flag,
                  "a square in front of the scene drawn into depth alone first: a hole in it"},
+                {"depth-after", demo::ExtraOption::Kind::Flag,
+                 "the floor drawn again into depth alone right after it: no change natively"},
                 {"depth-prepass", demo::ExtraOption::Kind::Flag,
                  "draw the scene's depth first with the colour mask off, then its colours"},
                 {"decal", demo::ExtraOption::Kind::Flag,
@@ -315,6 +318,7 @@ public:
         backdropHaze_ = options.has("backdrop-haze");
         depthPrepass_ = options.has("depth-prepass");
         depthOccluder_ = options.has("depth-occluder");
+        depthAfter_ = options.has("depth-after");
         decal_ = options.has("decal") || options.has("translucent-decal");
         translucentDecal_ = options.has("translucent-decal");
         inset_ = options.has("inset");
@@ -744,6 +748,11 @@ public:
             glColor3f(0.15f, 0.15f, 0.18f); // the clear colour
         }
         drawFloorQuad(4.0f);
+        if (depthAfter_) {
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            drawFloorQuad(4.0f);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        }
         if (poolTexture_) drawPool();
         if (backdropFloor_ && backdropHaze_) {
             glEnable(GL_BLEND);
@@ -937,6 +946,7 @@ private:
     GLuint glowList_ = 0;
     bool depthPrepass_ = false;
     bool depthOccluder_ = false;
+    bool depthAfter_ = false;
     bool decal_ = false;
     bool inset_ = false;
     bool weapon_ = false;
