@@ -215,7 +215,7 @@ TEST(Paper, APageAsDarkAsTheProgramsBackgroundWithLightInk)
     const PngImage light = render(harness, scene, "toon+paper+edges", config, grey);
     save(dark, "auto_dark");
     save(light, "auto_light");
-    const Rgb slate{0x1e, 0x21, 0x26};
+    const Rgb slate{0x15, 0x17, 0x1a};
     EXPECT_TRUE(near(pixel(dark, 2, 2), slate)) << "not the dark page on a black background";
     EXPECT_TRUE(near(pixel(light, 2, 2), kPaper)) << "not paper on a light background";
     // The silhouette's ink, just inside the sphere's outline on its horizontal axis.

@@ -16,7 +16,7 @@ namespace {
 
 const char* kStyle = "paper";
 const char* kDefaultColour = "f4efe1";
-const char* kDefaultDarkColour = "1e2126"; // a slate: the page of a program drawn on black
+const char* kDefaultDarkColour = "15171a"; // a slate: the page of a program drawn on black
 
 // The triangle covers the viewport at the far plane: with depth test GL_LEQUAL the fill pass
 // reaches only pixels whose depth is still the cleared far value (the depth test rejects

@@ -74,7 +74,7 @@ private:
     std::vector<Filled> mFilled;
     // Parameters, fixed for the chain's life.
     glm::vec3 mPaperColour{0.957f, 0.937f, 0.882f};
-    glm::vec3 mDarkColour{0.118f, 0.129f, 0.149f}; // the page when PageTone says dark
+    glm::vec3 mDarkColour{0.082f, 0.090f, 0.102f}; // the page when PageTone says dark
     bool mColourChosen = false;                    // paper.color set: the page, dark or light
     bool mFill = true;
     float mGrain = 0.12f;
