@@ -14,6 +14,10 @@ void setPerspective(double fovYDegrees, double aspect, double zNear, double zFar
 // -1 to 1) with an identity modelview; the matrix mode is left at GL_MODELVIEW. The caller
 // pops both.
 void pushPixelProjection(int width, int height);
+// The same with identity matrices (normalised device coordinates).
+void pushIdentityMatrices();
+// Pops what pushPixelProjection or pushIdentityMatrices pushed; leaves GL_MODELVIEW current.
+void popMatrices();
 
 // A lit sphere at the origin, one GL_TRIANGLE_STRIP per band of latitude; with
 // textureRepeats > 0, texture coordinates that wrap that many times around it.

@@ -397,22 +397,14 @@ public:
         if (depthOccluder_) {
             // The middle fifth of the window at the near end of the depth range, depth only.
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            glMatrixMode(GL_PROJECTION);
-            glPushMatrix();
-            glLoadIdentity();
-            glMatrixMode(GL_MODELVIEW);
-            glPushMatrix();
-            glLoadIdentity();
+            demo::pushIdentityMatrices();
             glBegin(GL_QUADS);
             glVertex3f(-0.2f, -0.2f, -0.9f);
             glVertex3f(0.2f, -0.2f, -0.9f);
             glVertex3f(0.2f, 0.2f, -0.9f);
             glVertex3f(-0.2f, 0.2f, -0.9f);
             glEnd();
-            glPopMatrix();
-            glMatrixMode(GL_PROJECTION);
-            glPopMatrix();
-            glMatrixMode(GL_MODELVIEW);
+            demo::popMatrices();
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         if (depthPrepass_) {
@@ -638,21 +630,13 @@ public:
             glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT);
             glDisable(GL_LIGHTING);
             glDisable(GL_DEPTH_TEST);
-            glMatrixMode(GL_PROJECTION);
-            glPushMatrix();
-            glLoadIdentity();
-            glMatrixMode(GL_MODELVIEW);
-            glPushMatrix();
-            glLoadIdentity();
+            demo::pushIdentityMatrices();
             glColor3f(1.0f, 1.0f, 0.0f);
             glBegin(GL_LINES);
             glVertex2f(-0.3f, 0.0f);
             glVertex2f(0.3f, 0.0f);
             glEnd();
-            glPopMatrix();
-            glMatrixMode(GL_PROJECTION);
-            glPopMatrix();
-            glMatrixMode(GL_MODELVIEW);
+            demo::popMatrices();
             glPopAttrib();
         }
         glBindTexture(GL_TEXTURE_2D, envTexture_);
@@ -701,12 +685,7 @@ public:
         glDisable(GL_LIGHTING);
         glDisable(GL_TEXTURE_2D);
         glDepthFunc(GL_LEQUAL);
-        glMatrixMode(GL_PROJECTION);
-        glPushMatrix();
-        glLoadIdentity();
-        glMatrixMode(GL_MODELVIEW);
-        glPushMatrix();
-        glLoadIdentity();
+        demo::pushIdentityMatrices();
         glBegin(GL_QUADS);
         glColor3f(0.0f, 0.05f, 0.2f);
         glVertex3f(-1.0f, -1.0f, 1.0f);
@@ -715,10 +694,7 @@ public:
         glVertex3f(1.0f, 1.0f, 1.0f);
         glVertex3f(-1.0f, 1.0f, 1.0f);
         glEnd();
-        glPopMatrix();
-        glMatrixMode(GL_PROJECTION);
-        glPopMatrix();
-        glMatrixMode(GL_MODELVIEW);
+        demo::popMatrices();
         glPopAttrib();
     }
 
