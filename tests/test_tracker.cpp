@@ -429,6 +429,23 @@ struct Feed {
     {
         run([](CallWriter& w) { writeTriangle(w, 0.0f); });
     }
+    // A unit GL_QUADS quad at z -2, counter-clockwise from the origin, a normal per vertex.
+    void quad(const std::array<glm::vec3, 4>& normals)
+    {
+        run([&](CallWriter& w) {
+            w.op(op::glBegin);
+            w.put<GLenum>(GL_QUADS);
+            for (int k = 0; k < 4; ++k) {
+                w.op(op::glNormal3f);
+                for (int c = 0; c < 3; ++c) w.put<float>(normals[size_t(k)][c]);
+                w.op(op::glVertex3f);
+                for (float c : {k == 1 || k == 2 ? 1.0f : 0.0f, k >= 2 ? 1.0f : 0.0f, -2.0f}) {
+                    w.put<float>(c);
+                }
+            }
+            w.op(op::glEnd);
+        });
+    }
     // glBindTexture(GL_TEXTURE_2D, texture) on the active unit.
     void bindTexture(GLuint texture)
     {
@@ -1091,21 +1108,8 @@ TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
     StateTracker tracker;
     tracker.setHolding(true);
     Feed feed{tracker};
-    auto quad = [&] {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glBegin);
-            w.put<GLenum>(GL_QUADS);
-            for (int k = 0; k < 4; ++k) {
-                w.op(op::glNormal3f);
-                for (float c : {0.0f, 0.0f, 1.0f}) w.put<float>(c);
-                w.op(op::glVertex3f);
-                for (float c : {k == 1 || k == 2 ? 1.0f : 0.0f, k >= 2 ? 1.0f : 0.0f, -2.0f}) {
-                    w.put<float>(c);
-                }
-            }
-            w.op(op::glEnd);
-        });
-    };
+    const glm::vec3 towardsEye(0.0f, 0.0f, 1.0f);
+    auto quad = [&] { feed.quad({towardsEye, towardsEye, towardsEye, towardsEye}); };
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_LIGHTING, true);
     feed.enable(GL_LIGHT0, true);
@@ -1204,21 +1208,7 @@ TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
     const float s60 = std::sqrt(3.0f) / 2.0f;
     const std::array<glm::vec3, 4> normals = {glm::vec3(0, 0, 1), glm::vec3(s60, 0, 0.5f),
                                               glm::vec3(1, 0, 0), glm::vec3(0, 0, -1)};
-    auto quad = [&] {
-        feed.run([&](CallWriter& w) {
-            w.op(op::glBegin);
-            w.put<GLenum>(GL_QUADS);
-            for (int k = 0; k < 4; ++k) {
-                w.op(op::glNormal3f);
-                for (int c = 0; c < 3; ++c) w.put<float>(normals[size_t(k)][c]);
-                w.op(op::glVertex3f);
-                for (float c : {k == 1 || k == 2 ? 1.0f : 0.0f, k >= 2 ? 1.0f : 0.0f, -2.0f}) {
-                    w.put<float>(c);
-                }
-            }
-            w.op(op::glEnd);
-        });
-    };
+    auto quad = [&] { feed.quad(normals); };
     feed.enable(GL_DEPTH_TEST, true);
     feed.enable(GL_LIGHTING, true);
     feed.enable(GL_LIGHT0, true);
