@@ -22,6 +22,13 @@ namespace nprgl::cli {
 
 namespace {
 
+// A bad option value: the same exit status as CLI11's own usage errors in main.cpp.
+int usage(const std::string& message)
+{
+    std::fprintf(stderr, "nprgl: %s\n", message.c_str());
+    return 2;
+}
+
 int fail(const std::string& message)
 {
     std::fprintf(stderr, "nprgl: %s\n", message.c_str());
@@ -44,8 +51,8 @@ int replayCommand(const ReplayCommandOptions& options)
     std::string config;
     for (const std::string& s : options.settings) config += (config.empty() ? "" : ",") + s;
     std::string chain = options.style;
-    if (!Presets::combine(options.preset, chain, config, error)) return fail("--preset: " + error);
-    if (!StyleSettings::parse(chain, config, style, error)) return fail(error);
+    if (!Presets::combine(options.preset, chain, config, error)) return usage("--preset: " + error);
+    if (!StyleSettings::parse(chain, config, style, error)) return usage(error);
 
     ReplayOptions replay;
     replay.config.emplace();
@@ -60,17 +67,17 @@ int replayCommand(const ReplayCommandOptions& options)
         replay.config->rules = rules.rules;
         replay.config->rules.normalise();
     }
-    if (!parseFrames(options.frames, replay.frames, error)) return fail("--frames: " + error);
+    if (!parseFrames(options.frames, replay.frames, error)) return usage("--frames: " + error);
     if (!options.size.empty() &&
         std::sscanf(options.size.c_str(), "%dx%d", &replay.width, &replay.height) != 2) {
-        return fail("--size: expected WxH, got '" + options.size + "'");
+        return usage("--size: expected WxH, got '" + options.size + "'");
     }
     replay.outDir = options.outDir;
     replay.contextId = options.context;
     replay.stats = options.stats;
     // The progress bar would interleave with the per-frame figures.
     replay.progress = isatty(STDERR_FILENO) && !options.stats;
-    if (replay.outDir.empty() && !options.stats) return fail("-o DIR or --stats is required");
+    if (replay.outDir.empty() && !options.stats) return usage("-o DIR or --stats is required");
     if (!replay.outDir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(replay.outDir, ec);
@@ -89,7 +96,7 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
 {
     std::string error;
     FrameSet frames;
-    if (!parseFrames(framesText, frames, error)) return fail("--frames: " + error);
+    if (!parseFrames(framesText, frames, error)) return usage("--frames: " + error);
     capture::CaptureReader reader;
     if (!reader.open(file, error)) return fail(error);
     CaptureBlobs blobs(reader);
@@ -224,7 +231,7 @@ int exportCommand(const std::string& file, uint64_t frame, const std::string& ou
                   const std::string& space, unsigned context)
 {
     if (space != "eye" && space != "object") {
-        return fail("--space: expected eye or object, got '" + space + "'");
+        return usage("--space: expected eye or object, got '" + space + "'");
     }
     std::string error;
     capture::CaptureReader reader;

@@ -244,12 +244,12 @@ int compareCommand(const CompareOptions& options)
 
     if (!options.outDir.empty()) {
         fs::create_directories(options.outDir, ec);
-        if (ec) return fail("cannot create " + options.outDir + ": " + ec.message(), 2);
+        if (ec) return fail("cannot create " + options.outDir + ": " + ec.message());
     }
     std::FILE* json = nullptr;
     if (!options.json.empty()) {
         json = std::fopen(options.json.c_str(), "w");
-        if (!json) return fail("cannot write " + options.json, 2);
+        if (!json) return fail("cannot write " + options.json);
         const std::string chain = !options.style.empty()    ? options.style
                                   : !options.preset.empty() ? "preset " + options.preset
                                                             : "default";
@@ -292,7 +292,7 @@ int compareCommand(const CompareOptions& options)
             char name[64];
             std::snprintf(name, sizeof name, "/diff_%010llu.png",
                           static_cast<unsigned long long>(frame));
-            if (!m.diff.write(options.outDir + name, error)) return fail(error, 2);
+            if (!m.diff.write(options.outDir + name, error)) return fail(error);
         }
         const auto st = stats.find(frame);
         const std::string draws = st == stats.end() ? "" : st->second;
@@ -333,7 +333,7 @@ int compareCommand(const CompareOptions& options)
                      sorted.size(), median, sorted.front(), missingShare,
                      static_cast<unsigned long long>(judged),
                      static_cast<unsigned long long>(failures), failures == 0 ? "true" : "false");
-        if (std::fclose(json) != 0) return fail("cannot write " + options.json, 2);
+        if (std::fclose(json) != 0) return fail("cannot write " + options.json);
     }
     return 0;
 }

@@ -1,5 +1,7 @@
 #include "cli/RunCommand.h"
 
+#include "cli/RecordSupervisor.h"
+
 #include "common/FrameSet.h"
 #include "common/Log.h"
 #include "common/ScreenshotSpec.h"
@@ -56,10 +58,11 @@ void warnIfSecureExecution(const std::string& name)
                  fs::path(program).filename().c_str(), fs::path(program).filename().c_str());
 }
 
-int fail(const std::string& message)
+// 2: a usage error (a bad option or value); 1: anything else that stops the run.
+int fail(const std::string& message, int code = 2)
 {
     std::fprintf(stderr, "nprgl: %s\n", message.c_str());
-    return 2;
+    return code;
 }
 
 std::string joined(const std::vector<std::string>& items, const char* separator)
@@ -104,6 +107,9 @@ int runProgram(const RunOptions& options)
     if (style.empty() && std::getenv("NPRGL_STYLE")) style = std::getenv("NPRGL_STYLE");
     std::string preset = options.preset;
     if (preset.empty() && std::getenv("NPRGL_PRESET")) preset = std::getenv("NPRGL_PRESET");
+    // A recording is the program's own stream at its own speed, as apitrace records; a style
+    // is applied at replay, or while recording when asked for.
+    if (options.record && style.empty() && preset.empty()) style = "none";
     std::string error;
     if (!Presets::combine(preset, style, config, error)) return fail("--preset: " + error);
     StyleSettings settings;
@@ -120,7 +126,8 @@ int runProgram(const RunOptions& options)
                     "' (use error, warn, info or debug)");
     }
     std::string library = findLibrary(error);
-    if (library.empty()) return fail(error);
+    if (library.empty()) return fail(error, 1);
+    std::string recordPath;
     if (options.record) {
         FrameSet frames;
         if (!options.recordFrames.empty() &&
@@ -131,9 +138,11 @@ int runProgram(const RunOptions& options)
                                ? fs::path(options.command[0]).filename().string() + ".nprgl"
                                : options.recordFile;
         // Absolute: the program may change its directory before its first frame.
-        setenv("NPRGL_RECORD", fs::absolute(file).c_str(), 1);
-        // exec keeps the pid: this process becomes the program that owns the file.
-        setenv("NPRGL_RECORD_PID", std::to_string(getpid()).c_str(), 1);
+        recordPath = fs::absolute(file).string();
+        setenv("NPRGL_RECORD", recordPath.c_str(), 1);
+        // This command says what was recorded when the program ends (the library, alone,
+        // says it at exit); the program sets NPRGL_RECORD_PID as it starts.
+        setenv("NPRGL_RECORD_SUMMARY", "command", 1);
         if (!options.recordFrames.empty()) {
             setenv("NPRGL_RECORD_FRAMES", options.recordFrames.c_str(), 1);
         }
@@ -167,6 +176,7 @@ int runProgram(const RunOptions& options)
     setenv("LD_PRELOAD", preload.c_str(), 1);
 
     warnIfSecureExecution(options.command.front());
+    if (options.record) superviseRecording(options.command, recordPath);
     std::vector<char*> argv;
     for (const std::string& arg : options.command) argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);

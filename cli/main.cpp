@@ -1,7 +1,7 @@
 // nprgl: run a legacy OpenGL program through the NPR interposer.
 //
 //   nprgl [run] [--style S] [--set key=value]... [--] PROGRAM ARGS...
-//   nprgl styles
+//   nprgl record|replay|compare|dump|info|export|styles|help|version ...
 
 #include "cli/CaptureCommands.h"
 #include "cli/CompareCommand.h"
@@ -10,20 +10,23 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace {
 
 constexpr const char* kFooter = R"(Usage: nprgl [run] [OPTIONS] [--] PROGRAM [ARGS...]
-       nprgl styles
+       nprgl COMMAND [OPTIONS] ...   (nprgl help COMMAND for its options)
 
 Commands:
   run (default)   run PROGRAM with libnprgl.so preloaded
-  record          run PROGRAM and record its GL stream: nprgl record [-o FILE] [--frames A-B]
-                  [--] PROGRAM ARGS... (default FILE: <program>.nprgl)
-  replay          render a capture headless into PNGs: nprgl replay FILE -o DIR [--style S]
-                  [--set k=v]... [--frames A-B] [--size WxH] [--context N] [--stats]
+  record          run PROGRAM and record its GL stream, unstyled unless --style or --preset:
+                  nprgl record [-o FILE] [--frames A-B] [--] PROGRAM ARGS... (default FILE:
+                  <program>.nprgl); says what was recorded when the program ends
+  replay          render a capture headless into PNGs: nprgl replay FILE (-o DIR | --stats)
+                  [--style S] [--set k=v]... [--frames A-B] [--size WxH] [--context N]
   compare         replay a capture natively and in a style and measure how alike they are:
                   nprgl compare FILE [--style S|--preset P] [--frames A-B] [--json OUT] [-o DIR]
   dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
@@ -31,6 +34,13 @@ Commands:
   export          write a frame's reconstructed meshes: nprgl export FILE --frame N -o out.obj
                   [--space eye|object] (also .ply, .off)
   styles          list the styles, their parameters, defaults and ranges
+  help [COMMAND]  this text, or a command's options
+  version         nprgl's version
+
+A program named like a command runs with "run" or "--" first: nprgl run help.
+Exit status: the program's own (run, record); 2 for a usage error (an unknown option, a bad
+value, a missing argument); 1 when a command fails (an unreadable or damaged file, nothing
+to write); 126 or 127 when the program cannot be started.
 
 Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM reads them too):
   NPRGL_STYLE       style chain, e.g. none
@@ -42,6 +52,7 @@ Environment (set by the options above; plain LD_PRELOAD=libnprgl.so PROGRAM read
                     at the next frame)
   NPRGL_SCREENSHOT  frames=1,10,100;dir=out writes <program>_<frame>.png before each swap
   NPRGL_RECORD      record the GL stream to this file (NPRGL_RECORD_FRAMES=A-B)
+  NPRGL_OVERLAY     open: the overlay from the first frame (default closed)
   NPRGL_EXPORT      frame=N;dir=D writes frame N's reconstructed meshes as D/<program>_N.obj
   NPRGL_LOG_LEVEL   error, warn, info (default) or debug
   NPRGL_LOG_FILE    log to this file instead of stderr
@@ -64,6 +75,27 @@ int programIndex(int argc, char** argv, int first)
         if (!flag && !std::strchr(arg, '=')) ++i; // skip the option's value
     }
     return argc;
+}
+
+constexpr int kUsageError = 2;
+
+// CLI11's own exit codes (106 for a bad value, 109 for an extra argument...) become the one
+// code nprgl gives every usage error; --help and --version print and succeed.
+bool parsed(CLI::App& app, int argc, char** argv, int& exitCode)
+{
+    try {
+        app.parse(argc, argv);
+        return true;
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) {
+            exitCode = app.exit(e);
+            return false;
+        }
+        std::fprintf(stderr, "%s: %s (see %s --help)\n", app.get_name().c_str(), e.what(),
+                     app.get_name().c_str());
+        exitCode = kUsageError;
+        return false;
+    }
 }
 
 } // namespace
@@ -91,7 +123,7 @@ int replayMain(int argc, char** argv)
     app.add_option("--rules", o.rules,
                    "a configuration file (the program's, ~/.config/nprgl/PROGRAM.conf) whose "
                    "leave_texture and leave_state rules apply");
-    CLI11_PARSE(app, argc, argv);
+    if (int code; !parsed(app, argc, argv, code)) return code;
     return nprgl::cli::replayCommand(o);
 }
 
@@ -114,7 +146,7 @@ int compareMain(int argc, char** argv)
     app.add_option("-o,--output", o.outDir,
                    "directory for a diff picture per frame: native | style | difference");
     app.add_option("--context", o.context, "which context's stream (default: the longest)");
-    CLI11_PARSE(app, argc, argv);
+    if (int code; !parsed(app, argc, argv, code)) return code;
     return nprgl::cli::compareCommand(o);
 }
 
@@ -125,7 +157,7 @@ int dumpMain(int argc, char** argv)
     app.add_option("file", file, "the capture")->required();
     app.add_option("--frames", frames, "frames to print, e.g. 1-10");
     app.add_option("--grep", grep, "only calls whose name contains NAME");
-    CLI11_PARSE(app, argc, argv);
+    if (int code; !parsed(app, argc, argv, code)) return code;
     return nprgl::cli::dumpCommand(file, frames, grep);
 }
 
@@ -134,7 +166,7 @@ int infoMain(int argc, char** argv)
     std::string file;
     CLI::App app{"Print a capture's metadata, frames and calls", "nprgl info"};
     app.add_option("file", file, "the capture")->required();
-    CLI11_PARSE(app, argc, argv);
+    if (int code; !parsed(app, argc, argv, code)) return code;
     return nprgl::cli::infoCommand(file);
 }
 
@@ -150,17 +182,38 @@ int exportMain(int argc, char** argv)
     app.add_option("-o,--output", output, "out.obj, out.ply or out.off")->required();
     app.add_option("--space", space, "eye (as the camera saw it, default) or object");
     app.add_option("--context", context, "which context's stream (default: the first)");
-    CLI11_PARSE(app, argc, argv);
+    if (int code; !parsed(app, argc, argv, code)) return code;
     return nprgl::cli::exportCommand(file, frame, output, space, context);
 }
 
-int main(int argc, char** argv)
+int dispatch(int argc, char** argv)
 {
     const char* command = argc > 1 ? argv[1] : "";
     if (std::strcmp(command, "styles") == 0) {
         CLI::App app{"List nprgl's styles", "nprgl styles"};
-        CLI11_PARSE(app, argc - 1, argv + 1);
+        if (int code; !parsed(app, argc - 1, argv + 1, code)) return code;
         return nprgl::cli::listStyles();
+    }
+    if (std::strcmp(command, "version") == 0 && argc == 2) {
+        std::printf("nprgl %s\n", NPRGL_VERSION);
+        return 0;
+    }
+    if (std::strcmp(command, "help") == 0) {
+        // nprgl help COMMAND is COMMAND --help; nprgl help is nprgl --help.
+        if (argc > 3) {
+            std::fprintf(stderr, "nprgl help: one command at most (see nprgl --help)\n");
+            return kUsageError;
+        }
+        std::string name = argc == 3 ? argv[2] : "run";
+        if (name == "help" || name == "version") name = "run";
+        char helpFlag[] = "--help";
+        char* args[] = {argv[0], name.data(), helpFlag, nullptr};
+        for (const char* known :
+             {"run", "record", "replay", "compare", "dump", "info", "export", "styles"}) {
+            if (name == known) return dispatch(3, args);
+        }
+        std::fprintf(stderr, "nprgl help: no command '%s' (see nprgl --help)\n", name.c_str());
+        return kUsageError;
     }
     if (std::strcmp(command, "replay") == 0) return replayMain(argc - 1, argv + 1);
     if (std::strcmp(command, "dump") == 0) return dumpMain(argc - 1, argv + 1);
@@ -193,16 +246,13 @@ int main(int argc, char** argv)
     }
     int program = programIndex(argc, argv, 1 + skip);
     // The options end where the program begins; a "--" in between is not an option.
-    int optionsEnd = program > 1 + skip && std::strcmp(argv[program - 1], "--") == 0
-                         ? program - 1
-                         : program;
+    int optionsEnd =
+        program > 1 + skip && std::strcmp(argv[program - 1], "--") == 0 ? program - 1 : program;
     std::vector<char*> ours(argv + skip, argv + optionsEnd);
     ours[0] = argv[0];
-    try {
-        app.parse(int(ours.size()), ours.data());
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e);
-    }
+    if (int code; !parsed(app, int(ours.size()), ours.data(), code)) return code;
     options.command.assign(argv + program, argv + argc);
     return nprgl::cli::runProgram(options);
 }
+
+int main(int argc, char** argv) { return dispatch(argc, argv); }

@@ -255,9 +255,15 @@ void CaptureSession::finishLocked()
     for (const auto& [name, count] : mUncaptured) {
         report += (report.empty() ? "" : ", ") + name + " x" + std::to_string(count);
     }
-    NPRGL_INFO("recorded %llu frames to %s; not captured: %s",
-               static_cast<unsigned long long>(mFramesWritten), mPath.c_str(),
-               report.empty() ? "nothing" : report.c_str());
+    // Under `nprgl record` the command reads the file back and says it, however the program
+    // ended; a child's own file is said here.
+    const char* summary = std::getenv("NPRGL_RECORD_SUMMARY");
+    const bool commandSaysIt = summary && std::strcmp(summary, "command") == 0 &&
+                               isMainRecordingProcess();
+    NPRGL_LOG(commandSaysIt ? LogLevel::Debug : LogLevel::Info,
+              "recorded %llu frames to %s; not captured: %s",
+              static_cast<unsigned long long>(mFramesWritten), mPath.c_str(),
+              report.empty() ? "nothing" : report.c_str());
 }
 
 } // namespace nprgl

@@ -376,6 +376,64 @@ TEST(Record, ProgramsStoppedBySignalsOrUnderscoreExitLeaveReadableFiles)
     EXPECT_NE(i.out.find("frames:      1"), std::string::npos) << i.out;
 }
 
+// What `nprgl record` says when the program ends, from the file: the same frame count as
+// `nprgl info`, on a normal exit, a Ctrl-C, a kill and an _exit alike.
+TEST(Record, SaysWhatItRecordedHoweverTheProgramEnds)
+{
+    auto infoFrames = [](const std::string& file) {
+        ProcessResult i = runProcess({nprglCommand(), "info", file});
+        std::smatch m;
+        EXPECT_TRUE(std::regex_search(i.out, m, std::regex(R"(frames:\s+(\d+))"))) << i.out;
+        return m.size() > 1 ? m[1].str() : std::string("?");
+    };
+    for (int signal : {SIGINT, SIGTERM}) {
+        std::string dir = freshDir("summary"), file = dir + "/s.nprgl";
+        ProcessResult stopped = recordAndStop(file, signal);
+        EXPECT_EQ(stopped.exitCode, 128 + signal);
+        const std::string said = "nprgl: recorded " + infoFrames(file) + " frames to " + file;
+        EXPECT_NE(stopped.err.find(said), std::string::npos) << said << "\n" << stopped.err;
+        EXPECT_NE(stopped.err.find("without closing it"), std::string::npos) << stopped.err;
+    }
+    std::string dir = freshDir("summary_exit"), file = dir + "/e.nprgl";
+    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--", demo("immediate"),
+                                  "--offscreen", "--frames", "2", "--size", "64x64"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("nprgl: recorded 2 frames to " + file), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("without closing it"), std::string::npos) << r.err;
+    // Said once: the library leaves it to the command.
+    EXPECT_EQ(r.err.find("recorded"), r.err.rfind("recorded")) << r.err;
+    file = dir + "/u.nprgl";
+    ProcessResult u = runProcess({nprglCommand(), "record", "-o", file, "--",
+                                  binDir() + "/probe_fork", "underscore-exit"});
+    EXPECT_EQ(u.exitCode, 5);
+    EXPECT_NE(u.err.find("nprgl: recorded 1 frames to " + file), std::string::npos) << u.err;
+}
+
+// apitrace records the program as it is: so does `nprgl record` unless a style is asked for.
+// The frames the program saw while recording are its own, the same as an unstyled replay.
+TEST(Record, RecordsTheProgramUnstyledUnlessAStyleIsAskedFor)
+{
+    std::string dir = freshDir("unstyled"), file = dir + "/u.nprgl";
+    ProcessResult r = runProcess({nprglCommand(), "record", "-o", file, "--", demo("immediate"),
+                                  "--offscreen", "--frames", "2", "--size", "96x72",
+                                  "--save-dir", dir + "/live", "--save-frames", "1-2"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ProcessResult p =
+        runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", dir + "/none"});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    expectSameFrames(dir + "/live", "immediate", dir + "/none", 2);
+
+    std::string styled = dir + "/s.nprgl";
+    ProcessResult s = runProcess({nprglCommand(), "record", "--style", "toon", "-o", styled,
+                                  "--", demo("immediate"), "--offscreen", "--frames", "1",
+                                  "--size", "96x72", "--save-dir", dir + "/styled",
+                                  "--save-frames", "1"});
+    ASSERT_EQ(s.exitCode, 0) << s.err;
+    ImageDiff diff = compareImages(dir + "/styled/immediate_1.png", framePng(dir + "/none", 1));
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_GT(diff.differingPixels, 100u) << "--style toon was not applied while recording";
+}
+
 TEST(Record, AForkedChildWritesItsOwnFile)
 {
     std::string dir = freshDir("fork"), file = dir + "/f.nprgl";

@@ -1,0 +1,141 @@
+#include "cli/RecordSupervisor.h"
+
+#include "capture/CaptureReader.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <set>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace nprgl::cli {
+
+namespace {
+
+volatile sig_atomic_t gChild = 0;
+
+constexpr int kPassedOn[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2};
+
+// A signal the kernel raised for the terminal (Ctrl-C, a hang-up) went to the whole
+// foreground process group, the program included: passing it on would deliver it twice.
+// One a process sent (kill, a supervisor's SIGTERM) reached only this process.
+void passOn(int signal, siginfo_t* info, void*)
+{
+    const bool sentByAProcess = info && info->si_code <= 0;
+    if (gChild > 0 && sentByAProcess) kill(pid_t(gChild), signal);
+}
+
+std::string megabytes(uint64_t bytes)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / 1e6);
+    return text;
+}
+
+[[noreturn]] void endAsTheProgramDid(int status)
+{
+    if (WIFEXITED(status)) std::exit(WEXITSTATUS(status));
+    const int signal = WIFSIGNALED(status) ? WTERMSIG(status) : SIGABRT;
+    // The program's core, if any, is the program's; this process leaves none of its own.
+    rlimit none{0, 0};
+    setrlimit(RLIMIT_CORE, &none);
+    std::signal(signal, SIG_DFL);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, signal);
+    sigprocmask(SIG_UNBLOCK, &set, nullptr);
+    raise(signal);
+    std::_Exit(128 + signal);
+}
+
+} // namespace
+
+std::string recordingSummary(const std::string& path, const std::string& howItEnded)
+{
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {
+        return "nothing recorded: the program " + howItEnded + " before its first frame (no " +
+               path + ")";
+    }
+    capture::CaptureReader reader;
+    std::string error;
+    if (!reader.open(path, error)) return "the recording cannot be read: " + error;
+    std::set<uint32_t> contexts;
+    for (const auto& frame : reader.frames()) contexts.insert(frame.contextId);
+    std::string line = "recorded " + std::to_string(reader.frames().size()) + " frames";
+    if (contexts.size() > 1) line += " of " + std::to_string(contexts.size()) + " contexts";
+    line += " to " + path + " (" + megabytes(reader.fileBytes()) + ")";
+    if (reader.recovered()) {
+        line +=
+            "; the program " + howItEnded + " without closing it: it reads to its last whole frame";
+    }
+    std::string uncaptured;
+    for (const auto& [name, count] : reader.callCounts()) {
+        uncaptured += (uncaptured.empty() ? "" : ", ") + name + " x" + std::to_string(count);
+    }
+    line += "; not captured: " + (uncaptured.empty() ? std::string("nothing") : uncaptured);
+    if (!reader.warning().empty()) line += "; " + reader.warning();
+    return line;
+}
+
+void superviseRecording(const std::vector<std::string>& argv, const std::string& path)
+{
+    struct sigaction action {};
+    action.sa_sigaction = passOn;
+    action.sa_flags = SA_SIGINFO | SA_RESTART;
+    sigemptyset(&action.sa_mask);
+    for (int signal : kPassedOn) sigaction(signal, &action, nullptr);
+
+    std::fflush(nullptr);
+    const pid_t self = getpid();
+    const pid_t child = fork();
+    if (child < 0) {
+        std::fprintf(stderr, "nprgl: cannot start the program: %s\n", std::strerror(errno));
+        std::exit(1);
+    }
+    if (child == 0) {
+        // exec resets the handlers above to the default; the program finds its usual ones.
+        // Should this process be killed outright, the program is told to end rather than
+        // left running unwatched.
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (getppid() != self) std::_Exit(128 + SIGTERM);
+        setenv("NPRGL_RECORD_PID", std::to_string(getpid()).c_str(), 1);
+        std::vector<char*> args;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        execvp(args[0], args.data());
+        const int err = errno;
+        std::fprintf(stderr, "nprgl: cannot run '%s': %s\n", args[0], std::strerror(err));
+        std::_Exit(err == ENOENT ? 127 : 126);
+    }
+    gChild = child;
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0) {
+        if (errno != EINTR) {
+            std::fprintf(stderr, "nprgl: waiting for the program: %s\n", std::strerror(errno));
+            std::exit(1);
+        }
+    }
+    gChild = 0;
+    const bool couldNotStart = WIFEXITED(status) &&
+                               (WEXITSTATUS(status) == 127 || WEXITSTATUS(status) == 126) &&
+                               !std::filesystem::exists(path);
+    if (!couldNotStart) {
+        std::string how = "exited with status " + std::to_string(WEXITSTATUS(status));
+        if (WIFSIGNALED(status)) {
+            const char* name = sigabbrev_np(WTERMSIG(status));
+            how = "was stopped by " +
+                  (name ? "SIG" + std::string(name) : "signal " + std::to_string(WTERMSIG(status)));
+        }
+        std::fprintf(stderr, "nprgl: %s\n", recordingSummary(path, how).c_str());
+    }
+    endAsTheProgramDid(status);
+}
+
+} // namespace nprgl::cli

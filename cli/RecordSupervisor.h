@@ -1,0 +1,19 @@
+// nprgl record: the program as a child, Ctrl-C passed on, a summary of the capture at its end.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace nprgl::cli {
+
+// Runs argv (the environment already set up for the recording) as a child and waits for it,
+// however it ends: a signal the terminal sends reaches the child itself, one sent to this
+// process alone (kill PID) is passed on. Then prints one line about the capture at path and
+// ends the way the program ended (its exit status, or the same signal), so a shell or a
+// script sees the program's own result.
+[[noreturn]] void superviseRecording(const std::vector<std::string>& argv, const std::string& path);
+
+// The summary line for a capture file, as `nprgl record` prints it when the program ends.
+std::string recordingSummary(const std::string& path, const std::string& howItEnded);
+
+} // namespace nprgl::cli
