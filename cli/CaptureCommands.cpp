@@ -103,13 +103,22 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
     const OpcodeMap opcodes(reader.metadata().opcodeNames);
     std::vector<uint8_t> calls;
     const auto& list = reader.frames();
+    // Calls are numbered from 0 in each context's stream, the frames left out included, so
+    // a call keeps its number whatever --frames and --grep select.
+    std::map<uint32_t, uint64_t> nextCall;
     for (size_t i = 0; i < list.size(); ++i) {
-        if (!frames.empty() && !frames.contains(list[i].frameNumber)) continue;
+        const bool selected = frames.empty() || frames.contains(list[i].frameNumber);
+        if (!selected && (frames.empty() || list[i].frameNumber > frames.last())) continue;
         if (!reader.readFrame(i, calls, error)) return fail(error);
         std::string out = "== context " + std::to_string(list[i].contextId) + " frame " +
                           std::to_string(list[i].frameNumber) + " ==\n";
         bool ok = CallPrinter::printFrame(calls.data(), calls.size(), &blobs, &opcodes, grep, out,
-                                          error);
+                                          error, nullptr, &nextCall[list[i].contextId]);
+        if (!selected) {
+            if (!ok) return fail(file + ": frame " + std::to_string(list[i].frameNumber) +
+                                 " at " + std::to_string(list[i].offset) + ": " + error);
+            continue;
+        }
         std::fwrite(out.data(), 1, out.size(), stdout);
         if (!ok) {
             return fail(file + ": frame " + std::to_string(list[i].frameNumber) + " at " +

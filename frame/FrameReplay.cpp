@@ -61,7 +61,7 @@ public:
         if (mCall == "glMatrixMode") mMode = value;
         if (mCall == "glActiveTexture") mUnit = value;
     }
-    void argBits(const char*, uint32_t) {}
+    void argBits(const char*, uint32_t, int) {}
     template <typename T>
     void argArray(const char*, const T*, size_t)
     {

@@ -75,7 +75,7 @@ def features(nprgl, capture, frames=None):
             found.append(f)
 
     for line in text.splitlines():
-        m = re.match(r"^(gl[A-Za-z0-9]+)\((.*)\)", line)
+        m = re.match(r"^(?:\d+ )?(gl[A-Za-z0-9]+)\((.*)\)", line)
         if not m:
             continue
         name, args = m.group(1), m.group(2)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
+#include <cstring>
 
 namespace nprgl {
 
@@ -13,19 +14,22 @@ namespace {
 
 #include "nprgl_enums.inc"
 
+// The name of value in one group of the registry (0: any group), or null.
+const char* enumInGroup(uint32_t value, int group)
+{
+    auto it = std::lower_bound(std::begin(kEnumNames), std::end(kEnumNames),
+                               std::pair<int, uint32_t>(group, value),
+                               [](const EnumName& e, const std::pair<int, uint32_t>& key) {
+                                   return std::pair<int, uint32_t>(e.group, e.value) < key;
+                               });
+    return it != std::end(kEnumNames) && it->group == group && it->value == value ? it->name
+                                                                                   : nullptr;
+}
+
 const char* enumName(uint32_t value, int group)
 {
-    auto find = [value](int g) -> const char* {
-        auto it = std::lower_bound(std::begin(kEnumNames), std::end(kEnumNames),
-                                   std::pair<int, uint32_t>(g, value),
-                                   [](const EnumName& e, const std::pair<int, uint32_t>& key) {
-                                       return std::pair<int, uint32_t>(e.group, e.value) < key;
-                                   });
-        return it != std::end(kEnumNames) && it->group == g && it->value == value ? it->name
-                                                                                   : nullptr;
-    };
-    const char* name = group ? find(group) : nullptr;
-    return name ? name : find(0);
+    const char* name = group ? enumInGroup(value, group) : nullptr;
+    return name ? name : enumInGroup(value, 0);
 }
 
 const char* kSlotNames[] = {"vertex", "normal", "color", "secondary_color", "fog_coord",
@@ -35,12 +39,14 @@ const char* kSlotNames[] = {"vertex", "normal", "color", "secondary_color", "fog
 
 bool CallPrinter::printFrame(const uint8_t* data, size_t size, BlobSource* blobs,
                              const OpcodeMap* opcodes, const std::string& grep,
-                             std::string& out, std::string& error, uint64_t* callCount)
+                             std::string& out, std::string& error, uint64_t* callCount,
+                             uint64_t* callNumber)
 {
     CallReader reader(data, size, blobs, opcodes);
     CallPrinter printer;
     printer.mOut = &out;
     printer.mGrep = grep;
+    printer.mNumber = callNumber;
     if (!decodeCalls(reader, printer)) {
         error = reader.error();
         return false;
@@ -77,12 +83,31 @@ void CallPrinter::arg(const char* name, double value)
     appendNumber(value);
 }
 
-void CallPrinter::argBits(const char* name, uint32_t value)
+void CallPrinter::argBits(const char* name, uint32_t value, int group)
 {
     startArg(name);
-    char text[16];
-    std::snprintf(text, sizeof text, "0x%x", value);
-    mLine += text;
+    // Only the parameter's own group: in the shared table 0x4000 is GL_LIGHT0 too.
+    const char* whole = group && value ? enumInGroup(value, group) : nullptr;
+    if (whole) {
+        mLine += whole; // GL_ALL_ATTRIB_BITS, GL_CLIENT_ALL_ATTRIB_BITS
+        return;
+    }
+    std::string names;
+    uint32_t unnamed = 0;
+    for (uint32_t bit = 1; bit != 0; bit <<= 1) {
+        if (!(value & bit)) continue;
+        if (const char* e = group ? enumInGroup(bit, group) : nullptr) {
+            names += (names.empty() ? "" : "|") + std::string(e);
+        } else {
+            unnamed |= bit;
+        }
+    }
+    if (unnamed || names.empty()) {
+        char text[16];
+        std::snprintf(text, sizeof text, "0x%x", unnamed);
+        names += (names.empty() ? "" : "|") + std::string(text);
+    }
+    mLine += names;
 }
 
 void CallPrinter::argEnum(const char* name, uint32_t value, int group)
@@ -130,7 +155,10 @@ void CallPrinter::end()
 {
     mLine += ")\n";
     ++mCalls;
-    if (mGrep.empty() || mLine.find(mGrep) < mLine.find('(')) *mOut += mLine;
+    std::string number;
+    if (mNumber && !mPseudoLine) number = std::to_string((*mNumber)++) + ' ';
+    mPseudoLine = false;
+    if (mGrep.empty() || mLine.find(mGrep) < mLine.find('(')) *mOut += number + mLine;
 }
 
 bool CallPrinter::pseudo(CallReader& r, uint16_t opcode)
@@ -168,6 +196,7 @@ bool CallPrinter::pseudo(CallReader& r, uint16_t opcode)
         r.getBytes(size);
         if (!payload.finish()) return false;
         begin("ArrayData");
+        mPseudoLine = true;
         startArg("array");
         mLine += slot < 7    ? kSlotNames[slot]
                  : slot < 15 ? "texcoord" + std::to_string(slot - 7)

@@ -15,17 +15,21 @@ public:
     // Decodes and prints every call of one frame into out; returns false (with the offset in
     // error) on malformed input, keeping what was printed. grep, when not empty, keeps only
     // calls whose name contains it.
-    // opcodes: the capture's numbering (null: this build's).
+    // opcodes: the capture's numbering (null: this build's). callNumber, when given, numbers
+    // each GL call's line from *callNumber on (as apitrace numbers them: the call's place in
+    // its context's stream, whether grep keeps it or not) and is advanced past the frame.
     static bool printFrame(const uint8_t* data, size_t size, BlobSource* blobs,
                            const OpcodeMap* opcodes, const std::string& grep, std::string& out,
-                           std::string& error, uint64_t* callCount = nullptr);
+                           std::string& error, uint64_t* callCount = nullptr,
+                           uint64_t* callNumber = nullptr);
 
     // The sink interface of decodeCall.
     void begin(const char* name);
     void arg(const char* name, double value);
     void argEnum(const char* name, uint32_t value, int group);
-    // A bitfield (glClear's mask, glPushAttrib's): hexadecimal, as the GL headers write them.
-    void argBits(const char* name, uint32_t value);
+    // A bitfield (glClear's mask, glPushAttrib's): its bits' names in the registry's group
+    // for the parameter, GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT; bits without one in hex.
+    void argBits(const char* name, uint32_t value, int group);
     template <typename T>
     void argArray(const char* name, const T* values, size_t count)
     {
@@ -65,6 +69,8 @@ private:
     std::string mGrep;
     bool mFirstArg = true;
     uint64_t mCalls = 0;
+    uint64_t* mNumber = nullptr; // the next GL call's number, when numbering
+    bool mPseudoLine = false;    // the line being built is nprgl's own record, not a GL call
     int mDepth = 0;
 };
 

@@ -266,10 +266,36 @@ TEST(Dump, PrintsOneCallPerLineWithNamedArguments)
     size_t calls = 0;
     while (std::getline(lines, line)) {
         if (line.rfind("==", 0) == 0) continue;
-        EXPECT_EQ(line.rfind("glBegin(", 0), 0u) << line;
+        EXPECT_TRUE(std::regex_match(line, std::regex(R"(\d+ glBegin\(.*)"))) << line;
         ++calls;
     }
     EXPECT_GT(calls, 3u);
+}
+
+// As apitrace numbers calls: a call's number is its place in its context's stream, the same
+// whichever frames or names the dump selects.
+TEST(Dump, NumbersEachCallByItsPlaceInTheStream)
+{
+    ProcessResult all = runProcess({nprglCommand(), "dump", fixture("glxgears")});
+    ASSERT_EQ(all.exitCode, 0) << all.err;
+    std::map<std::string, std::string> numberOf; // "frame 2: glClear(...)" -> its number
+    std::istringstream lines(all.out);
+    std::string line, frame;
+    uint64_t expected = 0;
+    const std::regex numbered(R"((\d+) (gl\w+\(.*))");
+    while (std::getline(lines, line)) {
+        std::smatch m;
+        if (line.rfind("== context 1 frame ", 0) == 0) frame = line;
+        if (!std::regex_match(line, m, numbered)) continue;
+        EXPECT_EQ(std::stoull(m[1]), expected++) << line;
+        if (m[2].str().rfind("glClear(", 0) == 0) numberOf[frame] = m[1];
+    }
+    ASSERT_GE(numberOf.size(), 3u) << all.out.substr(0, 2000);
+    ProcessResult some = runProcess({nprglCommand(), "dump", fixture("glxgears"), "--frames",
+                                     "3", "--grep", "glClear"});
+    ASSERT_EQ(some.exitCode, 0) << some.err;
+    EXPECT_EQ(some.out, "== context 1 frame 3 ==\n" + numberOf["== context 1 frame 3 =="] +
+                            " glClear(mask=GL_DEPTH_BUFFER_BIT|GL_COLOR_BUFFER_BIT)\n");
 }
 
 TEST(Info, ReportsProgramFramesCallsAndWhatWasNotCaptured)

@@ -51,6 +51,42 @@ std::vector<uint8_t> sampleFrame(std::vector<size_t>* boundaries = nullptr)
 
 } // namespace
 
+// glClear(mask=0x4100) says nothing to a reader; the bits are named from the parameter's own
+// group in the registry (0x4000 is also GL_LIGHT0's value), unknown bits stay in hex.
+TEST(CallCodec, NamesTheBitsOfABitfield)
+{
+    CallWriter w;
+    w.op(op::glClear);
+    w.put<GLbitfield>(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    w.op(op::glPushAttrib);
+    w.put<GLbitfield>(GL_ALL_ATTRIB_BITS);
+    w.op(op::glPushAttrib);
+    w.put<GLbitfield>(GL_LIGHTING_BIT | 0x40000000u);
+    w.op(op::glClear);
+    w.put<GLbitfield>(0);
+    std::string out, error;
+    ASSERT_TRUE(CallPrinter::printFrame(w.data(), w.size(), nullptr, nullptr, "", out, error))
+        << error;
+    EXPECT_EQ(out, "glClear(mask=GL_DEPTH_BUFFER_BIT|GL_COLOR_BUFFER_BIT)\n"
+                   "glPushAttrib(mask=GL_ALL_ATTRIB_BITS)\n"
+                   "glPushAttrib(mask=GL_LIGHTING_BIT|0x40000000)\n"
+                   "glClear(mask=0x0)\n");
+}
+
+// Numbered, each GL call's line carries its place in the stream; the frame's end is nprgl's
+// own record and takes no number; a grep keeps the numbers of the calls it keeps.
+TEST(CallCodec, NumbersCallsFromTheGivenPlace)
+{
+    std::vector<uint8_t> frame = sampleFrame();
+    std::string out, error;
+    uint64_t next = 40;
+    ASSERT_TRUE(CallPrinter::printFrame(frame.data(), frame.size(), nullptr, nullptr, "glEnd",
+                                        out, error, nullptr, &next))
+        << error;
+    EXPECT_EQ(out, "44 glEnd()\n");
+    EXPECT_EQ(next, 46u);
+}
+
 TEST(CallCodec, PrintsWhatWasEncoded)
 {
     std::vector<uint8_t> frame = sampleFrame();
