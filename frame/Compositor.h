@@ -22,7 +22,7 @@ namespace nprgl {
 class Context;
 class Recorder;
 
-// The frame compositor of DESIGN.md §5, one per GL context when a style is active.
+// The frame compositor (docs/architecture.md), one per GL context when a style is active.
 //
 // The StateTracker follows the context's Stream (recorded in memory by the Recorder) and is
 // brought up to date at every draw. A polygonal 3D draw in plain state is held back: its
