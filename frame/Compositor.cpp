@@ -4,6 +4,7 @@
 #include "frame/BatchReplay.h"
 #include "frame/Recorder.h"
 #include "shim/Context.h"
+#include "shim/OwnGlCalls.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
 #include "shim/ThreadState.h"
@@ -195,7 +196,6 @@ NPRGL_DRAWING(void, glBlitFramebuffer,
 #undef NPRGL_BARRIER
 #undef NPRGL_DRAWING
 
-GLenum APIENTRY c_glGetError() { return C().getError(); }
 GLint APIENTRY c_glRenderMode(GLenum mode) { return C().renderMode(mode); }
 
 void* realProc(const char* name) { return realProcAddress(name); }
@@ -284,7 +284,6 @@ void Compositor::install(GlDispatch& d)
     d.glFramebufferRenderbuffer = c_glFramebufferRenderbuffer;
     d.glGenerateMipmap = c_glGenerateMipmap;
     d.glBlitFramebuffer = c_glBlitFramebuffer;
-    d.glGetError = c_glGetError;
     d.glRenderMode = c_glRenderMode;
 }
 
@@ -330,16 +329,8 @@ bool Compositor::ready()
 {
     if (mPhase == Phase::Ready) return !mBroken && mEnabled && mHasStyles;
     if (mPhase == Phase::Off || mBroken || mInFlush) return false;
-    const ContextCaps& caps = mContext.caps();
-    if (caps.es || caps.core || !caps.atLeast(3, 0)) {
-        NPRGL_WARN("context %u: %s%s; styles need OpenGL 3.0 compatibility or newer: "
-                   "passthrough",
-                   mContext.serial(), mContext.version().c_str(),
-                   caps.core ? " (core profile)" : "");
-        mPhase = Phase::Off;
-        mContext.stopStyling();
-        return false;
-    }
+    checkContext();
+    if (mPhase == Phase::Off) return false;
     // Our set-up (texture uploads) would be compiled into the program's list: wait.
     GLint list = 0;
     gRealGl.glGetIntegerv(GL_LIST_INDEX, &list);
@@ -374,6 +365,22 @@ bool Compositor::ready()
     return !mBroken && mEnabled && mHasStyles;
 }
 
+void Compositor::checkContext()
+{
+    if (mPhase != Phase::Unknown) return;
+    const ContextCaps& caps = mContext.caps();
+    if (!caps.es && !caps.core && caps.atLeast(3, 0)) return;
+    const std::string& version = mContext.version();
+    NPRGL_WARN("context %u: %s%s; styles need OpenGL 3.0 compatibility or newer: "
+               "passthrough",
+               mContext.serial(), version.empty() ? "no GL version" : version.c_str(),
+               caps.core ? " (core profile)" : "");
+    mPhase = Phase::Off;
+    mContext.stopStyling();
+}
+
+void Compositor::keepProgramError(GLenum error) { mContext.keepProgramError(error); }
+
 bool Compositor::startStyles()
 {
     mBindFramebuffer = reinterpret_cast<PFNGLBINDFRAMEBUFFERPROC>(realProc("glBindFramebuffer"));
@@ -394,7 +401,7 @@ bool Compositor::startStyles()
 
 bool Compositor::startChain(bool restart, std::string& error)
 {
-    const GLenum appError = gRealGl.glGetError();
+    OwnGlCalls own;
     if (!mSaved.save()) {
         error = "the program's state could not be saved";
         return false;
@@ -402,9 +409,7 @@ bool Compositor::startChain(bool restart, std::string& error)
     if (restart) mChain.shutdown();
     const bool ok = !mHasStyles || mChain.init(mSettings, &realProc, error);
     mSaved.restore();
-    while (gRealGl.glGetError() != GL_NO_ERROR) {
-    }
-    if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
+    own.finish();
     mShading = ok && mHasStyles && mChain.hasShading();
     mTintLeft = false;
     bool programLighting = false;
@@ -897,16 +902,6 @@ void Compositor::backBufferShown()
     mFresh = Fresh{false, 0, glm::ivec4(0, 0, kAll, kAll)};
 }
 
-GLenum Compositor::getError()
-{
-    if (mPendingErrors.empty()) return mNext.glGetError();
-    const GLenum error = mPendingErrors.front();
-    mPendingErrors.pop_front();
-    // GL keeps the first error until it is asked for and drops the later ones.
-    if (mPendingErrors.empty()) gRealGl.glGetError();
-    return error;
-}
-
 GLint Compositor::renderMode(GLenum mode)
 {
     barrier();
@@ -1076,7 +1071,7 @@ void Compositor::textureRuns(const reconstruct::FrameObject& o, styles::SceneObj
 
 void Compositor::render()
 {
-    const GLenum appError = gRealGl.glGetError();
+    OwnGlCalls own;
     if (mSaved.save()) {
         GLint current = 0;
         gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &current);
@@ -1096,15 +1091,12 @@ void Compositor::render()
         mStackWarned = true;
     }
     ++mFlushes;
-    GLenum ours = gRealGl.glGetError();
-    if (ours != GL_NO_ERROR) {
-        static bool reported = false;
-        if (!reported) NPRGL_DEBUG("a style left GL error 0x%x (not the program's)", ours);
+    const GLenum ours = own.finish();
+    static bool reported = false;
+    if (ours != GL_NO_ERROR && !reported) {
+        NPRGL_DEBUG("a style left GL error 0x%x (not the program's)", ours);
         reported = true;
-        while (gRealGl.glGetError() != GL_NO_ERROR) {
-        }
     }
-    if (appError != GL_NO_ERROR) mPendingErrors.push_back(appError);
 }
 
 } // namespace nprgl

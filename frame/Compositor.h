@@ -10,7 +10,6 @@
 #include "styles/StyleChain.h"
 
 #include <atomic>
-#include <deque>
 #include <map>
 #include <mutex>
 #include <string>
@@ -84,11 +83,11 @@ public:
     // The last frame's time in the compositor (reconstruction and styles), in ms.
     double lastFrameComposeMs() const { return mLastFrameComposeMs; }
     // A GL error of the program's that nprgl took while drawing its own things (the
-    // overlay): the program's next glGetError answers it.
-    void keepProgramError(GLenum error)
-    {
-        if (error != GL_NO_ERROR) mPendingErrors.push_back(error);
-    }
+    // overlay): the program's next glGetError answers it (Context::keepProgramError).
+    void keepProgramError(GLenum error);
+    // When the context is first current: one that the styles cannot draw in (OpenGL ES, a
+    // core profile, GL older than 3.0) is passed through from now on, and said so.
+    void checkContext();
 
     // Dispatch entry points (through the current context's compositor).
     void begin(GLenum mode);
@@ -132,7 +131,6 @@ public:
     // on a page, a glow is drawn as ink. list: the display list the draw calls, if any.
     void tintBegin(GLuint list = 0);
     void tintEnd();
-    GLenum getError();
     GLint renderMode(GLenum mode);
     const GlDispatch& next() const { return mNext; }
 
@@ -199,7 +197,6 @@ private:
     glm::vec2 mHeldDepthRange{0.0f, 1.0f};
     bool mHeldColoured = false;   // a draw with colour is held: mHeldAlphaWrites is its mask
     bool mHeldAlphaWrites = true; // the held draws write alpha (glColorMask's fourth)
-    std::deque<GLenum> mPendingErrors; // the program's, taken while we rendered
     bool mInFlush = false;
     // 3D polygon draws (a glBegin/glEnd, an array draw, a held glCallList) over the run and
     // in this frame: styled, and left as the program draws them by reason (each reason said

@@ -137,11 +137,16 @@ void Recorder::endFrame(uint64_t frame)
 UnpackState Recorder::unpackState() const
 {
     UnpackState s;
+    // What the context does not know it does not have: OpenGL ES 1 and 2 know only the
+    // alignment, GL 1.1 no image height or skipped images (asking would be a GL error).
+    const ContextCaps& caps = mContext.caps();
     gRealGl.glGetIntegerv(GL_UNPACK_ALIGNMENT, &s.alignment);
+    if (caps.es && caps.major < 3) return s;
     gRealGl.glGetIntegerv(GL_UNPACK_ROW_LENGTH, &s.rowLength);
-    gRealGl.glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &s.imageHeight);
     gRealGl.glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &s.skipPixels);
     gRealGl.glGetIntegerv(GL_UNPACK_SKIP_ROWS, &s.skipRows);
+    if (!caps.es && !caps.atLeast(1, 2)) return s;
+    gRealGl.glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &s.imageHeight);
     gRealGl.glGetIntegerv(GL_UNPACK_SKIP_IMAGES, &s.skipImages);
     return s;
 }

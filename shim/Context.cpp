@@ -9,6 +9,7 @@
 #include "frame/Recorder.h"
 #include "shim/ConfigWatcher.h"
 #include "shim/Overlay.h"
+#include "shim/OwnGlCalls.h"
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
 #include "shim/ThreadState.h"
@@ -59,7 +60,44 @@ void APIENTRY boundedFinish()
     ctx->endUnswappedFrame();
 }
 
+// GL 3.0 and newer: the extension list one name at a time.
+bool hasExtension(const char* name)
+{
+    GLint count = 0;
+    gRealGl.glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const GLubyte* s = gRealGl.glGetStringi(GL_EXTENSIONS, GLuint(i));
+        if (s && std::strcmp(reinterpret_cast<const char*>(s), name) == 0) return true;
+    }
+    return false;
+}
+
+GLenum APIENTRY keptGetError()
+{
+    Context* ctx = tThread.context;
+    return ctx ? ctx->programGetError() : gRealGl.glGetError();
+}
+
 } // namespace
+
+void Context::hookGetError()
+{
+    mGetError = mDispatch.glGetError;
+    mDispatch.glGetError = &keptGetError;
+}
+
+void Context::keepProgramError(GLenum error)
+{
+    if (mKeptError == GL_NO_ERROR) mKeptError = error;
+}
+
+GLenum Context::programGetError()
+{
+    if (mKeptError == GL_NO_ERROR) return mGetError();
+    // What the program raised since the kept error, GL would have dropped.
+    OwnGlCalls::drain();
+    return std::exchange(mKeptError, GLenum(GL_NO_ERROR));
+}
 
 void Context::endUnswappedFrame()
 {
@@ -103,6 +141,7 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Con
         mDispatch.glFlush = &boundedFlush;
         if (ws != WindowSystem::OSMesa) mDispatch.glFinish = &boundedFinish;
     }
+    hookGetError();
 }
 
 Context::~Context() = default;
@@ -116,6 +155,7 @@ void Context::stopStyling()
     mFinish = mDispatch.glFinish;
     mFlush = mDispatch.glFlush;
     if (mWs == WindowSystem::OSMesa) mDispatch.glFinish = &osmesaFinish;
+    hookGetError();
 }
 
 void Context::release()
@@ -136,6 +176,8 @@ void Context::onMakeCurrent()
     if (mInitialized) return;
     mInitialized = true;
     queryCaps();
+    // A context the styles cannot draw in is passed through from its first call (and said).
+    if (mCompositor) mCompositor->checkContext();
 }
 
 void Context::queryCaps()
@@ -157,10 +199,28 @@ void Context::queryCaps()
         if (!numbers) return;
     }
     std::sscanf(numbers, "%d.%d", &mCaps.major, &mCaps.minor);
-    if (!mCaps.es && mCaps.atLeast(3, 2)) {
+    // Only what the context's API and version know is asked: a query it does not know would
+    // leave the program a GL error (GL_DOUBLEBUFFER on OpenGL ES: GL_INVALID_ENUM).
+    if (mCaps.es) {
+        // OpenGL ES has no query for it; its window surfaces have a back buffer (an EGL
+        // pbuffer has none, and swapping it does nothing to its pixels either way).
+        mCaps.doubleBuffered = true;
+        NPRGL_DEBUG("context %u: %s", mSerial, version);
+        return;
+    }
+    if (mCaps.atLeast(3, 2)) {
         GLint mask = 0;
         gRealGl.glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
         mCaps.core = (mask & GL_CONTEXT_CORE_PROFILE_BIT) != 0;
+    }
+    if (mCaps.atLeast(3, 0) && !mCaps.core) {
+        // A forward-compatible context, or a 3.1 one without GL_ARB_compatibility, has no
+        // fixed-function pipeline either: the styles cannot run there as on a core profile.
+        GLint flags = 0;
+        gRealGl.glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+        const bool bare31 = mCaps.major == 3 && mCaps.minor == 1;
+        mCaps.core = (flags & GL_CONTEXT_FLAG_FORWARD_COMPATIBLE_BIT) != 0 ||
+                     (bare31 && !hasExtension("GL_ARB_compatibility"));
     }
     // Asked now, while the default framebuffer is bound (the answer follows the binding).
     GLboolean db = GL_FALSE;
@@ -328,12 +388,10 @@ void Context::writeScreenshotPair(int width, int height)
     std::string why = "draws nprgl could not follow";
     bool drawn = false;
     if (whole) {
-        const GLenum programError = gRealGl.glGetError();
+        // The program's calls again: their errors were the program's once, not now.
+        OwnGlCalls own;
         drawn = FrameReplay::run(calls.data(), calls.size(), start, mRecorder->clientArrays(),
                                  why);
-        while (gRealGl.glGetError() != GL_NO_ERROR) {
-        }
-        mCompositor->keepProgramError(programError);
     }
     if (drawn) {
         FrameGrabber::writeFrame(mCaps, width, height, stem + "_unstyled.png");

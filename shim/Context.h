@@ -69,8 +69,16 @@ public:
 
     // The program is about to make another context (or none) current: draw what is held.
     void release();
-    // The compositor cannot run here (core profile, old GL): back to plain forwarding.
+    // The compositor cannot run here (core profile, OpenGL ES, old GL): back to plain
+    // forwarding.
     void stopStyling();
+
+    // A GL error the program raised before nprgl's own calls took it from the driver
+    // (OwnGlCalls): the program's next glGetError answers it. GL keeps the first error until
+    // it is asked for and drops those raised meanwhile, and so does this.
+    void keepProgramError(GLenum error);
+    // The program's glGetError: the error kept for it, else the driver's.
+    GLenum programGetError();
 
     // Null unless the process records (NPRGL_RECORD, NPRGL_EXPORT) or a style is active.
     Recorder* recorder() const { return mRecorder.get(); }
@@ -105,6 +113,8 @@ public:
 
 private:
     void queryCaps();
+    // The dispatch's glGetError answers the program's kept error first.
+    void hookGetError();
     // At a frame end: picks up a changed configuration file (the next frame runs it).
     // `asked`: by the reload key, which applies the files' look even when unchanged.
     void followConfig(bool asked = false);
@@ -119,6 +129,8 @@ private:
     GlDispatch mDispatch;
     void(APIENTRY* mFinish)() = nullptr;
     void(APIENTRY* mFlush)() = nullptr;
+    GLenum(APIENTRY* mGetError)() = nullptr; // below the dispatch's glGetError hook
+    GLenum mKeptError = GL_NO_ERROR;         // keepProgramError
     bool mUnswappedSaid = false;
     std::atomic<int> mThreadsCurrent{0};
     std::unique_ptr<Recorder> mRecorder;
