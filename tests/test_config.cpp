@@ -326,6 +326,22 @@ TEST(Hotkeys, TheToggleKeyShowsTheProgramsOwnPictureAndBack)
     EXPECT_EQ(differing(shot(keyed, 6), shot(styled, 6)), 0) << "styling not back on";
 }
 
+// A tap that goes down and up again between two frame ends (a frame is slow under heavy
+// styles, a tap is short) acts as a longer press does: frame 4 is the program's own picture.
+TEST(Hotkeys, ATapBetweenTwoFramesActs)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon+edges"};
+    const std::string native =
+        runHotkeys("tap_native", {nprglCommand(), "--style", "none"}, {"--frames", "4"}, "4");
+    const std::string styled = runHotkeys("tap_styled", nprgl, {"--frames", "4"}, "2,4");
+    const std::string keyed = runHotkeys(
+        "tap_toggle", nprgl, {"--frames", "4", "--tap", "3", "Shift_R+F9"}, "2,4");
+    EXPECT_GT(differing(shot(native, 4), shot(styled, 4)), 200) << "the style changes nothing";
+    EXPECT_EQ(differing(shot(keyed, 2), shot(styled, 2)), 0);
+    EXPECT_EQ(differing(shot(keyed, 4), shot(native, 4)), 0) << "the tap was missed";
+    EXPECT_EQ(stderrOf(keyed).find("no key events"), std::string::npos) << stderrOf(keyed);
+}
+
 // The screenshot key writes the next frame styled and the same frame unstyled (drawn again
 // from its calls), named <program>_<date>_<time>_<ms>_styled/_unstyled.png, then styles on.
 // probe_hotkeys turns its cube a step every frame: a pair of two frames would differ.
