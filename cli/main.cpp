@@ -117,8 +117,8 @@ int replayMain(int argc, char** argv)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     app.add_option("--frames", o.frames, "frames to write, e.g. 1-10");
     app.add_option("--size", o.size,
-                   "render size WxH (default: the recorded size; the program's viewports are "
-                   "replayed as recorded, so a smaller size shows their lower left part)");
+                   "render size WxH (default: the recorded size; the program's viewport and "
+                   "scissor are scaled to it, so the frame is its picture resized)");
     app.add_option("--context", o.context, "which context's stream (default: the longest)");
     app.add_option("--rules", o.rules,
                    "a configuration file (the program's, ~/.config/nprgl/PROGRAM.conf) whose "

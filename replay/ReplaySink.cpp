@@ -8,6 +8,7 @@
 #include "stream/Opcodes.h"
 
 #include <cctype>
+#include <cmath>
 #include <limits>
 #include <string_view>
 #include <utility>
@@ -630,6 +631,117 @@ bool ReplaySink::check_glCopyTexImage2D(GLenum, GLint, GLenum, GLint, GLint, GLs
         return refuse(std::string(opcodeName(mOpcode)) + " of " + std::to_string(texels) +
                       " texels");
     return chargeBytes(texels * 16);
+}
+
+bool ReplaySink::scalesWindow(GLenum binding) const
+{
+    // glViewport and glScissor are refused between glBegin and glEnd; so is the query.
+    return (mScaleX != 1.0 || mScaleY != 1.0) && idle() && getInt(binding) == 0;
+}
+
+void ReplaySink::scaleRect(GLint& x, GLint& y, GLsizei& width, GLsizei& height) const
+{
+    if (width < 0 || height < 0) return; // the driver's error, as recorded
+    auto edge = [](GLint v, double s) {
+        return GLint(std::clamp(std::lround(double(v) * s), -(1l << 30), 1l << 30));
+    };
+    const GLint x1 = edge(GLint(std::min<int64_t>(int64_t(x) + width, 1 << 30)), mScaleX);
+    const GLint y1 = edge(GLint(std::min<int64_t>(int64_t(y) + height, 1 << 30)), mScaleY);
+    x = edge(x, mScaleX);
+    y = edge(y, mScaleY);
+    width = std::max(0, x1 - x);
+    height = std::max(0, y1 - y);
+}
+
+void ReplaySink::issue_glViewport(GLint x, GLint y, GLsizei width, GLsizei height)
+{
+    if (scalesWindow(GL_DRAW_FRAMEBUFFER_BINDING)) scaleRect(x, y, width, height);
+    gl().glViewport(x, y, width, height);
+}
+
+void ReplaySink::issue_glScissor(GLint x, GLint y, GLsizei width, GLsizei height)
+{
+    if (scalesWindow(GL_DRAW_FRAMEBUFFER_BINDING)) scaleRect(x, y, width, height);
+    gl().glScissor(x, y, width, height);
+}
+
+void ReplaySink::issue_glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat,
+                                        GLint x, GLint y, GLsizei width, GLsizei height,
+                                        GLint border)
+{
+    // The texture is made at the scaled size: sampled with the same coordinates, it holds
+    // the same part of the (scaled) picture.
+    if (scalesWindow(GL_READ_FRAMEBUFFER_BINDING)) scaleRect(x, y, width, height);
+    gl().glCopyTexImage2D(target, level, internalformat, x, y, width, height, border);
+}
+
+void ReplaySink::issue_glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset,
+                                           GLint yoffset, GLint x, GLint y, GLsizei width,
+                                           GLsizei height)
+{
+    if (width <= 0 || height <= 0 || !scalesWindow(GL_READ_FRAMEBUFFER_BINDING)) {
+        gl().glCopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height);
+        return;
+    }
+    // The texture keeps its size, so the scaled region is stretched back into it: first an
+    // empty copy through the pipeline (the compositor draws what it holds, as for the copy),
+    // then a blit from the window into the texture's level.
+    gl().glCopyTexSubImage2D(target, level, xoffset, yoffset, x, y, 0, 0);
+    const GlDispatch& real = gRealGl;
+    GLenum binding = GL_TEXTURE_BINDING_2D;
+    if (target == GL_TEXTURE_RECTANGLE) binding = GL_TEXTURE_BINDING_RECTANGLE;
+    if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z)
+        binding = GL_TEXTURE_BINDING_CUBE_MAP;
+    const GLuint texture = GLuint(getInt(binding));
+    const GLint drawn = getInt(GL_DRAW_FRAMEBUFFER_BINDING);
+    if (!mCopyFramebuffer) real.glGenFramebuffers(1, &mCopyFramebuffer);
+    real.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, mCopyFramebuffer);
+    real.glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, texture, level);
+    GLint source[4] = {x, y, width, height};
+    scaleRect(source[0], source[1], source[2], source[3]);
+    const bool complete =
+        real.glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    if (complete) {
+        const bool scissored = real.glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE; // blits are cut
+        if (scissored) real.glDisable(GL_SCISSOR_TEST);
+        real.glBlitFramebuffer(source[0], source[1], source[0] + source[2], source[1] + source[3],
+                               xoffset, yoffset, xoffset + width, yoffset + height,
+                               GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        if (scissored) real.glEnable(GL_SCISSOR_TEST);
+    }
+    real.glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, 0, level);
+    real.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawn));
+    // A texture that cannot be drawn into (its format): the scaled region, unstretched.
+    if (!complete) {
+        real.glCopyTexSubImage2D(target, level, xoffset, yoffset, source[0], source[1],
+                                 source[2], source[3]);
+    }
+}
+
+void ReplaySink::issue_glBlitFramebuffer(GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1,
+                                         GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1,
+                                         GLbitfield mask, GLenum filter)
+{
+    auto scale = [](GLint& v, double s) {
+        v = GLint(std::clamp(std::lround(double(v) * s), -(1l << 30), 1l << 30));
+    };
+    const bool source = scalesWindow(GL_READ_FRAMEBUFFER_BINDING);
+    const bool target = scalesWindow(GL_DRAW_FRAMEBUFFER_BINDING);
+    if (source) {
+        for (GLint* v : {&srcX0, &srcX1}) scale(*v, mScaleX);
+        for (GLint* v : {&srcY0, &srcY1}) scale(*v, mScaleY);
+    }
+    if (target) {
+        for (GLint* v : {&dstX0, &dstX1}) scale(*v, mScaleX);
+        for (GLint* v : {&dstY0, &dstY1}) scale(*v, mScaleY);
+    }
+    if (source != target) {
+        // Now a resize: depth and stencil cannot be resized (the driver refuses the blit).
+        mask &= GL_COLOR_BUFFER_BIT;
+        filter = GL_LINEAR;
+        if (!mask) return;
+    }
+    gl().glBlitFramebuffer(srcX0, srcY0, srcX1, srcY1, dstX0, dstY0, dstX1, dstY1, mask, filter);
 }
 
 } // namespace nprgl

@@ -98,6 +98,23 @@ public:
                                 GLsizei width, GLint border);
     bool check_glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
                                 GLsizei width, GLsizei height, GLint border);
+    // Replayed at another size than recorded: the program's viewport, scissor and the regions
+    // it copies from or blits to the window scaled by (sx, sy), so that the frame is the
+    // program's picture resized. Framebuffer objects keep their sizes.
+    void setWindowScale(double sx, double sy)
+    {
+        mScaleX = sx;
+        mScaleY = sy;
+    }
+    void issue_glViewport(GLint x, GLint y, GLsizei width, GLsizei height);
+    void issue_glScissor(GLint x, GLint y, GLsizei width, GLsizei height);
+    void issue_glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x,
+                                GLint y, GLsizei width, GLsizei height, GLint border);
+    void issue_glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                   GLint x, GLint y, GLsizei width, GLsizei height);
+    void issue_glBlitFramebuffer(GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0,
+                                 GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask,
+                                 GLenum filter);
     bool check_glGenTextures(GLsizei n, GLuint* names) { return checkNames(n, names); }
     bool check_glGenQueries(GLsizei n, GLuint* names) { return checkNames(n, names); }
     bool check_glGenBuffers(GLsizei n, GLuint* names) { return checkNames(n, names); }
@@ -124,6 +141,11 @@ private:
                   bool fixedSize, int count);
     // The enabled arrays, queried again when their state may have changed.
     bool queryArrays();
+    // Whether the window (framebuffer 0) is bound to `binding` (GL_DRAW/READ_FRAMEBUFFER_-
+    // BINDING) while the replay scales it.
+    bool scalesWindow(GLenum binding) const;
+    // A window rectangle scaled: its edges, so that rectangles that meet still meet.
+    void scaleRect(GLint& x, GLint& y, GLsizei& width, GLsizei& height) const;
     // How many vertices from index 0 every enabled array holds (UINT64_MAX: no array);
     // `reserved`: what can be read without a fault, for the driver's range hints.
     uint64_t readableVertices(bool reserved) const;
@@ -157,6 +179,8 @@ private:
     uint64_t mTotalWork = 0;
     uint64_t mTotalBytes = 0;
     DisplayListBudget mLists;
+    double mScaleX = 1.0, mScaleY = 1.0;
+    GLuint mCopyFramebuffer = 0; // draws into a texture: a scaled copy stretched back
 };
 
 } // namespace nprgl

@@ -116,6 +116,15 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         return true;
     };
     ReplaySink sink(arrays, options.limits, frameEnd);
+    const int recordedWidth = reader.metadata().width, recordedHeight = reader.metadata().height;
+    if (recordedWidth > 0 && recordedHeight > 0 &&
+        (width != recordedWidth || height != recordedHeight)) {
+        // The program's picture resized, not cropped: it draws for the recorded window.
+        sink.setWindowScale(double(width) / recordedWidth, double(height) / recordedHeight);
+        NPRGL_INFO("replaying the %dx%d recording at %dx%d (the program's viewport and scissor "
+                   "scaled)",
+                   recordedWidth, recordedHeight, width, height);
+    }
     CaptureBlobs blobs(reader);
     const OpcodeMap opcodes(reader.metadata().opcodeNames);
     std::vector<uint8_t> calls;

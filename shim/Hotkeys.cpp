@@ -81,6 +81,7 @@ void Hotkeys::bind(const std::map<std::string, std::string>& keys,
         }
         if (ok && !binding.keycodes.empty()) mBindings.push_back(std::move(binding));
     }
+    openEvents(display);
     // A press is a combination going down: one held across a rebinding (a reload, the reload
     // key itself) is not pressed again. Kept as last polled where the combination is the
     // same, else as held now.
@@ -91,17 +92,45 @@ void Hotkeys::bind(const std::map<std::string, std::string>& keys,
         }
     }
     mDown = wasDown & kept;
-    if (mBindings.size() != size_t(std::popcount(kept))) mDown |= held() & ~kept;
+    if (mBindings.size() != size_t(std::popcount(kept))) {
+        // With key events mKeys is the keyboard as of the last event taken.
+        if (!mEvents.openFor(display)) readKeymap();
+        mDown |= held() & ~kept;
+    }
+}
+
+void Hotkeys::openEvents(_XDisplay* display)
+{
+    if (mBindings.empty() || mNoEvents || mEvents.openFor(display)) return;
+    std::string why;
+    if (mEvents.open(display, why)) {
+        mKeys = mEvents.keymap();
+        return;
+    }
+    mNoEvents = true;
+    static bool said = false;
+    if (!said) {
+        NPRGL_WARN("hotkeys: no key events (%s): the keyboard is read once a frame, and a key "
+                   "tap shorter than a frame is missed",
+                   why.c_str());
+    }
+    said = true;
+}
+
+void Hotkeys::readKeymap()
+{
+    char keymap[32] = {};
+    xlib().queryKeymap(mDisplay, keymap);
+    for (unsigned code = 0; code < 256; ++code)
+        mKeys[code] = (keymap[code >> 3] >> (code & 7)) & 1;
 }
 
 uint32_t Hotkeys::held() const
 {
-    char keymap[32] = {};
-    xlib().queryKeymap(mDisplay, keymap);
     uint32_t down = 0;
     for (const Binding& b : mBindings) {
         bool all = true;
-        for (uint8_t code : b.keycodes) all = all && (keymap[code >> 3] & (1 << (code & 7)));
+        for (uint8_t code : b.keycodes) all = all && mKeys[code];
         if (all) down |= b.action;
     }
     return down;
@@ -110,9 +139,21 @@ uint32_t Hotkeys::held() const
 uint32_t Hotkeys::poll(_XDisplay* display)
 {
     if (mBindings.empty() || display != mDisplay) return 0;
-    const uint32_t down = held();
-    const uint32_t pressed = down & ~mDown;
-    mDown = down;
+    if (!mEvents.openFor(display)) {
+        readKeymap();
+        const uint32_t down = held();
+        const uint32_t pressed = down & ~mDown;
+        mDown = down;
+        return pressed;
+    }
+    // Each press that completes a combination counts, though it may be up again by now.
+    uint32_t pressed = 0;
+    for (const KeyEvents::Event& e : mEvents.take()) {
+        mKeys[e.keycode] = e.down;
+        const uint32_t down = held();
+        if (e.down) pressed |= down & ~mDown;
+        mDown = down;
+    }
     return pressed;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 
-// Hotkeys: the configured key combinations, read by polling the keyboard state at frame ends.
+// Hotkeys: the configured key combinations, from key events (or the keyboard state at frame ends).
 
+#include "shim/KeyEvents.h"
+
+#include <bitset>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -11,9 +14,11 @@ struct _XDisplay;
 
 namespace nprgl {
 
-// As MangoHud does: XQueryKeymap on the program's display at each frame end, so the program's
-// own input (its event queue) is untouched. Xlib's functions are looked up in the process
-// (a GLX program has libX11 loaded); without them there are no hotkeys, said once.
+// Key events of a connection of nprgl's own (KeyEvents), taken at each frame end, so a tap
+// between two frame ends counts; the program's own input (its event queue) is untouched.
+// Without XInput 2 (said once), as MangoHud does: XQueryKeymap on the program's display at
+// each frame end, which misses a tap shorter than a frame. Xlib's functions are looked up in
+// the process (a GLX program has libX11 loaded); without them there are no hotkeys, said once.
 class Hotkeys {
 public:
     enum Action : uint32_t {
@@ -39,11 +44,18 @@ private:
         uint32_t action = 0;
         std::vector<uint8_t> keycodes;
     };
-    // The actions whose whole combination is down now (a round trip to the X server).
+    // The actions whose whole combination is down in mKeys.
     uint32_t held() const;
+    // mKeys from the keymap of the program's display (no key events).
+    void readKeymap();
+    // Key events for `display`, once per display: said once where there are none.
+    void openEvents(_XDisplay* display);
     std::vector<Binding> mBindings;
     _XDisplay* mDisplay = nullptr;
-    uint32_t mDown = 0; // actions whose combination was held at the last poll
+    uint32_t mDown = 0;     // actions whose combination was held after the last key seen
+    std::bitset<256> mKeys; // the keys down, as last seen
+    KeyEvents mEvents;
+    bool mNoEvents = false; // XInput 2 is missing: polled
 };
 
 } // namespace nprgl

@@ -45,6 +45,28 @@ std::string joinChain(const std::vector<std::string>& chain)
     return text.empty() ? "none" : text;
 }
 
+// The width of a button (or small button) labelled `label`.
+float buttonWidth(const char* label)
+{
+    return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
+
+// On the same line when an item `width` wide still fits there, else on the next: rows of
+// controls wrap in a narrow window instead of running past its edge.
+void sameLineIfFits(float width)
+{
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+}
+
+// Greyed text, wrapped at the window's edge.
+void disabledWrapped(const char* text)
+{
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
 std::string numberText(double value)
 {
     char text[32];
@@ -116,21 +138,32 @@ OverlayPanel::Changes OverlayPanel::build(const StyleSettings& running, bool sty
     follow(running);
     Changes changes;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(
-        ImVec2(std::min(360.0f, display.x - 16.0f), std::min(600.0f, display.y - 16.0f)),
-        ImGuiCond_FirstUseEver);
+    // At most 60% of the window's width and its height less a margin, whatever its size (and
+    // as it is resized): in a small window the rows wrap and the panel scrolls.
+    const ImVec2 largest(std::max(1.0f, 0.6f * display.x), std::max(1.0f, display.y - 16.0f));
+    ImGui::SetNextWindowPos(ImVec2(std::min(8.0f, 0.02f * display.x), 8.0f),
+                            ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::min(360.0f, largest.x), std::min(600.0f, largest.y)),
+                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), largest);
     ImGui::Begin("nprgl", nullptr, ImGuiWindowFlags_NoSavedSettings);
-    ImGui::Text("%s: %s", mProgramName.c_str(), chainText().c_str());
+    if (mNoteItems) {
+        const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        NPRGL_DEBUG("overlay: window at %.0f %.0f %.0f %.0f", at.x, at.y, size.x, size.y);
+    }
+    ImGui::TextWrapped("%s: %s", mProgramName.c_str(), chainText().c_str());
     bool on = styled;
     if (ImGui::Checkbox("styled", &on)) changes.toggle = true;
     noteItem("styled");
-    ImGui::SameLine();
-    ImGui::Text("frame %.1f ms, nprgl %.1f ms", figures.frameMs, figures.composeMs);
+    char times[64];
+    std::snprintf(times, sizeof times, "frame %.1f ms, nprgl %.1f ms", figures.frameMs,
+                  figures.composeMs);
+    sameLineIfFits(ImGui::CalcTextSize(times).x);
+    ImGui::TextWrapped("%s", times);
     // The controls first, at places that do not move with the figures below them.
     changes.rules = pickRows(rules, changes.leave);
     bool edited = presetRow();
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("save"));
     saveButton(changes.rules ? changes.leave : rules);
     if (!mSaved.empty()) ImGui::TextWrapped("%s", mSaved.c_str());
     errorRow("preset");
@@ -172,9 +205,9 @@ bool OverlayPanel::presetRow()
         return n;
     }();
     if (names.empty()) return false;
-    ImGui::SetNextItemWidth(120.0f);
+    ImGui::SetNextItemWidth(std::min(120.0f, ImGui::GetContentRegionAvail().x));
     ImGui::Combo("##preset", &mPreset, &nameAt, &names, int(names.size()));
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("apply"));
     if (!ImGui::Button("apply")) return false;
     std::string chain, config, error;
     if (!Presets::load(names[size_t(mPreset)], chain, config, error)) {
@@ -202,7 +235,16 @@ bool OverlayPanel::chainRows()
     for (size_t i = 0; i < mChain.size(); ++i) {
         ImGui::PushID(int(i));
         ImGui::BulletText("%s", mChain[i].c_str());
-        ImGui::SameLine(150.0f);
+        const ImGuiStyle& look = ImGui::GetStyle();
+        const float buttons = buttonWidth("up") + buttonWidth("down") + buttonWidth("remove") +
+                              2.0f * look.ItemSpacing.x;
+        // In a column where the names are short enough, else after the name or below it.
+        if (ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x < 150.0f - look.ItemSpacing.x &&
+            ImGui::GetWindowContentRegionMax().x >= 150.0f + buttons) {
+            ImGui::SameLine(150.0f);
+        } else {
+            sameLineIfFits(buttons);
+        }
         if (ImGui::SmallButton("up") && i > 0) {
             next = mChain;
             std::swap(next[i], next[i - 1]);
@@ -252,7 +294,7 @@ bool OverlayPanel::chainRows()
     }
     if (!addable.empty()) {
         mAdd = std::clamp(mAdd, 0, int(addable.size()) - 1);
-        ImGui::SetNextItemWidth(140.0f);
+        ImGui::SetNextItemWidth(std::min(140.0f, ImGui::GetContentRegionAvail().x));
         if (ImGui::BeginCombo("##add", addable[size_t(mAdd)].label.c_str())) {
             // The list's items are noted on its second frame open, when it has its final
             // layout.
@@ -268,7 +310,7 @@ bool OverlayPanel::chainRows()
             mAddOpenFrames = 0;
             noteItem("add");
         }
-        ImGui::SameLine();
+        sameLineIfFits(buttonWidth("add style"));
         const bool add = ImGui::Button("add style");
         noteItem("add style");
         if (add) {
@@ -302,38 +344,74 @@ bool OverlayPanel::paramRows(const StyleInfo& style)
     }
     ImGui::PushID(style.name.c_str());
     for (const ParamInfo& param : style.params) {
-        edited = paramRow(style.name + "." + param.name, param) || edited;
+        edited = paramRow(style.name + "." + param.name, param, style) || edited;
     }
     ImGui::PopID();
     return edited;
 }
 
-bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param)
+double OverlayPanel::numberOf(const std::string& key, const ParamInfo& param) const
+{
+    double value = param.defaultValue;
+    const auto it = mValues.find(key);
+    if (it != mValues.end() && param.kind != ParamKind::Text && param.kind != ParamKind::Colour) {
+        const ParamInfo* checked = nullptr;
+        std::string error;
+        if (!StyleSettings::check(key, it->second, checked, value, error))
+            value = param.defaultValue;
+    }
+    return value;
+}
+
+void OverlayPanel::sliderRange(const StyleInfo& style, const ParamInfo& param, double& lo,
+                               double& hi) const
+{
+    lo = param.minValue;
+    hi = param.maxValue;
+    for (const ParamInfo& other : style.params) {
+        const std::string key = style.name + "." + other.name;
+        if (!param.below.empty() && other.name == param.below)
+            hi = std::min(hi, numberOf(key, other) - param.gap);
+        if (other.below == param.name) lo = std::max(lo, numberOf(key, other) + other.gap);
+    }
+    // Values out of order (given in a file) leave no room: the slider stays where it is.
+    hi = std::max(hi, lo);
+}
+
+bool OverlayPanel::paramRow(const std::string& key, const ParamInfo& param,
+                            const StyleInfo& style)
 {
     auto it = mValues.find(key);
     const bool configured = it != mValues.end();
     const std::string text = configured ? it->second : param.defaultString();
     // The value as the registry reads it (a choice's index, a flag's 0/1).
-    double value = param.defaultValue;
-    if (configured && param.kind != ParamKind::Text && param.kind != ParamKind::Colour) {
-        const ParamInfo* checked = nullptr;
-        std::string error;
-        if (!StyleSettings::check(key, text, checked, value, error)) value = param.defaultValue;
-    }
+    const double value = numberOf(key, param);
     std::string next;
-    ImGui::SetNextItemWidth(160.0f);
+    // A control and its name on one line where both fit, else the name above the control.
+    const float avail = ImGui::GetContentRegionAvail().x;
+    std::string hidden;
     const char* label = param.name.c_str();
+    if (avail < 160.0f + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x) {
+        ImGui::TextUnformatted(label);
+        hidden = "##" + param.name;
+        label = hidden.c_str();
+        ImGui::SetNextItemWidth(avail);
+    } else {
+        ImGui::SetNextItemWidth(160.0f);
+    }
     switch (param.kind) {
     case ParamKind::Number:
         if (param.isFlag) {
             bool on = value != 0.0;
             if (ImGui::Checkbox(label, &on)) next = on ? "on" : "off";
         } else {
+            double lo = 0.0, hi = 0.0;
+            sliderRange(style, param, lo, hi);
             float v = float(value);
             const bool wide = param.minValue > 0.0 && param.maxValue / param.minValue >= 100.0;
-            if (ImGui::SliderFloat(label, &v, float(param.minValue), float(param.maxValue), "%.3g",
+            if (ImGui::SliderFloat(label, &v, float(lo), float(hi), "%.3g",
                                    wide ? ImGuiSliderFlags_Logarithmic : 0)) {
-                next = numberText(std::clamp(double(v), param.minValue, param.maxValue));
+                next = numberText(std::clamp(double(v), lo, hi));
             }
         }
         break;
@@ -431,6 +509,7 @@ bool OverlayPanel::pickRows(const LeaveRules& rules, LeaveRules& next)
     bool changed = false;
     // A button that edits the rules, disabled where it would change nothing.
     auto ruleButton = [&](const char* label, bool enabled, auto edit) {
+        sameLineIfFits(buttonWidth(label));
         ImGui::BeginDisabled(!enabled);
         if (ImGui::Button(label)) {
             next = rules;
@@ -441,19 +520,19 @@ bool OverlayPanel::pickRows(const LeaveRules& rules, LeaveRules& next)
         ImGui::EndDisabled();
     };
     const bool textureLeft = rules.leavesTexture(mPickedHash);
-    ImGui::SameLine();
     ruleButton("leave texture", mPickedHash != 0 && !textureLeft, [&](LeaveRules& r) {
         r.textures.push_back(mPickedHash);
         r.normalise();
         NPRGL_INFO("overlay: rule: leave texture %s", ConfigFile::hashText(mPickedHash).c_str());
     });
-    ImGui::SameLine();
     ruleButton("style texture", textureLeft, [&](LeaveRules& r) {
         std::erase(r.textures, mPickedHash);
         NPRGL_INFO("overlay: rule: style texture %s", ConfigFile::hashText(mPickedHash).c_str());
     });
-    ImGui::SameLine();
-    ImGui::TextDisabled("%zu rule%s", rules.count(), rules.count() == 1 ? "" : "s");
+    char count[32];
+    std::snprintf(count, sizeof count, "%zu rule%s", rules.count(), rules.count() == 1 ? "" : "s");
+    sameLineIfFits(ImGui::CalcTextSize(count).x);
+    ImGui::TextDisabled("%s", count);
     // A state rule leaves every draw in any of the picked object's states (for a translucent
     // decal: every translucent draw and every decal), as leave_state lines do.
     const std::string names = LeaveRules::stateNames(mPickedStates, " or ");
@@ -464,18 +543,18 @@ bool OverlayPanel::pickRows(const LeaveRules& rules, LeaveRules& next)
     if (mPickedStates && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
         ImGui::SetTooltip("leave every draw that is %s as the program draws it", names.c_str());
     }
-    ImGui::SameLine();
     ruleButton("style state", (mPickedStates & rules.states) != 0, [&](LeaveRules& r) {
         r.states &= ~mPickedStates;
         NPRGL_INFO("overlay: rule: style state %s", names.c_str());
     });
-    ImGui::SameLine();
-    ImGui::TextDisabled("left: %s",
-                        rules.states ? LeaveRules::stateNames(rules.states).c_str() : "none");
-    // One line, always there: the rows below keep their places (the tests click them).
-    ImGui::TextDisabled("%s", mPick.empty() ? "pick, then click an object: rules by its texture "
-                                              "or its state"
-                                            : mPick.c_str());
+    const std::string left =
+        "left: " + (rules.states ? LeaveRules::stateNames(rules.states) : std::string("none"));
+    sameLineIfFits(ImGui::CalcTextSize(left.c_str()).x);
+    ImGui::TextDisabled("%s", left.c_str());
+    // Always there: the rows below keep their places (the tests click them).
+    disabledWrapped(mPick.empty() ? "pick, then click an object: rules by its texture or its "
+                                    "state"
+                                  : mPick.c_str());
     return changed;
 }
 

@@ -55,7 +55,13 @@ private:
     bool chainRows();
     bool presetRow();
     bool paramRows(const StyleInfo& style);
-    bool paramRow(const std::string& key, const ParamInfo& param);
+    bool paramRow(const std::string& key, const ParamInfo& param, const StyleInfo& style);
+    // A number's value as the registry reads it: configured, else its default.
+    double numberOf(const std::string& key, const ParamInfo& param) const;
+    // The range a number's slider offers: its own, narrowed by the numbers the style keeps
+    // it below or above (ParamInfo::below), so the value shown is the value the style runs.
+    void sliderRange(const StyleInfo& style, const ParamInfo& param, double& lo,
+                     double& hi) const;
     void saveButton(const LeaveRules& rules);
     bool pickRows(const LeaveRules& rules, LeaveRules& next);
     // With noteLayout(): logs (debug) where an item is, for tests that click it with XTEST.

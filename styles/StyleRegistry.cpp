@@ -31,6 +31,14 @@ ParamInfo ParamInfo::number(std::string name, std::string help, double def, doub
     return p;
 }
 
+ParamInfo ParamInfo::keptBelow(std::string other, double gapBelow) const
+{
+    ParamInfo p = *this;
+    p.below = std::move(other);
+    p.gap = gapBelow;
+    return p;
+}
+
 ParamInfo ParamInfo::flag(std::string name, std::string help, bool def)
 {
     ParamInfo p = number(std::move(name), std::move(help), def ? 1.0 : 0.0, 0.0, 1.0);

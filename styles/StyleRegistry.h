@@ -29,10 +29,16 @@ struct ParamInfo {
     std::vector<std::string> choices; // Choice: the names, value = index
     std::string defaultText;          // Text, Colour
     bool isFlag = false;              // a Number that is on (1) or off (0)
+    // A Number the style keeps at least `gap` below another of its numbers (the style's own
+    // check moves a value that is not): the overlay's sliders keep the pair in order.
+    std::string below;
+    double gap = 0.0;
 
     static ParamInfo number(std::string name, std::string help, double def, double lo,
                             double hi);
     static ParamInfo flag(std::string name, std::string help, bool def);
+    // This number, kept at least `gap` below the style's number `other`.
+    ParamInfo keptBelow(std::string other, double gap) const;
     static ParamInfo choice(std::string name, std::string help, std::vector<std::string> names,
                             int def);
     static ParamInfo text(std::string name, std::string help, std::string def = {});

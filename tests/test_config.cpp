@@ -326,6 +326,22 @@ TEST(Hotkeys, TheToggleKeyShowsTheProgramsOwnPictureAndBack)
     EXPECT_EQ(differing(shot(keyed, 6), shot(styled, 6)), 0) << "styling not back on";
 }
 
+// A tap that goes down and up again between two frame ends (a frame is slow under heavy
+// styles, a tap is short) acts as a longer press does: frame 4 is the program's own picture.
+TEST(Hotkeys, ATapBetweenTwoFramesActs)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon+edges"};
+    const std::string native =
+        runHotkeys("tap_native", {nprglCommand(), "--style", "none"}, {"--frames", "4"}, "4");
+    const std::string styled = runHotkeys("tap_styled", nprgl, {"--frames", "4"}, "2,4");
+    const std::string keyed = runHotkeys(
+        "tap_toggle", nprgl, {"--frames", "4", "--tap", "3", "Shift_R+F9"}, "2,4");
+    EXPECT_GT(differing(shot(native, 4), shot(styled, 4)), 200) << "the style changes nothing";
+    EXPECT_EQ(differing(shot(keyed, 2), shot(styled, 2)), 0);
+    EXPECT_EQ(differing(shot(keyed, 4), shot(native, 4)), 0) << "the tap was missed";
+    EXPECT_EQ(stderrOf(keyed).find("no key events"), std::string::npos) << stderrOf(keyed);
+}
+
 // The screenshot key writes the next frame styled and the same frame unstyled (drawn again
 // from its calls), named <program>_<date>_<time>_<ms>_styled/_unstyled.png, then styles on.
 // probe_hotkeys turns its cube a step every frame: a pair of two frames would differ.
@@ -512,7 +528,7 @@ TEST(Overlay, ASliderDragRestylesTheProgramAndSaveKeepsIt)
         {"--size", kOverlaySize, "--frames", "12",
          "--pointer", "3", std::to_string(slider.x + 4), std::to_string(y),
          "--button", "4", "down",
-         "--pointer", "5", std::to_string(slider.x + 120), std::to_string(y),
+         "--pointer", "5", std::to_string(slider.x + 140), std::to_string(y),
          "--button", "6", "up",
          "--pointer", "7", std::to_string(save.x + save.w / 2),
          std::to_string(save.y + save.h / 2),
@@ -545,6 +561,67 @@ TEST(Overlay, ASliderDragRestylesTheProgramAndSaveKeepsIt)
     EXPECT_NE(stderrOf(next).find("probe_hotkeys: style toon, config toon.diffuse_threshold="),
               std::string::npos)
         << stderrOf(next);
+}
+
+// Dragged past the highlight threshold, the diffuse threshold's slider stops 0.02 below it
+// (toon keeps t_d < t_h, and would move a value that is not): the value shown and saved is
+// the one the style runs, which has no threshold of its own to put right.
+TEST(Overlay, ASliderStopsWhereItsPairedValueKeepsIt)
+{
+    const std::string layout = runHotkeys(
+        "paired_layout", {nprglCommand(), "--style", "toon", "--log-level", "debug"},
+        {"--size", kOverlaySize, "--frames", "3"}, "3", {{"NPRGL_OVERLAY", "open"}});
+    const ItemRect slider = itemAt(stderrOf(layout), "toon.diffuse_threshold");
+    ASSERT_GT(slider.w, 0) << stderrOf(layout);
+    const int y = slider.y + slider.h / 2;
+    const std::string dragged = runHotkeys(
+        "paired_drag", {nprglCommand(), "--style", "toon"},
+        {"--size", kOverlaySize, "--frames", "9",
+         "--pointer", "3", std::to_string(slider.x + 4), std::to_string(y),
+         "--button", "4", "down",
+         "--pointer", "5", std::to_string(slider.x + slider.w + 40), std::to_string(y),
+         "--button", "6", "up", "--pointer", "7", "590", "590"},
+        "9", {{"NPRGL_OVERLAY", "open"}});
+    const std::string log = stderrOf(dragged);
+    const size_t said = log.find("overlay: toon.diffuse_threshold=");
+    ASSERT_NE(said, std::string::npos) << log;
+    EXPECT_DOUBLE_EQ(std::atof(log.c_str() + said + 32), 0.9) << log; // the default t_h 0.92
+    EXPECT_EQ(log.find("must be below highlight_threshold"), std::string::npos) << log;
+}
+
+// In a 300x300 window the overlay keeps to the left 60% of it (the rest is the program's
+// picture) and runs no control past its right edge: its rows wrap, names go above their
+// sliders, and it scrolls.
+TEST(Overlay, ItFitsASmallWindow)
+{
+    const std::vector<std::string> nprgl = {nprglCommand(), "--style", "toon+paper+edges",
+                                            "--log-level", "debug"};
+    const std::vector<std::string> args = {"--size", "300", "--frames", "3"};
+    const std::string plain = runHotkeys("small_plain", nprgl, args, "3");
+    const std::string open =
+        runHotkeys("small_open", nprgl, args, "3", {{"NPRGL_OVERLAY", "open"}});
+    const std::string log = stderrOf(open);
+    ItemRect window;
+    const size_t at = log.find("overlay: window at ");
+    ASSERT_NE(at, std::string::npos) << log;
+    std::sscanf(log.c_str() + at + 19, "%d %d %d %d", &window.x, &window.y, &window.w, &window.h);
+    EXPECT_LE(window.x + window.w, 186) << log;
+    EXPECT_LE(window.y + window.h, 300) << log;
+    EXPECT_GT(differingIn(shot(open, 3), shot(plain, 3), 0, 0, 100, 100), 2000) << "not drawn";
+    EXPECT_EQ(differingIn(shot(open, 3), shot(plain, 3), 190, 0, 300, 300), 0);
+    size_t items = 0;
+    for (size_t i = log.find("overlay: item "); i != std::string::npos;
+         i = log.find("overlay: item ", i + 1)) {
+        const size_t end = log.find('\n', i);
+        const std::string line = log.substr(i, end - i);
+        const size_t coords = line.rfind(" at ");
+        ItemRect r;
+        std::sscanf(line.c_str() + coords + 4, "%d %d %d %d", &r.x, &r.y, &r.w, &r.h);
+        EXPECT_GE(r.x, window.x) << line;
+        EXPECT_LE(r.x + r.w, window.x + window.w) << line;
+        ++items;
+    }
+    EXPECT_GT(items, 10u) << log;
 }
 
 // probe_hotkeys' poster, in window pixels of kOverlaySize (both axes).

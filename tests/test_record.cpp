@@ -245,6 +245,77 @@ TEST(Fixtures, GlxgearsReplaysAsGlxgears)
     expectGlxgearsPicture(framePng(replay, 3));
 }
 
+namespace {
+
+// Pixels of `small` that differ by more than `tolerance` (a channel) from `big` averaged
+// over the 2x2 block it covers; -1 unless `big` is twice `small` each way.
+long differingFromHalved(const PngImage& big, const PngImage& small, int tolerance)
+{
+    if (big.width != 2 * small.width || big.height != 2 * small.height) return -1;
+    long n = 0;
+    for (int y = 0; y < small.height; ++y) {
+        for (int x = 0; x < small.width; ++x) {
+            bool differs = false;
+            for (int c = 0; c < 3; ++c) {
+                int sum = 0;
+                for (int dy = 0; dy < 2; ++dy) {
+                    for (int dx = 0; dx < 2; ++dx)
+                        sum += big.rgba[size_t(((2 * y + dy) * big.width + 2 * x + dx) * 4 + c)];
+                }
+                const int v = small.rgba[size_t((y * small.width + x) * 4 + c)];
+                differs = differs || std::abs(v - (sum + 2) / 4) > tolerance;
+            }
+            n += differs;
+        }
+    }
+    return n;
+}
+
+} // namespace
+
+// `replay --size` at half the recorded size draws the program's picture resized, not the
+// lower left quarter of it: each frame is the full-size frame halved (2x2 averages), but for
+// edges drawn at the smaller size. glxgears (its viewport), demo_textured (its scissored
+// clear; with --env-map the corner it draws the scene in, copies into a texture with
+// glCopyTexSubImage2D and shows) and demo_immediate.
+TEST(Replay, ASmallerSizeScalesTheProgramsPicture)
+{
+    const std::string envMap = freshDir("size_env") + "/env.nprgl";
+    ProcessResult recorded = runProcess(
+        {nprglCommand(), "record", "--style", "none", "-o", envMap, "--", demo("textured"),
+         "--offscreen", "--env-map", "--frames", "3", "--size", "160x120"});
+    ASSERT_EQ(recorded.exitCode, 0) << recorded.err;
+    for (const std::string name : {"glxgears", "textured", "immediate", "env"}) {
+        const std::string capture = name == "env" ? envMap : fixture(name);
+        const std::string dir = freshDir("size_" + name);
+        ProcessResult info = runProcess({nprglCommand(), "info", capture});
+        ASSERT_EQ(info.exitCode, 0) << info.err;
+        std::smatch size;
+        ASSERT_TRUE(std::regex_search(info.out, size, std::regex("size: +(\\d+)x(\\d+)")))
+            << info.out;
+        const int w = std::stoi(size[1]), h = std::stoi(size[2]);
+        ASSERT_TRUE(w % 2 == 0 && h % 2 == 0) << info.out;
+        for (const auto& [sub, extra] :
+             std::vector<std::pair<std::string, std::vector<std::string>>>{
+                 {"full", {}}, {"half", {"--size", std::to_string(w / 2) + "x" +
+                                                       std::to_string(h / 2)}}}) {
+            std::vector<std::string> cmd = {nprglCommand(), "replay", "--style", "none",
+                                            capture, "-o", dir + "/" + sub, "--frames",
+                                            "3"};
+            cmd.insert(cmd.end(), extra.begin(), extra.end());
+            ProcessResult p = runProcess(cmd);
+            ASSERT_EQ(p.exitCode, 0) << name << ": " << p.err;
+        }
+        PngImage full, half;
+        std::string error;
+        ASSERT_TRUE(PngImage::read(framePng(dir + "/full", 3), full, error)) << error;
+        ASSERT_TRUE(PngImage::read(framePng(dir + "/half", 3), half, error)) << error;
+        const long differing = differingFromHalved(full, half, 48);
+        ASSERT_GE(differing, 0) << name;
+        EXPECT_LT(differing, long(half.width * half.height / 20)) << name;
+    }
+}
+
 TEST(Dump, PrintsOneCallPerLineWithNamedArguments)
 {
     ProcessResult d = runProcess({nprglCommand(), "dump", fixture("immediate"), "--frames",

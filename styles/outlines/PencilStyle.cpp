@@ -119,7 +119,8 @@ StyleInfo pencilStyleInfo()
                                   50.0, -90.0, 90.0));
     p.push_back(ParamInfo::number("light", "L.n at or above it: bare paper", 0.65, -1.0, 1.0));
     p.push_back(ParamInfo::number("dark", "L.n at or below it: every layer at full weight",
-                                  -0.2, -1.0, 1.0));
+                                  -0.2, -1.0, 1.0)
+                    .keptBelow("light", 0.05));
     p.push_back(ParamInfo::number("color_tone", "how much a darker program colour darkens "
                                                 "the tone",
                                   0.5, 0.0, 1.0));
@@ -191,7 +192,7 @@ bool PencilStyle::init(StyleContext& ctx, std::string& error)
     mAngle = param("angle");
     mLight = param("light");
     mDark = param("dark");
-    if (mDark > mLight - 0.05f) {
+    if (mDark > mLight - 0.05f + 1e-5f) { // a dark given exactly 0.05 below is kept
         NPRGL_WARN("pencil: dark (%.2f) must lie below light (%.2f); using dark = light - 0.05",
                    double(mDark), double(mLight));
         mDark = mLight - 0.05f;

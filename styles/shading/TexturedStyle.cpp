@@ -112,7 +112,8 @@ StyleInfo texturedStyleInfo()
         ParamInfo::number("tones", "shading colours: 2 (shadow, diffuse) or 3 (+ highlight)", 2,
                           2, 3),
         ParamInfo::number("diffuse_threshold", "t_d: L.n below it takes the shadow colour", 0.0,
-                          -1.0, 1.0),
+                          -1.0, 1.0)
+            .keptBelow("highlight_threshold", 0.02),
         ParamInfo::number("highlight_threshold", "t_h: L.n above it takes the highlight colour",
                           0.92, -1.0, 1.0),
         ParamInfo::number("shadow_scale", "shadow colour = base colour x this", 0.75, 0.0, 1.0),
@@ -123,7 +124,8 @@ StyleInfo texturedStyleInfo()
                         true),
         ShadingCommon::reflectionsParam(),
         ParamInfo::number("alpha_low", "ta_l: L.n where the light texture starts to fade in",
-                          -0.15, -1.0, 1.0),
+                          -0.15, -1.0, 1.0)
+            .keptBelow("alpha_high", 0.0),
         ParamInfo::number("alpha_high", "ta_u: L.n where only the light texture remains", 0.15,
                           -1.0, 1.0),
         ParamInfo::choice("transition", "symmetric (one cross-fade) or asymmetric (both "

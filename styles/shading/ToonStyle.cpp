@@ -96,7 +96,8 @@ StyleInfo toonStyleInfo()
     info.params = {
         ParamInfo::number("tones", "number of tones: 2 (shadow, diffuse) or 3 (+ highlight)", 3,
                           2, 3),
-        ParamInfo::number("diffuse_threshold", "t_d: L.n below it is shadow", 0.0, -1.0, 1.0),
+        ParamInfo::number("diffuse_threshold", "t_d: L.n below it is shadow", 0.0, -1.0, 1.0)
+            .keptBelow("highlight_threshold", 0.02),
         ParamInfo::number("highlight_threshold",
                           "t_h: L.n above it is highlight (kept above t_d)", 0.92, -1.0, 1.0),
         ParamInfo::number("shadow_scale",

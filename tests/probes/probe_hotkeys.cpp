@@ -1,7 +1,8 @@
 // A GLX window drawing the lit, turning cube for a number of frames, pressing key
 // combinations with XTEST at given frames (--press K Shift_R+F9: down at the start of frame K,
 // up at the start of frame K+1; --hold K L F9: down at the start of frame K, up at the start
-// of frame L), moving the pointer (--pointer K X Y, window pixels) and
+// of frame L; --tap K F9: down and up again at the start of frame K, between two swaps, as a
+// tap shorter than a slow frame is), moving the pointer (--pointer K X Y, window pixels) and
 // pressing or letting go of the left button (--button K down|up) at the start of frame K,
 // as a user would: the hotkey and overlay tests, counted in frames. --textured adds a
 // textured poster in front of the cube, in the window's lower right corner; --decal draws it
@@ -99,6 +100,7 @@ int main(int argc, char** argv)
     bool decal = false;
     // Key combinations going up (false) or down (true) at the start of a frame.
     std::map<int, std::vector<std::pair<std::string, bool>>> keys;
+    std::map<int, std::vector<std::string>> taps;
     std::map<int, std::pair<int, int>> pointer;
     std::map<int, bool> buttons;
     for (int i = 1; i < argc; i += 2) {
@@ -118,6 +120,9 @@ int main(int argc, char** argv)
             const int frame = std::atoi(argv[i + 1]);
             keys[frame].emplace_back(argv[i + 2], true);
             keys[frame + 1].emplace_back(argv[i + 2], false);
+            ++i;
+        } else if (option == "--tap" && i + 2 < argc) {
+            taps[std::atoi(argv[i + 1])].push_back(argv[i + 2]);
             ++i;
         } else if (option == "--hold" && i + 3 < argc) {
             keys[std::atoi(argv[i + 1])].emplace_back(argv[i + 3], true);
@@ -167,6 +172,12 @@ int main(int argc, char** argv)
                     setKeys(dpy, keycodes(dpy, combination), down);
                     held[combination] += down ? 1 : -1;
                 }
+            }
+        }
+        if (auto t = taps.find(frame); t != taps.end()) {
+            for (const std::string& combination : t->second) {
+                setKeys(dpy, keycodes(dpy, combination), true);
+                setKeys(dpy, keycodes(dpy, combination), false);
             }
         }
         if (auto p = pointer.find(frame); p != pointer.end()) {
