@@ -43,13 +43,14 @@ std::string ReadReport::summary(uint64_t framesRead) const
                 " read";
     }
     // Without an index, frames lost after a context's last readable one leave no trace.
-    const bool exact = mReader.knowsAllFrames() || !mLost.empty();
+    const bool exact = mReader.knowsAllFrames() || mReader.damage().empty();
+    const std::string comma = framesRead == kUnknown ? ": " : ", ";
     if (lost.empty()) {
-        line += exact ? std::string(framesRead == kUnknown ? ": " : ", ") + "no frame lost"
+        line += exact ? comma + "no frame lost"
                       : "; frames lost in the damaged bytes cannot be counted (no index)";
     } else {
-        line += std::string(framesRead == kUnknown ? ": " : ", ") + (exact ? "" : "at least ") + std::to_string(lost.size()) +
-                " lost (" + describe(lost) + ")";
+        line += comma + (exact ? "" : "at least ") + std::to_string(lost.size()) + " lost (" +
+                describe(lost) + ")";
     }
     if (uint64_t blobs = mReader.missingBlobs()) {
         line += "; " + std::to_string(blobs) + " blob" + (blobs == 1 ? "" : "s") +

@@ -58,7 +58,7 @@ int programIndex(int argc, char** argv, int first)
         if (std::strcmp(arg, "--") == 0) return i + 1;
         if (arg[0] != '-') return i;
         bool flag = std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0 ||
-                    std::strcmp(arg, "--version") == 0;
+                    std::strcmp(arg, "--version") == 0 || std::strcmp(arg, "--force") == 0;
         // -ofile style short options carry their value.
         if (arg[1] != '-' && arg[1] && arg[2]) flag = true;
         if (!flag && !std::strchr(arg, '=')) ++i; // skip the option's value
@@ -190,6 +190,8 @@ int main(int argc, char** argv)
     if (record) {
         app.add_option("-o,--output", options.recordFile, "the capture file");
         app.add_option("--frames", options.recordFrames, "frames to record, e.g. 1-100");
+        app.add_flag("--force", options.recordForce,
+                     "replace FILE if it is an nprgl capture (any other file is never replaced)");
     }
     int program = programIndex(argc, argv, 1 + skip);
     // The options end where the program begins; a "--" in between is not an option.

@@ -755,6 +755,7 @@ TEST(Capture, RefusesWrongMagicFutureVersionAndEmptyFiles)
     EXPECT_FALSE(reader.open(path, error));
     EXPECT_NE(error.find("offset 0: file is 3 bytes, too short"), std::string::npos) << error;
 
+    unlink(path.c_str()); // the writer never overwrites what is not a capture
     writeClosedSample(path);
     std::vector<uint8_t> good = readFile(path);
     std::vector<uint8_t> bad = good;
@@ -1056,4 +1057,56 @@ TEST(Capture, WriterReportsErrorsAndStopsAtAFullDisk)
     std::vector<uint8_t> back;
     ASSERT_TRUE(reader.readFrame(size_t(written - 1), back, error)) << error;
     EXPECT_EQ(back, makeBytes(written - 1, 1500, false));
+}
+
+// The writer used to open with O_TRUNC: whatever was at the path was gone before anything
+// was checked, and a FIFO blocked the open until a reader came.
+TEST(Capture, WriterNeverOverwritesWhatIsNotACapture)
+{
+    std::string dir = test::freshDir("capture");
+    CaptureWriter writer;
+    std::string error;
+    const std::string text = dir + "/notes.txt";
+    writeFile(text, std::vector<uint8_t>{'n', 'o', 't', 'e', 's', '\n'});
+    std::string why;
+    EXPECT_EQ(CaptureWriter::checkTarget(text, why), CaptureWriter::Target::Other);
+    EXPECT_FALSE(writer.open(text, sampleMetadata(), error));
+    EXPECT_EQ(error, text + ": exists and is not an nprgl capture; it is never overwritten");
+    EXPECT_EQ(readFile(text), (std::vector<uint8_t>{'n', 'o', 't', 'e', 's', '\n'}));
+
+    const std::string capture = dir + "/old.nprgl";
+    writeClosedSample(capture, 2);
+    const std::vector<uint8_t> old = readFile(capture);
+    EXPECT_EQ(CaptureWriter::checkTarget(capture, why), CaptureWriter::Target::Capture);
+    EXPECT_FALSE(writer.open(capture, sampleMetadata(), error, false));
+    EXPECT_EQ(error, capture + ": an nprgl capture is there; not replaced");
+    EXPECT_EQ(readFile(capture), old);
+    ASSERT_TRUE(writer.open(capture, sampleMetadata(), error, true)) << error;
+    ASSERT_TRUE(writer.close(error)) << error;
+    EXPECT_LT(readFile(capture).size(), old.size()); // replaced: no frames now
+
+    const std::string empty = dir + "/empty.nprgl";
+    writeFile(empty, {});
+    EXPECT_EQ(CaptureWriter::checkTarget(empty, why), CaptureWriter::Target::Free);
+    ASSERT_TRUE(writer.open(empty, sampleMetadata(), error, false)) << error;
+    ASSERT_TRUE(writer.close(error)) << error;
+
+    const std::string fifo = dir + "/fifo.nprgl";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    pid_t child = fork(); // an alarm ends it if the open blocks
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        alarm(60);
+        CaptureWriter w;
+        std::string e;
+        const bool refused =
+            !w.open(fifo, sampleMetadata(), e) &&
+            e == fifo + ": is a FIFO (named pipe); a capture is written only to a regular file";
+        const bool dirRefused = !w.open(dir, sampleMetadata(), e) &&
+                                e.find("is a directory") != std::string::npos;
+        _exit(refused && dirRefused ? 0 : 1);
+    }
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "blocked or not refused";
 }

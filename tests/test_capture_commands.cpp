@@ -223,3 +223,108 @@ TEST(CaptureCommands, SpecialFilesAreRefusedAtOnce)
         }
     }
 }
+
+namespace {
+
+const std::vector<std::string> kProgram = {demo("immediate"), "--offscreen", "--frames", "2",
+                                           "--size", "32x32"};
+
+ProcessResult record(const std::vector<std::string>& options)
+{
+    std::vector<std::string> args = {nprglCommand(), "record", "--style", "none"};
+    args.insert(args.end(), options.begin(), options.end());
+    args.push_back("--");
+    args.insert(args.end(), kProgram.begin(), kProgram.end());
+    return runProcess(args, {{"NPRGL_LOG_LEVEL", ""}}, 120);
+}
+
+// The program alone with the library preloaded and NPRGL_RECORD set: the shim's recorder.
+ProcessResult recordByEnvironment(const std::string& file, const std::string& force = "")
+{
+    return runProcess(kProgram,
+                      {{"LD_PRELOAD", preloadValue()}, {"NPRGL_RECORD", file},
+                       {"NPRGL_STYLE", "none"}, {"NPRGL_RECORD_FORCE", force},
+                       {"NPRGL_RECORD_PID", ""}, {"NPRGL_LOG_LEVEL", ""}},
+                      120);
+}
+
+int framesIn(const std::string& file)
+{
+    capture::CaptureReader reader;
+    std::string error;
+    return reader.open(file, error) ? int(reader.frames().size()) : -1;
+}
+
+} // namespace
+
+// `nprgl record -o notes.txt` used to replace the text file with a capture (and, run as root,
+// NPRGL_RECORD could overwrite a system file): a file that is not a capture is never
+// overwritten; a capture only with --force, or by the variable under a new name beside it.
+TEST(CaptureCommands, RecordingNeverOverwritesWhatIsNotOurs)
+{
+    const std::string dir = freshDir("capture-commands");
+    const std::string notes = dir + "/notes.txt";
+    writeAll(notes, "my notes\n");
+    ProcessResult r = record({"-o", notes});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_TRUE(has(r.err, "nprgl: cannot record to " + notes +
+                               ": it exists and is not an nprgl capture"))
+        << r.err;
+    EXPECT_FALSE(has(r.err, "recording to")) << "the program started: " << r.err;
+    EXPECT_EQ(readAll(notes), "my notes\n");
+    // The shim: the program runs as it would, unrecorded, and says why.
+    r = recordByEnvironment(notes);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(has(r.err, "not recording: " + notes + " exists and is not an nprgl capture"))
+        << r.err;
+    EXPECT_EQ(readAll(notes), "my notes\n");
+
+    const std::string capture = dir + "/run.nprgl";
+    r = record({"-o", capture});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string first = readAll(capture);
+    r = record({"-o", capture});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_TRUE(has(r.err, capture + " is a capture already; --force replaces it")) << r.err;
+    EXPECT_EQ(readAll(capture), first);
+    r = record({"--force", "-o", capture});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(framesIn(capture), 2);
+    EXPECT_NE(readAll(capture), first); // a new recording (another start time and pid)
+
+    const std::string kept = readAll(capture);
+    r = recordByEnvironment(capture);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(has(r.err, capture + " is a capture already: recording to " + dir +
+                               "/run.1.nprgl instead"))
+        << r.err;
+    EXPECT_EQ(readAll(capture), kept);
+    EXPECT_EQ(framesIn(dir + "/run.1.nprgl"), 2);
+    r = recordByEnvironment(capture, "1");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readAll(capture), kept);
+    EXPECT_FALSE(fs::exists(dir + "/run.2.nprgl"));
+}
+
+// A FIFO, a device or a directory as the recording: refused at once by the command, before
+// the program starts; the shim runs the program unrecorded (a FIFO used to hang it at start).
+TEST(CaptureCommands, RecordingToASpecialFileIsRefusedAtOnce)
+{
+    const std::string dir = freshDir("capture-commands");
+    const std::string fifo = dir + "/pipe.nprgl";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    for (const auto& [path, reason] : std::vector<std::pair<std::string, std::string>>{
+             {fifo, "is a FIFO (named pipe)"},
+             {"/dev/null", "is a character device"},
+             {dir, "is a directory"}}) {
+        SCOPED_TRACE(path);
+        ProcessResult r = record({"-o", path});
+        EXPECT_FALSE(r.hung);
+        EXPECT_EQ(r.exitCode, 1) << r.err;
+        EXPECT_TRUE(has(r.err, "nprgl: cannot record to " + path + ": it " + reason)) << r.err;
+        r = recordByEnvironment(path);
+        EXPECT_FALSE(r.hung);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_TRUE(has(r.err, "not recording: " + path + " " + reason)) << r.err;
+    }
+}
