@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <map>
+#include <set>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -60,15 +62,23 @@ bool CaptureReader::open(const std::string& path, std::string& error)
     reset();
     mPath = path;
     try {
-        int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+        // Looked at before it is opened: opening a FIFO waits for a writer, and a device may
+        // do something when opened. O_NONBLOCK covers a file swapped in between.
+        struct stat st;
+        if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+            error = path + ": " + specialFileKind(st.st_mode) + ", not a capture file";
+            reset();
+            return false;
+        }
+        int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
         if (fd < 0) {
             error = path + ": cannot open: " + std::strerror(errno);
+            reset();
             return false;
         }
         mFd = fd;
-        struct stat st;
         if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-            error = path + ": not a regular file";
+            error = path + ": " + specialFileKind(st.st_mode) + ", not a capture file";
             reset();
             return false;
         }
@@ -143,7 +153,10 @@ bool CaptureReader::openSource(std::string& error)
         mBlobIndex.clear();
         mBlobBytes = 0;
         mCallCounts.clear();
-        if (!why.empty()) mWarning = why + "; read the file by scanning instead";
+        if (!why.empty()) {
+            addDamage(mFileSize - kFooterSize, 0,
+                      why + "; the index is unusable: the file was read by scanning instead");
+        }
         scan();
     }
     return true;
@@ -166,7 +179,14 @@ void CaptureReader::reset()
     mBlobBytes = 0;
     mCallCounts.clear();
     mRecovered = false;
-    mWarning.clear();
+    mClosed = false;
+    mDamage.clear();
+    mIncompleteEnd.clear();
+    mIndexed.clear();
+    mIndexedBlobs.clear();
+    mSawIndex = false;
+    mMissing.clear();
+    mMissingBlobs = 0;
 }
 
 bool CaptureReader::readAt(uint64_t offset, void* dst, size_t size) const
@@ -306,6 +326,7 @@ bool CaptureReader::loadIndex(std::string& why)
         why = at(footAt, detail);
         return false;
     }
+    mClosed = true; // a footer whose checksum holds: whatever is wrong now is damage
     uint64_t indexAt = load64(payload.data());
     ChunkSpan index;
     if (indexAt < mFirstChunk || indexAt > footAt) {
@@ -321,6 +342,11 @@ bool CaptureReader::loadIndex(std::string& why)
     }
     if (index.header.type != kChunkIndex) {
         why = at(indexAt, "expected the index chunk 'INDX', found " + quoted(index.header.type));
+        return false;
+    }
+    if (index.end() != footAt) {
+        why = at(index.end(), std::to_string(footAt - index.end()) +
+                                  " stray bytes between the index and the footer");
         return false;
     }
     if (!readPayload(index, footAt, payload, detail)) {
@@ -406,49 +432,219 @@ bool CaptureReader::loadIndex(std::string& why)
 void CaptureReader::scan()
 {
     mRecovered = true;
-    std::vector<uint8_t> payload;
     uint64_t offset = mFirstChunk;
     while (offset < mFileSize) {
         ChunkSpan span;
         std::string why;
-        bool ok = chunkAt(offset, mFileSize, span, why) && checksumMatches(span, why);
-        uint8_t body[kBodyHeaderSize];
-        uint32_t type = span.header.type;
-        if (ok && (type == kChunkFrame || type == kChunkBlob)) {
-            uint64_t stored = span.header.payloadSize - kBodyHeaderSize;
-            if (span.header.payloadSize < kBodyHeaderSize ||
-                !readAt(span.payloadOffset(), body, sizeof body)) {
-                ok = false;
-                why = quoted(type) + " chunk too short for its header";
-            } else if (type == kChunkFrame) {
-                FrameInfo f{load32(body), load64(body + 8), offset, stored, load64(body + 16)};
-                ok = plausibleBody(load32(body + 4), stored, f.rawSize);
-                if (ok) mFrames.push_back(f);
-                else why = "impossible frame sizes or codec";
-            } else {
-                BlobInfo b{load64(body), offset, stored, load64(body + 8)};
-                ok = plausibleBody(load32(body + 16), stored, b.rawSize);
-                if (ok) addBlob(b);
-                else why = "impossible blob sizes or codec";
-            }
-        } else if (ok && type == kChunkCounts) {
-            CallCounts counts;
-            ok = readPayload(span, kMaxSmallChunk, payload, why);
-            ByteReader in(payload.data(), payload.size(), span.payloadOffset());
-            if (ok && !decodeCallCounts(in, counts)) {
-                ok = false;
-                why = in.error();
-            }
-            if (ok) mCallCounts = std::move(counts);
+        if (takeChunk(offset, span, why)) {
+            offset = span.end();
+            continue;
         }
-        // Other chunk types (INDX, FOOT, kinds added later) are skipped.
-        if (!ok) {
-            if (!mWarning.empty()) mWarning += "; ";
-            mWarning += at(offset, why + "; the capture ends before this chunk");
+        const uint64_t next = nextChunk(offset);
+        const uint64_t skipped = next - offset;
+        if (next == mFileSize && cutChunkAt(offset)) {
+            mIncompleteEnd = at(offset, "the file ends inside a chunk (" + why + "): its last " +
+                                            std::to_string(skipped) + " bytes are an " +
+                                            "incomplete chunk, cut off as it was written");
             break;
         }
-        offset = span.end();
+        addDamage(offset, skipped,
+                  why + "; " +
+                      (next == mFileSize
+                           ? "nothing readable follows (" + std::to_string(skipped) +
+                                 " bytes to the end of the file)"
+                           : "skipped " + std::to_string(skipped) +
+                                 " bytes to the next whole chunk at offset " +
+                                 std::to_string(next)));
+        offset = next;
     }
+    findMissingFrames();
+}
+
+bool CaptureReader::takeChunk(uint64_t offset, ChunkSpan& span, std::string& why)
+{
+    if (!chunkAt(offset, mFileSize, span, why) || !checksumMatches(span, why)) return false;
+    std::vector<uint8_t> payload;
+    uint8_t body[kBodyHeaderSize];
+    const uint32_t type = span.header.type;
+    const uint64_t stored = span.header.payloadSize - kBodyHeaderSize;
+    if (type == kChunkFrame || type == kChunkBlob) {
+        if (span.header.payloadSize < kBodyHeaderSize ||
+            !readAt(span.payloadOffset(), body, sizeof body)) {
+            why = quoted(type) + " chunk too short for its header";
+            return false;
+        }
+    }
+    if (type == kChunkFrame) {
+        FrameInfo f{load32(body), load64(body + 8), offset, stored, load64(body + 16)};
+        if (!plausibleBody(load32(body + 4), stored, f.rawSize)) {
+            why = "impossible frame sizes or codec";
+            return false;
+        }
+        mFrames.push_back(f);
+    } else if (type == kChunkBlob) {
+        BlobInfo b{load64(body), offset, stored, load64(body + 8)};
+        if (!plausibleBody(load32(body + 16), stored, b.rawSize)) {
+            why = "impossible blob sizes or codec";
+            return false;
+        }
+        addBlob(b);
+    } else if (type == kChunkCounts) {
+        CallCounts counts;
+        if (!readPayload(span, kMaxSmallChunk, payload, why)) return false;
+        ByteReader in(payload.data(), payload.size(), span.payloadOffset());
+        if (!decodeCallCounts(in, counts)) {
+            why = in.error();
+            return false;
+        }
+        mCallCounts = std::move(counts);
+    } else if (type == kChunkIndex) {
+        // Not used for offsets (the file is being scanned because they may be wrong), only
+        // to know which frames the file held.
+        if (!readPayload(span, mFileSize, payload, why)) return false;
+        ByteReader in(payload.data(), payload.size(), span.payloadOffset());
+        const uint64_t frameCount = in.u64();
+        const uint64_t blobCount = in.u64();
+        in.u64();
+        if (!in.ok() || frameCount > in.remaining() / kIndexFrameSize ||
+            blobCount > (in.remaining() - frameCount * kIndexFrameSize) / kIndexBlobSize) {
+            why = "index counts cannot fit in its chunk";
+            return false;
+        }
+        mIndexed.clear();
+        for (uint64_t i = 0; i < frameCount; ++i) {
+            in.u64();
+            FrameId id{in.u32(), 0};
+            in.u32();
+            id.frameNumber = in.u64();
+            in.u64();
+            in.u64();
+            mIndexed.push_back(id);
+        }
+        mIndexedBlobs.clear();
+        for (uint64_t i = 0; i < blobCount; ++i) {
+            mIndexedBlobs.push_back(in.u64());
+            in.u64();
+            in.u64();
+            in.u64();
+        }
+        mSawIndex = true;
+    } else if (type == kChunkFooter) {
+        mClosed = true;
+    }
+    // Chunk kinds added later are skipped.
+    return true;
+}
+
+bool CaptureReader::cutChunkAt(uint64_t offset) const
+{
+    const uint64_t left = mFileSize - offset;
+    uint8_t head[kChunkHeaderSize] = {};
+    if (left < 4) return true;
+    if (!readAt(offset, head, size_t(std::min<uint64_t>(left, kChunkHeaderSize)))) return false;
+    if (!knownChunkType(load32(head))) return false;
+    if (left >= 8 && load32(head + 4) != 0) return false;
+    if (left < kChunkHeaderSize) return true;
+    // A whole header: it must promise more than the file holds, and no absurd amount.
+    const uint64_t size = load64(head + 8);
+    return size > left - kChunkHeaderSize && size <= 2 * kMaxRawSize;
+}
+
+bool CaptureReader::chunkIsWhole(uint64_t offset) const
+{
+    ChunkSpan span;
+    std::string why;
+    if (!chunkAt(offset, mFileSize, span, why) || !knownChunkType(span.header.type) ||
+        span.header.flags != 0 || !checksumMatches(span, why)) {
+        return false;
+    }
+    const uint32_t type = span.header.type;
+    if (type != kChunkFrame && type != kChunkBlob) return true;
+    uint8_t body[kBodyHeaderSize];
+    if (span.header.payloadSize < kBodyHeaderSize ||
+        !readAt(span.payloadOffset(), body, sizeof body)) {
+        return false;
+    }
+    const uint64_t stored = span.header.payloadSize - kBodyHeaderSize;
+    return type == kChunkFrame ? plausibleBody(load32(body + 4), stored, load64(body + 16))
+                               : plausibleBody(load32(body + 16), stored, load64(body + 8));
+}
+
+uint64_t CaptureReader::nextChunk(uint64_t from) const
+{
+    // Read in windows; a candidate is a known type followed by zero flags, and only those
+    // are checked whole (their checksum read).
+    constexpr size_t kWindow = size_t(1) << 16;
+    std::vector<uint8_t> window(kWindow + 8);
+    for (uint64_t base = from + 1; base + kChunkHeaderSize <= mFileSize; base += kWindow) {
+        const size_t n = size_t(std::min<uint64_t>(kWindow + 8, mFileSize - base));
+        if (!readAt(base, window.data(), n)) return mFileSize;
+        for (size_t i = 0; i + 8 <= n && i < kWindow; ++i) {
+            if (load32(window.data() + i + 4) != 0 || !knownChunkType(load32(window.data() + i)))
+                continue;
+            if (chunkIsWhole(base + i)) return base + i;
+        }
+    }
+    return mFileSize;
+}
+
+void CaptureReader::addDamage(uint64_t offset, uint64_t size, const std::string& message)
+{
+    // Messages from loadIndex already name the file and offset.
+    const bool named = message.compare(0, mPath.size() + 2, mPath + ": ") == 0;
+    mDamage.push_back(Damage{offset, size, named ? message : at(offset, message)});
+}
+
+void CaptureReader::findMissingFrames()
+{
+    mMissing.clear();
+    mMissingBlobs = 0;
+    std::map<uint32_t, std::set<uint64_t>> found;
+    for (const FrameInfo& f : mFrames) found[f.contextId].insert(f.frameNumber);
+    if (mSawIndex) {
+        for (const FrameId& id : mIndexed) {
+            auto it = found.find(id.contextId);
+            if (it == found.end() || !it->second.count(id.frameNumber)) mMissing.push_back(id);
+        }
+        for (BlobHash hash : mIndexedBlobs) mMissingBlobs += !hasBlob(hash);
+        return;
+    }
+    if (mDamage.empty()) return;
+    // Without an index, a context's frames are numbered one after another: a gap is a loss.
+    // Each lost frame took a chunk of the skipped bytes, which bounds the count.
+    uint64_t skipped = 0;
+    for (const Damage& d : mDamage) skipped += d.size;
+    uint64_t budget = skipped / (kChunkHeaderSize + kBodyHeaderSize) + 1;
+    for (const auto& [context, numbers] : found) {
+        uint64_t previous = 0;
+        bool first = true;
+        for (uint64_t n : numbers) {
+            for (uint64_t m = previous + 1; !first && m < n && budget > 0; ++m, --budget)
+                mMissing.push_back(FrameId{context, m});
+            previous = n;
+            first = false;
+        }
+    }
+}
+
+std::vector<std::string> CaptureReader::notes() const
+{
+    std::vector<std::string> lines;
+    for (const Damage& d : mDamage) lines.push_back(d.message);
+    if (!mIncompleteEnd.empty()) lines.push_back(mIncompleteEnd);
+    if (mRecovered && !mClosed) {
+        lines.push_back(mPath + ": not closed by its recording (no index at its end): " +
+                        std::to_string(mFrames.size()) + " frame" +
+                        (mFrames.size() == 1 ? "" : "s") + " found by scanning");
+    }
+    return lines;
+}
+
+std::string CaptureReader::warning() const
+{
+    std::string joined;
+    for (const std::string& line : notes()) joined += (joined.empty() ? "" : "; ") + line;
+    return joined;
 }
 
 bool CaptureReader::addBlob(const BlobInfo& blob)

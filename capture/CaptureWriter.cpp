@@ -11,6 +11,7 @@
 #include <new>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
 
@@ -84,7 +85,8 @@ CaptureWriter::~CaptureWriter()
     ZSTD_freeCCtx(mCctx);
 }
 
-bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::string& error)
+bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::string& error,
+                         bool replaceCapture)
 {
     if (ownedByOtherProcess()) dropInheritedFile();
     std::lock_guard lock(mMutex);
@@ -105,9 +107,38 @@ bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::str
             return false;
         }
 
-        int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        // Not truncated on open: what is there is looked at first. Looked at before it is
+        // opened too, as opening a FIFO for writing waits for a reader.
+        std::string why;
+        const Target target = checkTarget(path, why);
+        if (target == Target::Other || target == Target::Refused ||
+            (target == Target::Capture && !replaceCapture)) {
+            error = path + ": " + (target == Target::Capture ? "an nprgl capture is there; " +
+                                                                  std::string("not replaced")
+                                                             : why);
+            return false;
+        }
+        int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NONBLOCK | O_NOCTTY, 0644);
         if (fd < 0) {
             error = path + ": cannot create: " + std::strerror(errno);
+            return false;
+        }
+        // The same checks on what was opened, in case the path changed in between.
+        struct stat st;
+        uint8_t magic[sizeof kMagic] = {};
+        const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+        const bool empty = regular && st.st_size == 0;
+        const bool capture = regular &&
+                             ::pread(fd, magic, sizeof magic, 0) == ssize_t(sizeof magic) &&
+                             std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+        if (!empty && !(capture && replaceCapture)) {
+            error = path + ": changed while it was being opened; left as it is";
+            ::close(fd);
+            return false;
+        }
+        if (!empty && ::ftruncate(fd, 0) != 0) {
+            error = path + ": cannot truncate: " + std::strerror(errno);
+            ::close(fd);
             return false;
         }
         if (int err = writeAll(fd, head.data(), head.size())) {
@@ -125,6 +156,35 @@ bool CaptureWriter::open(const std::string& path, const Metadata& meta, std::str
         error = path + ": cannot open: " + e.what();
         return false;
     }
+}
+
+CaptureWriter::Target CaptureWriter::checkTarget(const std::string& path, std::string& why)
+{
+    why.clear();
+    struct stat st;
+    if (::stat(path.c_str(), &st) != 0) {
+        if (errno == ENOENT) return Target::Free;
+        why = std::string("cannot look at it: ") + std::strerror(errno);
+        return Target::Refused;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        why = specialFileKind(st.st_mode) + "; a capture is written only to a regular file";
+        return Target::Refused;
+    }
+    if (st.st_size == 0) return Target::Free;
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) {
+        why = std::string("cannot read it to see whether it is a capture: ") +
+              std::strerror(errno) + "; left as it is";
+        return Target::Refused;
+    }
+    uint8_t magic[sizeof kMagic] = {};
+    const bool capture = ::pread(fd, magic, sizeof magic, 0) == ssize_t(sizeof magic) &&
+                         std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+    ::close(fd);
+    if (capture) return Target::Capture;
+    why = "exists and is not an nprgl capture; it is never overwritten";
+    return Target::Other;
 }
 
 std::string CaptureWriter::encodeHeader(const Metadata& meta, std::vector<uint8_t>& head)

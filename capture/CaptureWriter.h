@@ -28,8 +28,22 @@ public:
     CaptureWriter(const CaptureWriter&) = delete;
     CaptureWriter& operator=(const CaptureWriter&) = delete;
 
-    // Creates/truncates path and writes the header (magic, format version, metadata).
-    bool open(const std::string& path, const Metadata& meta, std::string& error);
+    // What is at a path a capture is to be written to.
+    enum class Target {
+        Free,    // nothing, or an empty regular file
+        Capture, // a regular file that starts as an nprgl capture
+        Other,   // a regular file of anything else, never overwritten
+        Refused, // a FIFO, device, directory, or a path that cannot be checked
+    };
+    // Looks at path without opening anything but a regular file (never blocks); why says
+    // what it is when not Free or Capture.
+    static Target checkTarget(const std::string& path, std::string& why);
+
+    // Creates path, or replaces the capture there when replaceCapture, and writes the header
+    // (magic, format version, metadata). Anything else at path is refused and left as it is:
+    // a file that is not a capture, a capture unless replaceCapture, a FIFO, a device...
+    bool open(const std::string& path, const Metadata& meta, std::string& error,
+              bool replaceCapture = true);
     // Writes the header again with meta, which must encode to as many bytes as open()'s (the
     // same fields, another drawable size): a program resizes its window after making its
     // context current, before its first frame is shown.

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <sys/stat.h>
+
 namespace nprgl::capture {
 
 namespace {
@@ -94,6 +96,22 @@ std::string chunkTypeName(uint32_t type)
         name += c;
     }
     return name;
+}
+
+bool knownChunkType(uint32_t type)
+{
+    return type == kChunkFrame || type == kChunkBlob || type == kChunkCounts ||
+           type == kChunkIndex || type == kChunkFooter;
+}
+
+std::string specialFileKind(unsigned mode)
+{
+    if (S_ISDIR(mode)) return "is a directory";
+    if (S_ISFIFO(mode)) return "is a FIFO (named pipe)";
+    if (S_ISCHR(mode)) return "is a character device";
+    if (S_ISBLK(mode)) return "is a block device";
+    if (S_ISSOCK(mode)) return "is a socket";
+    return "is not a regular file";
 }
 
 bool plausibleBody(uint32_t codec, uint64_t storedSize, uint64_t rawSize)

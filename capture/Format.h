@@ -71,6 +71,11 @@ void finishChunk(std::vector<uint8_t>& out, size_t start);
 
 // "FRAM", or the hex value when the type is not printable.
 std::string chunkTypeName(uint32_t type);
+// Whether type is one of the chunk types that follow META.
+bool knownChunkType(uint32_t type);
+// "is a directory", "is a FIFO (named pipe)"...: what a stat mode that is not a regular file
+// names; the reason a capture path is refused before it is opened for reading or writing.
+std::string specialFileKind(unsigned mode);
 // Whether a body of the given codec and stored size can hold rawSize bytes.
 bool plausibleBody(uint32_t codec, uint64_t storedSize, uint64_t rawSize);
 

@@ -1,6 +1,7 @@
 #include "cli/CaptureCommands.h"
 
 #include "capture/CaptureReader.h"
+#include "capture/ReadReport.h"
 #include "frame/CaptureBlobs.h"
 #include "frame/FrameExport.h"
 #include "frame/StateTracker.h"
@@ -38,6 +39,56 @@ int fail(const std::string& message)
 bool parseFrames(const std::string& text, FrameSet& out, std::string& error)
 {
     return text.empty() || FrameSet::parse(text, out, error);
+}
+
+void say(const std::string& line)
+{
+    std::fprintf(stderr, "nprgl: %s\n", line.c_str());
+}
+
+// Opens a capture and says what the reader found at open: damaged stretches (each with its
+// offset), an incomplete last chunk, a recording that did not close the file.
+bool openCapture(const std::string& file, capture::CaptureReader& reader, std::string& error)
+{
+    if (!reader.open(file, error)) return false;
+    for (const std::string& note : reader.notes()) say(note);
+    return true;
+}
+
+// The exit status of a command that read what it could: 1, with a summary, when anything
+// was damaged or lost; 0 otherwise.
+int finish(const capture::ReadReport& report,
+           uint64_t framesRead = capture::ReadReport::kUnknown)
+{
+    if (!report.damaged()) return 0;
+    say(report.summary(framesRead));
+    return 1;
+}
+
+// "1-3, 7" for the frames of one context, to say what a selection could have chosen.
+std::string framesOf(const capture::CaptureReader& reader, uint32_t context)
+{
+    std::vector<uint64_t> numbers;
+    for (const auto& f : reader.frames())
+        if (f.contextId == context) numbers.push_back(f.frameNumber);
+    return numbers.empty() ? "none" : FrameSet::describe(numbers);
+}
+
+// "context 1: 1-3; context 2: 1-2".
+std::string describeFrames(const capture::CaptureReader& reader)
+{
+    std::vector<capture::CaptureReader::FrameId> ids;
+    for (const auto& f : reader.frames()) ids.push_back({f.contextId, f.frameNumber});
+    return capture::ReadReport::describe(ids);
+}
+
+std::string contextsOf(const capture::CaptureReader& reader)
+{
+    std::vector<uint64_t> ids;
+    for (const auto& f : reader.frames())
+        if (std::find(ids.begin(), ids.end(), f.contextId) == ids.end()) ids.push_back(f.contextId);
+    std::sort(ids.begin(), ids.end());
+    return ids.empty() ? "none" : FrameSet::describe(ids);
 }
 
 } // namespace
@@ -83,13 +134,45 @@ int replayCommand(const ReplayCommandOptions& options)
         std::filesystem::create_directories(replay.outDir, ec);
         if (ec) return fail("cannot create " + replay.outDir + ": " + ec.message());
     }
+    capture::CaptureReader reader;
+    if (!openCapture(options.file, reader, error)) return fail(error);
+    capture::ReadReport report(reader);
+    // Nothing to replay is a failure, said before any work is done.
+    const uint32_t context = options.context ? options.context : Replayer::defaultContext(reader);
+    size_t inContext = 0, selected = 0, toRead = 0;
+    for (const auto& f : reader.frames()) {
+        if (f.contextId != context) continue;
+        ++inContext;
+        selected += replay.frames.empty() || replay.frames.contains(f.frameNumber);
+        toRead += replay.frames.empty() || f.frameNumber <= replay.frames.last();
+    }
+    if (reader.frames().empty()) {
+        finish(report, 0);
+        return fail(options.file + ": no frame to replay");
+    }
+    if (inContext == 0) {
+        return fail(options.file + ": --context " + std::to_string(options.context) +
+                    ": no such context (the capture has context " + contextsOf(reader) + ")");
+    }
+    if (selected == 0) {
+        return fail(options.file + ": --frames " + options.frames + " selects none of context " +
+                    std::to_string(context) + "'s frames (" + framesOf(reader, context) + ")");
+    }
     uint64_t written = 0;
-    if (!Replayer::run(options.file, replay, error, &written)) return fail(error);
+    const bool ran = Replayer::run(reader, replay, error, &written, &report);
     if (!replay.outDir.empty()) {
         std::fprintf(stderr, "nprgl: wrote %llu frames to %s\n",
                      static_cast<unsigned long long>(written), replay.outDir.c_str());
     }
-    return 0;
+    if (!ran) {
+        finish(report);
+        return fail(error);
+    }
+    const int status = finish(report, toRead - report.unreadable());
+    if (!replay.outDir.empty() && written == 0) {
+        return fail(options.file + ": no frame could be replayed");
+    }
+    return status;
 }
 
 int dumpCommand(const std::string& file, const std::string& framesText, const std::string& grep)
@@ -98,34 +181,53 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
     FrameSet frames;
     if (!parseFrames(framesText, frames, error)) return usage("--frames: " + error);
     capture::CaptureReader reader;
-    if (!reader.open(file, error)) return fail(error);
+    if (!openCapture(file, reader, error)) return fail(error);
+    capture::ReadReport report(reader);
     CaptureBlobs blobs(reader);
     const OpcodeMap opcodes(reader.metadata().opcodeNames);
     std::vector<uint8_t> calls;
     const auto& list = reader.frames();
     // Calls are numbered from 0 in each context's stream, the frames left out included, so
-    // a call keeps its number whatever --frames and --grep select.
+    // a call keeps its number whatever --frames and --grep select (after a lost frame the
+    // numbers go on without its calls).
     std::map<uint32_t, uint64_t> nextCall;
+    uint64_t printed = 0;
     for (size_t i = 0; i < list.size(); ++i) {
         const bool selected = frames.empty() || frames.contains(list[i].frameNumber);
-        if (!selected && (frames.empty() || list[i].frameNumber > frames.last())) continue;
-        if (!reader.readFrame(i, calls, error)) return fail(error);
+        if (!selected && list[i].frameNumber > frames.last()) continue;
+        if (!reader.readFrame(i, calls, error)) {
+            if (selected) {
+                say(error + "; frame " + std::to_string(list[i].frameNumber) + " skipped");
+                report.frameLost(i);
+            }
+            continue;
+        }
         std::string out = "== context " + std::to_string(list[i].contextId) + " frame " +
                           std::to_string(list[i].frameNumber) + " ==\n";
         bool ok = CallPrinter::printFrame(calls.data(), calls.size(), &blobs, &opcodes, grep, out,
                                           error, nullptr, &nextCall[list[i].contextId]);
-        if (!selected) {
-            if (!ok) return fail(file + ": frame " + std::to_string(list[i].frameNumber) +
-                                 " at " + std::to_string(list[i].offset) + ": " + error);
-            continue;
-        }
+        if (!selected) continue; // numbered only; said if it is selected
         std::fwrite(out.data(), 1, out.size(), stdout);
         if (!ok) {
-            return fail(file + ": frame " + std::to_string(list[i].frameNumber) + " at " +
-                        std::to_string(list[i].offset) + ": " + error);
+            // A call that does not decode (a damaged chunk whose checksum held, a lost blob):
+            // the frame is printed up to it.
+            std::fflush(stdout);
+            say(file + ": frame " + std::to_string(list[i].frameNumber) + " at " +
+                std::to_string(list[i].offset) + ": " + error + "; the rest of it skipped");
+            report.frameLost(i);
+            continue;
         }
+        ++printed;
     }
-    return 0;
+    const int status = finish(report, printed);
+    if (printed == 0) {
+        return fail(list.empty() ? file + ": no frame to print"
+                    : report.unreadable() > 0
+                        ? file + ": no frame could be read"
+                        : file + ": --frames " + framesText + " selects none of the capture's " +
+                              "frames (" + describeFrames(reader) + ")");
+    }
+    return status;
 }
 
 namespace {
@@ -154,13 +256,16 @@ int infoCommand(const std::string& file)
 {
     std::string error;
     capture::CaptureReader reader;
-    if (!reader.open(file, error)) return fail(error);
+    if (!openCapture(file, reader, error)) return fail(error);
+    capture::ReadReport report(reader);
     const capture::Metadata& m = reader.metadata();
     std::string cmd;
     for (const std::string& a : m.commandLine) cmd += (cmd.empty() ? "" : " ") + a;
     std::printf("file:        %s (%llu bytes, format version %u%s)\n", file.c_str(),
                 static_cast<unsigned long long>(reader.fileBytes()), reader.version(),
-                reader.recovered() ? ", recovered: the recording did not close the file" : "");
+                !reader.recovered()        ? ""
+                : !reader.damage().empty() ? ", recovered: damaged, read by scanning"
+                                           : ", recovered: the recording did not close the file");
     std::printf("program:     %s\ncommand:     %s\npid:         %u\n", m.program.c_str(),
                 cmd.c_str(), m.pid);
     std::printf("GL:          %s | %s | %s\nsize:        %dx%d\n", m.glVendor.c_str(),
@@ -183,14 +288,21 @@ int infoCommand(const std::string& file)
     uint64_t rawBytes = 0;
     const auto& list = reader.frames();
     for (size_t i = 0; i < list.size(); ++i) {
-        ++perContext[list[i].contextId];
-        rawBytes += list[i].rawSize;
-        if (!reader.readFrame(i, data, error)) return fail(error);
+        if (!reader.readFrame(i, data, error)) {
+            say(error + "; frame " + std::to_string(list[i].frameNumber) + " not counted");
+            report.frameLost(i);
+            continue;
+        }
         std::string text;
         if (!CallPrinter::printFrame(data.data(), data.size(), &blobs, &opcodes, "", text,
                                      error)) {
-            return fail(file + ": frame " + std::to_string(list[i].frameNumber) + ": " + error);
+            say(file + ": frame " + std::to_string(list[i].frameNumber) + " at " +
+                std::to_string(list[i].offset) + ": " + error + "; not counted");
+            report.frameLost(i);
+            continue;
         }
+        ++perContext[list[i].contextId];
+        rawBytes += list[i].rawSize;
         for (size_t pos = 0; pos < text.size();) {
             size_t eol = std::min(text.find('\n', pos), text.size());
             size_t paren = text.find('(', pos);
@@ -204,7 +316,7 @@ int infoCommand(const std::string& file)
             pos = eol + 1;
         }
     }
-    std::printf("frames:      %zu", list.size());
+    std::printf("frames:      %zu", list.size() - report.unreadable());
     for (const auto& [ctx, n] : perContext) {
         std::printf("  (context %u: %llu)", ctx, static_cast<unsigned long long>(n));
     }
@@ -229,7 +341,8 @@ int infoCommand(const std::string& file)
         std::printf("  %10llu  %s%s\n", static_cast<unsigned long long>(n), name.c_str(),
                     frames.c_str());
     }
-    return 0;
+    std::fflush(stdout);
+    return finish(report, list.size() - report.unreadable());
 }
 
 } // namespace nprgl::cli
@@ -244,17 +357,27 @@ int exportCommand(const std::string& file, uint64_t frame, const std::string& ou
     }
     std::string error;
     capture::CaptureReader reader;
-    if (!reader.open(file, error)) return fail(error);
+    if (!openCapture(file, reader, error)) return fail(error);
+    capture::ReadReport report(reader);
     const auto& frames = reader.frames();
     uint32_t ctx = context ? context : (frames.empty() ? 1 : frames.front().contextId);
     CaptureBlobs blobs(reader);
     const OpcodeMap opcodes(reader.metadata().opcodeNames);
     StateTracker tracker;
     std::vector<uint8_t> calls;
+    uint64_t read = 0;
     // Every earlier frame runs too: it builds the lists, buffers and arrays frame N uses.
     for (size_t i = 0; i < frames.size(); ++i) {
         if (frames[i].contextId != ctx) continue;
-        if (!reader.readFrame(i, calls, error)) return fail(error);
+        if (!reader.readFrame(i, calls, error)) {
+            // The frames after a lost one are built on state it may have made.
+            say(error + "; frame " + std::to_string(frames[i].frameNumber) + " skipped");
+            report.frameLost(i);
+            if (frames[i].frameNumber != frame) continue;
+            finish(report, read);
+            return fail(file + ": frame " + std::to_string(frame) + " could not be read");
+        }
+        ++read;
         if (!tracker.runFrame(calls.data(), calls.size(), &blobs, error, &opcodes)) {
             return fail(file + ": frame " + std::to_string(frames[i].frameNumber) + " at " +
                         std::to_string(frames[i].offset) + ": " + error);
@@ -269,10 +392,11 @@ int exportCommand(const std::string& file, uint64_t frame, const std::string& ou
         }
         std::fprintf(stderr, "nprgl: wrote %zu objects of frame %llu to %s\n", objects,
                      static_cast<unsigned long long>(frame), output.c_str());
-        return 0;
+        return finish(report, read);
     }
+    finish(report, read);
     return fail(file + ": no frame " + std::to_string(frame) + " in context " +
-                std::to_string(ctx));
+                std::to_string(ctx) + " (its frames: " + framesOf(reader, ctx) + ")");
 }
 
 } // namespace nprgl::cli

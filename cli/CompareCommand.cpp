@@ -1,5 +1,6 @@
 #include "cli/CompareCommand.h"
 
+#include "capture/CaptureReader.h"
 #include "common/FrameFidelity.h"
 #include "common/PngImage.h"
 #include "styles/Presets.h"
@@ -186,7 +187,12 @@ std::string shadingChain(const CompareOptions& options)
 
 int compareCommand(const CompareOptions& options)
 {
-    if (!fs::exists(options.file)) return fail(options.file + ": no such file");
+    {
+        // Refused here, once, rather than by each replay below (a FIFO, a device, no file).
+        capture::CaptureReader reader;
+        std::string error;
+        if (!reader.open(options.file, error)) return fail(error);
+    }
     std::error_code ec;
     // A private scratch folder for the replays' frames, removed at the end.
     const fs::path tmp = fs::temp_directory_path(ec);

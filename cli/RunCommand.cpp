@@ -1,7 +1,7 @@
 #include "cli/RunCommand.h"
 
+#include "capture/CaptureWriter.h"
 #include "cli/RecordSupervisor.h"
-
 #include "common/FrameSet.h"
 #include "common/Log.h"
 #include "common/ScreenshotSpec.h"
@@ -137,6 +137,27 @@ int runProgram(const RunOptions& options)
         std::string file = options.recordFile.empty()
                                ? fs::path(options.command[0]).filename().string() + ".nprgl"
                                : options.recordFile;
+        // Refused before the program starts: a file that is not a capture is never
+        // overwritten, a capture only with --force, and a FIFO or device is never opened.
+        std::string why;
+        const auto target = capture::CaptureWriter::checkTarget(file, why);
+        if (target == capture::CaptureWriter::Target::Other ||
+            target == capture::CaptureWriter::Target::Refused) {
+            std::fprintf(stderr, "nprgl: cannot record to %s: it %s\n", file.c_str(), why.c_str());
+            return 1;
+        }
+        if (target == capture::CaptureWriter::Target::Capture && !options.recordForce) {
+            std::fprintf(stderr,
+                         "nprgl: %s is a capture already; --force replaces it, -o FILE writes "
+                         "another\n",
+                         file.c_str());
+            return 1;
+        }
+        if (options.recordForce) {
+            setenv("NPRGL_RECORD_FORCE", "1", 1);
+        } else {
+            unsetenv("NPRGL_RECORD_FORCE");
+        }
         // Absolute: the program may change its directory before its first frame.
         recordPath = fs::absolute(file).string();
         setenv("NPRGL_RECORD", recordPath.c_str(), 1);

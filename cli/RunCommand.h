@@ -16,6 +16,7 @@ struct RunOptions {
     bool record = false;
     std::string recordFile;   // default: <program>.nprgl in the current directory
     std::string recordFrames; // A-B
+    bool recordForce = false; // replace recordFile if it is a capture
 };
 
 // Checks the options, sets up the environment and replaces this process with the program

@@ -23,8 +23,9 @@ constexpr const char* kFooter = R"(Usage: nprgl [run] [OPTIONS] [--] PROGRAM [AR
 Commands:
   run (default)   run PROGRAM with libnprgl.so preloaded
   record          run PROGRAM and record its GL stream, unstyled unless --style or --preset:
-                  nprgl record [-o FILE] [--frames A-B] [--] PROGRAM ARGS... (default FILE:
-                  <program>.nprgl); says what was recorded when the program ends
+                  nprgl record [-o FILE] [--force] [--frames A-B] [--] PROGRAM ARGS...
+                  (default FILE: <program>.nprgl; an existing capture is replaced only with
+                  --force); says what was recorded when the program ends
   replay          render a capture headless into PNGs: nprgl replay FILE (-o DIR | --stats)
                   [--style S] [--set k=v]... [--frames A-B] [--size WxH] [--context N]
   compare         replay a capture natively and in a style and measure how alike they are:
@@ -69,7 +70,7 @@ int programIndex(int argc, char** argv, int first)
         if (std::strcmp(arg, "--") == 0) return i + 1;
         if (arg[0] != '-') return i;
         bool flag = std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0 ||
-                    std::strcmp(arg, "--version") == 0;
+                    std::strcmp(arg, "--version") == 0 || std::strcmp(arg, "--force") == 0;
         // -ofile style short options carry their value.
         if (arg[1] != '-' && arg[1] && arg[2]) flag = true;
         if (!flag && !std::strchr(arg, '=')) ++i; // skip the option's value
@@ -243,6 +244,8 @@ int dispatch(int argc, char** argv)
     if (record) {
         app.add_option("-o,--output", options.recordFile, "the capture file");
         app.add_option("--frames", options.recordFrames, "frames to record, e.g. 1-100");
+        app.add_flag("--force", options.recordForce,
+                     "replace FILE if it is an nprgl capture (any other file is never replaced)");
     }
     int program = programIndex(argc, argv, 1 + skip);
     // The options end where the program begins; a "--" in between is not an option.

@@ -61,6 +61,23 @@ std::string pathForThisProcess(const std::string& base)
     return stem + "." + std::to_string(getpid()) + ".nprgl";
 }
 
+// The first name <stem>.N.nprgl with nothing there, for a recording whose name holds a capture
+// already (as apitrace does); empty when a thousand are taken.
+std::string freeName(const std::string& path)
+{
+    std::string stem = path;
+    if (stem.size() > 6 && stem.compare(stem.size() - 6, 6, ".nprgl") == 0) {
+        stem.resize(stem.size() - 6);
+    }
+    for (int n = 1; n < 1000; ++n) {
+        const std::string candidate = stem + "." + std::to_string(n) + ".nprgl";
+        std::string why;
+        using Target = capture::CaptureWriter::Target;
+        if (capture::CaptureWriter::checkTarget(candidate, why) == Target::Free) return candidate;
+    }
+    return {};
+}
+
 void finishAtExit()
 {
     if (CaptureSession* session = CaptureSession::instance()) session->finish();
@@ -137,8 +154,35 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
     meta.startTimeUnix = uint64_t(std::time(nullptr));
     if (!mFrames.empty())
         meta.extra.emplace_back("recorded_frames", std::getenv("NPRGL_RECORD_FRAMES"));
+    // Never overwrite what is not ours: a file of anything else, or a special file, is left
+    // alone and the program runs unrecorded; a capture is replaced only when asked
+    // (NPRGL_RECORD_FORCE=1, what `nprgl record --force` sets), else the recording takes a
+    // new name beside it.
+    const char* forceEnv = std::getenv("NPRGL_RECORD_FORCE");
+    const bool force = forceEnv && std::string(forceEnv) == "1";
+    std::string why;
+    const auto target = capture::CaptureWriter::checkTarget(mPath, why);
+    if (target == capture::CaptureWriter::Target::Other ||
+        target == capture::CaptureWriter::Target::Refused) {
+        NPRGL_ERROR("not recording: %s %s", mPath.c_str(), why.c_str());
+        mOpenFailed = true;
+        return false;
+    }
+    if (target == capture::CaptureWriter::Target::Capture && !force) {
+        const std::string other = freeName(mPath);
+        if (other.empty()) {
+            NPRGL_ERROR("not recording: %s is a capture already, and no free name is left "
+                        "beside it", mPath.c_str());
+            mOpenFailed = true;
+            return false;
+        }
+        NPRGL_WARN("%s is a capture already: recording to %s instead (NPRGL_RECORD_FORCE=1 or "
+                   "nprgl record --force replaces it)",
+                   mPath.c_str(), other.c_str());
+        mPath = other;
+    }
     std::string error;
-    if (!mWriter.open(mPath, meta, error)) {
+    if (!mWriter.open(mPath, meta, error, force)) {
         NPRGL_ERROR("cannot record: %s", error.c_str());
         mOpenFailed = true;
         return false;

@@ -34,21 +34,32 @@ void drawProgress(size_t done, size_t total)
 
 } // namespace
 
+uint32_t Replayer::defaultContext(const capture::CaptureReader& reader)
+{
+    std::map<uint32_t, size_t> perContext;
+    for (const auto& f : reader.frames()) ++perContext[f.contextId];
+    size_t best = 0;
+    uint32_t contextId = 0;
+    for (const auto& [id, n] : perContext) {
+        if (n > best) best = n, contextId = id;
+    }
+    return contextId;
+}
+
 bool Replayer::run(const std::string& path, const ReplayOptions& options, std::string& error,
                    uint64_t* framesWritten)
 {
     capture::CaptureReader reader;
     if (!reader.open(path, error)) return false;
+    return run(reader, options, error, framesWritten, nullptr);
+}
+
+bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& options,
+                   std::string& error, uint64_t* framesWritten, capture::ReadReport* report)
+{
+    const std::string& path = reader.path();
     const auto& frames = reader.frames();
-    uint32_t contextId = options.contextId;
-    if (!contextId) {
-        std::map<uint32_t, size_t> perContext;
-        for (const auto& f : frames) ++perContext[f.contextId];
-        size_t best = 0;
-        for (const auto& [id, n] : perContext) {
-            if (n > best) best = n, contextId = id;
-        }
-    }
+    const uint32_t contextId = options.contextId ? options.contextId : defaultContext(reader);
     const int width = options.width ? options.width : reader.metadata().width;
     const int height = options.height ? options.height : reader.metadata().height;
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
@@ -133,6 +144,14 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         if (frames[i].contextId != contextId) continue;
         if (!options.frames.empty() && frames[i].frameNumber > options.frames.last()) break;
         if (!reader.readFrame(i, calls, error)) {
+            if (report) {
+                NPRGL_ERROR("%s; frame %llu skipped", error.c_str(),
+                            static_cast<unsigned long long>(frames[i].frameNumber));
+                report->frameLost(i);
+                error.clear();
+                if (options.progress) drawProgress(++done, total);
+                continue;
+            }
             ok = false;
             break;
         }

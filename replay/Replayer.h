@@ -1,6 +1,7 @@
 #pragma once
 
 #include "capture/CaptureReader.h"
+#include "capture/ReadReport.h"
 #include "common/FrameSet.h"
 #include "replay/ReplayLimits.h"
 #include "shim/Config.h"
@@ -33,6 +34,12 @@ public:
     // and crash or hang on (see ReplaySink).
     static bool run(const std::string& path, const ReplayOptions& options, std::string& error,
                     uint64_t* framesWritten = nullptr);
+    // The same on an open reader. With a report, a frame whose chunk does not read is logged,
+    // noted in it and skipped (the frames after it may then differ from the recording's).
+    static bool run(const capture::CaptureReader& reader, const ReplayOptions& options,
+                    std::string& error, uint64_t* framesWritten, capture::ReadReport* report);
+    // The stream replayed when none is chosen: the context with the most frames.
+    static uint32_t defaultContext(const capture::CaptureReader& reader);
 };
 
 } // namespace nprgl

@@ -4,6 +4,7 @@
 
 #include "capture/CaptureReader.h"
 #include "capture/Format.h"
+#include "capture/ReadReport.h"
 
 #include <cstdint>
 #include <string>
@@ -38,6 +39,14 @@ void exercise(const uint8_t* data, size_t size)
             __builtin_trap();
     }
     if (blobBytes != reader.blobBytes() || reader.fileBytes() != size) __builtin_trap();
+    // Damage lies inside the file and is said with the file's name; so is an unclosed file.
+    for (const auto& d : reader.damage()) {
+        if (d.offset > size || d.size > size - d.offset) __builtin_trap();
+        if (d.message.rfind("fuzz.nprgl: offset ", 0) != 0) __builtin_trap();
+    }
+    if (reader.recovered() && !reader.closed() && reader.notes().empty()) __builtin_trap();
+    ReadReport report(reader);
+    if (report.damaged() != !report.summary(reader.frames().size()).empty()) __builtin_trap();
 }
 
 // Random mutations almost never keep a checksum right, so most inputs would stop there.

@@ -1,5 +1,7 @@
 // Writes the fuzzer's seed corpus: small capture files of each shape the writer makes (whole,
-// cut off by a killed program, stored frames, empty). Generated, so no binary is committed.
+// cut off by a killed program, stored frames, empty) and the unclosed shapes the reader scans
+// (a killed program's file, one cut inside its last chunk, one with a damaged chunk in the
+// middle). Generated, so no binary is committed.
 // Usage: make_seeds DIR
 
 #include "capture/CaptureWriter.h"
@@ -82,6 +84,18 @@ int main(int argc, char** argv)
     std::string dir = argv[1];
     bool ok = writeSeed(dir + "/closed.nprgl", 4, true, true, dir + "/killed.nprgl") &&
               writeSeed(dir + "/stored.nprgl", 2, false, true, "") &&
-              writeSeed(dir + "/empty.nprgl", 0, true, true, "");
-    return ok ? 0 : 1;
+              writeSeed(dir + "/empty.nprgl", 0, true, true, "") &&
+              writeSeed(dir + "/long.nprgl", 9, true, true, dir + "/killed-long.nprgl");
+    if (!ok) return 1;
+    // Unclosed files as the reader meets them: cut inside the last chunk, and one with a
+    // damaged chunk between whole ones (the scan skips it and goes on).
+    std::ifstream in(dir + "/killed-long.nprgl", std::ios::binary);
+    std::vector<char> killed((std::istreambuf_iterator<char>(in)), {});
+    if (killed.size() < 200) return 1;
+    std::ofstream(dir + "/killed-cut.nprgl", std::ios::binary)
+        .write(killed.data(), std::streamsize(killed.size() - 7));
+    killed[killed.size() / 2] ^= 0x20;
+    std::ofstream(dir + "/killed-damaged.nprgl", std::ios::binary)
+        .write(killed.data(), std::streamsize(killed.size()));
+    return 0;
 }
