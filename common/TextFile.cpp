@@ -47,8 +47,8 @@ size_t TextFile::binaryAt(std::string_view text)
 {
     for (size_t i = 0; i < text.size(); ++i) {
         const unsigned char c = static_cast<unsigned char>(text[i]);
-        const bool control = c < 0x20 && c != '\t' && c != '\n' && c != '\v' && c != '\f' &&
-                             c != '\r';
+        const bool control =
+            c < 0x20 && c != '\t' && c != '\n' && c != '\v' && c != '\f' && c != '\r';
         if (control || c == 0x7f) return i;
     }
     return std::string_view::npos;
@@ -111,8 +111,7 @@ TextFile::Result TextFile::read(const std::string& path, const char* kind, std::
     }
     text.resize(got);
     if (const size_t at = binaryAt(text); at != std::string::npos) {
-        why = std::string("not a ") + kind + " (binary data at offset " + std::to_string(at) +
-              ")";
+        why = std::string("not a ") + kind + " (binary data at offset " + std::to_string(at) + ")";
         text.clear();
         return Result::Refused;
     }
