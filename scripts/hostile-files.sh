@@ -73,7 +73,9 @@ yes 'not a setting' | head -c 100M >"$work/100mb.conf"
 head -c 1M /dev/urandom >"$work/random.conf"
 printf 'preset=%s\n' "$work/fifo" >"$work/preset-line.conf"
 swapped=$work/swap/nprgl/nprgl.conf
-make_config() { mkdir -p "${swapped%/*}" && rm -f "$swapped" && echo "style=toon+edges" >"$swapped"; }
+make_config() {
+    mkdir -p "${swapped%/*}" && rm -f "$swapped" && echo "style=toon+edges" >"$swapped"
+}
 
 # One case a line.
 run config-fifo NPRGL_CONFIG_FILE="$work/fifo"
