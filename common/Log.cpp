@@ -1,5 +1,7 @@
 #include "common/Log.h"
 
+#include "common/TextFile.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -8,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace nprgl {
@@ -51,18 +54,42 @@ void setLogLevel(LogLevel level) { gLevel.store(static_cast<int>(level)); }
 
 bool logEnabled(LogLevel level) { return static_cast<int>(level) <= gLevel.load(); }
 
+namespace {
+
+// Only a regular file (made when missing) takes the log: a FIFO would hold the program at
+// start (no reader) or at any line (a reader that stops reading), a device is not a log.
+// Looked at before the open (which does not wait either) and again after it.
+void openLogFile(const char* file)
+{
+    struct stat st {};
+    if (::stat(file, &st) == 0 && !S_ISREG(st.st_mode)) {
+        logMessage(LogLevel::Warn, "NPRGL_LOG_FILE=%s: not a regular file (%s); logging to stderr",
+                   file, TextFile::typeName(st.st_mode));
+        return;
+    }
+    // O_APPEND so that a forked child and its parent interleave whole lines.
+    const int fd =
+        ::open(file, O_WRONLY | O_CREAT | O_APPEND | O_NONBLOCK | O_NOCTTY | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        logMessage(LogLevel::Warn, "cannot open NPRGL_LOG_FILE=%s (%s); logging to stderr", file,
+                   std::strerror(errno));
+        return;
+    }
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        logMessage(LogLevel::Warn, "NPRGL_LOG_FILE=%s: not a regular file (%s); logging to stderr",
+                   file, TextFile::typeName(st.st_mode));
+        return;
+    }
+    ::fcntl(fd, F_SETFL, O_APPEND);
+    gFd.store(fd);
+}
+
+} // namespace
+
 void initLog()
 {
-    if (const char* file = std::getenv("NPRGL_LOG_FILE"); file && *file) {
-        // O_APPEND so that a forked child and its parent interleave whole lines.
-        int fd = ::open(file, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-        if (fd >= 0) {
-            gFd.store(fd);
-        } else {
-            logMessage(LogLevel::Warn, "cannot open NPRGL_LOG_FILE=%s (%s); logging to stderr",
-                       file, std::strerror(errno));
-        }
-    }
+    if (const char* file = std::getenv("NPRGL_LOG_FILE"); file && *file) openLogFile(file);
     if (const char* level = std::getenv("NPRGL_LOG_LEVEL"); level && *level) {
         LogLevel parsed;
         if (parseLogLevel(level, parsed)) {

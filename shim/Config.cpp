@@ -89,23 +89,42 @@ std::vector<std::string> Config::filePaths(const std::string& program)
     return {dir + "nprgl.conf", dir + program + ".conf"};
 }
 
-Config Config::fromEnvironment(bool reloading)
+Config Config::fromEnvironment(const Config* previous)
 {
-    const LogLevel said = reloading ? LogLevel::Debug : LogLevel::Info;
+    const LogLevel said = previous ? LogLevel::Debug : LogLevel::Info;
     Config s;
     s.programName = program_invocation_short_name;
     s.keys = defaultKeys();
     // Lowest precedence first: the global file, the program's file.
-    std::string chain, config, logLevel, missing;
+    std::string chain, config, logLevel, missing, refused;
     for (const std::string& path : filePaths(s.programName)) {
         s.tried.push_back(path);
         ConfigFile file = ConfigFile::read(path);
+        if (!file.refused.empty()) {
+            // Not waited on nor read (TextFile); one swapped in at a reload keeps its last look.
+            const ConfigFile* before = nullptr;
+            if (previous) {
+                const auto it = previous->read.find(path);
+                if (it != previous->read.end()) before = &it->second;
+            }
+            NPRGL_ERROR("%s: %s; %s", path.c_str(), file.refused.c_str(),
+                        before ? "ignored, its previous lines stay" : "ignored");
+            refused += (refused.empty() ? "" : ", ") + path;
+            if (!before) continue;
+            file = *before;
+            file.errors.clear(); // said when it was read
+            file.badLines = 0;
+        }
         if (!file.found) {
             missing += (missing.empty() ? "" : ", ") + path;
             continue;
         }
         s.files.push_back(path);
         for (const std::string& e : file.errors) NPRGL_ERROR("%s; line skipped", e.c_str());
+        if (file.badLines > file.errors.size()) {
+            NPRGL_ERROR("%s: %zu more bad lines skipped", path.c_str(),
+                        file.badLines - file.errors.size());
+        }
         if (!file.chain.empty()) chain = file.chain;
         config = joinConfig(config, file.config);
         if (!file.screenshotDir.empty()) s.hotkeyScreenshotDir = file.screenshotDir;
@@ -118,14 +137,17 @@ Config Config::fromEnvironment(bool reloading)
         s.rules.textures.insert(s.rules.textures.end(), file.rules.textures.begin(),
                                 file.rules.textures.end());
         s.rules.states |= file.rules.states;
+        s.read.emplace(path, std::move(file));
     }
     if (!s.tried.empty()) {
         std::string read;
         for (const std::string& f : s.files) read += (read.empty() ? "" : ", ") + f;
+        std::string others;
+        if (!missing.empty()) others += "not found: " + missing;
+        if (!refused.empty()) others += (others.empty() ? "" : "; ") + ("refused: " + refused);
         NPRGL_LOG(said, "configuration files: %s%s%s%s",
-                  read.empty() ? "none found" : read.c_str(),
-                  missing.empty() ? "" : " (not found: ", missing.c_str(),
-                  missing.empty() ? "" : ")");
+                  read.empty() ? "none read" : read.c_str(), others.empty() ? "" : " (",
+                  others.c_str(), others.empty() ? "" : ")");
     }
     s.rules.normalise();
     if (!s.rules.textures.empty()) {
@@ -198,12 +220,14 @@ void Config::reload()
 {
     process();
     ProcessConfig& p = processConfig();
+    std::shared_ptr<const Config> previous;
     {
         std::lock_guard lock(p.mutex);
         if (!p.fromEnvironment) return;
+        previous = p.current;
     }
     // Read outside the lock: the files may be slow, other contexts keep the current one.
-    auto next = std::make_shared<Config>(fromEnvironment(true));
+    auto next = std::make_shared<Config>(fromEnvironment(previous.get()));
     std::lock_guard lock(p.mutex);
     next->generation = p.current->generation + 1;
     p.current = std::move(next);

@@ -5,6 +5,7 @@
 
 #include "common/FrameSet.h"
 #include "frame/LeaveRules.h"
+#include "shim/ConfigFile.h"
 #include "styles/StyleSettings.h"
 
 #include <cstdint>
@@ -30,6 +31,7 @@ struct Config {
     bool overlayOpen = false; // the overlay shows from the first frame (overlay=open, NPRGL_OVERLAY)
     std::vector<std::string> files;           // configuration files read, lowest first
     std::vector<std::string> tried;           // every path looked at (watched for changes)
+    std::map<std::string, ConfigFile> read;   // what each file read said, by path
     uint64_t generation = 0;                  // 0 at start-up, +1 at every reload
 
     // Builds the configuration from, by precedence: NPRGL_STYLE / NPRGL_CONFIG (which the
@@ -37,8 +39,10 @@ struct Config {
     // The files are $XDG_CONFIG_HOME/nprgl/nprgl.conf (default ~/.config) and
     // <program>.conf beside it, or NPRGL_CONFIG_FILE alone. Bad values and lines are
     // reported (file:line) and skipped or replaced by safe ones; the program runs on.
+    // A file that is there but refused (a FIFO, a device, a directory, too big, unreadable,
+    // binary) counts as missing, or at a reload as what it said before (`previous`).
     // A reload says only what went wrong (the context says what changed).
-    static Config fromEnvironment(bool reloading = false);
+    static Config fromEnvironment(const Config* previous = nullptr);
     // The paths of the configuration files for `program`, lowest precedence first.
     static std::vector<std::string> filePaths(const std::string& program);
 

@@ -2,6 +2,7 @@
 
 #include "common/KeyValue.h"
 #include "common/Log.h"
+#include "common/TextFile.h"
 #include "styles/Presets.h"
 #include "styles/StyleRegistry.h"
 #include "styles/StyleSettings.h"
@@ -11,8 +12,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace nprgl {
 
@@ -40,17 +44,13 @@ const std::vector<std::string>& ConfigFile::actions()
 
 ConfigFile ConfigFile::read(const std::string& path)
 {
-    std::ifstream in(path);
-    if (!in) {
-        ConfigFile none;
-        none.path = path;
-        return none;
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    ConfigFile file = parse(text.str(), path);
+    std::string text, why;
+    const TextFile::Result result = TextFile::read(path, "configuration file", text, why);
+    ConfigFile file;
+    if (result == TextFile::Result::Read) file = parse(text, path);
     file.path = path;
-    file.found = true;
+    file.found = result == TextFile::Result::Read;
+    file.refused = why;
     return file;
 }
 
@@ -65,7 +65,9 @@ ConfigFile ConfigFile::parse(const std::string& text, const std::string& origin)
         const std::string line(trimBlanks(raw));
         if (line.empty()) continue;
         const std::string where = origin + ":" + std::to_string(number) + ": ";
-        auto skip = [&](const std::string& why) { out.errors.push_back(where + why); };
+        auto skip = [&](const std::string& why) {
+            if (++out.badLines <= kShownErrors) out.errors.push_back(where + why);
+        };
         const size_t eq = line.find('=');
         if (eq == std::string::npos) {
             skip("expected key=value, got '" + line + "'");
@@ -183,8 +185,13 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
         return false;
     }
     // Keep every line that is not the look (comments, keys, screenshot folder...).
-    std::string kept;
-    if (std::ifstream in(path); in) {
+    std::string kept, old, why;
+    if (TextFile::read(path, "configuration file", old, why) == TextFile::Result::Refused) {
+        error = "not saved: " + path + ": " + why;
+        return false;
+    }
+    {
+        std::istringstream in(old);
         std::string raw;
         while (std::getline(in, raw)) {
             const std::string line(trimBlanks(raw));
@@ -219,24 +226,38 @@ bool ConfigFile::writeLook(const std::string& path, const std::string& chain,
     }
     // Written beside and renamed over: a reader (this process's reload) never sees half a file.
     const std::string temporary = path + ".nprgl-new";
-    {
-        errno = 0;
-        std::ofstream out(temporary, std::ios::trunc);
-        out << text;
-        if (!out.flush()) {
-            const int err = errno;
-            error =
-                "cannot write " + temporary + ": " + (err ? std::strerror(err) : "write failed");
-            if (out.is_open()) {
-                out.close();
-                std::remove(temporary.c_str()); // half written
-            }
-            return false;
+    // Not waiting on whatever may sit at the temporary name (a FIFO would hold the program).
+    const int fd =
+        ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NONBLOCK | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        error = "cannot write " + temporary + ": " + std::strerror(errno);
+        return false;
+    }
+    struct stat st {};
+    const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    int err = 0;
+    for (size_t written = 0; regular && written < text.size();) {
+        const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            err = n < 0 ? errno : EIO;
+            break;
         }
+        written += size_t(n);
+    }
+    if (::close(fd) != 0 && !err) err = errno;
+    if (!regular) {
+        error = "cannot write " + temporary + ": not a regular file (" +
+                TextFile::typeName(st.st_mode) + ")";
+        return false;
+    }
+    if (err) {
+        error = "cannot write " + temporary + ": " + std::strerror(err);
+        std::remove(temporary.c_str()); // half written
+        return false;
     }
     if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const int err = errno;
-        error = "cannot replace " + path + ": " + std::strerror(err);
+        error = "cannot replace " + path + ": " + std::strerror(errno);
         std::remove(temporary.c_str());
         return false;
     }

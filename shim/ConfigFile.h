@@ -25,8 +25,12 @@ namespace nprgl {
 //                                   offset), backdrop (3D without the depth test); one a line)
 // A bad line is reported as file:line and skipped; the other lines apply.
 struct ConfigFile {
+    // At most this many bad lines are kept in `errors`; `badLines` counts them all.
+    static constexpr size_t kShownErrors = 5;
+
     std::string path;
     bool found = false;        // the file exists and could be read
+    std::string refused;       // why a file that exists was not read (empty: read, or missing)
     std::string chain;         // style=, else the preset's chain (empty: none given)
     std::string config;        // "style.param=value,...": the preset's, then the file's own
     std::string screenshotDir;
@@ -36,16 +40,20 @@ struct ConfigFile {
     std::vector<std::string> cycle;
     std::string overlay; // overlay=open|closed: the overlay's state at start-up (empty: closed)
     LeaveRules rules;    // leave_texture=HASH (16 hex digits, in order) and leave_state= lines
-    std::vector<std::string> errors; // "file:line: message", one per skipped line
+    std::vector<std::string> errors; // "file:line: message": the first kShownErrors bad lines
+    size_t badLines = 0;             // lines skipped, all of them
 
     // Reads the file at `path`; a file that does not exist is not an error (found = false).
+    // One that is not a regular file, over TextFile::kLimit, unreadable or binary is not read
+    // (found = false, `refused` says why): the read never blocks and never runs long.
     static ConfigFile read(const std::string& path);
     // Parses text; `origin` names it in messages.
     static ConfigFile parse(const std::string& text, const std::string& origin);
 
     // Replaces the look (style=, preset=, every STYLE.PARAM, leave_texture and leave_state
     // line) in the file at `path` with `chain`, `config` ("key=value,...") and the rules,
-    // keeping its other lines; creates the file (and its folder) when missing.
+    // keeping its other lines; creates the file (and its folder) when missing. A path that is
+    // there but refused by read() is left alone.
     static bool writeLook(const std::string& path, const std::string& chain,
                           const std::string& config, const LeaveRules& rules, std::string& error);
     // A texture rule's hash as the files write it: 16 hex digits.

@@ -1,10 +1,12 @@
 #include "styles/Presets.h"
 
 #include "common/KeyValue.h"
+#include "common/TextFile.h"
 #include "styles/StyleRegistry.h"
 #include "styles/StyleSettings.h"
 
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <sstream>
 
 namespace nprgl {
@@ -124,14 +126,17 @@ bool Presets::load(const std::string& nameOrFile, std::string& chain, std::strin
                 "; or give a file name)";
         return false;
     }
-    std::ifstream file(nameOrFile);
-    if (!file) {
-        error = "cannot read preset file " + nameOrFile;
+    std::string text, why;
+    switch (TextFile::read(nameOrFile, "preset file", text, why)) {
+    case TextFile::Result::Missing:
+        error = "cannot read preset file " + nameOrFile + ": " + std::strerror(ENOENT);
         return false;
+    case TextFile::Result::Refused:
+        error = "preset file " + nameOrFile + ": " + why;
+        return false;
+    case TextFile::Result::Read: break;
     }
-    std::stringstream text;
-    text << file.rdbuf();
-    return parse(text.str(), nameOrFile, chain, config, error);
+    return parse(text, nameOrFile, chain, config, error);
 }
 
 } // namespace nprgl

@@ -1,12 +1,14 @@
 // Draws a lit cube on OSMesa for a number of frames and rewrites a file between two frames
 // (--at K --text T: after frame K, T replaces --file, by a rename as editors do, its folder
-// made when missing) or removes the file's folder (--remove-folder K, after frame K): the
-// configuration-reload tests change nprgl's configuration at a known frame, no clock.
+// made when missing), replaces it by a FIFO the same way (--fifo-at K) or removes the file's
+// folder (--remove-folder K, after frame K): the configuration-reload tests change nprgl's
+// configuration at a known frame, no clock.
 // Every frame is saved as DIR/reload_<frame>.png.
 #include "common/PngImage.h"
 #include "tests/probes/ProbeCube.h"
 
 #include <GL/osmesa.h>
+#include <sys/stat.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -28,13 +30,15 @@ int main(int argc, char** argv)
     int frames = 4;
     std::string file, dir = ".";
     std::map<int, std::string> rewrites;
-    std::map<int, bool> removals;
+    std::map<int, bool> removals, fifos;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string option = argv[i];
         if (option == "--frames") {
             frames = std::atoi(argv[i + 1]);
         } else if (option == "--file") {
             file = argv[i + 1];
+        } else if (option == "--fifo-at") {
+            fifos[std::atoi(argv[i + 1])] = true;
         } else if (option == "--remove-folder") {
             removals[std::atoi(argv[i + 1])] = true;
         } else if (option == "--save-dir") {
@@ -74,6 +78,13 @@ int main(int argc, char** argv)
             const std::string temp = file + ".new";
             std::ofstream(temp) << r->second << "\n";
             std::rename(temp.c_str(), file.c_str());
+        }
+        if (fifos.count(frame) && !file.empty()) {
+            const std::string temp = file + ".new";
+            if (mkfifo(temp.c_str(), 0644) != 0 || std::rename(temp.c_str(), file.c_str()) != 0) {
+                std::perror("probe_reload: FIFO");
+                return 1;
+            }
         }
     }
     OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
