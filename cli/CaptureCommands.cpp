@@ -1,5 +1,6 @@
 #include "cli/CaptureCommands.h"
 
+#include "cli/CommandReport.h"
 #include "capture/CaptureReader.h"
 #include "capture/ReadReport.h"
 #include "frame/CaptureBlobs.h"
@@ -39,30 +40,6 @@ int fail(const std::string& message)
 bool parseFrames(const std::string& text, FrameSet& out, std::string& error)
 {
     return text.empty() || FrameSet::parse(text, out, error);
-}
-
-void say(const std::string& line)
-{
-    std::fprintf(stderr, "nprgl: %s\n", line.c_str());
-}
-
-// Opens a capture and says what the reader found at open: damaged stretches (each with its
-// offset), an incomplete last chunk, a recording that did not close the file.
-bool openCapture(const std::string& file, capture::CaptureReader& reader, std::string& error)
-{
-    if (!reader.open(file, error)) return false;
-    for (const std::string& note : reader.notes()) say(note);
-    return true;
-}
-
-// The exit status of a command that read what it could: 1, with a summary, when anything
-// was damaged or lost; 0 otherwise.
-int finish(const capture::ReadReport& report,
-           uint64_t framesRead = capture::ReadReport::kUnknown)
-{
-    if (!report.damaged()) return 0;
-    say(report.summary(framesRead));
-    return 1;
 }
 
 // "1-3, 7" for the frames of one context, to say what a selection could have chosen.
@@ -111,7 +88,10 @@ int replayCommand(const ReplayCommandOptions& options)
     replay.config->programName = "nprgl";
     if (!options.rules.empty()) {
         const ConfigFile rules = ConfigFile::read(options.rules);
-        if (!rules.found) return fail("--rules: cannot read " + options.rules);
+        if (!rules.found) {
+            return fail("--rules: " + options.rules + ": " +
+                        (rules.refused.empty() ? std::string("no such file") : rules.refused));
+        }
         for (const std::string& e : rules.errors) {
             std::fprintf(stderr, "nprgl: %s; line skipped\n", e.c_str());
         }
@@ -230,124 +210,6 @@ int dumpCommand(const std::string& file, const std::string& framesText, const st
     return status;
 }
 
-namespace {
-
-// How CallPrinter prints a frame's kUncaptured pseudo-call: "-- not captured: glA 2, glB 1 --".
-const std::string kUncapturedLine = "-- not captured: ";
-
-void noteUncaptured(const std::string& list, uint64_t frame,
-                    std::map<std::string, std::vector<uint64_t>>& frames)
-{
-    for (size_t pos = 0; pos < list.size();) {
-        size_t end = std::min(list.find(", ", pos), list.size());
-        std::string entry = list.substr(pos, end - pos);
-        size_t space = entry.find(' ');
-        if (space != std::string::npos) {
-            std::vector<uint64_t>& seen = frames[entry.substr(0, space)];
-            if (seen.empty() || seen.back() != frame) seen.push_back(frame);
-        }
-        pos = end + 2;
-    }
-}
-
-} // namespace
-
-int infoCommand(const std::string& file)
-{
-    std::string error;
-    capture::CaptureReader reader;
-    if (!openCapture(file, reader, error)) return fail(error);
-    capture::ReadReport report(reader);
-    const capture::Metadata& m = reader.metadata();
-    std::string cmd;
-    for (const std::string& a : m.commandLine) cmd += (cmd.empty() ? "" : " ") + a;
-    std::printf("file:        %s (%llu bytes, format version %u%s)\n", file.c_str(),
-                static_cast<unsigned long long>(reader.fileBytes()), reader.version(),
-                !reader.recovered()        ? ""
-                : !reader.damage().empty() ? ", recovered: damaged, read by scanning"
-                                           : ", recovered: the recording did not close the file");
-    std::printf("program:     %s\ncommand:     %s\npid:         %u\n", m.program.c_str(),
-                cmd.c_str(), m.pid);
-    std::printf("GL:          %s | %s | %s\nsize:        %dx%d\n", m.glVendor.c_str(),
-                m.glRenderer.c_str(), m.glVersion.c_str(), m.width, m.height);
-    for (const auto& [k, v] : m.extra) std::printf("%-12s %s\n", (k + ":").c_str(), v.c_str());
-
-    std::map<uint32_t, uint64_t> perContext;
-    std::map<std::string, uint64_t> calls;
-    std::map<std::string, std::vector<uint64_t>> uncapturedFrames;
-    if (!m.opcodeNames.empty()) {
-        const OpcodeMap opcodes(m.opcodeNames);
-        std::printf("commands:    %zu named in the file%s\n", m.opcodeNames.size(),
-                    opcodes.unknownCount() == 0 ? ""
-                        : (", " + std::to_string(opcodes.unknownCount()) +
-                           " unknown to this nprgl").c_str());
-    }
-    const OpcodeMap opcodes(m.opcodeNames);
-    CaptureBlobs blobs(reader);
-    std::vector<uint8_t> data;
-    uint64_t rawBytes = 0;
-    const auto& list = reader.frames();
-    for (size_t i = 0; i < list.size(); ++i) {
-        if (!reader.readFrame(i, data, error)) {
-            say(error + "; frame " + std::to_string(list[i].frameNumber) + " not counted");
-            report.frameLost(i);
-            continue;
-        }
-        std::string text;
-        if (!CallPrinter::printFrame(data.data(), data.size(), &blobs, &opcodes, "", text,
-                                     error)) {
-            say(file + ": frame " + std::to_string(list[i].frameNumber) + " at " +
-                std::to_string(list[i].offset) + ": " + error + "; not counted");
-            report.frameLost(i);
-            continue;
-        }
-        ++perContext[list[i].contextId];
-        rawBytes += list[i].rawSize;
-        for (size_t pos = 0; pos < text.size();) {
-            size_t eol = std::min(text.find('\n', pos), text.size());
-            size_t paren = text.find('(', pos);
-            if (paren < eol && text.compare(pos, 2, "--") != 0) {
-                ++calls[text.substr(pos, paren - pos)];
-            } else if (text.compare(pos, kUncapturedLine.size(), kUncapturedLine) == 0) {
-                noteUncaptured(text.substr(pos + kUncapturedLine.size(),
-                                           eol - pos - kUncapturedLine.size()),
-                               list[i].frameNumber, uncapturedFrames);
-            }
-            pos = eol + 1;
-        }
-    }
-    std::printf("frames:      %zu", list.size() - report.unreadable());
-    for (const auto& [ctx, n] : perContext) {
-        std::printf("  (context %u: %llu)", ctx, static_cast<unsigned long long>(n));
-    }
-    std::printf("\nframe bytes: %llu uncompressed\nblobs:       %zu, %llu bytes uncompressed\n",
-                static_cast<unsigned long long>(rawBytes), reader.blobCount(),
-                static_cast<unsigned long long>(reader.blobBytes()));
-    std::vector<std::pair<std::string, uint64_t>> sorted(calls.begin(), calls.end());
-    std::sort(sorted.begin(), sorted.end(),
-              [](const auto& a, const auto& b) { return a.second > b.second; });
-    std::printf("calls by name:\n");
-    for (const auto& [name, n] : sorted) {
-        std::printf("  %10llu  %s\n", static_cast<unsigned long long>(n), name.c_str());
-    }
-    // The run's totals (CNTS), and per command the frames that lack it (format 2 on).
-    std::printf("not captured:\n");
-    if (reader.callCounts().empty()) std::printf("  (none)\n");
-    for (const auto& [name, n] : reader.callCounts()) {
-        auto it = uncapturedFrames.find(name);
-        std::string frames = it == uncapturedFrames.end()
-                                 ? std::string()
-                                 : "  (frames " + FrameSet::describe(it->second) + ")";
-        std::printf("  %10llu  %s%s\n", static_cast<unsigned long long>(n), name.c_str(),
-                    frames.c_str());
-    }
-    std::fflush(stdout);
-    return finish(report, list.size() - report.unreadable());
-}
-
-} // namespace nprgl::cli
-
-namespace nprgl::cli {
 
 int exportCommand(const std::string& file, uint64_t frame, const std::string& output,
                   const std::string& space, unsigned context)

@@ -21,7 +21,6 @@ struct ReplayCommandOptions {
 
 int replayCommand(const ReplayCommandOptions& options);
 int dumpCommand(const std::string& file, const std::string& frames, const std::string& grep);
-int infoCommand(const std::string& file);
 int exportCommand(const std::string& file, uint64_t frame, const std::string& output,
                   const std::string& space, unsigned context);
 

@@ -5,8 +5,10 @@
 
 #include "cli/CaptureCommands.h"
 #include "cli/CompareCommand.h"
+#include "cli/InfoCommand.h"
 #include "cli/RunCommand.h"
 #include "cli/StylesCommand.h"
+#include "common/Log.h"
 
 #include <CLI/CLI.hpp>
 
@@ -31,7 +33,8 @@ Commands:
   compare         replay a capture natively and in a style and measure how alike they are:
                   nprgl compare FILE [--style S|--preset P] [--frames A-B] [--json OUT] [-o DIR]
   dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
-  info            print a capture's metadata, frames, calls and what was not captured
+  info            print a capture's metadata, frames, calls and what was not captured:
+                  nprgl info FILE [--json]
   export          write a frame's reconstructed meshes: nprgl export FILE --frame N -o out.obj
                   [--space eye|object] (also .ply, .off)
   styles          list the styles, their parameters, defaults and ranges
@@ -165,10 +168,12 @@ int dumpMain(int argc, char** argv)
 int infoMain(int argc, char** argv)
 {
     std::string file;
+    bool json = false;
     CLI::App app{"Print a capture's metadata, frames and calls", "nprgl info"};
     app.add_option("file", file, "the capture")->required();
+    app.add_flag("--json", json, "one JSON object instead of text");
     if (int code; !parsed(app, argc, argv, code)) return code;
-    return nprgl::cli::infoCommand(file);
+    return nprgl::cli::infoCommand(file, json);
 }
 
 int exportMain(int argc, char** argv)
@@ -215,6 +220,11 @@ int dispatch(int argc, char** argv)
         }
         std::fprintf(stderr, "nprgl help: no command '%s' (see nprgl --help)\n", name.c_str());
         return kUsageError;
+    }
+    // The commands that run the pipeline in this process log as the library does
+    // (NPRGL_LOG_LEVEL, NPRGL_LOG_FILE); run and record leave both to the program's library.
+    for (const char* inProcess : {"replay", "dump", "compare", "info", "export"}) {
+        if (std::strcmp(command, inProcess) == 0) nprgl::initLog();
     }
     if (std::strcmp(command, "replay") == 0) return replayMain(argc - 1, argv + 1);
     if (std::strcmp(command, "dump") == 0) return dumpMain(argc - 1, argv + 1);

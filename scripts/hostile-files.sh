@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs programs under nprgl with hostile files: configuration, preset and log paths that are
 # FIFOs, devices, a directory, 100 MB, 1 MB of random bytes, or a configuration file swapped
-# for a FIFO while the program runs. Every case runs under a bounded wait and prints one line:
+# for a FIFO while the program runs; and capture paths that are special files, given to the
+# commands that read captures and as a recording's file (each must be refused at once: exit
+# status 1 and one line, the program never started or run unrecorded). Every case runs under a bounded wait and prints one line:
 # ok, HANG, CRASH, FLOOD (too many lines on stderr) or "exit status changed" (against the same
 # program run without nprgl). Exits 1 when a case fails.
 # Usage: scripts/hostile-files.sh [BUILD_DIR]   (default: build; it needs the bin/ and lib/
@@ -92,6 +94,43 @@ via=preload run preset-fifo NPRGL_PRESET="$work/fifo"
 run log-fifo NPRGL_LOG_FILE="$work/fifo"
 run log-directory NPRGL_LOG_FILE="$work/folder"
 run log-device NPRGL_LOG_FILE=/dev/full
+
+# refused NAME ARGS...: `nprgl ARGS...` must end at once with status 1 and say why in at most
+# a few lines (a capture path that is not a regular file is never opened for reading).
+refused() {
+    local name=$1 log=$work/$1.log
+    shift
+    env -u NPRGL_RECORD XDG_CONFIG_HOME="$work/empty.home" \
+        timeout -k 5 "$guard" "$bin/nprgl" "$@" >/dev/null 2>"$log"
+    local status=$? result=ok lines
+    lines=$(wc -l <"$log")
+    if [ "$status" -eq 124 ] || [ "$status" -eq 137 ]; then
+        result="HANG (ended after ${guard}s)"
+    elif [ "$status" -gt 128 ]; then
+        result="CRASH (signal $((status - 128)))"
+    elif [ "$status" -ne 1 ]; then
+        result="exit status $status (expected 1: refused)"
+    elif [ "$lines" -gt 3 ]; then
+        result="FLOOD ($lines lines on stderr)"
+    fi
+    [ "$result" = ok ] || failures=$((failures + 1))
+    printf '%-28s %s\n' "$name" "$result"
+}
+
+mkdir -p "$work/empty.home"
+for target in fifo:"$work/fifo" dev-zero:/dev/zero dev-urandom:/dev/urandom \
+    directory:"$work/folder"; do
+    kind=${target%%:*} path=${target#*:}
+    refused "info-$kind" info "$path"
+    refused "dump-$kind" dump "$path"
+    refused "replay-$kind" replay --stats "$path"
+    refused "export-$kind" export "$path" --frame 1 -o "$work/out/x.obj"
+    refused "compare-$kind" compare "$path"
+    refused "record-to-$kind" record -o "$path" -- "$bin/demo_immediate" --offscreen --frames 2
+done
+# Through the variable the program runs, unrecorded, and its status is its own.
+via=preload run record-var-fifo NPRGL_RECORD="$work/fifo"
+via=preload run record-var-directory NPRGL_RECORD="$work/folder"
 
 if [ "$failures" -gt 0 ]; then
     echo "hostile-files: $failures case(s) failed; their stderr: $work/<case>.log" >&2

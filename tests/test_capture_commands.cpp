@@ -6,6 +6,7 @@
 #include "tests/support/Process.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -327,4 +328,41 @@ TEST(CaptureCommands, RecordingToASpecialFileIsRefusedAtOnce)
         EXPECT_EQ(r.exitCode, 0) << r.err;
         EXPECT_TRUE(has(r.err, "not recording: " + path + " " + reason)) << r.err;
     }
+}
+
+// `nprgl info --json` is for scripts: one object with what the text says, and the damage with
+// its offsets and the frames lost.
+TEST(CaptureCommands, InfoAsJsonSaysWhatTheTextSays)
+{
+    ProcessResult text = run({"info", fixture("glxgears")});
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    ProcessResult json = run({"info", "--json", fixture("glxgears")});
+    ASSERT_EQ(json.exitCode, 0) << json.err;
+    const nlohmann::json whole = nlohmann::json::parse(json.out);
+    EXPECT_EQ(whole["state"], "closed");
+    EXPECT_TRUE(has(text.out, "frames:      " + std::to_string(whole["frames"].get<int>())))
+        << text.out;
+    EXPECT_TRUE(has(text.out, "program:     " + whole["program"].get<std::string>()));
+    ASSERT_TRUE(whole["calls"].contains("glClear")) << json.out.substr(0, 2000);
+    const std::string clears = std::to_string(whole["calls"]["glClear"].get<int>());
+    EXPECT_TRUE(has(text.out, std::string(10 - clears.size(), ' ') + clears + "  glClear"))
+        << text.out;
+    EXPECT_EQ(whole["contexts"].size(), 1u);
+    EXPECT_TRUE(whole["damage"].empty());
+
+    const std::string dir = freshDir("info-json");
+    const Layout layout = layoutOf(fixture("displaylist"));
+    std::string bytes = readAll(fixture("displaylist"));
+    bytes[insideFrame(layout, 1)] ^= 0x10;
+    const std::string file = dir + "/flipped.nprgl";
+    writeAll(file, bytes);
+    ProcessResult damaged = run({"info", "--json", file});
+    EXPECT_EQ(damaged.exitCode, 1) << damaged.err;
+    const nlohmann::json d = nlohmann::json::parse(damaged.out);
+    EXPECT_EQ(d["state"], "damaged");
+    EXPECT_EQ(d["frames"], 2);
+    ASSERT_EQ(d["damage"].size(), 1u) << damaged.out;
+    EXPECT_EQ(d["damage"][0]["offset"], layout.frames[1].offset);
+    ASSERT_EQ(d["framesLost"].size(), 1u) << damaged.out;
+    EXPECT_EQ(d["framesLost"][0]["frame"], 2);
 }

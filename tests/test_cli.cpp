@@ -80,3 +80,20 @@ TEST(Cli, HelpAndVersionAreCommands)
     EXPECT_EQ(program.exitCode, 127) << program.err;
     EXPECT_NE(program.err.find("cannot run 'help'"), std::string::npos) << program.err;
 }
+
+// The nprgl command links the library's code to replay, but its start-up (the log file, the
+// recording's claim) is the program's: a log file it cannot use is said once, by the program.
+TEST(Cli, TheProgramAloneOpensTheLogFile)
+{
+    const std::string folder = freshDir("cli_log");
+    ProcessResult r = runProcess({nprglCommand(), "--style", "none", "--", demo("immediate"),
+                                  "--offscreen", "--frames", "1"},
+                                 {{"NPRGL_LOG_FILE", folder}}, 120);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    size_t said = 0;
+    for (size_t at = r.err.find("NPRGL_LOG_FILE"); at != std::string::npos;
+         at = r.err.find("NPRGL_LOG_FILE", at + 1)) {
+        ++said;
+    }
+    EXPECT_EQ(said, 1u) << r.err;
+}
