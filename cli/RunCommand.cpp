@@ -83,12 +83,34 @@ std::string findLibrary(std::string& error)
     }
     std::error_code ec;
     fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    for (const char* rel : {"../lib/libnprgl.so", "../lib/nprgl/libnprgl.so", "libnprgl.so"}) {
+    // The build tree's first (build/bin/nprgl, build/lib/libnprgl.so), then the installed
+    // layout (<prefix>/bin/nprgl, <prefix>/<libdir>/nprgl/libnprgl.so).
+    for (const char* rel : {"../lib/libnprgl.so", NPRGL_BIN_TO_LIBDIR "/libnprgl.so",
+                            "../lib/nprgl/libnprgl.so", "libnprgl.so"}) {
         fs::path candidate = exe.parent_path() / rel;
         if (!ec && fs::exists(candidate)) return fs::canonical(candidate).string();
     }
     error = "cannot find libnprgl.so next to " + exe.string() + " (set NPRGL_LIBRARY)";
     return {};
+}
+
+std::string preloadEntry(const std::string& library)
+{
+#ifdef NPRGL_LIBDIR_IS_LOADER_LIB
+    // Installed in <prefix>/<libdir>/nprgl with libdir what the loader's $LIB expands to
+    // (Debian: lib/x86_64-linux-gnu, lib/i386-linux-gnu): <prefix>/$LIB/nprgl/libnprgl.so
+    // loads the library of each program's own architecture, in its children too, as
+    // MangoHud's command does.
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec || std::getenv("NPRGL_LIBRARY")) return library;
+    const fs::path prefix = fs::weakly_canonical(exe.parent_path() / NPRGL_BIN_TO_PREFIX, ec);
+    const fs::path installed = prefix / NPRGL_INSTALL_LIBDIR / "nprgl" / "libnprgl.so";
+    if (!ec && fs::equivalent(installed, library, ec)) {
+        return (prefix / "$LIB" / "nprgl" / "libnprgl.so").string();
+    }
+#endif
+    return library;
 }
 
 int runProgram(const RunOptions& options)
@@ -159,9 +181,9 @@ int runProgram(const RunOptions& options)
     if (!options.screenshot.empty()) setenv("NPRGL_SCREENSHOT", options.screenshot.c_str(), 1);
     if (!options.logLevel.empty()) setenv("NPRGL_LOG_LEVEL", options.logLevel.c_str(), 1);
     if (!options.logFile.empty()) setenv("NPRGL_LOG_FILE", options.logFile.c_str(), 1);
-    std::string preload = library;
+    std::string preload = preloadEntry(library);
     if (const char* old = std::getenv("LD_PRELOAD"); old && *old) {
-        if (std::strstr(old, library.c_str())) {
+        if (std::strstr(old, preload.c_str())) {
             preload = old;
         } else {
             preload += std::string(":") + old;
