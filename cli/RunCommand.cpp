@@ -8,6 +8,7 @@
 #include "styles/Presets.h"
 #include "styles/StyleSettings.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -72,6 +73,26 @@ std::string joined(const std::vector<std::string>& items, const char* separator)
     return out;
 }
 
+// A launcher's command line (Steam's %command%, a shell's) may begin with NAME=value words:
+// they go to the environment, as the shell and env(1) take them, before nprgl reads it, and
+// the program is the first word after them. Returns how many there were.
+size_t applyAssignments(const std::vector<std::string>& command)
+{
+    size_t count = 0;
+    for (const std::string& word : command) {
+        const size_t eq = word.find('=');
+        if (eq == 0 || eq == std::string::npos || std::isdigit((unsigned char)word[0])) break;
+        bool name = true;
+        for (size_t i = 0; i < eq; ++i) {
+            name = name && (std::isalnum((unsigned char)word[i]) || word[i] == '_');
+        }
+        if (!name) break;
+        setenv(word.substr(0, eq).c_str(), word.c_str() + eq + 1, 1);
+        ++count;
+    }
+    return count;
+}
+
 } // namespace
 
 std::string findLibrary(std::string& error)
@@ -115,7 +136,9 @@ std::string preloadEntry(const std::string& library)
 
 int runProgram(const RunOptions& options)
 {
-    if (options.command.empty()) return fail("no program to run (see nprgl --help)");
+    std::vector<std::string> command = options.command;
+    command.erase(command.begin(), command.begin() + long(applyAssignments(command)));
+    if (command.empty()) return fail("no program to run (see nprgl --help)");
 
     // Refuse bad settings here, before the program starts, rather than in the library where
     // the only safe answer is to fall back to passthrough.
@@ -157,7 +180,7 @@ int runProgram(const RunOptions& options)
             return fail("--frames: " + error);
         }
         std::string file = options.recordFile.empty()
-                               ? fs::path(options.command[0]).filename().string() + ".nprgl"
+                               ? fs::path(command[0]).filename().string() + ".nprgl"
                                : options.recordFile;
         // Absolute: the program may change its directory before its first frame.
         recordPath = fs::absolute(file).string();
@@ -197,10 +220,10 @@ int runProgram(const RunOptions& options)
 #endif
     setenv("LD_PRELOAD", preload.c_str(), 1);
 
-    warnIfSecureExecution(options.command.front());
-    if (options.record) superviseRecording(options.command, recordPath);
+    warnIfSecureExecution(command.front());
+    if (options.record) superviseRecording(command, recordPath);
     std::vector<char*> argv;
-    for (const std::string& arg : options.command) argv.push_back(const_cast<char*>(arg.c_str()));
+    for (const std::string& arg : command) argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);
     execvp(argv[0], argv.data());
     int err = errno;

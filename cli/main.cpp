@@ -38,6 +38,8 @@ Commands:
   version         nprgl's version
 
 A program named like a command runs with "run" or "--" first: nprgl run help.
+NAME=value words before the program go to its environment, as in a shell; every word from
+the program on is its own, untouched (so nprgl %command% works as a Steam launch option).
 Exit status: the program's own (run, record); 2 for a usage error (an unknown option, a bad
 value, a missing argument); 1 when a command fails (an unreadable or damaged file, nothing
 to write); 126 or 127 when the program cannot be started.
