@@ -25,8 +25,9 @@ Commands:
   record          run PROGRAM and record its GL stream, unstyled unless --style or --preset:
                   nprgl record [-o FILE] [--frames A-B] [--] PROGRAM ARGS... (default FILE:
                   <program>.nprgl); says what was recorded when the program ends
-  replay          render a capture headless into PNGs: nprgl replay FILE (-o DIR | --stats)
-                  [--style S] [--set k=v]... [--frames A-B] [--size WxH] [--context N]
+  replay          render a capture headless into PNGs or a video: nprgl replay FILE
+                  (-o DIR | --video out.mp4 [--fps N] | --stats) [--style S] [--set k=v]...
+                  [--frames A-B] [--size WxH] [--context N]
   compare         replay a capture natively and in a style and measure how alike they are:
                   nprgl compare FILE [--style S|--preset P] [--frames A-B] [--json OUT] [-o DIR]
   dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
@@ -105,7 +106,7 @@ bool parsed(CLI::App& app, int argc, char** argv, int& exitCode)
 int replayMain(int argc, char** argv)
 {
     nprgl::cli::ReplayCommandOptions o;
-    CLI::App app{"Render a capture headless (OSMesa) into PNGs frame_0000000042.png",
+    CLI::App app{"Render a capture headless (OSMesa) into PNGs frame_0000000042.png or a video",
                  "nprgl replay"};
     app.add_option("file", o.file, "the capture")->required();
     app.add_option("-o,--output", o.outDir, "directory for the PNGs (none: render only)");
@@ -122,6 +123,10 @@ int replayMain(int argc, char** argv)
                    "render size WxH (default: the recorded size; the program's viewports are "
                    "replayed as recorded, so a smaller size shows their lower left part)");
     app.add_option("--context", o.context, "which context's stream (default: the longest)");
+    app.add_option("--video", o.video,
+                   "also encode the frames into this video: .mp4, .mkv or .mov (H.264), .webm "
+                   "(VP9)");
+    app.add_option("--fps", o.fps, "the video's frame rate (default 30)");
     app.add_option("--rules", o.rules,
                    "a configuration file (the program's, ~/.config/nprgl/PROGRAM.conf) whose "
                    "leave_texture and leave_state rules apply");

@@ -98,7 +98,7 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
                           : "not styled (style none)");
             if (c) statsBefore = c->runCounts();
         }
-        if (options.outDir.empty() ||
+        if ((options.outDir.empty() && !options.onFrame) ||
             (!options.frames.empty() && !options.frames.contains(frame))) {
             return true;
         }
@@ -108,6 +108,8 @@ bool Replayer::run(const std::string& path, const ReplayOptions& options, std::s
         image.rgba = buffer; // OSMesa's buffer: bottom row first
         image.flipRows();
         image.makeOpaque();
+        if (options.onFrame && !options.onFrame(image, frameError)) return false;
+        if (options.outDir.empty()) return true;
         char name[64];
         std::snprintf(name, sizeof name, "/frame_%010llu.png",
                       static_cast<unsigned long long>(frame));
