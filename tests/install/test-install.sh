@@ -57,8 +57,8 @@ if command -v man >/dev/null; then
     text=$(LC_ALL=C MANWIDTH=200 man --warnings -l "$page" 2>"$work/man.err" | col -b)
     [ ! -s "$work/man.err" ] || fail "man warns: $(cat "$work/man.err")"
 else
-    text=$(zcat "$page")
-    text=${text//\\-/-}
+    # The source without its requests and escapes: what man would show, roughly.
+    text=$(zcat "$page" | sed -E 's/^\.[A-Z]+ ?//; s/\\f[BIRP]//g; s/\\-/-/g; s/"//g')
 fi
 grep -q "^NAME" <<<"$text" || fail "the man page has no NAME section"
 help=$("$nprgl" help)
@@ -74,7 +74,7 @@ for variable in $(grep -oE 'NPRGL_[A-Z_]+' <<<"$help" | sort -u); do
     grep -qF "$variable" <<<"$text" || fail "the man page does not name $variable"
 done
 for status in $(grep -oE '\b(1|2|126|127)\b' <<<"$(grep -A3 'Exit status' <<<"$help")"); do
-    grep -qE "^ +$status\b|, $status\b" <<<"$text" || fail "the man page has no exit status $status"
+    grep -qE "^ *$status\b|, +$status\b" <<<"$text" || fail "the man page has no exit status $status"
 done
 
 # Bash completion, as bash calls it for a word under the cursor.
@@ -86,7 +86,10 @@ complete_words() {
 expect_completion() {
     local want=$1
     shift
-    complete_words "$@" | grep -qxF -- "$want" || fail "completing '$*' does not offer $want"
+    # Not a pipe into grep -q: under pipefail, its early exit would fail the writer.
+    local offered
+    offered=$(complete_words "$@")
+    grep -qxF -- "$want" <<<"$offered" || fail "completing '$*' does not offer $want"
 }
 expect_completion replay rep
 expect_completion --style --st

@@ -11,7 +11,7 @@ if [ "$(id -u)" != 0 ]; then
     echo "test-package: needs root (it installs and removes the package with apt)" >&2
     exit 1
 fi
-if dpkg-query -W -f='${db:Status-Status}' nprgl 2>/dev/null | grep -qx installed; then
+if [ "$(dpkg-query -W -f='${db:Status-Status}' nprgl 2>/dev/null)" = installed ]; then
     echo "test-package: nprgl is installed already; remove it first (apt remove nprgl)" >&2
     exit 1
 fi
@@ -49,7 +49,7 @@ installed=1
 mapfile -t files < <(dpkg -L nprgl)
 for want in /usr/bin/nprgl "/usr/lib/$multiarch/nprgl/libnprgl.so" \
     /usr/share/man/man1/nprgl.1.gz /usr/share/bash-completion/completions/nprgl; do
-    printf '%s\n' "${files[@]}" | grep -qxF "$want" || fail "the package does not hold $want"
+    grep -qxF "$want" <<<"$(printf '%s\n' "${files[@]}")" || fail "the package does not hold $want"
     [ -e "$want" ] || fail "$want was not installed"
 done
 [ "$(command -v nprgl)" = /usr/bin/nprgl ] || fail "nprgl is not /usr/bin/nprgl"
