@@ -7,6 +7,7 @@
 #include "frame/FrameExport.h"
 #include "frame/StateTracker.h"
 #include "replay/Replayer.h"
+#include "replay/VideoWriter.h"
 #include "shim/ConfigFile.h"
 #include "stream/CallPrinter.h"
 #include "stream/OpcodeMap.h"
@@ -108,7 +109,16 @@ int replayCommand(const ReplayCommandOptions& options)
     replay.stats = options.stats;
     // The progress bar would interleave with the per-frame figures.
     replay.progress = isatty(STDERR_FILENO) && !options.stats;
-    if (replay.outDir.empty() && !options.stats) return usage("-o DIR or --stats is required");
+    VideoWriter video;
+    if (!options.video.empty()) {
+        if (!video.open(options.video, options.fps, error)) return usage("--video: " + error);
+        replay.onFrame = [&video](const PngImage& image, std::string& why) {
+            return video.add(image, why);
+        };
+    }
+    if (replay.outDir.empty() && !options.stats && options.video.empty()) {
+        return usage("-o DIR or --stats is required (or --video FILE)");
+    }
     if (!replay.outDir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(replay.outDir, ec);
@@ -140,6 +150,15 @@ int replayCommand(const ReplayCommandOptions& options)
     }
     uint64_t written = 0;
     const bool ran = Replayer::run(reader, replay, error, &written, &report);
+    // The frames so far make a playable file even when the replay stopped early.
+    std::string videoError;
+    const bool encoded = video.finish(videoError);
+    if (ran && !encoded) return fail(videoError);
+    if (!options.video.empty() && video.frames()) {
+        std::fprintf(stderr, "nprgl: wrote %llu frames to %s at %d fps\n",
+                     static_cast<unsigned long long>(video.frames()), options.video.c_str(),
+                     options.fps);
+    }
     if (!replay.outDir.empty()) {
         std::fprintf(stderr, "nprgl: wrote %llu frames to %s\n",
                      static_cast<unsigned long long>(written), replay.outDir.c_str());
@@ -151,6 +170,9 @@ int replayCommand(const ReplayCommandOptions& options)
     const int status = finish(report, toRead - report.unreadable());
     if (!replay.outDir.empty() && written == 0) {
         return fail(options.file + ": no frame could be replayed");
+    }
+    if (!options.video.empty() && video.frames() == 0) {
+        return fail(options.video + ": no frame to write");
     }
     return status;
 }

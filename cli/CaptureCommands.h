@@ -17,6 +17,8 @@ struct ReplayCommandOptions {
     unsigned context = 0;
     bool stats = false;
     std::string rules; // a configuration file whose leave_texture and leave_state rules apply
+    std::string video; // a video of the frames (.mp4, .mkv, .mov: H.264; .webm: VP9)
+    int fps = 30;
 };
 
 int replayCommand(const ReplayCommandOptions& options);

@@ -8,6 +8,7 @@
 #include "styles/Presets.h"
 #include "styles/StyleSettings.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -72,6 +73,26 @@ std::string joined(const std::vector<std::string>& items, const char* separator)
     return out;
 }
 
+// A launcher's command line (Steam's %command%, a shell's) may begin with NAME=value words:
+// they go to the environment, as the shell and env(1) take them, before nprgl reads it, and
+// the program is the first word after them. Returns how many there were.
+size_t applyAssignments(const std::vector<std::string>& command)
+{
+    size_t count = 0;
+    for (const std::string& word : command) {
+        const size_t eq = word.find('=');
+        if (eq == 0 || eq == std::string::npos || std::isdigit((unsigned char)word[0])) break;
+        bool name = true;
+        for (size_t i = 0; i < eq; ++i) {
+            name = name && (std::isalnum((unsigned char)word[i]) || word[i] == '_');
+        }
+        if (!name) break;
+        setenv(word.substr(0, eq).c_str(), word.c_str() + eq + 1, 1);
+        ++count;
+    }
+    return count;
+}
+
 } // namespace
 
 std::string findLibrary(std::string& error)
@@ -83,7 +104,10 @@ std::string findLibrary(std::string& error)
     }
     std::error_code ec;
     fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    for (const char* rel : {"../lib/libnprgl.so", "../lib/nprgl/libnprgl.so", "libnprgl.so"}) {
+    // The build tree's first (build/bin/nprgl, build/lib/libnprgl.so), then the installed
+    // layout (<prefix>/bin/nprgl, <prefix>/<libdir>/nprgl/libnprgl.so).
+    for (const char* rel : {"../lib/libnprgl.so", NPRGL_BIN_TO_LIBDIR "/libnprgl.so",
+                            "../lib/nprgl/libnprgl.so", "libnprgl.so"}) {
         fs::path candidate = exe.parent_path() / rel;
         if (!ec && fs::exists(candidate)) return fs::canonical(candidate).string();
     }
@@ -91,9 +115,30 @@ std::string findLibrary(std::string& error)
     return {};
 }
 
+std::string preloadEntry(const std::string& library)
+{
+#ifdef NPRGL_LIBDIR_IS_LOADER_LIB
+    // Installed in <prefix>/<libdir>/nprgl with libdir what the loader's $LIB expands to
+    // (Debian: lib/x86_64-linux-gnu, lib/i386-linux-gnu): <prefix>/$LIB/nprgl/libnprgl.so
+    // loads the library of each program's own architecture, in its children too, as
+    // MangoHud's command does.
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec || std::getenv("NPRGL_LIBRARY")) return library;
+    const fs::path prefix = fs::weakly_canonical(exe.parent_path() / NPRGL_BIN_TO_PREFIX, ec);
+    const fs::path installed = prefix / NPRGL_INSTALL_LIBDIR / "nprgl" / "libnprgl.so";
+    if (!ec && fs::equivalent(installed, library, ec)) {
+        return (prefix / "$LIB" / "nprgl" / "libnprgl.so").string();
+    }
+#endif
+    return library;
+}
+
 int runProgram(const RunOptions& options)
 {
-    if (options.command.empty()) return fail("no program to run (see nprgl --help)");
+    std::vector<std::string> command = options.command;
+    command.erase(command.begin(), command.begin() + long(applyAssignments(command)));
+    if (command.empty()) return fail("no program to run (see nprgl --help)");
 
     // Refuse bad settings here, before the program starts, rather than in the library where
     // the only safe answer is to fall back to passthrough.
@@ -135,7 +180,7 @@ int runProgram(const RunOptions& options)
             return fail("--frames: " + error);
         }
         std::string file = options.recordFile.empty()
-                               ? fs::path(options.command[0]).filename().string() + ".nprgl"
+                               ? fs::path(command[0]).filename().string() + ".nprgl"
                                : options.recordFile;
         // Refused before the program starts: a file that is not a capture is never
         // overwritten, a capture only with --force, and a FIFO or device is never opened.
@@ -180,9 +225,9 @@ int runProgram(const RunOptions& options)
     if (!options.screenshot.empty()) setenv("NPRGL_SCREENSHOT", options.screenshot.c_str(), 1);
     if (!options.logLevel.empty()) setenv("NPRGL_LOG_LEVEL", options.logLevel.c_str(), 1);
     if (!options.logFile.empty()) setenv("NPRGL_LOG_FILE", options.logFile.c_str(), 1);
-    std::string preload = library;
+    std::string preload = preloadEntry(library);
     if (const char* old = std::getenv("LD_PRELOAD"); old && *old) {
-        if (std::strstr(old, library.c_str())) {
+        if (std::strstr(old, preload.c_str())) {
             preload = old;
         } else {
             preload += std::string(":") + old;
@@ -196,10 +241,10 @@ int runProgram(const RunOptions& options)
 #endif
     setenv("LD_PRELOAD", preload.c_str(), 1);
 
-    warnIfSecureExecution(options.command.front());
-    if (options.record) superviseRecording(options.command, recordPath);
+    warnIfSecureExecution(command.front());
+    if (options.record) superviseRecording(command, recordPath);
     std::vector<char*> argv;
-    for (const std::string& arg : options.command) argv.push_back(const_cast<char*>(arg.c_str()));
+    for (const std::string& arg : command) argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);
     execvp(argv[0], argv.data());
     int err = errno;

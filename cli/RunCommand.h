@@ -24,7 +24,12 @@ struct RunOptions {
 // the exit code to use.
 int runProgram(const RunOptions& options);
 
-// The absolute path of libnprgl.so: NPRGL_LIBRARY, else next to this executable.
+// The absolute path of libnprgl.so: NPRGL_LIBRARY, else the build tree's or the installed one
+// beside this executable.
 std::string findLibrary(std::string& error);
+
+// What LD_PRELOAD names for that library: the installed one through the loader's $LIB
+// (<prefix>/$LIB/nprgl/libnprgl.so), any other as it is.
+std::string preloadEntry(const std::string& library);
 
 } // namespace nprgl::cli

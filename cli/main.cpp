@@ -28,8 +28,9 @@ Commands:
                   nprgl record [-o FILE] [--force] [--frames A-B] [--] PROGRAM ARGS...
                   (default FILE: <program>.nprgl; an existing capture is replaced only with
                   --force); says what was recorded when the program ends
-  replay          render a capture headless into PNGs: nprgl replay FILE (-o DIR | --stats)
-                  [--style S] [--set k=v]... [--frames A-B] [--size WxH] [--context N]
+  replay          render a capture headless into PNGs or a video: nprgl replay FILE
+                  (-o DIR | --video out.mp4 [--fps N] | --stats) [--style S] [--set k=v]...
+                  [--frames A-B] [--size WxH] [--context N]
   compare         replay a capture natively and in a style and measure how alike they are:
                   nprgl compare FILE [--style S|--preset P] [--frames A-B] [--json OUT] [-o DIR]
   dump            print a capture's calls: nprgl dump FILE [--frames A-B] [--grep NAME]
@@ -42,6 +43,8 @@ Commands:
   version         nprgl's version
 
 A program named like a command runs with "run" or "--" first: nprgl run help.
+NAME=value words before the program go to its environment, as in a shell; every word from
+the program on is its own, untouched (so nprgl %command% works as a Steam launch option).
 Exit status: the program's own (run, record); 2 for a usage error (an unknown option, a bad
 value, a missing argument); 1 when a command fails (an unreadable or damaged file, nothing
 to write); 126 or 127 when the program cannot be started.
@@ -107,7 +110,7 @@ bool parsed(CLI::App& app, int argc, char** argv, int& exitCode)
 int replayMain(int argc, char** argv)
 {
     nprgl::cli::ReplayCommandOptions o;
-    CLI::App app{"Render a capture headless (OSMesa) into PNGs frame_0000000042.png",
+    CLI::App app{"Render a capture headless (OSMesa) into PNGs frame_0000000042.png or a video",
                  "nprgl replay"};
     app.add_option("file", o.file, "the capture")->required();
     app.add_option("-o,--output", o.outDir, "directory for the PNGs (none: render only)");
@@ -124,6 +127,10 @@ int replayMain(int argc, char** argv)
                    "render size WxH (default: the recorded size; the program's viewport and "
                    "scissor are scaled to it, so the frame is its picture resized)");
     app.add_option("--context", o.context, "which context's stream (default: the longest)");
+    app.add_option("--video", o.video,
+                   "also encode the frames into this video: .mp4, .mkv or .mov (H.264), .webm "
+                   "(VP9)");
+    app.add_option("--fps", o.fps, "the video's frame rate (default 30)");
     app.add_option("--rules", o.rules,
                    "a configuration file (the program's, ~/.config/nprgl/PROGRAM.conf) whose "
                    "leave_texture and leave_state rules apply");

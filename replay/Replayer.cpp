@@ -109,7 +109,7 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
                           : "not styled (style none)");
             if (c) statsBefore = c->runCounts();
         }
-        if (options.outDir.empty() ||
+        if ((options.outDir.empty() && !options.onFrame) ||
             (!options.frames.empty() && !options.frames.contains(frame))) {
             return true;
         }
@@ -119,6 +119,8 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
         image.rgba = buffer; // OSMesa's buffer: bottom row first
         image.flipRows();
         image.makeOpaque();
+        if (options.onFrame && !options.onFrame(image, frameError)) return false;
+        if (options.outDir.empty()) return true;
         char name[64];
         std::snprintf(name, sizeof name, "/frame_%010llu.png",
                       static_cast<unsigned long long>(frame));

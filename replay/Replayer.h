@@ -3,6 +3,7 @@
 #include "capture/CaptureReader.h"
 #include "capture/ReadReport.h"
 #include "common/FrameSet.h"
+#include "common/PngImage.h"
 #include "replay/ReplayLimits.h"
 #include "shim/Config.h"
 
@@ -23,6 +24,9 @@ struct ReplayOptions {
     ReplayLimits limits;    // what a call may ask of the driver before it is refused
     // The style and values to replay with; unset: the process's (the environment's).
     std::optional<Config> config;
+    // Also given each selected frame's picture (a video's next frame); false stops the replay
+    // with its error.
+    std::function<bool(const PngImage&, std::string& error)> onFrame;
 };
 
 // Replays a capture headless on OSMesa through the same pipeline the library runs inside an

@@ -6,6 +6,7 @@ pkgs=(
     khronos-api libgl-dev libegl-dev libx11-dev libxi-dev libosmesa6-dev libgl1-mesa-dri
     libglm-dev libopenmesh-dev libgtest-dev libgmock-dev libzstd-dev libxxhash-dev libpng-dev
     libcli11-dev nlohmann-json3-dev libassimp-dev assimp-testmodels
+    libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
     mesa-utils x11-utils xvfb xauth libxtst-dev xscreensaver-gl xscreensaver-gl-extra
     freeglut3-dev libsdl2-dev libglfw3-dev
     apitrace libimgui-dev neverball openarena extremetuxracer crack-attack xdotool

@@ -97,3 +97,38 @@ TEST(Cli, TheProgramAloneOpensTheLogFile)
     }
     EXPECT_EQ(said, 1u) << r.err;
 }
+
+// `nprgl %command%` as a Steam launch option: the launcher's command line may start with
+// NAME=value words and holds wrappers with options of their own, some named like nprgl's, and
+// a "--" of their own. The assignments go to the environment (as the shell takes them); from
+// the program on, every word reaches it untouched and in order.
+TEST(Cli, ALaunchersCommandLinePassesThroughUntouched)
+{
+    const std::string script = "printf '<%s>' \"$NPRGL_TEST_GAME\" \"$@\"; printf '\\n%s\\n' "
+                               "\"$LD_PRELOAD\"";
+    const std::vector<std::string> program = {
+        "sh", "-c", script, "wrapper", "--style", "toon", "--", "-o", "x.nprgl", "A=1", "--help",
+        "--set=toon.x=1"};
+    for (const char* command : {"run", "record"}) {
+        SCOPED_TRACE(command);
+        std::vector<std::string> args = {command, "--style", "none"};
+        if (std::string(command) == "record") {
+            args.insert(args.end(), {"-o", freshDir("cli_launcher") + "/sh.nprgl"});
+        }
+        args.insert(args.end(), {"NPRGL_TEST_GAME=game=1", "NPRGL_TEST_OTHER=2"});
+        args.insert(args.end(), program.begin(), program.end());
+        ProcessResult r = runNprgl(args);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const size_t line = r.out.find('\n');
+        EXPECT_EQ(r.out.substr(0, line),
+                  "<game=1><--style><toon><--><-o><x.nprgl><A=1><--help><--set=toon.x=1>");
+        EXPECT_NE(r.out.find("libnprgl.so", line), std::string::npos) << r.out;
+    }
+    // After "--" too, and a word that is no NAME=value is the program.
+    ProcessResult dashed =
+        runNprgl({"--", "NPRGL_TEST_GAME=2", "sh", "-c", "echo $NPRGL_TEST_GAME"});
+    EXPECT_EQ(dashed.out, "2\n") << dashed.err;
+    ProcessResult notName = runNprgl({"--style", "none", "1A=2", "true"});
+    EXPECT_EQ(notName.exitCode, 127) << notName.err;
+    EXPECT_NE(notName.err.find("cannot run '1A=2'"), std::string::npos) << notName.err;
+}
