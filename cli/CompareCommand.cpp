@@ -188,6 +188,17 @@ std::string shadingChain(const CompareOptions& options)
 int compareCommand(const CompareOptions& options)
 {
     {
+        // A bad style, preset or value is a usage error, said before any replay runs.
+        std::string config, error;
+        for (const std::string& v : options.settings) config += (config.empty() ? "" : ",") + v;
+        std::string chain = options.style;
+        StyleSettings style;
+        if (!Presets::combine(options.preset, chain, config, error)) {
+            return fail("--preset: " + error, 2);
+        }
+        if (!StyleSettings::parse(chain, config, style, error)) return fail(error, 2);
+    }
+    {
         // Refused here, once, rather than by each replay below (a FIFO, a device, no file).
         capture::CaptureReader reader;
         std::string error;
