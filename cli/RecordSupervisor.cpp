@@ -80,7 +80,8 @@ std::string recordingSummary(const std::string& path, const std::string& howItEn
         uncaptured += (uncaptured.empty() ? "" : ", ") + name + " x" + std::to_string(count);
     }
     line += "; not captured: " + (uncaptured.empty() ? std::string("nothing") : uncaptured);
-    if (!reader.warning().empty()) line += "; " + reader.warning();
+    // Damage is worth a word here; an unclosed end is said above already.
+    if (!reader.damage().empty()) line += "; " + reader.warning();
     return line;
 }
 
