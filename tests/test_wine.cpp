@@ -1,0 +1,201 @@
+// End to end: a Windows legacy-GL program (tests/wine/wingl.c, built with mingw-w64) run by
+// Debian's wine natively and through nprgl: styled, recorded and replayed.
+
+#include "tests/support/ImageCompare.h"
+#include "tests/support/Process.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+using namespace nprgl;
+using namespace nprgl::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kExe = NPRGL_WINGL64;
+const std::string kPrefix = NPRGL_WINE_PREFIX;
+
+// A command in PATH, or empty.
+std::string inPath(const std::string& name)
+{
+    const char* path = std::getenv("PATH");
+    std::stringstream dirs(path ? path : "");
+    std::string dir;
+    while (std::getline(dirs, dir, ':')) {
+        const fs::path candidate = fs::path(dir.empty() ? "." : dir) / name;
+        if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    }
+    return {};
+}
+
+// A private prefix in the build tree; no Mono or Gecko installer prompts, no Wine chatter.
+std::map<std::string, std::string> wineEnv()
+{
+    return {{"WINEPREFIX", kPrefix}, {"WINEDEBUG", "-all"}, {"WINEDLLOVERRIDES", "mscoree,mshtml="}};
+}
+
+// Waits until the prefix's wineserver and the processes it started (explorer, services) are
+// gone, so no test leaves them behind nor finds them from the one before.
+void waitForWineserver()
+{
+    ProcessResult r = runProcess({"wineserver", "-w"}, wineEnv());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+}
+
+class Wine : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        if (inPath("wine").empty() || inPath("wineserver").empty()) {
+            GTEST_SKIP() << "wine is not installed (scripts/install-deps.sh installs wine64)";
+        }
+        if (kExe.empty()) {
+            GTEST_SKIP() << "x86_64-w64-mingw32-gcc was not found when the build was "
+                            "configured: install gcc-mingw-w64-x86-64-win32 and reconfigure";
+        }
+        const char* display = std::getenv("DISPLAY");
+        ASSERT_TRUE(display && *display) << "run through scripts/test.sh (Xvfb)";
+        // The first boot makes the prefix; a marker says it finished (a boot cut short is
+        // redone from nothing).
+        const fs::path booted = fs::path(kPrefix) / "nprgl-booted";
+        if (!fs::exists(booted)) {
+            fs::remove_all(kPrefix);
+            ProcessResult r = runProcess({"wineboot", "-i"}, wineEnv(), 600);
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            waitForWineserver();
+            std::ofstream(booted.string()) << "booted\n";
+        }
+    }
+    void TearDown() override
+    {
+        if (!IsSkipped()) waitForWineserver();
+    }
+};
+
+// The one file in dir whose name starts with prefix and ends with suffix, or empty.
+std::string onlyFile(const std::string& dir, const std::string& prefix,
+                     const std::string& suffix, std::string& all)
+{
+    std::string found;
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        all += name + " ";
+        if (name.starts_with(prefix) && name.ends_with(suffix)) {
+            found = entry.path().string();
+            ++count;
+        }
+    }
+    return count == 1 ? found : std::string();
+}
+
+std::string screenshotOf(const std::string& dir, int frame)
+{
+    std::string all;
+    if (!fs::exists(dir)) return {};
+    std::string found = onlyFile(dir, "wingl64.exe_", "_" + std::to_string(frame) + ".png", all);
+    EXPECT_FALSE(found.empty()) << "no wingl64.exe_*_" << frame << ".png in " << dir << ": "
+                                << all;
+    return found;
+}
+
+std::vector<std::string> wingl(int frames)
+{
+    return {"wine", kExe, "--frames", std::to_string(frames)};
+}
+
+} // namespace
+
+TEST_F(Wine, TheProgramRunsNatively)
+{
+    ProcessResult r = runProcess(wingl(5), wineEnv());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("wingl: drew 5 frames"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err.find("nprgl:"), std::string::npos) << r.err;
+}
+
+// `nprgl wine prog.exe`: the library comes into the process that draws through the libGL
+// that Wine's winex11 loads with dlopen; the default style changes the picture, and the log
+// names the program (not "", as wine rewrites the loader's arguments) and the context.
+TEST_F(Wine, DefaultStyleRestylesTheWindowsProgram)
+{
+    const std::string dir = freshDir("wine-style");
+    ProcessResult native = runProcess(
+        under({nprglCommand(), "--style", "none", "--screenshot", "frames=3;dir=" + dir + "/none"},
+              wingl(5)),
+        wineEnv());
+    ASSERT_EQ(native.exitCode, 0) << native.err;
+    ProcessResult styled = runProcess(
+        under({nprglCommand(), "--screenshot", "frames=3;dir=" + dir + "/styled"}, wingl(5)),
+        wineEnv());
+    ASSERT_EQ(styled.exitCode, 0) << styled.err;
+    EXPECT_NE(styled.out.find("wingl: drew 5 frames"), std::string::npos) << styled.out;
+    EXPECT_TRUE(std::regex_search(styled.err, std::regex("nprgl: wingl64\\.exe: style "
+                                                         "toon\\+paper\\+edges")))
+        << styled.err;
+    EXPECT_TRUE(std::regex_search(
+        styled.err, std::regex("context [0-9]+: style toon\\+paper\\+edges on llvmpipe")))
+        << styled.err;
+    // The cube, the quad and the triangle, five frames: every one restyled.
+    EXPECT_TRUE(std::regex_search(
+        styled.err, std::regex("context [0-9]+: 3D polygon draws: 15 styled, 0 left")))
+        << styled.err;
+    const std::string none = screenshotOf(dir + "/none", 3);
+    const std::string toon = screenshotOf(dir + "/styled", 3);
+    ASSERT_FALSE(none.empty() || toon.empty());
+    ImageDiff diff = compareImages(none, toon, 8);
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_GT(diff.differingPixels, 320u * 240u / 20) << "the style changed too little";
+}
+
+// `nprgl record -- wine prog.exe`: the capture is the file asked for (the process that draws
+// is the one nprgl started: wine execs its loader in place, and wineserver and Wine's own
+// processes draw nothing), it names the Windows program, and it replays as drawn.
+TEST_F(Wine, RecordedAndReplayedAsDrawn)
+{
+    const std::string dir = freshDir("wine-record");
+    const std::string file = dir + "/wingl.nprgl";
+    ProcessResult r = runProcess(under({nprglCommand(), "record", "--style", "none", "-o", file,
+                                        "--screenshot", "frames=3;dir=" + dir + "/live"},
+                                       wingl(5)),
+                                 wineEnv());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("nprgl: recorded 5 frames to " + file), std::string::npos) << r.err;
+    waitForWineserver();
+    std::string all;
+    EXPECT_EQ(onlyFile(dir, "", ".nprgl", all), file) << "captures: " << all;
+
+    ProcessResult info = runProcess({nprglCommand(), "info", "--json", file});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    const nlohmann::json meta = nlohmann::json::parse(info.out);
+    EXPECT_EQ(meta["program"], "wingl64.exe");
+    ASSERT_FALSE(meta["commandLine"].empty());
+    EXPECT_EQ(meta["commandLine"].back(), "5") << meta["commandLine"].dump();
+
+    const std::string replay = dir + "/replay";
+    ProcessResult p = runProcess({nprglCommand(), "replay", "--style", "none", file, "-o", replay});
+    ASSERT_EQ(p.exitCode, 0) << p.err;
+    const std::string live = screenshotOf(dir + "/live", 3);
+    ASSERT_FALSE(live.empty());
+    ImageDiff diff = compareImages(live, framePng(replay, 3));
+    ASSERT_TRUE(diff.comparable) << diff.error;
+    EXPECT_EQ(diff.differingPixels, 0u);
+    EXPECT_TRUE(fs::exists(framePng(replay, 5)));
+    EXPECT_FALSE(fs::exists(framePng(replay, 6)));
+
+    // And in the default style, headless.
+    const std::string styled = dir + "/styled";
+    ProcessResult s = runProcess({nprglCommand(), "replay", file, "-o", styled});
+    ASSERT_EQ(s.exitCode, 0) << s.err;
+    ImageDiff styledDiff = compareImages(live, framePng(styled, 3), 8);
+    ASSERT_TRUE(styledDiff.comparable) << styledDiff.error;
+    EXPECT_GT(styledDiff.differingPixels, 320u * 240u / 20);
+}
