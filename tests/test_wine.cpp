@@ -49,7 +49,8 @@ std::string inPath(const std::string& name)
 // A private prefix in the build tree; no Mono or Gecko installer prompts, no Wine chatter.
 std::map<std::string, std::string> wineEnv()
 {
-    return {{"WINEPREFIX", kPrefix}, {"WINEDEBUG", "-all"}, {"WINEDLLOVERRIDES", "mscoree,mshtml="}};
+    return {
+        {"WINEPREFIX", kPrefix}, {"WINEDEBUG", "-all"}, {"WINEDLLOVERRIDES", "mscoree,mshtml="}};
 }
 
 // Waits until the prefix's wineserver and the processes it started (explorer, services) are
@@ -131,8 +132,8 @@ protected:
 };
 
 // The one file in dir whose name starts with prefix and ends with suffix, or empty.
-std::string onlyFile(const std::string& dir, const std::string& prefix,
-                     const std::string& suffix, std::string& all)
+std::string onlyFile(const std::string& dir, const std::string& prefix, const std::string& suffix,
+                     std::string& all)
 {
     std::string found;
     int count = 0;
@@ -185,9 +186,9 @@ TEST_P(Wine, DefaultStyleRestylesTheWindowsProgram)
         nprglEnv(GetParam()));
     ASSERT_EQ(styled.exitCode, 0) << styled.err;
     EXPECT_NE(styled.out.find("wingl: drew 5 frames"), std::string::npos) << styled.out;
-    EXPECT_TRUE(std::regex_search(styled.err, std::regex("nprgl: wingl" + std::to_string(GetParam().bits) +
-                                                         "\\.exe: style toon\\+paper\\+edges")))
-        << styled.err;
+    const std::regex named("nprgl: wingl" + std::to_string(GetParam().bits) +
+                           "\\.exe: style toon\\+paper\\+edges");
+    EXPECT_TRUE(std::regex_search(styled.err, named)) << styled.err;
     EXPECT_TRUE(std::regex_search(
         styled.err, std::regex("context [0-9]+: style toon\\+paper\\+edges on llvmpipe")))
         << styled.err;
