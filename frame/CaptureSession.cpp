@@ -1,6 +1,7 @@
 #include "frame/CaptureSession.h"
 
 #include "common/Log.h"
+#include "common/ProcessName.h"
 #include "frame/Recorder.h"
 #include "shim/Context.h"
 #include "shim/RealGl.h"
@@ -9,21 +10,11 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <unistd.h>
 
 namespace nprgl {
 
 namespace {
-
-std::vector<std::string> commandLine()
-{
-    std::vector<std::string> args;
-    std::ifstream in("/proc/self/cmdline", std::ios::binary);
-    std::string arg;
-    while (std::getline(in, arg, '\0')) args.push_back(arg);
-    return args;
-}
 
 // The process `nprgl record` started (it execs the program, so the pid is the same) writes
 // the file it was asked for; any other process (a forked or spawned child) its own
@@ -129,8 +120,8 @@ bool CaptureSession::ensureOpenLocked(const Context& ctx)
     }
     if (mOpenFailed) return false;
     capture::Metadata meta;
-    meta.program = program_invocation_short_name;
-    meta.commandLine = commandLine();
+    meta.program = processName();
+    meta.commandLine = processCommandLine();
     meta.glVendor = ctx.vendor();
     meta.glRenderer = ctx.renderer();
     meta.glVersion = ctx.version();

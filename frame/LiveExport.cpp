@@ -3,6 +3,7 @@
 #include "capture/Metadata.h"
 #include "common/KeyValue.h"
 #include "common/Log.h"
+#include "common/ProcessName.h"
 #include "frame/FrameExport.h"
 #include "shim/Context.h"
 
@@ -92,7 +93,7 @@ bool LiveExport::writeFrame(const Context& ctx, uint64_t frame, const uint8_t* c
         return false;
     }
     if (mFrames.contains(frame)) {
-        std::string path = mDir + "/" + program_invocation_short_name + "_" +
+        std::string path = mDir + "/" + processName() + "_" +
                            std::to_string(frame) + "." + mFormat;
         size_t objects = 0;
         if (exportFrame(mReconstructor, mTracker.frameBatches(), ExportSpace::Eye, path, error,

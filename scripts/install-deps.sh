@@ -11,6 +11,7 @@ pkgs=(
     freeglut3-dev libsdl2-dev libglfw3-dev
     apitrace libimgui-dev neverball openarena extremetuxracer crack-attack xdotool
     clang libclang-rt-14-dev
+    wine wine64 gcc-mingw-w64-x86-64-win32   # Windows programs under Wine (tests/test_wine.cpp)
 )
 sudo=""
 if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi

@@ -1,6 +1,7 @@
 #include "shim/Config.h"
 
 #include "common/Log.h"
+#include "common/ProcessName.h"
 #include "common/ScreenshotSpec.h"
 #include "shim/ConfigFile.h"
 #include "shim/ConfigWatcher.h"
@@ -93,7 +94,7 @@ Config Config::fromEnvironment(const Config* previous)
 {
     const LogLevel said = previous ? LogLevel::Debug : LogLevel::Info;
     Config s;
-    s.programName = program_invocation_short_name;
+    s.programName = processName();
     s.keys = defaultKeys();
     // Lowest precedence first: the global file, the program's file.
     std::string chain, config, logLevel, missing, refused;

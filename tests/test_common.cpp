@@ -2,6 +2,7 @@
 #include "common/FrameSet.h"
 #include "common/KeyValue.h"
 #include "common/PngImage.h"
+#include "common/ProcessName.h"
 #include "tests/support/Process.h"
 
 #include <gtest/gtest.h>
@@ -270,4 +271,27 @@ TEST(FrameFidelity, ASpeckAPixelApartIsRasterisationNotAnError)
     paint(styled, 12, 10, 13, 11, white);
     ASSERT_TRUE(FrameFidelity::measure(native, styled, PngImage(), false, m, error)) << error;
     EXPECT_DOUBLE_EQ(m.fidelity(), 0.0);
+}
+
+// Wine moves the Windows program's command line over its loader's arguments: the name glibc
+// kept pointed at "" or "uild/wine/wingl64.exe" (screenshots to a missing folder, the
+// per-program file ".conf"), and the command line ends in NUL padding, taken for words.
+TEST(ProcessName, AProgramIsNamedByItsCommandLineAsItIsNow)
+{
+    EXPECT_EQ(programNameFrom({"/usr/bin/glxgears"}, "glxgears"), "glxgears");
+    EXPECT_EQ(programNameFrom({"build/wine/wingl64.exe", "--frames", "5"}, "wingl64.exe"),
+              "wingl64.exe");
+    EXPECT_EQ(programNameFrom({"C:\\Games\\Some Game\\game.exe"}, "game.exe"), "game.exe");
+    EXPECT_EQ(programNameFrom({}, "comm-name"), "comm-name");
+    EXPECT_EQ(programNameFrom({"dir/"}, "comm-name"), "comm-name");
+}
+
+TEST(ProcessName, TheCommandLineLosesTheNulPaddingAtItsEnd)
+{
+    EXPECT_EQ(trimCommandLine({"wingl.exe", "--frames", "5", "", "", ""}),
+              (std::vector<std::string>{"wingl.exe", "--frames", "5"}));
+    EXPECT_EQ(trimCommandLine({"prog", "", "x"}), (std::vector<std::string>{"prog", "", "x"}));
+    EXPECT_EQ(processName(), "test_common");
+    ASSERT_FALSE(processCommandLine().empty());
+    EXPECT_FALSE(processCommandLine().back().empty());
 }
