@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <utility>
 
 namespace nprgl::cli {
 
@@ -121,14 +122,20 @@ std::string preloadEntry(const std::string& library)
     // Installed in <prefix>/<libdir>/nprgl with libdir what the loader's $LIB expands to
     // (Debian: lib/x86_64-linux-gnu, lib/i386-linux-gnu): <prefix>/$LIB/nprgl/libnprgl.so
     // loads the library of each program's own architecture, in its children too, as
-    // MangoHud's command does.
+    // MangoHud's command does. The build tree mirrors that layout (build/bin/nprgl,
+    // build/lib/<multiarch>/nprgl/libnprgl.so, the 32-bit one from scripts/build-i386.sh).
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (ec || std::getenv("NPRGL_LIBRARY")) return library;
-    const fs::path prefix = fs::weakly_canonical(exe.parent_path() / NPRGL_BIN_TO_PREFIX, ec);
-    const fs::path installed = prefix / NPRGL_INSTALL_LIBDIR / "nprgl" / "libnprgl.so";
-    if (!ec && fs::equivalent(installed, library, ec)) {
-        return (prefix / "$LIB" / "nprgl" / "libnprgl.so").string();
+    const std::pair<const char*, const char*> layouts[] = {
+        {NPRGL_BIN_TO_PREFIX, NPRGL_INSTALL_LIBDIR}, {"..", NPRGL_BUILD_LIBDIR}};
+    for (const auto& [toPrefix, libdir] : layouts) {
+        const fs::path prefix = fs::weakly_canonical(exe.parent_path() / toPrefix, ec);
+        if (ec) continue;
+        const fs::path path = prefix / libdir / "nprgl" / "libnprgl.so";
+        if (fs::equivalent(path, library, ec)) {
+            return (prefix / "$LIB" / "nprgl" / "libnprgl.so").string();
+        }
     }
 #endif
     return library;

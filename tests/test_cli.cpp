@@ -132,3 +132,18 @@ TEST(Cli, ALaunchersCommandLinePassesThroughUntouched)
     EXPECT_EQ(notName.exitCode, 127) << notName.err;
     EXPECT_NE(notName.err.find("cannot run '1A=2'"), std::string::npos) << notName.err;
 }
+
+// The build tree mirrors the installed layout: build/bin/nprgl preloads
+// build/lib/$LIB/nprgl/libnprgl.so, which the loader reads as this build's library in a
+// 64-bit program and as scripts/build-i386.sh's in a 32-bit one (tests/i386).
+TEST(Cli, TheBuildTreesCommandPreloadsThroughTheLoadersLib)
+{
+    ProcessResult preload = runNprgl({"--style", "none", "--", "printenv", "LD_PRELOAD"});
+    ASSERT_EQ(preload.exitCode, 0) << preload.err;
+    const std::regex entry("(^|:)[^:]*/lib/\\$LIB/nprgl/libnprgl\\.so(:|\\n|$)");
+    EXPECT_TRUE(std::regex_search(preload.out, entry)) << preload.out;
+    // ...and the loader maps this build's library through it.
+    ProcessResult maps = runNprgl({"--style", "none", "--", "cat", "/proc/self/maps"});
+    ASSERT_EQ(maps.exitCode, 0) << maps.err;
+    EXPECT_NE(maps.out.find(libPath()), std::string::npos) << libPath() << "\n" << maps.out;
+}
