@@ -16,7 +16,6 @@
 #include <filesystem>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <utility>
 
 namespace nprgl::cli {
 
@@ -127,15 +126,10 @@ std::string preloadEntry(const std::string& library)
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (ec || std::getenv("NPRGL_LIBRARY")) return library;
-    const std::pair<const char*, const char*> layouts[] = {
-        {NPRGL_BIN_TO_PREFIX, NPRGL_INSTALL_LIBDIR}, {"..", NPRGL_BUILD_LIBDIR}};
-    for (const auto& [toPrefix, libdir] : layouts) {
-        const fs::path prefix = fs::weakly_canonical(exe.parent_path() / toPrefix, ec);
-        if (ec) continue;
-        const fs::path path = prefix / libdir / "nprgl" / "libnprgl.so";
-        if (fs::equivalent(path, library, ec)) {
-            return (prefix / "$LIB" / "nprgl" / "libnprgl.so").string();
-        }
+    const fs::path prefix = fs::weakly_canonical(exe.parent_path() / NPRGL_BIN_TO_PREFIX, ec);
+    const fs::path installed = prefix / NPRGL_INSTALL_LIBDIR / "nprgl" / "libnprgl.so";
+    if (!ec && fs::equivalent(installed, library, ec)) {
+        return (prefix / "$LIB" / "nprgl" / "libnprgl.so").string();
     }
 #endif
     return library;

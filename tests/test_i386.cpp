@@ -1,5 +1,5 @@
 // 32-bit programs: Debian's i386 glxgears run through the 64-bit nprgl command, which preloads
-// build/lib/$LIB/nprgl/libnprgl.so (the 32-bit library of scripts/build-i386.sh), styled,
+// build/$LIB/nprgl/libnprgl.so (the 32-bit library of scripts/build-i386.sh), styled,
 // recorded and replayed by the 64-bit replayer. Skipped where that build or i386 Mesa is absent.
 #include "tests/support/ImageCompare.h"
 #include "tests/support/Process.h"
