@@ -36,12 +36,11 @@ std::string missing()
         return "no i386 glxgears at " + glxgears32() +
                " (scripts/build-i386.sh unpacks Debian's mesa-utils:i386)";
     }
-    for (const char* lib : {"/usr/lib/i386-linux-gnu/libGL.so.1",
-                            "/usr/lib/i386-linux-gnu/dri/swrast_dri.so"}) {
-        if (elfClass(lib) != 1) {
-            return std::string("no ") + lib + " (libgl1:i386 and libglx-mesa0:i386, "
-                                              "scripts/install-deps.sh)";
-        }
+    // Its libraries as the i386 loader resolves them (libGL.so.1 of libgl1:i386...).
+    ProcessResult list = runProcess({"/lib/ld-linux.so.2", "--list", glxgears32()}, {}, 60);
+    if (list.exitCode != 0 || list.out.find("not found") != std::string::npos) {
+        return "the i386 glxgears cannot start (libgl1:i386 and libglx-mesa0:i386, "
+               "scripts/install-deps.sh): " + list.out + list.err;
     }
     return {};
 }
