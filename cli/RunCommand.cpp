@@ -121,7 +121,8 @@ std::string preloadEntry(const std::string& library)
     // Installed in <prefix>/<libdir>/nprgl with libdir what the loader's $LIB expands to
     // (Debian: lib/x86_64-linux-gnu, lib/i386-linux-gnu): <prefix>/$LIB/nprgl/libnprgl.so
     // loads the library of each program's own architecture, in its children too, as
-    // MangoHud's command does.
+    // MangoHud's command does. The build tree mirrors that layout (build/bin/nprgl,
+    // build/lib/<multiarch>/nprgl/libnprgl.so, the 32-bit one from scripts/build-i386.sh).
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (ec || std::getenv("NPRGL_LIBRARY")) return library;

@@ -28,8 +28,9 @@ int runProgram(const RunOptions& options);
 // beside this executable.
 std::string findLibrary(std::string& error);
 
-// What LD_PRELOAD names for that library: the installed one through the loader's $LIB
-// (<prefix>/$LIB/nprgl/libnprgl.so), any other as it is.
+// What LD_PRELOAD names for that library: the installed one or the build tree's through the
+// loader's $LIB (<prefix>/$LIB/nprgl/libnprgl.so, build/$LIB/nprgl/libnprgl.so), any
+// other as it is.
 std::string preloadEntry(const std::string& library);
 
 } // namespace nprgl::cli

@@ -19,3 +19,19 @@ if ! dpkg -s "${pkgs[@]}" >/dev/null 2>&1; then
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${pkgs[@]}"
 fi
+# 32-bit programs (scripts/build-i386.sh, tests/test_i386.cpp): g++-multilib and the i386
+# libraries libnprgl.so links, and i386 Mesa for Debian's i386 glxgears. Without them the
+# 32-bit library is not built and its tests are skipped, so a failure here only warns.
+i386=(
+    g++-multilib libzstd-dev:i386 libxxhash-dev:i386 libimgui-dev:i386 libopenmesh1:i386
+    libpng16-16:i386 libgl1:i386 libglx-mesa0:i386
+)
+if ! dpkg -s "${i386[@]}" >/dev/null 2>&1; then
+    if ! dpkg --print-foreign-architectures | grep -qx i386; then
+        $sudo dpkg --add-architecture i386
+    fi
+    $sudo apt-get update -qq || true
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+        "${i386[@]}" ||
+        echo "install-deps: the i386 packages could not be installed: no 32-bit library" >&2
+fi

@@ -7,6 +7,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 # Warnings are errors here: the build stays warning-free.
 "$root/scripts/build.sh" "$root/build" -DNPRGL_WERROR=ON
+# The 32-bit library beside it, for the i386 tests (skipped where it cannot be built).
+"$root/scripts/build-i386.sh" "$root/build" -DNPRGL_WERROR=ON ||
+    echo "test.sh: no 32-bit library: the i386 tests will be skipped" >&2
 # The tests run the programs as a new user would: the developer's own configuration files
 # (~/.config/nprgl) must not change what they see.
 export XDG_CONFIG_HOME="$root/build/test-config-home"

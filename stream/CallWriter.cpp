@@ -23,7 +23,7 @@ void CallWriter::putBytes(const void* bytes, size_t size)
         put<uint32_t>(kNullArray);
         return;
     }
-    if (size >= kInlineLimit && mBlobSink && size <= UINT64_MAX) {
+    if (size >= kInlineLimit && mBlobSink) {
         put<uint32_t>(kBlobArray);
         put<uint64_t>(mBlobSink(bytes, size));
         put<uint64_t>(size);

@@ -3,6 +3,9 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
+#include <cstdint>
+
 namespace nprgl {
 
 size_t pnameCount(uint32_t pname)
@@ -141,27 +144,43 @@ size_t imageBytes(uint32_t format, uint32_t type, int width, int height, int dep
         unpack.skipRows < 0 || unpack.skipImages < 0) {
         return 0;
     }
-    using Wide = unsigned __int128;
-    const Wide alignment = unpack.alignment > 0 ? Wide(unpack.alignment) : 1;
-    const Wide rowPixels = unpack.rowLength > 0 ? Wide(unpack.rowLength) : Wide(width);
-    const Wide imageRows = unpack.imageHeight > 0 ? Wide(unpack.imageHeight) : Wide(height);
-    auto alignWide = [&](Wide v) { return (v + alignment - 1) / alignment * alignment; };
-    Wide total = 0;
+    // 64-bit arithmetic that notes any overflow (a product past 2^64 is no real image
+    // either); no 128-bit type, which 32-bit targets lack.
+    bool overflow = false;
+    auto mul = [&](uint64_t a, uint64_t b) {
+        uint64_t r = 0;
+        overflow |= __builtin_mul_overflow(a, b, &r);
+        return r;
+    };
+    auto add = [&](uint64_t a, uint64_t b) {
+        uint64_t r = 0;
+        overflow |= __builtin_add_overflow(a, b, &r);
+        return r;
+    };
+    const uint64_t alignment = unpack.alignment > 0 ? uint64_t(unpack.alignment) : 1;
+    const uint64_t rowPixels = uint64_t(unpack.rowLength > 0 ? unpack.rowLength : width);
+    const uint64_t imageRows = uint64_t(unpack.imageHeight > 0 ? unpack.imageHeight : height);
+    auto alignUp = [&](uint64_t v) { return add(v, alignment - 1) / alignment * alignment; };
+    uint64_t total = 0;
     if (type == GL_BITMAP) {
-        Wide rowBytes = alignWide((rowPixels + 7) / 8);
-        Wide firstRowBytes = (Wide(unpack.skipPixels) + width + 7) / 8;
-        total = (Wide(unpack.skipRows) + height - 1) * rowBytes + firstRowBytes;
+        const uint64_t rowBytes = alignUp((rowPixels + 7) / 8);
+        const uint64_t firstRowBytes = (uint64_t(unpack.skipPixels) + uint64_t(width) + 7) / 8;
+        total = add(mul(uint64_t(unpack.skipRows) + uint64_t(height) - 1, rowBytes),
+                    firstRowBytes);
     } else {
         size_t pixelBytes = packedPixelBytes(type);
         if (!pixelBytes) pixelBytes = formatComponents(format) * componentBytes(type);
         if (!pixelBytes) return 0;
-        const Wide rowBytes = alignWide(rowPixels * pixelBytes);
-        const Wide imageBytes = rowBytes * imageRows;
-        total = (Wide(unpack.skipImages) + depth - 1) * imageBytes +
-                (Wide(unpack.skipRows) + height - 1) * rowBytes +
-                (Wide(unpack.skipPixels) + width) * pixelBytes;
+        const uint64_t rowBytes = alignUp(mul(rowPixels, pixelBytes));
+        const uint64_t imageBytes = mul(rowBytes, imageRows);
+        total = add(add(mul(uint64_t(unpack.skipImages) + uint64_t(depth) - 1, imageBytes),
+                        mul(uint64_t(unpack.skipRows) + uint64_t(height) - 1, rowBytes)),
+                    mul(uint64_t(unpack.skipPixels) + uint64_t(width), pixelBytes));
     }
-    return total > (Wide(1) << 48) ? 0 : size_t(total);
+    // Past 2^48, or past what this process can address (a 32-bit one), it is invalid too.
+    constexpr uint64_t limit = std::min<uint64_t>(uint64_t(1) << 48, SIZE_MAX);
+    if (overflow || total > limit) return 0;
+    return size_t(total);
 }
 
 size_t arrayElementBytes(int size, uint32_t type)

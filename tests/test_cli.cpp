@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <regex>
 #include <string>
 #include <vector>
@@ -135,4 +136,20 @@ TEST(Cli, ALaunchersCommandLinePassesThroughUntouched)
     ProcessResult notName = runNprgl({"--style", "none", "1A=2", "true"});
     EXPECT_EQ(notName.exitCode, 127) << notName.err;
     EXPECT_NE(notName.err.find("cannot run '1A=2'"), std::string::npos) << notName.err;
+}
+
+// The build tree mirrors the installed layout: build/bin/nprgl preloads
+// build/$LIB/nprgl/libnprgl.so, which the loader reads as this build's library in a
+// 64-bit program and as scripts/build-i386.sh's in a 32-bit one (tests/i386).
+TEST(Cli, TheBuildTreesCommandPreloadsThroughTheLoadersLib)
+{
+    ProcessResult preload = runNprgl({"--style", "none", "--", "printenv", "LD_PRELOAD"});
+    ASSERT_EQ(preload.exitCode, 0) << preload.err;
+    const std::string entry =
+        std::filesystem::canonical(binDir() + "/..").string() + "/$LIB/nprgl/libnprgl.so";
+    EXPECT_NE(preload.out.find(entry), std::string::npos) << preload.out;
+    // ...and the loader maps this build's library through it.
+    ProcessResult maps = runNprgl({"--style", "none", "--", "cat", "/proc/self/maps"});
+    ASSERT_EQ(maps.exitCode, 0) << maps.err;
+    EXPECT_NE(maps.out.find(libPath()), std::string::npos) << libPath() << "\n" << maps.out;
 }
