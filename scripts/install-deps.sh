@@ -15,8 +15,18 @@ pkgs=(
 )
 sudo=""
 if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi
-if ! dpkg -s "${pkgs[@]}" >/dev/null 2>&1; then
-    $sudo apt-get update -qq
+# True when every package named is installed. dpkg -s refuses a name installed for two
+# architectures (libzstd-dev and libzstd-dev:i386) as ambiguous; dpkg-query lists each.
+installed() {
+    local p
+    for p in "$@"; do
+        dpkg-query -W -f='${db:Status-Abbrev}\n' "$p" 2>/dev/null | grep -q '^ii' || return 1
+    done
+}
+if ! installed "${pkgs[@]}"; then
+    # An index that fails to download (a mirror in sync, another architecture's) does not
+    # stop the install: apt uses what it has, and the install itself says what is missing.
+    $sudo apt-get update -qq || echo "install-deps: apt-get update failed; trying anyway" >&2
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${pkgs[@]}"
 fi
 # 32-bit programs (scripts/build-i386.sh, tests/test_i386.cpp): g++-multilib and the i386
@@ -26,7 +36,7 @@ i386=(
     g++-multilib libzstd-dev:i386 libxxhash-dev:i386 libimgui-dev:i386 libopenmesh1:i386
     libpng16-16:i386 libgl1:i386 libglx-mesa0:i386
 )
-if ! dpkg -s "${i386[@]}" >/dev/null 2>&1; then
+if ! installed "${i386[@]}"; then
     if ! dpkg --print-foreign-architectures | grep -qx i386; then
         $sudo dpkg --add-architecture i386
     fi
