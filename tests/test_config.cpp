@@ -4,6 +4,7 @@
 #include "common/PngImage.h"
 #include "shim/ConfigFile.h"
 #include "tests/support/Process.h"
+#include "tests/support/ReloadFrames.h"
 
 #include <gtest/gtest.h>
 
@@ -25,28 +26,6 @@ void writeFile(const std::string& path, const std::string& text)
 {
     std::filesystem::create_directories(std::filesystem::path(path).parent_path());
     std::ofstream(path) << text;
-}
-
-PngImage frame(const std::string& dir, int n)
-{
-    PngImage image;
-    std::string error;
-    EXPECT_TRUE(PngImage::read(dir + "/reload_" + std::to_string(n) + ".png", image, error))
-        << error;
-    return image;
-}
-
-// Pixels whose colour differs by more than a rounding step.
-int differing(const PngImage& a, const PngImage& b)
-{
-    if (a.rgba.size() != b.rgba.size()) return -1;
-    int n = 0;
-    for (size_t i = 0; i < a.rgba.size(); i += 4) {
-        int d = 0;
-        for (int c = 0; c < 3; ++c) d += std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]));
-        n += d > 6;
-    }
-    return n;
 }
 
 // The environment of a run that reads its files from `home` only.

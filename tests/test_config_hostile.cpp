@@ -8,6 +8,7 @@
 #include "common/TextFile.h"
 #include "shim/ConfigFile.h"
 #include "tests/support/Process.h"
+#include "tests/support/ReloadFrames.h"
 
 #include <gtest/gtest.h>
 
@@ -79,28 +80,6 @@ size_t countOf(const std::string& log, const std::string& text)
 bool has(const std::string& log, const std::string& text)
 {
     return log.find(text) != std::string::npos;
-}
-
-PngImage frame(const std::string& dir, int n)
-{
-    PngImage image;
-    std::string error;
-    EXPECT_TRUE(PngImage::read(dir + "/reload_" + std::to_string(n) + ".png", image, error))
-        << error;
-    return image;
-}
-
-// Pixels whose colour differs by more than a rounding step (-1: sizes differ).
-int differing(const PngImage& a, const PngImage& b)
-{
-    if (a.rgba.size() != b.rgba.size()) return -1;
-    int n = 0;
-    for (size_t i = 0; i < a.rgba.size(); i += 4) {
-        int d = 0;
-        for (int c = 0; c < 3; ++c) d += std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c]));
-        n += d > 6;
-    }
-    return n;
 }
 
 // Runs `body` in a child process under the hang guard: its exit status, or -1 when the guard
