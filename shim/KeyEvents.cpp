@@ -5,6 +5,7 @@
 #include <X11/Xlib.h>
 #include <X11/extensions/XInput2.h>
 #include <dlfcn.h>
+#include <mutex>
 
 #include <type_traits>
 
@@ -71,7 +72,14 @@ bool KeyEvents::open(_XDisplay* display, std::string& why)
         why = "libXi.so.6 is not installed";
         return false;
     }
-    Display* own = x.openDisplay(x.displayString(display));
+    // libXau names the authority file in a static buffer: two contexts' threads opening their
+    // connections at once race on it (ThreadSanitizer saw it). Once per context, not per call.
+    static std::mutex opening;
+    Display* own = nullptr;
+    {
+        std::lock_guard lock(opening);
+        own = x.openDisplay(x.displayString(display));
+    }
     if (!own) {
         why = "cannot open a second connection to the display";
         return false;
