@@ -85,6 +85,17 @@ std::string recordingSummary(const std::string& path, const std::string& howItEn
     return line;
 }
 
+int execProgram(const std::vector<std::string>& argv)
+{
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execvp(args[0], args.data());
+    const int err = errno;
+    std::fprintf(stderr, "nprgl: cannot run '%s': %s\n", args[0], std::strerror(err));
+    return err == ENOENT ? 127 : 126;
+}
+
 void superviseRecording(const std::vector<std::string>& argv, const std::string& path)
 {
     struct sigaction action {};
@@ -107,13 +118,8 @@ void superviseRecording(const std::vector<std::string>& argv, const std::string&
         prctl(PR_SET_PDEATHSIG, SIGTERM);
         if (getppid() != self) std::_Exit(128 + SIGTERM);
         setenv("NPRGL_RECORD_PID", std::to_string(getpid()).c_str(), 1);
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        execvp(args[0], args.data());
-        const int err = errno;
-        std::fprintf(stderr, "nprgl: cannot run '%s': %s\n", args[0], std::strerror(err));
-        std::_Exit(err == ENOENT ? 127 : 126);
+        std::fflush(stderr);
+        std::_Exit(execProgram(argv));
     }
     gChild = child;
     int status = 0;

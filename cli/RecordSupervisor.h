@@ -13,6 +13,10 @@ namespace nprgl::cli {
 // script sees the program's own result.
 [[noreturn]] void superviseRecording(const std::vector<std::string>& argv, const std::string& path);
 
+// Replaces this process with argv (PATH searched); returns only on failure, having said why,
+// with the shell's status for it (127: not found, 126: not runnable).
+int execProgram(const std::vector<std::string>& argv);
+
 // The summary line for a capture file, as `nprgl record` prints it when the program ends.
 std::string recordingSummary(const std::string& path, const std::string& howItEnded);
 

@@ -244,13 +244,7 @@ int runProgram(const RunOptions& options)
 
     warnIfSecureExecution(command.front());
     if (options.record) superviseRecording(command, recordPath);
-    std::vector<char*> argv;
-    for (const std::string& arg : command) argv.push_back(const_cast<char*>(arg.c_str()));
-    argv.push_back(nullptr);
-    execvp(argv[0], argv.data());
-    int err = errno;
-    std::fprintf(stderr, "nprgl: cannot run '%s': %s\n", argv[0], std::strerror(err));
-    return err == ENOENT ? 127 : 126;
+    return execProgram(command);
 }
 
 } // namespace nprgl::cli
