@@ -184,9 +184,26 @@ float FixedLighting::ambientShare(const AttribState& a, const glm::vec4& colour,
     // Luma of the encoded values: GL lights them as they are.
     auto luma = [](const glm::vec3& c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
     const float lit = luma(glm::vec3(litSide));
-    if (!(lit > 1e-4f)) return -1.0f;
+    // A black lit side (a black material): no light makes it lighter, GL shows it the same
+    // everywhere.
+    if (!(lit > 1e-4f)) return 1.0f;
     const float share = luma(unlit) / lit;
     return std::isfinite(share) ? std::clamp(share, 0.0f, 1.0f) : -1.0f;
+}
+
+float FixedLighting::diffuseShare(const AttribState& a, const glm::vec4& colour,
+                                  const glm::vec4& litSide, size_t key)
+{
+    const GLenum mode = a.frontColorMaterial() ? a.colorMaterialMode : 0;
+    const bool colourDiffuse = mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE;
+    const glm::vec3 reflects = colourDiffuse ? glm::vec3(colour) : glm::vec3(a.material.diffuse);
+    const glm::vec3 added =
+        glm::clamp(reflects * glm::max(a.lightDiffuse[key], glm::vec3(0.0f)), 0.0f, 1.0f);
+    auto luma = [](const glm::vec3& c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
+    const float lit = luma(glm::vec3(litSide));
+    if (!(lit > 1e-4f)) return -1.0f;
+    const float share = luma(added) / lit;
+    return std::isfinite(share) ? std::max(share, 0.0f) : -1.0f;
 }
 
 } // namespace nprgl

@@ -38,6 +38,11 @@ public:
     // `litSide`, the colour the styles give its lit side.
     static float ambientShare(const AttribState& a, const glm::vec4& colour,
                               const glm::vec4& litSide);
+    // What light `key` adds to that colour facing the surface head-on (the material's or the
+    // colour's diffuse reflection of it), as a share of `litSide` by luma: with ambientShare,
+    // how GL's own light at a point compares with the lit side. Below 0: not known.
+    static float diffuseShare(const AttribState& a, const glm::vec4& colour,
+                              const glm::vec4& litSide, size_t key);
     // One vertex: eye-space position and normal (as GL transformed them, not normalised).
     static glm::vec4 shade(const AttribState& a, const Material& m, const glm::vec3& eye,
                            glm::vec3 normal);

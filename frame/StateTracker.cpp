@@ -1196,6 +1196,15 @@ void StateTracker::litBy(styles::SceneLights& out) const
         styles::SceneLights::Light& l = out.lights[k];
         l.weight = top > 1e-6f ? l.weight / top : 1.0f;
     }
+    // The highlight GL draws: the brightest light's. Under GL_COLOR_MATERIAL's specular mode
+    // the colour is per vertex, which the styles' one highlight colour cannot follow: none.
+    const bool colourSpecular = a.frontColorMaterial() && a.colorMaterialMode == GL_SPECULAR;
+    out.shine = out.count > 0 && !colourSpecular
+                    ? glm::clamp(glm::max(a.lightSpecular[key], 0.0f) * a.material.specular,
+                                 0.0f, 1.0f)
+                    : glm::vec3(0.0f);
+    out.shininess = std::clamp(a.material.shininess, 0.0f, 128.0f);
+    out.twoSide = a.twoSide;
 }
 
 void StateTracker::lightModel(GLenum pname, const float* v)
@@ -1672,7 +1681,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.materialId = currentMaterialId();
     const AttribState& a = mAttrib;
     const glm::vec4 current = batch.vertices.front().color; // before lighting replaces it
-    float ambientShare = -1.0f;
+    float ambientShare = -1.0f, diffuseShare = -1.0f;
     if (mProgramLighting) {
         if (a.lighting) FixedLighting::lightBatch(a, batch);
         if (a.flatShade) FixedLighting::flattenBatch(batch);
@@ -1717,6 +1726,8 @@ bool StateTracker::keep(TrackedBatch& batch)
             for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
         }
         ambientShare = FixedLighting::ambientShare(a, current, batch.vertices.front().color);
+        diffuseShare =
+            FixedLighting::diffuseShare(a, current, batch.vertices.front().color, keyLight());
         addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
@@ -1753,6 +1764,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     if (a.lighting) litBy(batch.lights);
     else batch.lights.count = 0;
     batch.lights.ambientShare = ambientShare;
+    batch.lights.diffuseShare = diffuseShare;
     if (batch.texture == 0) {
         batch.generated = generatedTexture();
         bakeObjectLinear(batch);

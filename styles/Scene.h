@@ -29,6 +29,17 @@ struct SceneLights {
     // reflects of the ambient light), as a share of the object's colour on its lit side:
     // how dark the program's own shadowed side is. Below 0: not known.
     float ambientShare = -1.0f;
+    // What the brightest light adds facing a surface head-on, as a share of the same colour
+    // (FixedLighting::diffuseShare): GL's light at a point is about ambientShare plus this
+    // times the lights' L·n. Below 0: not known.
+    float diffuseShare = -1.0f;
+    // GL's highlight from the brightest light: its specular colour times the material's, and
+    // the material's Blinn exponent. Black: the material does not shine.
+    glm::vec3 shine{0.0f};
+    float shininess = 0.0f;
+    // GL_LIGHT_MODEL_TWO_SIDE: GL lights the side facing the eye; else both sides by the
+    // program's normal as it is.
+    bool twoSide = false;
 };
 
 // Texture object 0 (GL's default 2D texture, one for all units), where a program that never

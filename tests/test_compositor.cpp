@@ -668,10 +668,13 @@ TEST(Compositor, GlxgearsInToonKeepsItsRedGreenAndBlueGears)
     EXPECT_EQ(t.err.find("nprgl: error"), std::string::npos) << t.err;
     expectGlxgearsPicture(toon + "/glxgears_1.png");
     expectGlxgearsPicture(toon + "/glxgears_20.png");
-    // The same gears, shaded in bands instead of by the program's lighting.
+    // The same gears, shaded in bands instead of by the program's lighting. The bands follow
+    // GL's own light (toon.bands=program), so they differ from it only where GL grades the
+    // light (the teeth's sides, the green gear's top: about 5% of the window); a frame left
+    // as the program drew it differs nowhere.
     ImageDiff diff = compareImages(plain + "/glxgears_1.png", toon + "/glxgears_1.png", 24);
     ASSERT_TRUE(diff.comparable) << diff.error;
-    EXPECT_GT(diff.differingPixels, 300u * 300u / 20) << "toon left glxgears as it was";
+    EXPECT_GT(diff.differingPixels, 300u * 300u / 50) << "toon left glxgears as it was";
 }
 
 struct DemoCase {

@@ -1141,6 +1141,68 @@ TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
     EXPECT_LT(batches[2].lights.ambientShare, 0.0f) << "unlit: no share known";
 }
 
+// What the toon's bands need to follow GL's own light (ToonStyle, toon.bands=program): how
+// much the brightest light adds facing a surface head-on, as a share of the lit colour; GL's
+// highlight colour and exponent; two-sided lighting. A black material's share is 1 (no light
+// makes it lighter): before it was "not known", and the thesis's highlight band, white mixed
+// into its colour, drew sonar's black disc grey.
+TEST(StateTracker, LitBatchesCarryWhatTheBandsFollowOfGlsLight)
+{
+    StateTracker tracker;
+    tracker.setHolding(true);
+    Feed feed{tracker};
+    const glm::vec3 towardsEye(0.0f, 0.0f, 1.0f);
+    auto quad = [&] { feed.quad({towardsEye, towardsEye, towardsEye, towardsEye}); };
+    auto light = [&](GLenum pname, std::array<float, 4> v) {
+        feed.run([&](CallWriter& w) {
+            vectorCall(w, op::glLightfv, GL_LIGHT0, pname, v.data(), sizeof v);
+        });
+    };
+    feed.enable(GL_DEPTH_TEST, true);
+    feed.enable(GL_LIGHTING, true);
+    feed.enable(GL_LIGHT0, true);
+    light(GL_SPECULAR, {0.5f, 1.0f, 1.0f, 1.0f});
+    quad(); // GL's default material: no specular
+    feed.material(GL_FRONT_AND_BACK, GL_SPECULAR, {1.0f, 0.5f, 1.0f, 1.0f});
+    feed.run([](CallWriter& w) {
+        const float shininess = 20.0f;
+        vectorCall(w, op::glMaterialfv, GL_FRONT_AND_BACK, GL_SHININESS, &shininess,
+                   sizeof shininess);
+    });
+    light(GL_DIFFUSE, {0.5f, 0.5f, 0.5f, 1.0f});
+    quad();
+    feed.material(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, {0.0f, 0.0f, 0.0f, 1.0f});
+    quad();
+    feed.run([](CallWriter& w) {
+        const float on = 1.0f;
+        w.op(op::glLightModelfv);
+        const size_t mark = w.beginPayload();
+        w.put<GLenum>(GL_LIGHT_MODEL_TWO_SIDE);
+        w.putBytes(&on, sizeof on);
+        w.endPayload(mark);
+    });
+    quad();
+    std::vector<TrackedBatch> batches;
+    tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 4u);
+    const styles::SceneLights& matte = batches[0].lights;
+    const styles::SceneLights& shiny = batches[1].lights;
+    EXPECT_EQ(matte.shine, glm::vec3(0.0f)) << "a material without specular shines";
+    EXPECT_NEAR(shiny.shine.r, 0.5f, 1e-5f);
+    EXPECT_NEAR(shiny.shine.g, 0.5f, 1e-5f);
+    EXPECT_NEAR(shiny.shine.b, 1.0f, 1e-5f);
+    EXPECT_FLOAT_EQ(shiny.shininess, 20.0f);
+    // The default material's diffuse 0.8 in the white light against its lit colour (the
+    // light at full strength); half as much under the half-bright light, whose lit colour
+    // the styles get at full strength too.
+    const float lit = batches[0].vertices[0].color.r;
+    EXPECT_NEAR(matte.diffuseShare, 0.8f / lit, 0.02f);
+    EXPECT_NEAR(shiny.diffuseShare, 0.5f * matte.diffuseShare, 0.02f);
+    EXPECT_FLOAT_EQ(batches[2].lights.ambientShare, 1.0f) << "a black material's share";
+    EXPECT_FALSE(batches[2].lights.twoSide);
+    EXPECT_TRUE(batches[3].lights.twoSide);
+}
+
 // glMaterial(GL_AMBIENT_AND_DIFFUSE) between glBegin and glEnd sets the ambient of the
 // vertices after it too, and the vertices before the first change have the material of
 // glBegin, not the one left after glEnd (skytentacles colours its tentacles vertex by vertex;

@@ -87,6 +87,7 @@ uniform sampler2D lightmap;
 uniform float lightmapped;
 uniform float flatLight; // above -2: the light everywhere (SceneObject::flatLight)
 uniform float ambientShare; // SceneLights::ambientShare of an object the program lit, else -1
+uniform float diffuseShare; // SceneLights::diffuseShare (times the lights' peak), else -1
 #if PROGRAM_LIGHTS
 uniform vec4 lightPosition[PROGRAM_LIGHTS];
 uniform vec4 lightSpot[PROGRAM_LIGHTS];    // where a spot points (unit); w: cos of its cutoff
@@ -124,6 +125,32 @@ float litDot(vec3 n, vec3 towardsLight)
     return lit > 0.0 ? min(lit, 1.0) : key;
 #else
     return dot(n, towardsLight);
+#endif
+}
+
+// The normal GL lights this point by: the program's as it is, or with two-sided lighting
+// (SceneLights::twoSide) the side facing the eye. Not shadingNormal(): GL lights a back face
+// seen from behind by its front's normal, dark where the front faces away from the light.
+uniform float twoSide;
+vec3 programNormal(vec3 eyeNormal)
+{
+    vec3 n = normalize(eyeNormal);
+    return twoSide > 0.5 && dot(n, eyePosition) > 0.0 ? -n : n;
+}
+
+// GL's specular term of the brightest light at this point (Blinn's half-vector, an infinite
+// viewer), 0 where the material does not shine (SceneLights::shine; a: the exponent).
+uniform vec4 shine;
+float programShine(vec3 n)
+{
+#if PROGRAM_LIGHTS
+    if (dot(shine.rgb, shine.rgb) <= 0.0) return 0.0;
+    vec4 p = lightPosition[0];
+    vec3 l = normalize(p.xyz - eyePosition * p.w);
+    float nh = max(dot(n, normalize(l + vec3(0.0, 0.0, 1.0))), 0.0);
+    return dot(n, l) > 0.0 ? pow(nh, max(shine.a, 1e-3)) : 0.0;
+#else
+    return 0.0;
 #endif
 }
 )";
@@ -183,6 +210,9 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     lightmapSampler = gl.GetUniformLocation(program, "lightmap");
     flatLight = gl.GetUniformLocation(program, "flatLight");
     ambientShare = gl.GetUniformLocation(program, "ambientShare");
+    shine = gl.GetUniformLocation(program, "shine");
+    diffuseShare = gl.GetUniformLocation(program, "diffuseShare");
+    twoSide = gl.GetUniformLocation(program, "twoSide");
     lightPosition = gl.GetUniformLocation(program, "lightPosition");
     lightSpot = gl.GetUniformLocation(program, "lightSpot");
     lightFalloff = gl.GetUniformLocation(program, "lightFalloff");
@@ -248,6 +278,8 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     const bool lit = object.lights.count > 0 && !object.flatLight;
     gl.Uniform1f(ambientShare, lit ? object.lights.ambientShare : -1.0f);
+    const glm::vec4 shines(lit ? object.lights.shine : glm::vec3(0.0f), object.lights.shininess);
+    gl.Uniform4fv(shine, 1, glm::value_ptr(shines));
     gl.Uniform1i(lightmapSampler, 3);
     gl.Uniform1f(lightmapped, 0.0f); // drawTextured says where a lightmap is bound
     // A generated texture the styles drop keeps its average tint (GeneratedTexture::mean).
@@ -325,6 +357,10 @@ void ShadingCommon::ObjectUniforms::setLights(const GlFunctions& gl, const Scene
     gl.Uniform4fv(lightSpot, 8, glm::value_ptr(spot[0]));
     gl.Uniform4fv(lightFalloff, 8, glm::value_ptr(falloff[0]));
     gl.Uniform1fv(lightWeight, 8, weight);
+    // litDot() sums the weights over the peak: GL's own light is the key light's share times
+    // the peak times that.
+    gl.Uniform1f(diffuseShare, lights.diffuseShare >= 0.0f ? lights.diffuseShare * peak : -1.0f);
+    gl.Uniform1f(twoSide, lights.twoSide ? 1.0f : 0.0f);
 }
 
 const SceneObject& ShadingCommon::withGenerated(const SceneObject& object, bool show,

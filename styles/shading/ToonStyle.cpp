@@ -50,15 +50,39 @@ void main()
 {
     vec3 n = shadingNormal(eyeNormal);
     float d = litDot(n, lightDir);
-#if SMOOTH || BAND_LINES
-    float pixel = max(fwidth(d), 1e-5);
-#else
-    float pixel = 1.0;
-#endif
     vec3 base = baseColor.rgb;
-    vec3 c = mix(SHADOW_COLOR, DIFFUSE_COLOR, above(d, diffuseThreshold, pixel));
+    // The quantities the bands cut, their thresholds, and the highlight colour: the thesis's
+    // L.n at t_d and t_h, or (PROGRAM_BANDS) where the program lit the object, GL's own light.
+    float x = d, xt = diffuseThreshold;
+    float h = d, ht = highlightThreshold;
+    vec3 highlight = HIGHLIGHT_COLOR;
+    float shines = 1.0;
+#if PROGRAM_BANDS
+    if (ambientShare >= 0.0) {
+        // GL's light here as a share of the lit side's (its ambient share up to 1), cut where
+        // its lightness (L*, a cube root) is nearer the full colour's than the shadow colour's:
+        // a face GL leaves dark stays dark, so objects keep the lightness order the program
+        // gave them. The highlight where GL's own is over half its peak, in GL's colour
+        // (thesis eq. 3.5: a_m + d_m + s_m); none where the material does not shine.
+        vec3 g = programNormal(eyeNormal);
+        float adds = diffuseShare >= 0.0 ? diffuseShare : 1.0 - ambientShare;
+        x = min(ambientShare + adds * max(litDot(g, lightDir), 0.0), 1.0);
+        xt = pow(0.5 * (pow(shadowShare(), 1.0 / 3.0) + 1.0), 3.0);
+        h = programShine(g);
+        ht = 0.5;
+        shines = dot(shine.rgb, shine.rgb) > 0.0 ? 1.0 : 0.0;
+        highlight = PROGRAM_HIGHLIGHT;
+    }
+#endif
+#if SMOOTH || BAND_LINES
+    float pixel = max(fwidth(x), 1e-5);
+    float hpixel = max(fwidth(h), 1e-5);
+#else
+    float pixel = 1.0, hpixel = 1.0;
+#endif
+    vec3 c = mix(SHADOW_COLOR, DIFFUSE_COLOR, above(x, xt, pixel));
 #if TONES == 3
-    c = mix(c, HIGHLIGHT_COLOR, above(d, highlightThreshold, pixel));
+    c = mix(c, highlight, shines * above(h, ht, hpixel));
 #endif
     // The program's alpha, texture modulating: what its alpha test and blending see.
     float alpha = baseColor.a;
@@ -72,9 +96,9 @@ void main()
     alpha *= t.a;
 #endif
 #if BAND_LINES
-    float ink = boundaryInk(d, diffuseThreshold, pixel);
+    float ink = boundaryInk(x, xt, pixel);
 #if TONES == 3
-    ink = max(ink, boundaryInk(d, highlightThreshold, pixel));
+    ink = max(ink, shines * boundaryInk(h, ht, hpixel));
 #endif
     c *= 1.0 - ink;
 #endif
@@ -115,6 +139,11 @@ StyleInfo toonStyleInfo()
         ParamInfo::colour("diffuse_color", "fixed diffuse colour, hex rrggbb (empty: the "
                                          "program's colour)"),
         ParamInfo::colour("highlight_color", "fixed highlight colour, hex rrggbb (empty: derived)"),
+        ParamInfo::choice("bands", "where the bands fall on an object the program lit: "
+                                   "program (the band nearest in lightness to GL's own light "
+                                   "there, the highlight where GL's specular highlight is) or "
+                                   "thesis (t_d and t_h on L.n, a highlight on every object)",
+                          {"program", "thesis"}, 0),
         ParamInfo::choice("band", "band boundaries: nearest (hard, like a nearest-filtered "
                                   "shading texture) or smooth (antialiased over one pixel)",
                           {"nearest", "smooth"}, 1),
@@ -137,6 +166,7 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
     s += std::string("#define SMOOTH ") + (mSmooth ? "1" : "0") + "\n";
     s += "#define DETAIL " + std::to_string(detail) + "\n";
     s += std::string("#define BAND_LINES ") + (mBandLines ? "1" : "0") + "\n";
+    s += std::string("#define PROGRAM_BANDS ") + (mProgramBands && lights > 0 ? "1" : "0") + "\n";
     s += "const float diffuseThreshold = " + f(mDiffuseThreshold) + ";\n";
     s += "const float highlightThreshold = " + f(mHighlightThreshold) + ";\n";
     s += "const float lineWidth = " + f(mLineWidth) + ";\n";
@@ -152,6 +182,10 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
     s += "#define HIGHLIGHT_COLOR " +
          ((mFixed & 4) ? ShadingCommon::glslVec3(mColors[2])
                        : "mix(base, vec3(1.0), " + f(mHighlightMix) + ")") +
+         "\n";
+    s += "#define PROGRAM_HIGHLIGHT " +
+         ((mFixed & 4) ? ShadingCommon::glslVec3(mColors[2])
+                       : std::string("min(base + shine.rgb, vec3(1.0))")) +
          "\n";
     return s + ShadingCommon::normalFunction(lights) + ShadingCommon::fogFunction() +
            kFragment;
@@ -189,6 +223,7 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
     mShadowScale = float(ctx.param("toon", "shadow_scale"));
     mShadowFloor = float(ctx.param("toon", "shadow_floor"));
     mHighlightMix = float(ctx.param("toon", "highlight_mix"));
+    mProgramBands = ctx.param("toon", "bands") < 0.5;
     mSmooth = ctx.param("toon", "band") >= 0.5;
     mDetail = int(std::lround(ctx.param("toon", "detail")));
     mBandLines = ctx.param("toon", "band_lines") >= 0.5;

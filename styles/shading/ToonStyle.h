@@ -36,6 +36,7 @@ private:
     int mTones = 3;
     float mDiffuseThreshold = 0.0f, mHighlightThreshold = 0.9f;
     float mShadowScale = 0.55f, mShadowFloor = 0.3f, mHighlightMix = 0.5f;
+    bool mProgramBands = true; // bands by GL's own light where the program lit (toon.bands)
     bool mSmooth = true, mBandLines = false;
     float mLineWidth = 1.5f;
     int mDetail = 1; // 0 off, 1 modulate, 2 decal
