@@ -865,7 +865,10 @@ TEST_P(GeneratedCoordinates, AreStyledWithoutTheirTextureUnlessAsked)
     };
     ProcessResult n = runProcess(under({nprglCommand(), "--style", "none"}, with(app, native)));
     ASSERT_EQ(n.exitCode, 0) << n.err;
-    ProcessResult t = runProcess(under({nprglCommand(), "--style", "toon"}, with(app, toon)));
+    // The thesis's bands (by L.n alone): bands by GL's light follow the normal as a sphere
+    // map's stripes do, and would read as stripes where there are none.
+    ProcessResult t = runProcess(under(
+        {nprglCommand(), "--style", "toon", "--set", "toon.bands=thesis"}, with(app, toon)));
     ASSERT_EQ(t.exitCode, 0) << t.err;
     EXPECT_NE(t.err.find("styled, 0 left as the program drew them"), std::string::npos) << t.err;
     ProcessResult r = runProcess(under(
@@ -963,7 +966,7 @@ TEST(Compositor, EachFaceOfAnObjectKeepsItsOwnTexture)
                 const uint8_t* p = pixel(im, x, y);
                 const int r = p[0], g = p[1], bl = p[2];
                 hues[0] += bl > r + 60 && bl > g + 40;  // blue
-                hues[1] += g > r + 40 && g > bl + 40;   // green
+                hues[1] += g > 2 * r + 20 && g > 2 * bl + 20; // green, also in a shadow band
                 hues[2] += r > 2 * g + 20 && bl > 2 * g + 20 && std::abs(r - bl) < 20; // magenta
             }
         }
@@ -1326,17 +1329,19 @@ TEST(Compositor, EveryEnabledLightShadesTheStyledScene)
     ASSERT_TRUE(native.comparable) << native.error;
     EXPECT_GT(native.differingPixels, 2000u) << "the second light lights nothing natively";
 
+    // Styled, a light changes the picture where it moves a band boundary (toon's bands follow
+    // GL's own light), a little less than natively: about 2,000 pixels here; none if lost.
     const std::string alone = run("toon", "");
     const ImageDiff second = compareImages(alone, run("toon", "directional"), 24);
     ASSERT_TRUE(second.comparable) << second.error;
-    EXPECT_GT(second.differingPixels, 2000u) << "the second light is not in the styled shading";
+    EXPECT_GT(second.differingPixels, 1500u) << "the second light is not in the styled shading";
 
     const ImageDiff away = compareImages(alone, run("toon", "spot-away"), 24);
     ASSERT_TRUE(away.comparable) << away.error;
     EXPECT_EQ(away.differingPixels, 0u) << "a spot aimed away from the shapes lit them";
     const ImageDiff at = compareImages(alone, run("toon", "spot"), 24);
     ASSERT_TRUE(at.comparable) << at.error;
-    EXPECT_GT(at.differingPixels, 2000u) << "a spot aimed at the shapes lit nothing";
+    EXPECT_GT(at.differingPixels, 1500u) << "a spot aimed at the shapes lit nothing";
 }
 
 // Pixels the program copies into a texture are that texture's content, not the window's

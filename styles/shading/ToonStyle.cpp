@@ -67,7 +67,8 @@ void main()
         vec3 g = programNormal(eyeNormal);
         float adds = diffuseShare >= 0.0 ? diffuseShare : 1.0 - ambientShare;
         x = min(ambientShare + adds * max(litDot(g, lightDir), 0.0), 1.0);
-        xt = pow(0.5 * (pow(shadowShare(), 1.0 / 3.0) + 1.0), 3.0);
+        // t_d moves the cut from there (0: none), so that its slider still shades more or less.
+        xt = pow(0.5 * (pow(shadowShare(), 1.0 / 3.0) + 1.0), 3.0) + 0.5 * diffuseThreshold;
         h = programShine(g);
         ht = 0.5;
         shines = dot(shine.rgb, shine.rgb) > 0.0 ? 1.0 : 0.0;
