@@ -7,6 +7,13 @@
 
 namespace nprgl {
 
+namespace {
+
+// Luma of encoded colour values: GL lights them as they are.
+float luma(const glm::vec3& c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; }
+
+} // namespace
+
 bool FixedLighting::towardsLight(const AttribState& a, size_t i, const glm::vec3& eye,
                                  glm::vec3& l, float& reach)
 {
@@ -181,8 +188,6 @@ float FixedLighting::ambientShare(const AttribState& a, const glm::vec4& colour,
     const glm::vec3 emits = mode == GL_EMISSION ? glm::vec3(colour) : a.material.emission;
     const glm::vec3 unlit =
         glm::clamp(glm::max(emits, glm::vec3(0.0f)) + reflects * ambientLight, 0.0f, 1.0f);
-    // Luma of the encoded values: GL lights them as they are.
-    auto luma = [](const glm::vec3& c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
     const float lit = luma(glm::vec3(litSide));
     // A black lit side (a black material): no light makes it lighter, GL shows it the same
     // everywhere.
@@ -199,7 +204,6 @@ float FixedLighting::diffuseShare(const AttribState& a, const glm::vec4& colour,
     const glm::vec3 reflects = colourDiffuse ? glm::vec3(colour) : glm::vec3(a.material.diffuse);
     const glm::vec3 added =
         glm::clamp(reflects * glm::max(a.lightDiffuse[key], glm::vec3(0.0f)), 0.0f, 1.0f);
-    auto luma = [](const glm::vec3& c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
     const float lit = luma(glm::vec3(litSide));
     if (!(lit > 1e-4f)) return -1.0f;
     const float share = luma(added) / lit;

@@ -48,9 +48,15 @@ float boundaryInk(float d, float t, float pixel)
 
 void main()
 {
-    vec3 n = shadingNormal(eyeNormal);
-    float d = litDot(n, lightDir);
     vec3 base = baseColor.rgb;
+#if PROGRAM_BANDS
+    // Where the program lit the object, the normal GL lights it by (programNormal).
+    bool program = ambientShare >= 0.0;
+    vec3 n = program ? programNormal(eyeNormal) : shadingNormal(eyeNormal);
+#else
+    vec3 n = shadingNormal(eyeNormal);
+#endif
+    float d = litDot(n, lightDir);
     // The quantities the bands cut, their thresholds, and the highlight colour: the thesis's
     // L.n at t_d and t_h, or (PROGRAM_BANDS) where the program lit the object, GL's own light.
     float x = d, xt = diffuseThreshold;
@@ -58,18 +64,17 @@ void main()
     vec3 highlight = HIGHLIGHT_COLOR;
     float shines = 1.0;
 #if PROGRAM_BANDS
-    if (ambientShare >= 0.0) {
+    if (program) {
         // GL's light here as a share of the lit side's (its ambient share up to 1), cut where
         // its lightness (L*, a cube root) is nearer the full colour's than the shadow colour's:
         // a face GL leaves dark stays dark, so objects keep the lightness order the program
         // gave them. The highlight where GL's own is over half its peak, in GL's colour
         // (thesis eq. 3.5: a_m + d_m + s_m); none where the material does not shine.
-        vec3 g = programNormal(eyeNormal);
         float adds = diffuseShare >= 0.0 ? diffuseShare : 1.0 - ambientShare;
-        x = min(ambientShare + adds * max(litDot(g, lightDir), 0.0), 1.0);
+        x = min(ambientShare + adds * max(d, 0.0), 1.0);
         // t_d moves the cut from there (0: none), so that its slider still shades more or less.
         xt = pow(0.5 * (pow(shadowShare(), 1.0 / 3.0) + 1.0), 3.0) + 0.5 * diffuseThreshold;
-        h = programShine(g);
+        h = programShine(n);
         ht = 0.5;
         shines = dot(shine.rgb, shine.rgb) > 0.0 ? 1.0 : 0.0;
         highlight = PROGRAM_HIGHLIGHT;
@@ -174,20 +179,15 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
     s += "const float shadowScale = " + f(mShadowScale) + ";\n";
     s += "const float shadowFloor = " + f(std::min(mShadowFloor, mShadowScale)) + ";\n";
     // The band colours: configured constants, else derived from the program's colour.
-    s += "#define SHADOW_COLOR " +
-         ((mFixed & 1) ? ShadingCommon::glslVec3(mColors[0])
-                       : std::string("(base * shadowShare())")) +
-         "\n";
-    s += "#define DIFFUSE_COLOR " +
-         ((mFixed & 2) ? ShadingCommon::glslVec3(mColors[1]) : std::string("base")) + "\n";
-    s += "#define HIGHLIGHT_COLOR " +
-         ((mFixed & 4) ? ShadingCommon::glslVec3(mColors[2])
-                       : "mix(base, vec3(1.0), " + f(mHighlightMix) + ")") +
-         "\n";
-    s += "#define PROGRAM_HIGHLIGHT " +
-         ((mFixed & 4) ? ShadingCommon::glslVec3(mColors[2])
-                       : std::string("min(base + shine.rgb, vec3(1.0))")) +
-         "\n";
+    auto colour = [&](const char* name, int i, const std::string& derived) {
+        const bool fixed = mFixed & (1 << i);
+        return std::string("#define ") + name + " " +
+               (fixed ? ShadingCommon::glslVec3(mColors[i]) : derived) + "\n";
+    };
+    s += colour("SHADOW_COLOR", 0, "(base * shadowShare())");
+    s += colour("DIFFUSE_COLOR", 1, "base");
+    s += colour("HIGHLIGHT_COLOR", 2, "mix(base, vec3(1.0), " + f(mHighlightMix) + ")");
+    s += colour("PROGRAM_HIGHLIGHT", 2, "min(base + shine.rgb, vec3(1.0))");
     return s + ShadingCommon::normalFunction(lights) + ShadingCommon::fogFunction() +
            kFragment;
 }
