@@ -138,3 +138,56 @@ TEST(ToonBands, TheHighlightIsWhereTheMaterialShines)
         << "a matte red sphere is brighter than its colour";
     EXPECT_GT(shiny, matte + 0.2f) << "no highlight where the material shines";
 }
+
+// Two-sided lighting turns the normal on back faces only, back by the window winding as GL
+// tells them. A program that keeps its view in the projection matrix (gflux: glFrustum, then
+// glTranslate on GL_PROJECTION) has its surfaces at positive eye-space z; judged by the
+// normal against the eye-space position, its front faces counted as back faces, were lit
+// from behind and fell into the shadow band (gflux's sheet, lit evenly natively, came out half
+// dark).
+TEST(ToonBands, TwoSidedLightingTurnsOnlyBackFaces)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    const glm::mat4 projection =
+        perspective() * glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -7.0f));
+    reconstruct::Batch quad = facingQuad(0.0f, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f));
+    quad.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    auto centre = [&](bool twoSide) {
+        auto scene = harness.makeScene({quad}, projection, glm::vec3(0.0f, 0.0f, 1.0f));
+        litBy(scene.objects[0], glm::vec3(0.0f, 0.0f, 1.0f));
+        scene.objects[0].lights.twoSide = twoSide;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+        return patch(image, kSize / 2, kSize / 2);
+    };
+    const float oneSided = centre(false);
+    EXPECT_GT(oneSided, 0.5f) << "a quad facing its light is not in the lit band: no test";
+    EXPECT_NEAR(centre(true), oneSided, 0.02f) << "two-sided lighting turned a front face";
+}
+
+// A light whose attenuation brightens it near a surface (constant attenuation 0.1: ten times
+// its colour, antmaze's lights) lights a face it grazes fully, as GL clamps the sum: the
+// styles' L·n, capped at one light head-on, put that face in the shadow band.
+TEST(ToonBands, ALightAttenuatedBelowOneLightsAsGlDoes)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto centre = [&](float constant) {
+        auto scene = harness.makeScene({facingQuad(0.0f, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f))},
+                                       perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+        litBy(scene.objects[0], glm::vec3(0.0f, 0.0f, 1.0f));
+        // One unit from the quad's centre, at a grazing 81 degrees: L.n 0.15.
+        const float grazing = std::acos(0.15f);
+        styles::SceneLights::Light& light = scene.objects[0].lights.lights[0];
+        light.position = glm::vec4(std::sin(grazing), 0.0f, -6.0f + std::cos(grazing), 1.0f);
+        light.falloff = glm::vec4(constant, 0.0f, 0.0f, 0.0f);
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+        return patch(image, kSize / 2, kSize / 2);
+    };
+    EXPECT_LT(centre(1.0f), 0.45f) << "grazed by a plain light, not in the shadow band: no test";
+    EXPECT_GT(centre(0.1f), 0.7f) << "a light ten times as bright there left the face in shadow";
+}

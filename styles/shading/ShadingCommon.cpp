@@ -78,7 +78,8 @@ vec3 shadingNormal(vec3 eyeNormal)
     return gl_FrontFacing == (faceSign > 0.0) ? n : -n;
 }
 
-// The light a surface gets, as L·n in [-1, 1]: from the program's lightmap where it has one
+// The light a surface gets, as L·n in [-1, 1] (with `most`, up to that where a program's
+// light attenuated by less than 1 brightens a near surface and its lights add up, as GL's do): from the program's lightmap where it has one
 // and no GL lighting (its baked light's luminance); from the program's lights where it lit
 // the object (SceneLights: each light's L·n at this point, attenuated and cut by its spot,
 // weighted by brightness and summed as GL sums their diffuse light; where none reaches, the
@@ -96,7 +97,7 @@ uniform float lightWeight[PROGRAM_LIGHTS]; // 0: no light (a variant sums more t
 #endif
 in vec2 lightUv;
 in vec3 eyePosition;
-float litDot(vec3 n, vec3 towardsLight)
+float litDot(vec3 n, vec3 towardsLight, float most)
 {
     if (flatLight > -2.0) return flatLight;
     if (lightmapped > 0.5) {
@@ -118,24 +119,27 @@ float litDot(vec3 n, vec3 towardsLight)
         float c = dot(-l, s.xyz);
         float reach = step(s.w, c) * exp2(f.w * log2(max(c, 1e-4))) /
                       max(f.x + (f.y + f.z * dist) * dist, 1e-6);
-        float d = dot(n, l) * min(reach, 1.0);
+        float d = dot(n, l) * min(reach, most);
         if (i == 0) key = d;
         lit += lightWeight[i] * max(d, 0.0);
     }
-    return lit > 0.0 ? min(lit, 1.0) : key;
+    return lit > 0.0 ? min(lit, most) : key;
 #else
     return dot(n, towardsLight);
 #endif
 }
+float litDot(vec3 n, vec3 towardsLight) { return litDot(n, towardsLight, 1.0); }
 
 // The normal GL lights this point by: the program's as it is, or with two-sided lighting
-// (SceneLights::twoSide) the side facing the eye. Not shadingNormal(): GL lights a back face
+// (SceneLights::twoSide) turned on back faces. Not shadingNormal(): GL lights a back face
 // seen from behind by its front's normal, dark where the front faces away from the light.
+// Back by the window winding, as GL tells them: the meshes keep the program's front
+// counter-clockwise (MeshBuilder turns clockwise batches), drawn by the program's matrices.
 uniform float twoSide;
 vec3 programNormal(vec3 eyeNormal)
 {
     vec3 n = normalize(eyeNormal);
-    return twoSide > 0.5 && dot(n, eyePosition) > 0.0 ? -n : n;
+    return twoSide > 0.5 && !gl_FrontFacing ? -n : n;
 }
 
 // GL's specular term of the brightest light at this point (Blinn's half-vector, an infinite

@@ -56,7 +56,13 @@ void main()
 #else
     vec3 n = shadingNormal(eyeNormal);
 #endif
+#if PROGRAM_BANDS
+    // GL's own light is not capped at one light head-on: near a light whose attenuation
+    // brightens it, and where lights add up, GL shows the lit colour (clamped).
+    float d = litDot(n, lightDir, program ? 64.0 : 1.0);
+#else
     float d = litDot(n, lightDir);
+#endif
     // The quantities the bands cut, their thresholds, and the highlight colour: the thesis's
     // L.n at t_d and t_h, or (PROGRAM_BANDS) where the program lit the object, GL's own light.
     float x = d, xt = diffuseThreshold;
