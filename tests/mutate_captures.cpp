@@ -44,12 +44,6 @@ struct Outcome {
     long frames = -1;   // frames the command read or wrote (-1: it did not say)
 };
 
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 void writeAll(const std::string& path, const std::string& data)
 {
     std::ofstream(path, std::ios::binary | std::ios::trunc) << data;

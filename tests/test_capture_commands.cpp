@@ -22,17 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string fixture(const std::string& name)
-{
-    return std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
-}
-
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 void writeAll(const std::string& path, const std::string& data)
 {
     std::ofstream(path, std::ios::binary | std::ios::trunc) << data;

@@ -51,11 +51,6 @@ Summary compare(const std::string& capture, const std::vector<std::string>& styl
     return s;
 }
 
-std::string fixture(const std::string& name)
-{
-    return std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
-}
-
 class FixtureFidelity : public ::testing::TestWithParam<std::string> {};
 
 } // namespace

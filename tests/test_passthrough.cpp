@@ -25,12 +25,6 @@ namespace {
 constexpr int kFrames = 4;
 
 
-bool haveDisplay()
-{
-    const char* d = std::getenv("DISPLAY");
-    return d && *d;
-}
-
 struct DemoCase {
     std::string app;
     std::vector<std::string> extraArgs;

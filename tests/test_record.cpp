@@ -24,16 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string fixture(const std::string& name)
-{
-    return std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
-}
-bool haveDisplay()
-{
-    const char* d = std::getenv("DISPLAY");
-    return d && *d;
-}
-
 void expectSameFrames(const std::string& liveDir, const std::string& app,
                       const std::string& replayDir, int frames)
 {
@@ -654,12 +644,6 @@ TEST(Export, LiveExportWritesTheRequestedFrame)
 }
 
 namespace {
-
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 void writeAll(const std::string& path, const std::string& data)
 {

@@ -36,12 +36,6 @@ const std::vector<std::string> kStyles = {"none",           "toon",           "t
                                           "gooch+blueprint", "depthcue"};
 
 
-bool haveDisplay()
-{
-    const char* d = std::getenv("DISPLAY");
-    return d && *d;
-}
-
 std::vector<std::string> stateArgs(bool offscreen)
 {
     std::vector<std::string> args = {demo("state"), "--frames", "5", "--size", "200x150",

@@ -27,7 +27,7 @@ std::vector<TrackedBatch> frameBatches(const std::string& name, uint64_t frame)
 {
     capture::CaptureReader reader;
     std::string error;
-    std::string path = std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
+    const std::string path = test::fixture(name);
     EXPECT_TRUE(reader.open(path, error)) << error;
     CaptureBlobs blobs(reader);
     StateTracker tracker;

@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <spawn.h>
 #include <sstream>
 #include <sys/wait.h>
@@ -165,6 +166,23 @@ int coveredCount(const std::string& out)
 {
     const size_t at = out.find("covered ");
     return at == std::string::npos ? -1 : std::atoi(out.c_str() + at + 8);
+}
+
+std::string fixture(const std::string& name)
+{
+    return std::string(NPRGL_TEST_SOURCE_DIR) + "/fixtures/" + name + ".nprgl";
+}
+
+std::string readAll(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+bool haveDisplay()
+{
+    const char* d = std::getenv("DISPLAY");
+    return d && *d;
 }
 
 } // namespace nprgl::test

@@ -52,6 +52,12 @@ std::string freshDir(const std::string& name);
 // The nprgl command line followed by "--" and the program's own.
 std::vector<std::string> under(std::vector<std::string> nprgl,
                                const std::vector<std::string>& program);
+// tests/fixtures/NAME.nprgl in the source tree: the captures the tests replay.
+std::string fixture(const std::string& name);
+// A file's bytes ("" when it cannot be read).
+std::string readAll(const std::string& path);
+// Whether an X display is named (tests that need one skip or fail with a reason without).
+bool haveDisplay();
 // The "covered N" a probe prints (pixels of its last frame not of its clear colour), or -1.
 int coveredCount(const std::string& out);
 
