@@ -1232,7 +1232,7 @@ size_t StateTracker::keyLight() const
     return key;
 }
 
-glm::vec3 StateTracker::litSideLight() const
+glm::vec3 StateTracker::litSideLight(const glm::vec3& at) const
 {
     // The light on the lit side of a surface: the scene's ambient, every enabled light's
     // ambient, and its diffuse at N·L 0.75 (some 40 degrees off the light), as GL sums them.
@@ -1242,7 +1242,10 @@ glm::vec3 StateTracker::litSideLight() const
     // so, and clamps per channel. A bluish ambient under a pinkish sun lights snow white where
     // both together pass 1 in every channel (extremetuxracer's) and its yellow yellower; a
     // pinkish sun alone lights it pink. Other lights come from elsewhere: at most a part of
-    // them adds to the brightest's on one surface, so they only tint.
+    // them adds to the brightest's on one surface, so they only tint. A positional light
+    // whose attenuation brightens it at `at` (eye space; a constant factor below 1, antmaze's
+    // 0.1) counts so brightened, as one that reaches everywhere: GL lights the surface that
+    // much brighter and clamps.
     const AttribState& a = mAttrib;
     constexpr float kLitSide = 0.75f;
     const size_t key = keyLight();
@@ -1250,12 +1253,18 @@ glm::vec3 StateTracker::litSideLight() const
     glm::vec3 all = ambient, main = ambient;
     for (size_t i = 0; i < 8; ++i) {
         if (!(a.lightsOn & (1u << i))) continue;
-        const glm::vec3 diffuse = kLitSide * glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
+        const bool spot = a.spotCutoff[i] != 180.0f;
+        const bool attenuated =
+            a.lightPosition[i].w != 0.0f && a.attenuation[i] != glm::vec3(1.0f, 0.0f, 0.0f);
+        glm::vec3 l;
+        float reach = 1.0f;
+        const bool brightened =
+            !spot && attenuated && FixedLighting::towardsLight(a, i, at, l, reach) && reach > 1.0f;
+        const glm::vec3 diffuse = kLitSide * (brightened ? std::min(reach, 1e3f) : 1.0f) *
+                                  glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
         const glm::vec3 own = glm::max(a.lightAmbient[i], glm::vec3(0.0f));
         all += diffuse + own;
-        const bool local = a.spotCutoff[i] != 180.0f ||
-                           (a.lightPosition[i].w != 0.0f &&
-                            a.attenuation[i] != glm::vec3(1.0f, 0.0f, 0.0f));
+        const bool local = spot || (attenuated && !brightened);
         if (!local) main += own + (i == key ? diffuse : glm::vec3(0.0f));
     }
     if (std::max({main.r, main.g, main.b}) >= 1.0f) return main;
@@ -1691,7 +1700,9 @@ bool StateTracker::keep(TrackedBatch& batch)
     // (a track whose materials are mostly emission, as torcs's are, was far too dark).
     else if (a.lighting) {
         // One pass over the vertices: the material's colour (or the vertex's), lit.
-        const glm::vec4 light(litSideLight(), 1.0f);
+        const glm::vec3 at =
+            glm::vec3(batch.modelview * glm::vec4(batch.vertices.front().position, 1.0f));
+        const glm::vec4 light(litSideLight(at), 1.0f);
         const glm::vec4 emission(glm::max(a.material.emission, glm::vec3(0.0f)), 0.0f);
         auto lit = [&](const glm::vec4& c) {
             return glm::min(c * light + emission, glm::vec4(1.0f));

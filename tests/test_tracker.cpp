@@ -1141,6 +1141,39 @@ TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
     EXPECT_LT(batches[2].lights.ambientShare, 0.0f) << "unlit: no share known";
 }
 
+// A positional light whose attenuation brightens it near a surface (a constant factor of 0.1:
+// ten times its colour one unit away, antmaze's lights) lights the surface's lit side that
+// much brighter, as GL does before it clamps: the styles' colour for it was the material's
+// at one light's strength, darker than GL's picture (antmaze's floor).
+TEST(StateTracker, ALightAttenuatedBelowOneBrightensTheLitSide)
+{
+    auto litColour = [](float constant) {
+        StateTracker tracker;
+        tracker.setHolding(true);
+        Feed feed{tracker};
+        const glm::vec3 towardsEye(0.0f, 0.0f, 1.0f);
+        feed.enable(GL_DEPTH_TEST, true);
+        feed.enable(GL_LIGHTING, true);
+        feed.enable(GL_LIGHT0, true);
+        feed.run([&](CallWriter& w) {
+            const std::array<float, 4> position = {0.0f, 0.0f, 1.0f, 1.0f}; // at the eye
+            vectorCall(w, op::glLightfv, GL_LIGHT0, GL_POSITION, position.data(),
+                       sizeof position);
+            vectorCall(w, op::glLightfv, GL_LIGHT0, GL_CONSTANT_ATTENUATION, &constant,
+                       sizeof constant);
+        });
+        feed.material(GL_FRONT_AND_BACK, GL_DIFFUSE, {0.3f, 0.3f, 0.3f, 1.0f});
+        feed.quad({towardsEye, towardsEye, towardsEye, towardsEye});
+        std::vector<TrackedBatch> batches;
+        tracker.takeBatches(batches);
+        return batches.size() == 1 ? batches[0].vertices[0].color.r : -1.0f;
+    };
+    const float plain = litColour(1.0f);
+    ASSERT_GT(plain, 0.0f);
+    EXPECT_NEAR(plain, 0.3f, 0.05f) << "the material's colour at one light's strength";
+    EXPECT_GT(litColour(0.1f), 0.9f) << "ten times the light: GL's clamped white";
+}
+
 // What the toon's bands need to follow GL's own light (ToonStyle, toon.bands=program): how
 // much the brightest light adds facing a surface head-on, as a share of the lit colour; GL's
 // highlight colour and exponent; two-sided lighting. A black material's share is 1 (no light
