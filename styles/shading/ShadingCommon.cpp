@@ -79,11 +79,12 @@ vec3 shadingNormal(vec3 eyeNormal)
 }
 
 // The light a surface gets, as L·n in [-1, 1] (with `most`, up to that where a program's
-// light attenuated by less than 1 brightens a near surface and its lights add up, as GL's do): from the program's lightmap where it has one
-// and no GL lighting (its baked light's luminance); from the program's lights where it lit
-// the object (SceneLights: each light's L·n at this point, attenuated and cut by its spot,
-// weighted by brightness and summed as GL sums their diffuse light; where none reaches, the
-// brightest light's own L·n, so the shadow side keeps its gradient); else from towardsLight.
+// light attenuated by less than 1 brightens a near surface and its lights add up, as GL's
+// do): from the program's lightmap where it has one and no GL lighting (its baked light's
+// luminance); from the program's lights where it lit the object (SceneLights: each light's
+// L·n at this point, attenuated and cut by its spot, weighted by brightness and summed as GL
+// sums their diffuse light; where none reaches, the brightest light's own L·n, so the shadow
+// side keeps its gradient); else from towardsLight.
 uniform sampler2D lightmap;
 uniform float lightmapped;
 uniform float flatLight; // above -2: the light everywhere (SceneObject::flatLight)

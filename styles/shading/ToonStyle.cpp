@@ -50,17 +50,14 @@ void main()
 {
     vec3 base = baseColor.rgb;
 #if PROGRAM_BANDS
-    // Where the program lit the object, the normal GL lights it by (programNormal).
+    // Where the program lit the object, the normal GL lights it by (programNormal), and GL's
+    // light not capped at one light head-on: near a light whose attenuation brightens it, and
+    // where lights add up, GL shows the lit colour (clamped).
     bool program = ambientShare >= 0.0;
     vec3 n = program ? programNormal(eyeNormal) : shadingNormal(eyeNormal);
-#else
-    vec3 n = shadingNormal(eyeNormal);
-#endif
-#if PROGRAM_BANDS
-    // GL's own light is not capped at one light head-on: near a light whose attenuation
-    // brightens it, and where lights add up, GL shows the lit colour (clamped).
     float d = litDot(n, lightDir, program ? 64.0 : 1.0);
 #else
+    vec3 n = shadingNormal(eyeNormal);
     float d = litDot(n, lightDir);
 #endif
     // The quantities the bands cut, their thresholds, and the highlight colour: the thesis's
