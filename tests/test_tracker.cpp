@@ -1098,6 +1098,25 @@ TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
 // (emission, the scene's ambient on the material's ambient, N·L on the diffuse), not the
 // material's colour the shading styles shade from; two-sided lighting lights a normal turned
 // from the eye from its other side; GL_FLAT gives a quad its last vertex's colour.
+// A tracker that holds its batches, with the depth test, GL lighting and light 0 on, and
+// quads facing the eye.
+struct LitFeed {
+    StateTracker tracker;
+    Feed feed{tracker};
+    LitFeed()
+    {
+        tracker.setHolding(true);
+        feed.enable(GL_DEPTH_TEST, true);
+        feed.enable(GL_LIGHTING, true);
+        feed.enable(GL_LIGHT0, true);
+    }
+    void quad()
+    {
+        const glm::vec3 towardsEye(0.0f, 0.0f, 1.0f);
+        feed.quad({towardsEye, towardsEye, towardsEye, towardsEye});
+    }
+};
+
 // How dark the program's own shadowed side is, as a share of the lit colour the styles get:
 // GL's emission and ambient terms over the lit side's colour. cubestorm's faces turned from
 // its light are nearly black (0.2 of its colour: GL's default scene ambient, no light
@@ -1105,14 +1124,9 @@ TEST(StateTracker, AmbientLightTintsLitSurfacesToo)
 // faces towards the light. A strong ambient gives a large share, emission adds to it.
 TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
 {
-    StateTracker tracker;
-    tracker.setHolding(true);
-    Feed feed{tracker};
-    const glm::vec3 towardsEye(0.0f, 0.0f, 1.0f);
-    auto quad = [&] { feed.quad({towardsEye, towardsEye, towardsEye, towardsEye}); };
-    feed.enable(GL_DEPTH_TEST, true);
-    feed.enable(GL_LIGHTING, true);
-    feed.enable(GL_LIGHT0, true);
+    LitFeed lighting;
+    Feed& feed = lighting.feed;
+    auto quad = [&] { lighting.quad(); };
     // GL's defaults: ambient material 0.2, diffuse 0.8, scene ambient 0.2, light 0 white.
     quad();
     feed.material(GL_FRONT_AND_BACK, GL_AMBIENT, {0.8f, 0.8f, 0.8f, 1.0f});
@@ -1128,7 +1142,7 @@ TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
     feed.enable(GL_LIGHTING, false);
     quad();
     std::vector<TrackedBatch> batches;
-    tracker.takeBatches(batches);
+    lighting.tracker.takeBatches(batches);
     ASSERT_EQ(batches.size(), 3u);
     // The lit side: diffuse 0.8 in the light at full strength plus the ambient 0.04 (GL sums
     // ambient, diffuse at N.L 0.75, normalised to 1); unlit, 0.2 x 0.2 of it.
@@ -1148,13 +1162,8 @@ TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
 TEST(StateTracker, ALightAttenuatedBelowOneBrightensTheLitSide)
 {
     auto litColour = [](float constant) {
-        StateTracker tracker;
-        tracker.setHolding(true);
-        Feed feed{tracker};
-        const glm::vec3 towardsEye(0.0f, 0.0f, 1.0f);
-        feed.enable(GL_DEPTH_TEST, true);
-        feed.enable(GL_LIGHTING, true);
-        feed.enable(GL_LIGHT0, true);
+        LitFeed lighting;
+        Feed& feed = lighting.feed;
         feed.run([&](CallWriter& w) {
             const std::array<float, 4> position = {0.0f, 0.0f, 1.0f, 1.0f}; // at the eye
             vectorCall(w, op::glLightfv, GL_LIGHT0, GL_POSITION, position.data(),
@@ -1163,9 +1172,9 @@ TEST(StateTracker, ALightAttenuatedBelowOneBrightensTheLitSide)
                        sizeof constant);
         });
         feed.material(GL_FRONT_AND_BACK, GL_DIFFUSE, {0.3f, 0.3f, 0.3f, 1.0f});
-        feed.quad({towardsEye, towardsEye, towardsEye, towardsEye});
+        lighting.quad();
         std::vector<TrackedBatch> batches;
-        tracker.takeBatches(batches);
+        lighting.tracker.takeBatches(batches);
         return batches.size() == 1 ? batches[0].vertices[0].color.r : -1.0f;
     };
     const float plain = litColour(1.0f);
@@ -1181,19 +1190,14 @@ TEST(StateTracker, ALightAttenuatedBelowOneBrightensTheLitSide)
 // into its colour, drew sonar's black disc grey.
 TEST(StateTracker, LitBatchesCarryWhatTheBandsFollowOfGlsLight)
 {
-    StateTracker tracker;
-    tracker.setHolding(true);
-    Feed feed{tracker};
-    const glm::vec3 towardsEye(0.0f, 0.0f, 1.0f);
-    auto quad = [&] { feed.quad({towardsEye, towardsEye, towardsEye, towardsEye}); };
+    LitFeed lighting;
+    Feed& feed = lighting.feed;
+    auto quad = [&] { lighting.quad(); };
     auto light = [&](GLenum pname, std::array<float, 4> v) {
         feed.run([&](CallWriter& w) {
             vectorCall(w, op::glLightfv, GL_LIGHT0, pname, v.data(), sizeof v);
         });
     };
-    feed.enable(GL_DEPTH_TEST, true);
-    feed.enable(GL_LIGHTING, true);
-    feed.enable(GL_LIGHT0, true);
     light(GL_SPECULAR, {0.5f, 1.0f, 1.0f, 1.0f});
     quad(); // GL's default material: no specular
     feed.material(GL_FRONT_AND_BACK, GL_SPECULAR, {1.0f, 0.5f, 1.0f, 1.0f});
@@ -1216,7 +1220,7 @@ TEST(StateTracker, LitBatchesCarryWhatTheBandsFollowOfGlsLight)
     });
     quad();
     std::vector<TrackedBatch> batches;
-    tracker.takeBatches(batches);
+    lighting.tracker.takeBatches(batches);
     ASSERT_EQ(batches.size(), 4u);
     const styles::SceneLights& matte = batches[0].lights;
     const styles::SceneLights& shiny = batches[1].lights;
