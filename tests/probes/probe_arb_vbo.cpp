@@ -13,6 +13,8 @@
 //                text, a local and an env parameter)
 //   --empty      draws nothing (the background alone)
 //   --save FILE  writes the last frame's RGBA bytes
+#include "tests/probes/CubeFaces.h"
+
 #include <GL/osmesa.h>
 #include <GL/glext.h>
 
@@ -54,14 +56,7 @@ template <typename T> bool fetch(T& fn, const char* name)
 // A cube as triangles, each vertex (s, t, x, y, z) for GL_T2F_V3F.
 std::vector<float> cube()
 {
-    static const int kFaces[6][4][3] = {
-        {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},
-        {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}},
-        {{1, -1, 1}, {1, -1, -1}, {1, 1, -1}, {1, 1, 1}},
-        {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}},
-        {{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1}},
-        {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}},
-    };
+    const auto& kFaces = nprgl::probes::kCubeFaces;
     static const int kCorners[6] = {0, 1, 2, 0, 2, 3};
     std::vector<float> out;
     for (const auto& face : kFaces) {

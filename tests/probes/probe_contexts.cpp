@@ -17,6 +17,8 @@
 // frame's pixels and, at the end, state it set. Exit 0, or 3 when the driver does not offer
 // the kind.
 #define GL_GLEXT_PROTOTYPES 1
+#include "tests/probes/CubeFaces.h"
+
 #if defined(PROBE_OSMESA)
 #include <GL/osmesa.h>
 #else
@@ -97,14 +99,7 @@ Mat4 modelview(int frame)
 // A cube as 36 vertices (x y z) and a colour per vertex (r g b a).
 void cube(std::vector<float>& positions, std::vector<float>& colours)
 {
-    static const int kFaces[6][4][3] = {
-        {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},
-        {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}},
-        {{1, -1, 1}, {1, -1, -1}, {1, 1, -1}, {1, 1, 1}},
-        {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}},
-        {{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1}},
-        {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}},
-    };
+    const auto& kFaces = nprgl::probes::kCubeFaces;
     static const float kColours[6][3] = {{0.9f, 0.3f, 0.2f}, {0.2f, 0.7f, 0.3f},
                                          {0.2f, 0.4f, 0.9f}, {0.9f, 0.8f, 0.2f},
                                          {0.7f, 0.3f, 0.8f}, {0.3f, 0.8f, 0.8f}};

@@ -15,6 +15,7 @@
 //   --save FILE  writes the last frame's RGBA bytes (bottom row first), read before the swap
 // Prints "getproc checksum C covered N cells a b c d e f" (pixels not of the clear colour,
 // whole frame and per cell, cell 0 top left, row by row).
+#include "tests/probes/CubeFaces.h"
 #include "tests/probes/ProbeTexture.h"
 
 #include <GL/gl.h>
@@ -129,14 +130,7 @@ void fetchAll(Ext& e)
 // A unit cube as 24 vertices (normal, position per face corner) and 36 indices.
 void cube(std::vector<float>& vertices, std::vector<GLushort>& indices)
 {
-    static const int kFaces[6][4][3] = {
-        {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},
-        {{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}},
-        {{1, -1, 1}, {1, -1, -1}, {1, 1, -1}, {1, 1, 1}},
-        {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}},
-        {{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1}},
-        {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}},
-    };
+    const auto& kFaces = nprgl::probes::kCubeFaces;
     static const float kNormals[6][3] = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0},
                                          {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
     for (int f = 0; f < 6; ++f) {
