@@ -85,6 +85,7 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
     Material m = a.material;
     if (!batch.materials.empty()) m.diffuse = batch.beginMaterial, m.ambient = batch.beginAmbient;
     size_t next = 0;
+    std::vector<glm::vec4> backs(a.twoSide ? batch.vertices.size() : 0);
     for (size_t i = 0; i < batch.vertices.size(); ++i) {
         TrackedVertex& v = batch.vertices[i];
         while (next < batch.materials.size() && batch.materials[next].first <= i) {
@@ -100,25 +101,121 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
         } else if (a.rescaleNormal && rescale > 1e-12f) {
             n /= rescale;
         }
-        // Two-sided: the side facing the eye is the one lit (an approximation per vertex of
-        // GL's per-face choice; exact for faces whose vertex normals agree with their face).
-        const glm::vec3 towardsEye = glm::dot(eye, eye) > 0.0f ? -eye : glm::vec3(0, 0, 1);
-        const bool back = a.twoSide && glm::dot(n, towardsEye) < 0.0f;
-        if (back) n = -n;
-        Material here = back ? a.backMaterial : m;
-        switch (back ? (colourBack ? colourMode : 0) : (colourFront ? colourMode : 0)) {
-        case GL_AMBIENT: here.ambient = glm::vec3(v.color); break;
-        case GL_DIFFUSE: here.diffuse = v.color; break;
-        case GL_AMBIENT_AND_DIFFUSE:
-            here.ambient = glm::vec3(v.color);
-            here.diffuse = v.color;
-            break;
-        case GL_SPECULAR: here.specular = glm::vec3(v.color); break;
-        case GL_EMISSION: here.emission = glm::vec3(v.color); break;
-        default: break;
-        }
-        v.color = shade(a, here, eye, n);
+        auto lit = [&](bool back) {
+            Material here = back ? a.backMaterial : m;
+            switch (back ? (colourBack ? colourMode : 0) : (colourFront ? colourMode : 0)) {
+            case GL_AMBIENT: here.ambient = glm::vec3(v.color); break;
+            case GL_DIFFUSE: here.diffuse = v.color; break;
+            case GL_AMBIENT_AND_DIFFUSE:
+                here.ambient = glm::vec3(v.color);
+                here.diffuse = v.color;
+                break;
+            case GL_SPECULAR: here.specular = glm::vec3(v.color); break;
+            case GL_EMISSION: here.emission = glm::vec3(v.color); break;
+            default: break;
+            }
+            return shade(a, here, eye, back ? -n : n);
+        };
+        // Two-sided: GL lights every vertex for both sides and each primitive shows the side
+        // its window winding faces (pickSides), whatever way the normals point.
+        if (a.twoSide) backs[i] = lit(true);
+        v.color = lit(false);
     }
+    if (a.twoSide) pickSides(batch, backs, a.frontFace == GL_CW);
+}
+
+namespace {
+
+// Whether the triangle faces the window counter-clockwise: the sign of the determinant of its
+// clip-space x, y, w (homogeneous, so right for the part in front of the eye even when a
+// corner is behind it). 0: seen edge-on, or degenerate.
+int windingSign(const glm::mat4& clip, const glm::vec3& p0, const glm::vec3& p1,
+                const glm::vec3& p2)
+{
+    auto xyw = [&](const glm::vec3& p) {
+        const glm::vec4 c = clip * glm::vec4(p, 1.0f);
+        return glm::dvec3(c.x, c.y, c.w);
+    };
+    const double d = glm::dot(xyw(p0), glm::cross(xyw(p1), xyw(p2)));
+    return d > 0.0 ? 1 : d < 0.0 ? -1 : 0;
+}
+
+} // namespace
+
+void FixedLighting::pickSides(TrackedBatch& batch, const std::vector<glm::vec4>& backs,
+                              bool clockwiseFront)
+{
+    std::vector<TrackedVertex>& v = batch.vertices;
+    const size_t n = v.size();
+    const glm::mat4 clip = batch.projection * batch.modelview;
+    // A primitive's side from its first corners that are not in a line (a quad or polygon
+    // is planar as GL assumes it).
+    auto back = [&](std::initializer_list<size_t> corners) {
+        const size_t* c = corners.begin();
+        int sign = 0;
+        for (size_t k = 2; k < corners.size() && sign == 0; ++k) {
+            sign = windingSign(clip, v[c[0]].position, v[c[k - 1]].position, v[c[k]].position);
+        }
+        return (sign < 0) != clockwiseFront && sign != 0;
+    };
+    // Independent primitives keep their vertices, each in its side's colours.
+    auto colourSide = [&](size_t first, size_t count, bool isBack) {
+        if (!isBack) return;
+        for (size_t k = first; k < first + count; ++k) v[k].color = backs[k];
+    };
+    if (batch.mode == GL_TRIANGLES || batch.mode == GL_QUADS) {
+        const size_t stride = batch.mode == GL_TRIANGLES ? 3 : 4;
+        for (size_t first = 0; first + stride <= n; first += stride) {
+            colourSide(first, stride,
+                       stride == 3 ? back({first, first + 1, first + 2})
+                                   : back({first, first + 1, first + 2, first + 3}));
+        }
+        return;
+    }
+    if (batch.mode == GL_POLYGON) {
+        if (n < 3) return;
+        int sign = 0;
+        for (size_t k = 2; k < n && sign == 0; ++k) {
+            sign = windingSign(clip, v[0].position, v[k - 1].position, v[k].position);
+        }
+        colourSide(0, n, (sign < 0) != clockwiseFront && sign != 0);
+        return;
+    }
+    // Strips and fans share a vertex between faces that may show different sides: they
+    // become their separate primitives, in the winding GL gives each.
+    std::vector<TrackedVertex> out;
+    auto put = [&](std::initializer_list<size_t> corners) {
+        const bool isBack = back(corners);
+        for (size_t k : corners) {
+            out.push_back(v[k]);
+            if (isBack) out.back().color = backs[k];
+        }
+    };
+    switch (batch.mode) {
+    case GL_TRIANGLE_STRIP:
+        out.reserve(3 * n);
+        for (size_t i = 0; i + 2 < n; ++i) {
+            if (i % 2 == 0) put({i, i + 1, i + 2});
+            else put({i + 1, i, i + 2});
+        }
+        batch.mode = GL_TRIANGLES;
+        break;
+    case GL_TRIANGLE_FAN:
+        out.reserve(3 * n);
+        for (size_t i = 1; i + 1 < n; ++i) put({0, i, i + 1});
+        batch.mode = GL_TRIANGLES;
+        break;
+    case GL_QUAD_STRIP:
+        out.reserve(2 * n);
+        for (size_t i = 0; 2 * i + 3 < n; ++i) {
+            // The provoking vertex (2i+3) last, as flattenBatch takes a quad's.
+            put({2 * i + 2, 2 * i, 2 * i + 1, 2 * i + 3});
+        }
+        batch.mode = GL_QUADS;
+        break;
+    default: return;
+    }
+    v.swap(out);
 }
 
 void FixedLighting::flattenBatch(TrackedBatch& batch)
@@ -175,8 +272,7 @@ void FixedLighting::flattenBatch(TrackedBatch& batch)
     v.swap(out);
 }
 
-float FixedLighting::ambientShare(const AttribState& a, const glm::vec4& colour,
-                                  const glm::vec4& litSide)
+glm::vec3 FixedLighting::unlitColour(const AttribState& a, const glm::vec4& colour)
 {
     glm::vec3 ambientLight = glm::max(a.modelAmbient, glm::vec3(0.0f));
     for (size_t i = 0; i < 8; ++i) {
@@ -186,14 +282,39 @@ float FixedLighting::ambientShare(const AttribState& a, const glm::vec4& colour,
     const bool colourAmbient = mode == GL_AMBIENT || mode == GL_AMBIENT_AND_DIFFUSE;
     const glm::vec3 reflects = colourAmbient ? glm::vec3(colour) : a.material.ambient;
     const glm::vec3 emits = mode == GL_EMISSION ? glm::vec3(colour) : a.material.emission;
-    const glm::vec3 unlit =
-        glm::clamp(glm::max(emits, glm::vec3(0.0f)) + reflects * ambientLight, 0.0f, 1.0f);
+    return glm::clamp(glm::max(emits, glm::vec3(0.0f)) + reflects * ambientLight, 0.0f, 1.0f);
+}
+
+float FixedLighting::ambientShare(const AttribState& a, const glm::vec4& colour,
+                                  const glm::vec4& litSide)
+{
+    const glm::vec3 unlit = unlitColour(a, colour);
     const float lit = luma(glm::vec3(litSide));
     // A black lit side (a black material): no light makes it lighter, GL shows it the same
     // everywhere.
     if (!(lit > 1e-4f)) return 1.0f;
     const float share = luma(unlit) / lit;
     return std::isfinite(share) ? std::clamp(share, 0.0f, 1.0f) : -1.0f;
+}
+
+glm::vec3 FixedLighting::shadowTint(const AttribState& a, const glm::vec4& colour,
+                                    const glm::vec4& litSide)
+{
+    const glm::vec3 unlit = unlitColour(a, colour);
+    const float unlitLuma = luma(unlit);
+    // Too dark to have a hue that shows, or no lit colour to compare with.
+    if (!(unlitLuma > 1e-3f) || !(luma(glm::vec3(litSide)) > 1e-3f)) return glm::vec3(1.0f);
+    glm::vec3 tint(1.0f);
+    for (int c = 0; c < 3; ++c) {
+        // A channel the lit side lacks cannot be scaled into the shadow: left as it is.
+        if (litSide[c] > 1e-3f) tint[c] = unlit[c] / litSide[c];
+    }
+    const float scale = luma(glm::vec3(litSide) * tint);
+    if (!(scale > 1e-6f) || !std::isfinite(scale)) return glm::vec3(1.0f);
+    tint *= luma(glm::vec3(litSide)) / scale;
+    // Times the lit colour and its ambient share this is GL's unlit colour; the bound only
+    // keeps a channel the lit side nearly lacks from growing without limit.
+    return glm::clamp(tint, 0.0f, 16.0f);
 }
 
 float FixedLighting::diffuseShare(const AttribState& a, const glm::vec4& colour,

@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include <vector>
+
 namespace nprgl {
 
 // The colours the fixed pipeline gives a batch's vertices (OpenGL 2.1, section 2.14.1): the
@@ -20,10 +22,15 @@ public:
 
     // Lights every vertex of `batch` (batch.modelview set, colours still the current colour
     // per vertex) with the material state `a`, its colour-material mode and the diffuse
-    // changes between glBegin and glEnd (batch.materials). Front faces' lighting: with
-    // GL_LIGHT_MODEL_TWO_SIDE, a vertex whose normal faces away from the eye is lit from its
-    // other side with the back material, as the back face through it would be.
+    // changes between glBegin and glEnd (batch.materials). With GL_LIGHT_MODEL_TWO_SIDE,
+    // primitives whose window winding shows their back (batch.projection set) are lit from
+    // the other side with the back material, as GL lights them (pickSides).
     static void lightBatch(const AttribState& a, TrackedBatch& batch);
+    // Gives each primitive the colours of the side it shows in the window: the vertices'
+    // back colours (`backs`, one per vertex) where its winding is clockwise (counter-clockwise
+    // when `clockwiseFront`, glFrontFace(GL_CW)). Strips and fans become separate primitives.
+    static void pickSides(TrackedBatch& batch, const std::vector<glm::vec4>& backs,
+                          bool clockwiseFront);
     // Under glShadeModel(GL_FLAT): each primitive in its provoking vertex's colour, as GL's
     // flat shading draws it (OpenGL 2.1, table 2.2). Strips and fans are unrolled into
     // separate triangles or quads (their vertices differ in colour from face to face).
@@ -38,6 +45,12 @@ public:
     // `litSide`, the colour the styles give its lit side.
     static float ambientShare(const AttribState& a, const glm::vec4& colour,
                               const glm::vec4& litSide);
+    // The same unlit colour's hue against `litSide`'s: per channel unlit / litSide, scaled so
+    // that litSide times it keeps litSide's luma (SceneLights::shadowTint). 1 where unknown.
+    static glm::vec3 shadowTint(const AttribState& a, const glm::vec4& colour,
+                                const glm::vec4& litSide);
+    // GL's colour where no light reaches: emission plus the ambient light reflected, clamped.
+    static glm::vec3 unlitColour(const AttribState& a, const glm::vec4& colour);
     // What light `key` adds to that colour facing the surface head-on (the material's or the
     // colour's diffuse reflection of it), as a share of `litSide` by luma: with ambientShare,
     // how GL's own light at a point compares with the lit side. Below 0: not known.

@@ -1232,6 +1232,35 @@ size_t StateTracker::keyLight() const
     return key;
 }
 
+// Under two-sided lighting, each vertex's colour on the back's lit side (the back material,
+// or the current colour where colour material follows the back), in `light`; empty when the
+// back shows the front's colours anyway.
+std::vector<glm::vec4> StateTracker::backSides(const TrackedBatch& batch,
+                                               const glm::vec4& light) const
+{
+    const AttribState& a = mAttrib;
+    if (!a.twoSide) return {};
+    const GLenum mode = a.colorMaterial ? a.colorMaterialMode : 0;
+    const bool colourFront = a.colorMaterial && a.colorMaterialFace != GL_BACK;
+    const bool colourBack = a.colorMaterial && a.colorMaterialFace != GL_FRONT;
+    const bool sameDiffuse = a.backMaterial.diffuse == a.material.diffuse;
+    const bool sameEmission = a.backMaterial.emission == a.material.emission;
+    if (colourFront == colourBack && sameDiffuse && sameEmission) {
+        return {};
+    }
+    const bool colourDiffuse = colourBack && (mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE);
+    const bool colourEmits = colourBack && mode == GL_EMISSION;
+    std::vector<glm::vec4> backs;
+    backs.reserve(batch.vertices.size());
+    for (const TrackedVertex& v : batch.vertices) {
+        const glm::vec4 base = colourDiffuse ? v.color : a.backMaterial.diffuse;
+        const glm::vec3 emits = colourEmits ? glm::vec3(v.color) : a.backMaterial.emission;
+        backs.push_back(glm::min(base * light + glm::vec4(glm::max(emits, glm::vec3(0.0f)), 0.0f),
+                                 glm::vec4(1.0f)));
+    }
+    return backs;
+}
+
 glm::vec3 StateTracker::litSideLight(const glm::vec3& at) const
 {
     // The light on the lit side of a surface: the scene's ambient, every enabled light's
@@ -1691,6 +1720,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     const AttribState& a = mAttrib;
     const glm::vec4 current = batch.vertices.front().color; // before lighting replaces it
     float ambientShare = -1.0f, diffuseShare = -1.0f;
+    glm::vec3 shadowTint(1.0f);
     if (mProgramLighting) {
         if (a.lighting) FixedLighting::lightBatch(a, batch);
         if (a.flatShade) FixedLighting::flattenBatch(batch);
@@ -1711,6 +1741,9 @@ bool StateTracker::keep(TrackedBatch& batch)
         // the emission it adds to the material's lit colour; as the ambient or specular it
         // leaves the material's diffuse colour what the eye mostly sees.
         const GLenum mode = a.frontColorMaterial() ? a.colorMaterialMode : GL_AMBIENT_AND_DIFFUSE;
+        // Two-sided, with a back unlike the front: the back's lit colour for the faces the
+        // window shows wound the other way (extrusion's tubes show their backs).
+        const std::vector<glm::vec4> backs = backSides(batch, light);
         if (a.frontColorMaterial() && mode == GL_EMISSION) {
             const glm::vec4 c = glm::min(a.material.diffuse * light, glm::vec4(1.0f));
             for (TrackedVertex& v : batch.vertices) {
@@ -1737,8 +1770,11 @@ bool StateTracker::keep(TrackedBatch& batch)
             for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
         }
         ambientShare = FixedLighting::ambientShare(a, current, batch.vertices.front().color);
+        shadowTint = FixedLighting::shadowTint(a, current, batch.vertices.front().color);
         diffuseShare =
             FixedLighting::diffuseShare(a, current, batch.vertices.front().color, keyLight());
+        // The shares are the front's (a back's colours differ in hue, not in how GL lights).
+        if (!backs.empty()) FixedLighting::pickSides(batch, backs, a.frontFace == GL_CW);
         addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);
@@ -1776,6 +1812,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     else batch.lights.count = 0;
     batch.lights.ambientShare = ambientShare;
     batch.lights.diffuseShare = diffuseShare;
+    batch.lights.shadowTint = shadowTint;
     if (batch.texture == 0) {
         batch.generated = generatedTexture();
         bakeObjectLinear(batch);

@@ -29,6 +29,11 @@ struct SceneLights {
     // reflects of the ambient light), as a share of the object's colour on its lit side:
     // how dark the program's own shadowed side is. Below 0: not known.
     float ambientShare = -1.0f;
+    // The hue of that shadowed side against the lit side's, per channel (luma 1): GL's unlit
+    // colour over its lit colour, normalised. Not grey where the lights are coloured and the
+    // ambient light is not (extrusion's yellow and cyan lights make its cream tubes green
+    // where lit, olive where not). 1: the same hue, or not known.
+    glm::vec3 shadowTint{1.0f};
     // What the brightest light adds facing a surface head-on, as a share of the same colour
     // (FixedLighting::diffuseShare): GL's light at a point is about ambientShare plus this
     // times the lights' L·n. Below 0: not known.

@@ -1155,6 +1155,61 @@ TEST(StateTracker, TheShadowedSidesShareOfTheLitColourIsGlsAmbient)
     EXPECT_LT(batches[2].lights.ambientShare, 0.0f) << "unlit: no share known";
 }
 
+// The shadowed side's hue is GL's unlit colour's, not the lit side's darkened: under a yellow
+// light a cream material is yellow where lit and keeps its cream (the white ambient's) where
+// not. extrusion's tubes were a dark green instead of GL's olive.
+TEST(StateTracker, TheShadowedSideKeepsTheHueOfGlsUnlitColour)
+{
+    auto lights = [](std::array<float, 4> diffuse) {
+        LitFeed lighting;
+        lighting.feed.run([&](CallWriter& w) {
+            vectorCall(w, op::glLightfv, GL_LIGHT0, GL_DIFFUSE, diffuse.data(), sizeof diffuse);
+        });
+        lighting.feed.material(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE,
+                               {0.6f, 0.6f, 0.4f, 1.0f});
+        lighting.quad();
+        std::vector<TrackedBatch> batches;
+        lighting.tracker.takeBatches(batches);
+        return batches.at(0);
+    };
+    auto luma = [](glm::vec3 c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; };
+    const TrackedBatch yellow = lights({1.0f, 1.0f, 0.0f, 1.0f});
+    const glm::vec3 lit(yellow.vertices[0].color);
+    const glm::vec3 shadow = lit * yellow.lights.shadowTint;
+    const glm::vec3 unlit = 0.2f * glm::vec3(0.6f, 0.6f, 0.4f); // GL's: the scene's ambient
+    EXPECT_LT(lit.b / lit.r, 0.3f) << "yellow where lit";
+    EXPECT_NEAR(shadow.b / shadow.r, unlit.b / unlit.r, 0.02f) << "GL's cream where not";
+    EXPECT_NEAR(luma(shadow), luma(lit), 0.01f) << "a hue: ambientShare says how dark";
+    const TrackedBatch white = lights({1.0f, 1.0f, 1.0f, 1.0f});
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(white.lights.shadowTint[c], 1.0f, 1e-3f) << c;
+}
+
+// Two-sided lighting with a back unlike the front: the faces the window shows wound the other
+// way take the back's colour in the shading styles too, as GL colours them.
+TEST(StateTracker, TwoSidedLightingShowsTheBacksColourOnFacesWoundTheOtherWay)
+{
+    LitFeed lighting;
+    Feed& feed = lighting.feed;
+    feed.run([](CallWriter& w) {
+        w.op(op::glLightModeli);
+        w.put<GLenum>(GL_LIGHT_MODEL_TWO_SIDE);
+        w.put<GLint>(1);
+    });
+    feed.material(GL_FRONT, GL_DIFFUSE, {0.8f, 0.0f, 0.0f, 1.0f});
+    feed.material(GL_BACK, GL_DIFFUSE, {0.0f, 0.0f, 0.8f, 1.0f});
+    lighting.quad();
+    feed.run([](CallWriter& w) { w.op(op::glFrontFace), w.put<GLenum>(GL_CW); });
+    lighting.quad();
+    std::vector<TrackedBatch> batches;
+    lighting.tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 2u);
+    const glm::vec4 front = batches[0].vertices[0].color, back = batches[1].vertices[0].color;
+    EXPECT_GT(front.r, 0.5f);
+    EXPECT_LT(front.b, 0.1f);
+    EXPECT_GT(back.b, 0.5f) << "the back material";
+    EXPECT_LT(back.r, 0.1f);
+}
+
 // A positional light whose attenuation brightens it near a surface (a constant factor of 0.1:
 // ten times its colour one unit away, antmaze's lights) lights the surface's lit side that
 // much brighter, as GL does before it clamps: the styles' colour for it was the material's
@@ -1326,32 +1381,61 @@ TEST(StateTracker, ProgramLightingGivesGlsColoursPerVertex)
         w.put<GLenum>(GL_FLAT);
     });
     quad();
-    // The back's own material lights the side turned away (splodesic's yellow insides).
+    // The back's own material lights the side the window shows wound clockwise
+    // (splodesic's yellow insides), from the other side of the normal.
     feed.run([](CallWriter& w) { w.op(op::glShadeModel), w.put<GLenum>(GL_SMOOTH); });
     feed.material(GL_BACK, GL_DIFFUSE, {0.0f, 1.0f, 0.0f, 1.0f});
+    feed.run([](CallWriter& w) { w.op(op::glFrontFace), w.put<GLenum>(GL_CW); });
     quad();
+    feed.run([](CallWriter& w) { w.op(op::glFrontFace), w.put<GLenum>(GL_CCW); });
+    // A strip folded over itself: its second triangle shows its back, whatever its normals
+    // say (extrusion's tubes face the eye with normals pointing out of their backs).
+    feed.run([](CallWriter& w) {
+        w.op(op::glBegin);
+        w.put<GLenum>(GL_TRIANGLE_STRIP);
+        w.op(op::glNormal3f);
+        for (float c : {0.0f, 0.0f, 1.0f}) w.put<float>(c);
+        for (const glm::vec2 p : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1),
+                                  glm::vec2(-1, 0)}) {
+            w.op(op::glVertex3f);
+            for (float c : {p.x, p.y, -2.0f}) w.put<float>(c);
+        }
+        w.op(op::glEnd);
+    });
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
-    ASSERT_EQ(batches.size(), 4u);
+    ASSERT_EQ(batches.size(), 5u);
     // The scene's ambient (GL's 0.2) on the material's ambient, plus N·L on the diffuse.
     auto expected = [](float nl) {
         return glm::vec3(0.2f * 0.2f, 0.2f * 0.1f, 0.2f * 0.1f + 0.25f) +
                nl * glm::vec3(0.5f, 0.2f, 0.1f);
     };
     const glm::vec4 inside = batches[3].vertices[3].color;
-    EXPECT_GT(inside.g, 0.9f) << "the back material";
+    EXPECT_GT(inside.g, 0.9f) << "the back material, lit along the reversed normal";
     EXPECT_LT(inside.r, 0.1f);
-    EXPECT_NEAR(batches[3].vertices[0].color.r, expected(1.0f).r, 1e-4f) << "the front's";
+    // Its first vertex's normal faces the eye: the back is lit from behind, ambient only.
+    EXPECT_NEAR(batches[3].vertices[0].color.r, expected(0.0f).r, 1e-4f);
+    EXPECT_NEAR(batches[3].vertices[0].color.g, expected(0.0f).g, 1e-4f);
+    const std::vector<TrackedVertex>& folded = batches[4].vertices;
+    ASSERT_EQ(folded.size(), 6u) << "the strip's triangles apart";
+    EXPECT_EQ(batches[4].mode, GLenum(GL_TRIANGLES));
+    for (size_t k = 0; k < 3; ++k) {
+        EXPECT_NEAR(folded[k].color.r, expected(1.0f).r, 1e-4f) << "front " << k;
+        EXPECT_NEAR(folded[3 + k].color.r, expected(0.0f).r, 1e-4f) << "back " << k;
+        EXPECT_NEAR(folded[3 + k].color.g, expected(0.0f).g, 1e-4f) << "back " << k;
+    }
     const std::vector<TrackedVertex>& one = batches[0].vertices;
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(one[0].color[c], expected(1.0f)[c], 1e-4f) << c;
         EXPECT_NEAR(one[1].color[c], expected(0.5f)[c], 1e-4f) << c;
         EXPECT_NEAR(one[2].color[c], expected(0.0f)[c], 1e-4f) << c;
         EXPECT_NEAR(one[3].color[c], expected(0.0f)[c], 1e-4f) << "one-sided: unlit back";
-        EXPECT_NEAR(batches[1].vertices[3].color[c], expected(1.0f)[c], 1e-4f) << "two-sided";
+        EXPECT_NEAR(batches[1].vertices[3].color[c], expected(0.0f)[c], 1e-4f)
+            << "two-sided: the front faces the window, so its front is lit, dark there";
         for (int k = 0; k < 3; ++k) {
-            EXPECT_NEAR(batches[2].vertices[size_t(k)].color[c], expected(1.0f)[c], 1e-4f)
-                << "flat: the quad's last vertex provokes its colour";
+            EXPECT_NEAR(batches[2].vertices[size_t(k)].color[c], expected(0.0f)[c], 1e-4f)
+                << "flat: the quad's last vertex (its front turned from the light) provokes "
+                   "its colour";
         }
     }
 }

@@ -90,6 +90,7 @@ uniform float lightmapped;
 uniform float flatLight; // above -2: the light everywhere (SceneObject::flatLight)
 uniform float ambientShare; // SceneLights::ambientShare of an object the program lit, else -1
 uniform float diffuseShare; // SceneLights::diffuseShare (times the lights' peak), else -1
+uniform vec3 shadowTint;    // SceneLights::shadowTint of an object the program lit, else 1
 #if PROGRAM_LIGHTS
 uniform vec4 lightPosition[PROGRAM_LIGHTS];
 uniform vec4 lightSpot[PROGRAM_LIGHTS];    // where a spot points (unit); w: cos of its cutoff
@@ -217,6 +218,7 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     ambientShare = gl.GetUniformLocation(program, "ambientShare");
     shine = gl.GetUniformLocation(program, "shine");
     diffuseShare = gl.GetUniformLocation(program, "diffuseShare");
+    shadowTint = gl.GetUniformLocation(program, "shadowTint");
     twoSide = gl.GetUniformLocation(program, "twoSide");
     lightPosition = gl.GetUniformLocation(program, "lightPosition");
     lightSpot = gl.GetUniformLocation(program, "lightSpot");
@@ -283,6 +285,8 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     const bool lit = object.lights.count > 0 && !object.flatLight;
     gl.Uniform1f(ambientShare, lit ? object.lights.ambientShare : -1.0f);
+    const glm::vec3 tint = lit ? object.lights.shadowTint : glm::vec3(1.0f);
+    gl.Uniform3fv(shadowTint, 1, glm::value_ptr(tint));
     const glm::vec4 shines(lit ? object.lights.shine : glm::vec3(0.0f), object.lights.shininess);
     gl.Uniform4fv(shine, 1, glm::value_ptr(shines));
     gl.Uniform1i(lightmapSampler, 3);

@@ -81,7 +81,7 @@ public:
         GLint modelview = -1, projection = -1, normalMatrix = -1, faceSign = -1, lightDir = -1;
         GLint fogMode = -1, fogRange = -1, fogColour = -1, layerScale = -1, layerOffset = -1;
         GLint lightmapped = -1, lightmapSampler = -1, flatLight = -1, ambientShare = -1, shine = -1;
-        GLint diffuseShare = -1, twoSide = -1;
+        GLint diffuseShare = -1, twoSide = -1, shadowTint = -1;
         GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
         GLint genMode = -1, genPlaneS = -1, genPlaneT = -1, genMatrix = -1;
 

@@ -187,7 +187,8 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
         return std::string("#define ") + name + " " +
                (fixed ? ShadingCommon::glslVec3(mColors[i]) : derived) + "\n";
     };
-    s += colour("SHADOW_COLOR", 0, "(base * shadowShare())");
+    // In the hue GL's own shadowed side has (SceneLights::shadowTint).
+    s += colour("SHADOW_COLOR", 0, "min(base * shadowShare() * shadowTint, vec3(1.0))");
     s += colour("DIFFUSE_COLOR", 1, "base");
     s += colour("HIGHLIGHT_COLOR", 2, "mix(base, vec3(1.0), " + f(mHighlightMix) + ")");
     s += colour("PROGRAM_HIGHLIGHT", 2, "min(base + shine.rgb, vec3(1.0))");
