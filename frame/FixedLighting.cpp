@@ -272,6 +272,84 @@ void FixedLighting::flattenBatch(TrackedBatch& batch)
     v.swap(out);
 }
 
+FixedLighting::SideLight FixedLighting::litSideLight(const AttribState& a, const glm::vec3& at,
+                                                     size_t key)
+{
+    constexpr float kLitSide = 0.75f;
+    const glm::vec3 scene = glm::max(a.modelAmbient, glm::vec3(0.0f));
+    SideLight all{scene, glm::vec3(0.0f)}, main{scene, glm::vec3(0.0f)};
+    for (size_t i = 0; i < 8; ++i) {
+        if (!(a.lightsOn & (1u << i))) continue;
+        const bool spot = a.spotCutoff[i] != 180.0f;
+        const bool attenuated =
+            a.lightPosition[i].w != 0.0f && a.attenuation[i] != glm::vec3(1.0f, 0.0f, 0.0f);
+        glm::vec3 l;
+        float reach = 1.0f;
+        const bool brightened =
+            !spot && attenuated && towardsLight(a, i, at, l, reach) && reach > 1.0f;
+        const glm::vec3 diffuse = kLitSide * (brightened ? std::min(reach, 1e3f) : 1.0f) *
+                                  glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
+        const glm::vec3 own = glm::max(a.lightAmbient[i], glm::vec3(0.0f));
+        all.ambient += own;
+        all.diffuse += diffuse;
+        const bool local = spot || (attenuated && !brightened);
+        if (local) continue;
+        main.ambient += own;
+        if (i == key) main.diffuse += diffuse;
+    }
+    const glm::vec3 mainSum = main.ambient + main.diffuse;
+    if (std::max({mainSum.r, mainSum.g, mainSum.b}) >= 1.0f) return main;
+    const glm::vec3 allSum = all.ambient + all.diffuse;
+    const float top = std::max({allSum.r, allSum.g, allSum.b});
+    if (!(top > 1e-6f)) return SideLight{};
+    return SideLight{all.ambient / top, all.diffuse / top};
+}
+
+glm::vec4 FixedLighting::colourLitSides(const AttribState& a, TrackedBatch& batch,
+                                        const SideLight& light)
+{
+    // glColor takes the place of what GL_COLOR_MATERIAL's mode names, on the faces it names.
+    const GLenum mode = a.colorMaterial ? a.colorMaterialMode : 0;
+    const bool colourFront = a.colorMaterial && a.colorMaterialFace != GL_BACK;
+    const bool colourBack = a.colorMaterial && a.colorMaterialFace != GL_FRONT;
+    auto litColour = [&](Material m, bool follows, const glm::vec4& colour) {
+        if (follows) {
+            if (mode == GL_AMBIENT || mode == GL_AMBIENT_AND_DIFFUSE) m.ambient = glm::vec3(colour);
+            if (mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE) m.diffuse = colour;
+            if (mode == GL_EMISSION) m.emission = glm::vec3(colour);
+        }
+        // The diffuse colour, the one the eye mostly sees, in all of the light: the styles
+        // shade from it. GL's ambient reflectance shows where the light does not reach: the
+        // shadow band's hue (shadowTint).
+        const glm::vec3 c = glm::max(m.emission, glm::vec3(0.0f)) +
+                            glm::vec3(m.diffuse) * (light.ambient + light.diffuse);
+        return glm::vec4(glm::min(c, glm::vec3(1.0f)), m.diffuse.a);
+    };
+    // Two-sided, with a back unlike the front: the back's lit colours too.
+    const bool backDiffers =
+        a.twoSide && (colourFront != colourBack || a.backMaterial.diffuse != a.material.diffuse ||
+                      a.backMaterial.ambient != a.material.ambient ||
+                      a.backMaterial.emission != a.material.emission);
+    std::vector<glm::vec4> backs(backDiffers ? batch.vertices.size() : 0);
+    // The material at glBegin, then each change between glBegin and glEnd from its vertex on.
+    Material m = a.material;
+    if (!batch.materials.empty()) m.diffuse = batch.beginMaterial, m.ambient = batch.beginAmbient;
+    size_t next = 0;
+    for (size_t i = 0; i < batch.vertices.size(); ++i) {
+        while (next < batch.materials.size() && batch.materials[next].first <= i) {
+            const TrackedBatch::MaterialChange& change = batch.materials[next++];
+            if (change.setsDiffuse) m.diffuse = change.diffuse;
+            if (change.setsAmbient) m.ambient = change.ambient;
+        }
+        glm::vec4& colour = batch.vertices[i].color;
+        if (backDiffers) backs[i] = litColour(a.backMaterial, colourBack, colour);
+        colour = litColour(m, colourFront, colour);
+    }
+    const glm::vec4 front = batch.vertices.empty() ? glm::vec4(0.0f) : batch.vertices[0].color;
+    if (backDiffers) pickSides(batch, backs, a.frontFace == GL_CW);
+    return front;
+}
+
 glm::vec3 FixedLighting::unlitColour(const AttribState& a, const glm::vec4& colour)
 {
     glm::vec3 ambientLight = glm::max(a.modelAmbient, glm::vec3(0.0f));
@@ -304,10 +382,10 @@ glm::vec3 FixedLighting::shadowTint(const AttribState& a, const glm::vec4& colou
     const float unlitLuma = luma(unlit);
     // Too dark to have a hue that shows, or no lit colour to compare with.
     if (!(unlitLuma > 1e-3f) || !(luma(glm::vec3(litSide)) > 1e-3f)) return glm::vec3(1.0f);
-    glm::vec3 tint(1.0f);
+    // A channel the lit side (nearly) lacks cannot say its hue: it darkens as the whole does.
+    glm::vec3 tint(unlitLuma / luma(glm::vec3(litSide)));
     for (int c = 0; c < 3; ++c) {
-        // A channel the lit side lacks cannot be scaled into the shadow: left as it is.
-        if (litSide[c] > 1e-3f) tint[c] = unlit[c] / litSide[c];
+        if (litSide[c] > 1.0f / 64.0f) tint[c] = unlit[c] / litSide[c];
     }
     const float scale = luma(glm::vec3(litSide) * tint);
     if (!(scale > 1e-6f) || !std::isfinite(scale)) return glm::vec3(1.0f);

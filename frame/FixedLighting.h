@@ -19,6 +19,12 @@ namespace nprgl {
 class FixedLighting {
 public:
     using Material = AttribState::Material;
+    // The light on the lit side of a surface (litSideLight): what GL's ambient reflectance
+    // takes (the scene's ambient and the lights' own) and what its diffuse takes.
+    struct SideLight {
+        glm::vec3 ambient{0.0f};
+        glm::vec3 diffuse{1.0f};
+    };
 
     // Lights every vertex of `batch` (batch.modelview set, colours still the current colour
     // per vertex) with the material state `a`, its colour-material mode and the diffuse
@@ -26,6 +32,26 @@ public:
     // primitives whose window winding shows their back (batch.projection set) are lit from
     // the other side with the back material, as GL lights them (pickSides).
     static void lightBatch(const AttribState& a, TrackedBatch& batch);
+    // The light on the lit side of a surface at `at` (eye space), `key` the brightest light:
+    // the scene's ambient, every enabled light's ambient, and its diffuse at N·L 0.75 (some
+    // 40 degrees off the light), as GL sums them; at full strength (scaled so that its
+    // brightest channel is 1: the styles' bands shade, a white light changes nothing). But
+    // where the ambient and the key light alone pass 1 (lights that reach everywhere: not
+    // spots, not attenuated), that sum as it is: GL brightens the material so, and clamps per
+    // channel. A bluish ambient under a pinkish sun lights snow white where both together
+    // pass 1 in every channel (extremetuxracer's) and its yellow yellower; a pinkish sun alone
+    // lights it pink. Other lights come from elsewhere: at most a part of them adds to the
+    // key's on one surface, so they only tint. A positional light whose attenuation brightens
+    // it at `at` (a constant factor below 1, antmaze's 0.1) counts so brightened, as one that
+    // reaches everywhere: GL lights the surface that much brighter and clamps.
+    static SideLight litSideLight(const AttribState& a, const glm::vec3& at, size_t key);
+    // Colours a lit batch for the shading styles: each vertex its material's (or its colour
+    // material's) diffuse colour on the lit side in all of `light`, plus its emission,
+    // clamped per channel (GL's ambient reflectance is the shadow band's: shadowTint); with
+    // GL_LIGHT_MODEL_TWO_SIDE and a back unlike the front, the faces the window shows wound
+    // the other way in the back's (pickSides). Returns the first vertex's front colour.
+    static glm::vec4 colourLitSides(const AttribState& a, TrackedBatch& batch,
+                                    const SideLight& light);
     // Gives each primitive the colours of the side it shows in the window: the vertices'
     // back colours (`backs`, one per vertex) where its winding is clockwise (counter-clockwise
     // when `clockwiseFront`, glFrontFace(GL_CW)). Strips and fans become separate primitives.

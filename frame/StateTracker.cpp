@@ -1232,75 +1232,6 @@ size_t StateTracker::keyLight() const
     return key;
 }
 
-// Under two-sided lighting, each vertex's colour on the back's lit side (the back material,
-// or the current colour where colour material follows the back), in `light`; empty when the
-// back shows the front's colours anyway.
-std::vector<glm::vec4> StateTracker::backSides(const TrackedBatch& batch,
-                                               const glm::vec4& light) const
-{
-    const AttribState& a = mAttrib;
-    if (!a.twoSide) return {};
-    const GLenum mode = a.colorMaterial ? a.colorMaterialMode : 0;
-    const bool colourFront = a.colorMaterial && a.colorMaterialFace != GL_BACK;
-    const bool colourBack = a.colorMaterial && a.colorMaterialFace != GL_FRONT;
-    const bool sameDiffuse = a.backMaterial.diffuse == a.material.diffuse;
-    const bool sameEmission = a.backMaterial.emission == a.material.emission;
-    if (colourFront == colourBack && sameDiffuse && sameEmission) {
-        return {};
-    }
-    const bool colourDiffuse = colourBack && (mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE);
-    const bool colourEmits = colourBack && mode == GL_EMISSION;
-    std::vector<glm::vec4> backs;
-    backs.reserve(batch.vertices.size());
-    for (const TrackedVertex& v : batch.vertices) {
-        const glm::vec4 base = colourDiffuse ? v.color : a.backMaterial.diffuse;
-        const glm::vec3 emits = colourEmits ? glm::vec3(v.color) : a.backMaterial.emission;
-        backs.push_back(glm::min(base * light + glm::vec4(glm::max(emits, glm::vec3(0.0f)), 0.0f),
-                                 glm::vec4(1.0f)));
-    }
-    return backs;
-}
-
-glm::vec3 StateTracker::litSideLight(const glm::vec3& at) const
-{
-    // The light on the lit side of a surface: the scene's ambient, every enabled light's
-    // ambient, and its diffuse at N·L 0.75 (some 40 degrees off the light), as GL sums them.
-    // Its hue, at full strength (the styles' bands shade; a white light changes nothing).
-    // But where the ambient and the brightest light alone pass 1 (lights that reach
-    // everywhere: not spots, not attenuated), that sum as it is: GL brightens the material
-    // so, and clamps per channel. A bluish ambient under a pinkish sun lights snow white where
-    // both together pass 1 in every channel (extremetuxracer's) and its yellow yellower; a
-    // pinkish sun alone lights it pink. Other lights come from elsewhere: at most a part of
-    // them adds to the brightest's on one surface, so they only tint. A positional light
-    // whose attenuation brightens it at `at` (eye space; a constant factor below 1, antmaze's
-    // 0.1) counts so brightened, as one that reaches everywhere: GL lights the surface that
-    // much brighter and clamps.
-    const AttribState& a = mAttrib;
-    constexpr float kLitSide = 0.75f;
-    const size_t key = keyLight();
-    const glm::vec3 ambient = glm::max(a.modelAmbient, glm::vec3(0.0f));
-    glm::vec3 all = ambient, main = ambient;
-    for (size_t i = 0; i < 8; ++i) {
-        if (!(a.lightsOn & (1u << i))) continue;
-        const bool spot = a.spotCutoff[i] != 180.0f;
-        const bool attenuated =
-            a.lightPosition[i].w != 0.0f && a.attenuation[i] != glm::vec3(1.0f, 0.0f, 0.0f);
-        glm::vec3 l;
-        float reach = 1.0f;
-        const bool brightened =
-            !spot && attenuated && FixedLighting::towardsLight(a, i, at, l, reach) && reach > 1.0f;
-        const glm::vec3 diffuse = kLitSide * (brightened ? std::min(reach, 1e3f) : 1.0f) *
-                                  glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
-        const glm::vec3 own = glm::max(a.lightAmbient[i], glm::vec3(0.0f));
-        all += diffuse + own;
-        const bool local = spot || (attenuated && !brightened);
-        if (!local) main += own + (i == key ? diffuse : glm::vec3(0.0f));
-    }
-    if (std::max({main.r, main.g, main.b}) >= 1.0f) return main;
-    const float top = std::max({all.r, all.g, all.b});
-    return top > 1e-6f ? all / top : glm::vec3(1.0f);
-}
-
 bool StateTracker::additiveGlow(bool& textured, bool& sourceAlpha) const
 {
     const AttribState& a = mAttrib;
@@ -1732,49 +1663,12 @@ bool StateTracker::keep(TrackedBatch& batch)
         // One pass over the vertices: the material's colour (or the vertex's), lit.
         const glm::vec3 at =
             glm::vec3(batch.modelview * glm::vec4(batch.vertices.front().position, 1.0f));
-        const glm::vec4 light(litSideLight(at), 1.0f);
-        const glm::vec4 emission(glm::max(a.material.emission, glm::vec3(0.0f)), 0.0f);
-        auto lit = [&](const glm::vec4& c) {
-            return glm::min(c * light + emission, glm::vec4(1.0f));
-        };
-        // glColor sets the diffuse colour only under GL_COLOR_MATERIAL's diffuse modes; as
-        // the emission it adds to the material's lit colour; as the ambient or specular it
-        // leaves the material's diffuse colour what the eye mostly sees.
-        const GLenum mode = a.frontColorMaterial() ? a.colorMaterialMode : GL_AMBIENT_AND_DIFFUSE;
-        // Two-sided, with a back unlike the front: the back's lit colour for the faces the
-        // window shows wound the other way (extrusion's tubes show their backs).
-        const std::vector<glm::vec4> backs = backSides(batch, light);
-        if (a.frontColorMaterial() && mode == GL_EMISSION) {
-            const glm::vec4 c = glm::min(a.material.diffuse * light, glm::vec4(1.0f));
-            for (TrackedVertex& v : batch.vertices) {
-                v.color = glm::min(c + glm::vec4(glm::vec3(v.color), 0.0f), glm::vec4(1.0f));
-            }
-        } else if (a.frontColorMaterial() && mode != GL_DIFFUSE && mode != GL_AMBIENT_AND_DIFFUSE) {
-            const glm::vec4 c = lit(a.material.diffuse);
-            for (TrackedVertex& v : batch.vertices) v.color = c;
-        } else if (!a.frontColorMaterial() && !batch.materials.empty()) {
-            // Materials set between glBegin and glEnd: each colours its run of vertices.
-            glm::vec4 c = lit(batch.beginMaterial);
-            size_t next = 0;
-            for (size_t i = 0; i < batch.vertices.size(); ++i) {
-                while (next < batch.materials.size() && batch.materials[next].first <= i) {
-                    const TrackedBatch::MaterialChange& change = batch.materials[next++];
-                    if (change.setsDiffuse) c = lit(change.diffuse);
-                }
-                batch.vertices[i].color = c;
-            }
-        } else if (!a.frontColorMaterial()) {
-            const glm::vec4 c = lit(a.material.diffuse);
-            for (TrackedVertex& v : batch.vertices) v.color = c;
-        } else if (light != glm::vec4(1.0f) || emission != glm::vec4(0.0f)) {
-            for (TrackedVertex& v : batch.vertices) v.color = lit(v.color);
-        }
-        ambientShare = FixedLighting::ambientShare(a, current, batch.vertices.front().color);
-        shadowTint = FixedLighting::shadowTint(a, current, batch.vertices.front().color);
-        diffuseShare =
-            FixedLighting::diffuseShare(a, current, batch.vertices.front().color, keyLight());
+        const glm::vec4 front = FixedLighting::colourLitSides(
+            a, batch, FixedLighting::litSideLight(a, at, keyLight()));
         // The shares are the front's (a back's colours differ in hue, not in how GL lights).
-        if (!backs.empty()) FixedLighting::pickSides(batch, backs, a.frontFace == GL_CW);
+        ambientShare = FixedLighting::ambientShare(a, current, front);
+        shadowTint = FixedLighting::shadowTint(a, current, front);
+        diffuseShare = FixedLighting::diffuseShare(a, current, front, keyLight());
         addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);

@@ -333,8 +333,6 @@ public:
     void litBy(styles::SceneLights& out) const;
     // The light GL sums on the lit side of a surface at `at` (eye space): its hue at full
     // strength, or as it is where it passes 1 (per channel).
-    std::vector<glm::vec4> backSides(const TrackedBatch& batch, const glm::vec4& light) const;
-    glm::vec3 litSideLight(const glm::vec3& at) const;
     void polygonMode(GLenum face, GLenum mode);
     void colorMaterial(GLenum face, GLenum mode)
     {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -88,7 +89,6 @@ TEST(ToonBands, AnObjectGlShowsDarkerStaysDarker)
         PngImage image;
         std::string error;
         EXPECT_TRUE(harness.render(scene, "toon", config, image, error)) << error;
-        image.write("/tmp/toon_bands_" + std::to_string(config.size()) + ".png", error);
         return std::pair{patch(image, kSize / 2 - 32, kSize / 2),
                          patch(image, kSize / 2 + 32, kSize / 2)};
     };
@@ -190,4 +190,33 @@ TEST(ToonBands, ALightAttenuatedBelowOneLightsAsGlDoes)
     };
     EXPECT_LT(centre(1.0f), 0.45f) << "grazed by a plain light, not in the shadow band: no test";
     EXPECT_GT(centre(0.1f), 0.7f) << "a light ten times as bright there left the face in shadow";
+}
+
+// The shadow band is in the hue of GL's own unlit colour (SceneLights::shadowTint), not the lit
+// colour darkened: coloured lights over a white ambient light (extrusion's yellow and cyan)
+// tint the lit side, and GL's shadowed side keeps the material's own hue. Where the style
+// lifts a dark shadow to its floor, the lift is in the lit colour's hue.
+TEST(ToonBands, TheShadowBandIsInTheHueOfGlsUnlitColour)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto blueOverRed = [&](glm::vec3 tint, float ambientShare) {
+        auto scene = harness.makeScene({facingQuad(0.0f, glm::vec4(0.8f, 0.8f, 0.6f, 1.0f))},
+                                       perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+        litBy(scene.objects[0], glm::vec3(0.0f, 0.0f, -1.0f)); // from behind: all shadow
+        scene.objects[0].lights.ambientShare = ambientShare;
+        scene.objects[0].lights.shadowTint = tint;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+        const uint8_t* p = &image.rgba[(size_t(kSize / 2) * kSize + kSize / 2) * 4];
+        EXPECT_GT(p[0], 10) << "no shadow band drawn";
+        return float(p[2]) / std::max(float(p[0]), 1.0f);
+    };
+    EXPECT_NEAR(blueOverRed(glm::vec3(1.0f), 0.4f), 0.75f, 0.05f) << "the base's own hue";
+    const float own = blueOverRed(glm::vec3(0.8f, 0.8f, 2.0f), 0.4f);
+    EXPECT_NEAR(own, 0.75f * 2.5f, 0.15f) << "GL's unlit hue";
+    const float lifted = blueOverRed(glm::vec3(0.8f, 0.8f, 2.0f), 0.1f);
+    EXPECT_LT(lifted, own - 0.3f) << "the lift to the floor is not in the lit colour's hue";
+    EXPECT_GT(lifted, 0.75f + 0.1f);
 }

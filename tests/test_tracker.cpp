@@ -1182,6 +1182,21 @@ TEST(StateTracker, TheShadowedSideKeepsTheHueOfGlsUnlitColour)
     EXPECT_NEAR(luma(shadow), luma(lit), 0.01f) << "a hue: ambientShare says how dark";
     const TrackedBatch white = lights({1.0f, 1.0f, 1.0f, 1.0f});
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(white.lights.shadowTint[c], 1.0f, 1e-3f) << c;
+    // A colour without blue (crackberg's terrain, colour material) darkens evenly in a white
+    // light: the channel it lacks does not turn its shadow blue or purple.
+    LitFeed lighting;
+    lighting.feed.enable(GL_COLOR_MATERIAL, true);
+    lighting.feed.run([](CallWriter& w) {
+        w.op(op::glColor3f);
+        for (float c : {0.5f, 0.3f, 0.0f}) w.put<float>(c);
+    });
+    lighting.quad();
+    std::vector<TrackedBatch> batches;
+    lighting.tracker.takeBatches(batches);
+    ASSERT_EQ(batches.size(), 1u);
+    const glm::vec3 even = batches[0].lights.shadowTint;
+    EXPECT_NEAR(even.b, even.r, 1e-3f) << "the missing channel tints the shadow";
+    EXPECT_NEAR(even.g, even.r, 1e-3f);
 }
 
 // Two-sided lighting with a back unlike the front: the faces the window shows wound the other

@@ -28,6 +28,15 @@ float shadowShare()
     return ambientShare < 0.0 ? shadowScale : clamp(ambientShare, shadowFloor, shadowScale);
 }
 
+// The shadow band's colour: GL's own unlit colour (its share of the base, in its hue:
+// SceneLights::shadowTint), and what the style adds over it up to shadowShare() in the base's.
+vec3 shadowColour(vec3 base)
+{
+    float share = shadowShare();
+    float own = clamp(ambientShare, 0.0, share);
+    return min(base * (own * shadowTint + (share - own)), vec3(1.0));
+}
+
 // 0 below the threshold, 1 above; with SMOOTH a one-pixel ramp (screen-space antialiasing of
 // the band boundary, thesis 3.1.4).
 float above(float d, float t, float pixel)
@@ -187,8 +196,7 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
         return std::string("#define ") + name + " " +
                (fixed ? ShadingCommon::glslVec3(mColors[i]) : derived) + "\n";
     };
-    // In the hue GL's own shadowed side has (SceneLights::shadowTint).
-    s += colour("SHADOW_COLOR", 0, "min(base * shadowShare() * shadowTint, vec3(1.0))");
+    s += colour("SHADOW_COLOR", 0, "shadowColour(base)");
     s += colour("DIFFUSE_COLOR", 1, "base");
     s += colour("HIGHLIGHT_COLOR", 2, "mix(base, vec3(1.0), " + f(mHighlightMix) + ")");
     s += colour("PROGRAM_HIGHLIGHT", 2, "min(base + shine.rgb, vec3(1.0))");
