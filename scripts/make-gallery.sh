@@ -14,7 +14,8 @@ out="$root/docs/gallery"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
-rm -f "$out"/*.png
+# Only this script's pictures: the compat gallery's and the overlay's are other scripts'.
+rm -f "$out"/{gears,sydney,wuson,glxgears}_*.png
 models=/usr/share/assimp/models
 styles=(none toon+paper+edges toon textured halftone toon+edges toon+wireframe
         toon+perpixel toon+strokes halftone+paper+edges textured+paper+strokes gooch+edges
