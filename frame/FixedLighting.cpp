@@ -12,6 +12,47 @@ namespace {
 // Luma of encoded colour values: GL lights them as they are.
 float luma(const glm::vec3& c) { return 0.299f * c.r + 0.587f * c.g + 0.114f * c.b; }
 
+// The material `m` with glColor's `colour` in the place GL_COLOR_MATERIAL's `mode` names
+// (0: none).
+AttribState::Material withColour(AttribState::Material m, GLenum mode, const glm::vec4& colour)
+{
+    switch (mode) {
+    case GL_AMBIENT: m.ambient = glm::vec3(colour); break;
+    case GL_DIFFUSE: m.diffuse = colour; break;
+    case GL_AMBIENT_AND_DIFFUSE:
+        m.ambient = glm::vec3(colour);
+        m.diffuse = colour;
+        break;
+    case GL_SPECULAR: m.specular = glm::vec3(colour); break;
+    case GL_EMISSION: m.emission = glm::vec3(colour); break;
+    default: break;
+    }
+    return m;
+}
+
+// The front material at a batch's first vertex: the one at glBegin (the state now is the one
+// after glEnd) where materials change between glBegin and glEnd.
+AttribState::Material beginMaterial(AttribState::Material now, const TrackedBatch& batch)
+{
+    if (!batch.materials.empty()) {
+        now.diffuse = batch.beginMaterial;
+        now.ambient = batch.beginAmbient;
+    }
+    return now;
+}
+
+// Steps `m` to vertex `vertex` (vertex by vertex, in order; `next` starts at 0): each change
+// between glBegin and glEnd from its vertex on.
+void advanceMaterial(const TrackedBatch& batch, size_t vertex, size_t& next,
+                     AttribState::Material& m)
+{
+    while (next < batch.materials.size() && batch.materials[next].first <= vertex) {
+        const TrackedBatch::MaterialChange& change = batch.materials[next++];
+        if (change.setsDiffuse) m.diffuse = change.diffuse;
+        if (change.setsAmbient) m.ambient = change.ambient;
+    }
+}
+
 } // namespace
 
 bool FixedLighting::towardsLight(const AttribState& a, size_t i, const glm::vec3& eye,
@@ -78,21 +119,14 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
     // Which faces glColor's colour applies to (GL_COLOR_MATERIAL's face): the front's
     // vertices, or those lit from the back (two-sided), may each keep the material.
     const GLenum colourMode = a.colorMaterial ? a.colorMaterialMode : 0;
-    const bool colourFront = a.colorMaterialFace != GL_BACK;
-    const bool colourBack = a.colorMaterialFace != GL_FRONT;
-    // The material at glBegin (the state now is the one after glEnd), then each change
-    // between glBegin and glEnd from its vertex on.
-    Material m = a.material;
-    if (!batch.materials.empty()) m.diffuse = batch.beginMaterial, m.ambient = batch.beginAmbient;
+    const GLenum frontMode = a.colorMaterialFace != GL_BACK ? colourMode : 0;
+    const GLenum backMode = a.colorMaterialFace != GL_FRONT ? colourMode : 0;
+    Material m = beginMaterial(a.material, batch);
     size_t next = 0;
     std::vector<glm::vec4> backs(a.twoSide ? batch.vertices.size() : 0);
     for (size_t i = 0; i < batch.vertices.size(); ++i) {
         TrackedVertex& v = batch.vertices[i];
-        while (next < batch.materials.size() && batch.materials[next].first <= i) {
-            const TrackedBatch::MaterialChange& change = batch.materials[next++];
-            if (change.setsDiffuse) m.diffuse = change.diffuse;
-            if (change.setsAmbient) m.ambient = change.ambient;
-        }
+        advanceMaterial(batch, i, next, m);
         const glm::vec3 eye = glm::vec3(modelview * glm::vec4(v.position, 1.0f));
         glm::vec3 n = normals * v.normal;
         if (a.normalize) {
@@ -101,25 +135,10 @@ void FixedLighting::lightBatch(const AttribState& a, TrackedBatch& batch)
         } else if (a.rescaleNormal && rescale > 1e-12f) {
             n /= rescale;
         }
-        auto lit = [&](bool back) {
-            Material here = back ? a.backMaterial : m;
-            switch (back ? (colourBack ? colourMode : 0) : (colourFront ? colourMode : 0)) {
-            case GL_AMBIENT: here.ambient = glm::vec3(v.color); break;
-            case GL_DIFFUSE: here.diffuse = v.color; break;
-            case GL_AMBIENT_AND_DIFFUSE:
-                here.ambient = glm::vec3(v.color);
-                here.diffuse = v.color;
-                break;
-            case GL_SPECULAR: here.specular = glm::vec3(v.color); break;
-            case GL_EMISSION: here.emission = glm::vec3(v.color); break;
-            default: break;
-            }
-            return shade(a, here, eye, back ? -n : n);
-        };
         // Two-sided: GL lights every vertex for both sides and each primitive shows the side
         // its window winding faces (pickSides), whatever way the normals point.
-        if (a.twoSide) backs[i] = lit(true);
-        v.color = lit(false);
+        if (a.twoSide) backs[i] = shade(a, withColour(a.backMaterial, backMode, v.color), eye, -n);
+        v.color = shade(a, withColour(m, frontMode, v.color), eye, n);
     }
     if (a.twoSide) pickSides(batch, backs, a.frontFace == GL_CW);
 }
@@ -149,14 +168,16 @@ void FixedLighting::pickSides(TrackedBatch& batch, const std::vector<glm::vec4>&
     const size_t n = v.size();
     const glm::mat4 clip = batch.projection * batch.modelview;
     // A primitive's side from its first corners that are not in a line (a quad or polygon
-    // is planar as GL assumes it).
-    auto back = [&](std::initializer_list<size_t> corners) {
-        const size_t* c = corners.begin();
+    // is planar as GL assumes it): corner k is vertex c[k].
+    auto showsBack = [&](const size_t* c, size_t count) {
         int sign = 0;
-        for (size_t k = 2; k < corners.size() && sign == 0; ++k) {
+        for (size_t k = 2; k < count && sign == 0; ++k) {
             sign = windingSign(clip, v[c[0]].position, v[c[k - 1]].position, v[c[k]].position);
         }
         return (sign < 0) != clockwiseFront && sign != 0;
+    };
+    auto back = [&](std::initializer_list<size_t> corners) {
+        return showsBack(corners.begin(), corners.size());
     };
     // Independent primitives keep their vertices, each in its side's colours.
     auto colourSide = [&](size_t first, size_t count, bool isBack) {
@@ -173,12 +194,9 @@ void FixedLighting::pickSides(TrackedBatch& batch, const std::vector<glm::vec4>&
         return;
     }
     if (batch.mode == GL_POLYGON) {
-        if (n < 3) return;
-        int sign = 0;
-        for (size_t k = 2; k < n && sign == 0; ++k) {
-            sign = windingSign(clip, v[0].position, v[k - 1].position, v[k].position);
-        }
-        colourSide(0, n, (sign < 0) != clockwiseFront && sign != 0);
+        std::vector<size_t> corners(n);
+        for (size_t k = 0; k < n; ++k) corners[k] = k;
+        colourSide(0, n, showsBack(corners.data(), n));
         return;
     }
     // Strips and fans share a vertex between faces that may show different sides: they
@@ -312,12 +330,8 @@ glm::vec4 FixedLighting::colourLitSides(const AttribState& a, TrackedBatch& batc
     const GLenum mode = a.colorMaterial ? a.colorMaterialMode : 0;
     const bool colourFront = a.colorMaterial && a.colorMaterialFace != GL_BACK;
     const bool colourBack = a.colorMaterial && a.colorMaterialFace != GL_FRONT;
-    auto litColour = [&](Material m, bool follows, const glm::vec4& colour) {
-        if (follows) {
-            if (mode == GL_AMBIENT || mode == GL_AMBIENT_AND_DIFFUSE) m.ambient = glm::vec3(colour);
-            if (mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE) m.diffuse = colour;
-            if (mode == GL_EMISSION) m.emission = glm::vec3(colour);
-        }
+    auto litColour = [&](const Material& material, bool follows, const glm::vec4& colour) {
+        const Material m = withColour(material, follows ? mode : 0, colour);
         // The diffuse colour, the one the eye mostly sees, in all of the light: the styles
         // shade from it. GL's ambient reflectance shows where the light does not reach: the
         // shadow band's hue (shadowTint).
@@ -331,23 +345,17 @@ glm::vec4 FixedLighting::colourLitSides(const AttribState& a, TrackedBatch& batc
                       a.backMaterial.ambient != a.material.ambient ||
                       a.backMaterial.emission != a.material.emission);
     std::vector<glm::vec4> backs(backDiffers ? batch.vertices.size() : 0);
-    // The material at glBegin, then each change between glBegin and glEnd from its vertex on.
-    Material m = a.material;
-    if (!batch.materials.empty()) m.diffuse = batch.beginMaterial, m.ambient = batch.beginAmbient;
+    Material m = beginMaterial(a.material, batch);
     size_t next = 0;
     for (size_t i = 0; i < batch.vertices.size(); ++i) {
-        while (next < batch.materials.size() && batch.materials[next].first <= i) {
-            const TrackedBatch::MaterialChange& change = batch.materials[next++];
-            if (change.setsDiffuse) m.diffuse = change.diffuse;
-            if (change.setsAmbient) m.ambient = change.ambient;
-        }
+        advanceMaterial(batch, i, next, m);
         glm::vec4& colour = batch.vertices[i].color;
         if (backDiffers) backs[i] = litColour(a.backMaterial, colourBack, colour);
         colour = litColour(m, colourFront, colour);
     }
-    const glm::vec4 front = batch.vertices.empty() ? glm::vec4(0.0f) : batch.vertices[0].color;
+    const glm::vec4 first = batch.vertices.empty() ? glm::vec4(0.0f) : batch.vertices[0].color;
     if (backDiffers) pickSides(batch, backs, a.frontFace == GL_CW);
-    return front;
+    return first;
 }
 
 glm::vec3 FixedLighting::unlitColour(const AttribState& a, const glm::vec4& colour)
@@ -379,17 +387,17 @@ glm::vec3 FixedLighting::shadowTint(const AttribState& a, const glm::vec4& colou
                                     const glm::vec4& litSide)
 {
     const glm::vec3 unlit = unlitColour(a, colour);
-    const float unlitLuma = luma(unlit);
+    const float unlitLuma = luma(unlit), litLuma = luma(glm::vec3(litSide));
     // Too dark to have a hue that shows, or no lit colour to compare with.
-    if (!(unlitLuma > 1e-3f) || !(luma(glm::vec3(litSide)) > 1e-3f)) return glm::vec3(1.0f);
+    if (!(unlitLuma > 1e-3f) || !(litLuma > 1e-3f)) return glm::vec3(1.0f);
     // A channel the lit side (nearly) lacks cannot say its hue: it darkens as the whole does.
-    glm::vec3 tint(unlitLuma / luma(glm::vec3(litSide)));
+    glm::vec3 tint(unlitLuma / litLuma);
     for (int c = 0; c < 3; ++c) {
         if (litSide[c] > 1.0f / 64.0f) tint[c] = unlit[c] / litSide[c];
     }
     const float scale = luma(glm::vec3(litSide) * tint);
     if (!(scale > 1e-6f) || !std::isfinite(scale)) return glm::vec3(1.0f);
-    tint *= luma(glm::vec3(litSide)) / scale;
+    tint *= litLuma / scale;
     // Times the lit colour and its ambient share this is GL's unlit colour; the bound only
     // keeps a channel the lit side nearly lacks from growing without limit.
     return glm::clamp(tint, 0.0f, 16.0f);

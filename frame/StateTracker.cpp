@@ -1663,12 +1663,13 @@ bool StateTracker::keep(TrackedBatch& batch)
         // One pass over the vertices: the material's colour (or the vertex's), lit.
         const glm::vec3 at =
             glm::vec3(batch.modelview * glm::vec4(batch.vertices.front().position, 1.0f));
-        const glm::vec4 front = FixedLighting::colourLitSides(
-            a, batch, FixedLighting::litSideLight(a, at, keyLight()));
+        const size_t key = keyLight();
+        const glm::vec4 front =
+            FixedLighting::colourLitSides(a, batch, FixedLighting::litSideLight(a, at, key));
         // The shares are the front's (a back's colours differ in hue, not in how GL lights).
         ambientShare = FixedLighting::ambientShare(a, current, front);
         shadowTint = FixedLighting::shadowTint(a, current, front);
-        diffuseShare = FixedLighting::diffuseShare(a, current, front, keyLight());
+        diffuseShare = FixedLighting::diffuseShare(a, current, front, key);
         addEvenSpecular(batch);
     }
     batch.is3D = styles::perspective(batch.projection) || (a.depthTest && a.depthMask);

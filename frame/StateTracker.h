@@ -331,8 +331,6 @@ public:
     size_t keyLight() const;
     // The enabled lights as the styles take them (SceneLights).
     void litBy(styles::SceneLights& out) const;
-    // The light GL sums on the lit side of a surface at `at` (eye space): its hue at full
-    // strength, or as it is where it passes 1 (per channel).
     void polygonMode(GLenum face, GLenum mode);
     void colorMaterial(GLenum face, GLenum mode)
     {
