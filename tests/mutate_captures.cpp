@@ -44,11 +44,6 @@ struct Outcome {
     long frames = -1;   // frames the command read or wrote (-1: it did not say)
 };
 
-void writeAll(const std::string& path, const std::string& data)
-{
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << data;
-}
-
 uint64_t load64(const std::string& s, size_t at)
 {
     uint64_t v = 0;

@@ -22,11 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void writeAll(const std::string& path, const std::string& data)
-{
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << data;
-}
-
 // The fixture's frame chunks and where its index starts (the end of a killed program's file).
 struct Layout {
     std::vector<capture::CaptureReader::FrameInfo> frames;

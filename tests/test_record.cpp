@@ -645,11 +645,6 @@ TEST(Export, LiveExportWritesTheRequestedFrame)
 
 namespace {
 
-void writeAll(const std::string& path, const std::string& data)
-{
-    std::ofstream(path, std::ios::binary) << data;
-}
-
 // Every command refuses a damaged file with one line naming it, never crashes.
 void expectRefusedOrPrefix(const std::string& path, bool mustRefuse)
 {

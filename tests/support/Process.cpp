@@ -179,6 +179,11 @@ std::string readAll(const std::string& path)
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+void writeAll(const std::string& path, const std::string& data)
+{
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << data;
+}
+
 bool haveDisplay()
 {
     const char* d = std::getenv("DISPLAY");

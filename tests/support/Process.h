@@ -56,6 +56,8 @@ std::vector<std::string> under(std::vector<std::string> nprgl,
 std::string fixture(const std::string& name);
 // A file's bytes ("" when it cannot be read).
 std::string readAll(const std::string& path);
+// Writes `data` as the whole of the file at `path`.
+void writeAll(const std::string& path, const std::string& data);
 // Whether an X display is named (tests that need one skip or fail with a reason without).
 bool haveDisplay();
 // The "covered N" a probe prints (pixels of its last frame not of its clear colour), or -1.
