@@ -1018,6 +1018,7 @@ styles::GeneratedTexture StateTracker::generatedTexture() const
     g.texture = unitTexture(u);
     if (g.texture == 0) return {};
     g.matrix = mMatrices.texture(u);
+    g.normals = a.normalize ? GL_NORMALIZE : a.rescaleNormal ? GL_RESCALE_NORMAL : 0;
     auto mean = mTextureMeans.find(mUnitTextures[size_t(u)]);
     if (mean != mTextureMeans.end()) g.mean = mean->second;
     return g;

@@ -1268,6 +1268,63 @@ TEST_F(Shading, PencilHatchesADecalByItsTexture)
     gl.DeleteTextures(1, &texture);
 }
 
+// GL reflects a sphere map about the normal as the modelview moved it, made unit only under
+// GL_NORMALIZE: a quad whose normals are 0.7 long (blocktube's) shows about half the
+// reflection. A texture whose red is its S coordinate, on a quad facing the eye: at a point on
+// its diagonal the red is GL's S, interpolated from GL's formula at the corners (the replica
+// normalised every normal, and blocktube's shine bands fell elsewhere: fidelity 0.61).
+TEST_F(Shading, ReplicaReflectsASphereMapAboutTheNormalGlUses)
+{
+    ASSERT_TRUE(harness.ok());
+    const styles::GlFunctions& gl = harness.gl();
+    std::vector<uint8_t> ramp(256 * 4, 255);
+    for (int x = 0; x < 256; ++x) ramp[size_t(x) * 4] = uint8_t(x);
+    const GLuint texture = nearestTexture(GL_RGBA8, 256, 1, GL_RGBA, ramp.data());
+    gl.BindTexture(GL_TEXTURE_2D, texture);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    // A quad 4 wide (the wider, the more the reflections differ), normals 0.7 long.
+    constexpr float kHalf = 2.0f, kLength = 0.7f;
+    reconstruct::Batch quad = facingQuad(glm::vec4(1.0f), false);
+    for (auto& v : quad.vertices) {
+        v.position *= kHalf;
+        v.normal *= kLength;
+    }
+    // GL_SPHERE_MAP's S at the corner (h, h): the reflection of the eye's ray about n.
+    auto cornerS = [&](float length) {
+        const glm::vec3 u = glm::normalize(glm::vec3(kHalf, kHalf, 0.0f) + kCentre);
+        const glm::vec3 n(0.0f, 0.0f, length);
+        const glm::vec3 r = u - 2.0f * glm::dot(n, u) * n;
+        return r.x / (2.0f * glm::length(r + glm::vec3(0.0f, 0.0f, 1.0f))) + 0.5f;
+    };
+    // A pixel on a diagonal, where the quad's two triangles agree: at eye x (and |y|) x h, S
+    // is (1 - x) / 2 + x S(h, h) (by symmetry S(-h, -h) = 1 - S(h, h)).
+    const int column = kSize - 21, row = 20;
+    const float x = ((column + 0.5f) / (kSize / 2.0f) - 1.0f) * -kCentre.z *
+                    std::tan(glm::radians(kFov / 2.0f)) / kHalf;
+    auto redAt = [&](GLenum normals) {
+        auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+        for (auto& o : scene.objects) {
+            o.texture = o.generated.texture = texture;
+            o.generated.mode[0] = o.generated.mode[1] = GL_SPHERE_MAP;
+            o.generated.normals = normals;
+        }
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "replica", "", image, error)) << error;
+        save(image, normals == GL_NORMALIZE ? "replica_sphere_unit" : "replica_sphere_short");
+        return pixel(image, column, row).r;
+    };
+    for (const GLenum normals : {GLenum(0), GLenum(GL_NORMALIZE)}) {
+        const float s = (1.0f - x) / 2.0f + x * cornerS(normals == 0 ? kLength : 1.0f);
+        // Red i is the texel centred on S (i + 0.5) / 256, sampled linearly.
+        EXPECT_NEAR(redAt(normals), s * 256.0f - 0.5f, 3.0f)
+            << (normals == 0 ? "normals as given" : "GL_NORMALIZE");
+    }
+    gl.DeleteTextures(1, &texture);
+}
+
 // A texture the program bound but never gave an image is incomplete: GL draws as if its unit
 // were off, the surface in its own colour (atunnel's lit tunnel came out black in every style).
 TEST_F(Shading, ATextureWithoutAnImageLeavesTheSurfaceItsColour)

@@ -667,13 +667,23 @@ TEST(StateTracker, GeneratedCoordinatesKeepTheirModesAndPlanes)
     mode(GL_S, GL_SPHERE_MAP);
     mode(GL_T, GL_SPHERE_MAP);
     feed.triangle();
+    feed.enable(GL_RESCALE_NORMAL, true); // the normals GL reflects the sphere map about
+    feed.triangle();
+    feed.enable(GL_NORMALIZE, true);
+    feed.triangle();
     attrib(false);
+    feed.enable(GL_NORMALIZE, false);
+    feed.enable(GL_RESCALE_NORMAL, false);
     feed.triangle();
     mode(GL_T, GL_REFLECTION_MAP); // cube-map coordinates: no 2D map to show
     feed.triangle();
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
-    ASSERT_EQ(batches.size(), 4u);
+    ASSERT_EQ(batches.size(), 6u);
+    EXPECT_EQ(batches[1].generated.normals, 0u) << "GL reflects about the normal as given";
+    EXPECT_EQ(batches[2].generated.normals, GLenum(GL_RESCALE_NORMAL));
+    EXPECT_EQ(batches[3].generated.normals, GLenum(GL_NORMALIZE)) << "GL_NORMALIZE wins";
+    batches.erase(batches.begin() + 2, batches.begin() + 4);
     const styles::GeneratedTexture& g = batches[0].generated;
     EXPECT_EQ(g.texture, 7u);
     EXPECT_EQ(g.mode[0], GLenum(GL_OBJECT_LINEAR));

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -33,6 +34,9 @@ uniform vec2 genMode;
 uniform vec4 genPlaneS;
 uniform vec4 genPlaneT;
 uniform mat4 genMatrix; // the unit's texture matrix, applied to generated coordinates
+// GL's sphere map reflects about the program's normal as the modelview moved it, times this
+// (GeneratedTexture::normals), or about the unit normal where it is 0 (GL_NORMALIZE).
+uniform float genNormalScale;
 // What the program's layers the styles do not draw multiply the colour by (SceneObject::
 // layerScale), per vertex: it commutes with the texture's modulation.
 uniform vec3 layerScale;
@@ -50,7 +54,8 @@ void main()
     lightUv = lightcoord;
     vec4 eye = modelview * vec4(position, 1.0);
     eyePosition = eye.xyz / eye.w;
-    vec3 r = reflect(normalize(eyePosition), normalize(eyeNormal));
+    vec3 r = reflect(normalize(eyePosition),
+                     genNormalScale > 0.0 ? eyeNormal * genNormalScale : normalize(eyeNormal));
     vec2 sphere = r.xy / max(2.0 * length(r + vec3(0.0, 0.0, 1.0)), 1e-6) + 0.5;
     uv = vec2(generated(genMode.x, genPlaneS, texcoord.x, sphere.x, eye),
               generated(genMode.y, genPlaneT, texcoord.y, sphere.y, eye));
@@ -228,6 +233,7 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     genPlaneS = gl.GetUniformLocation(program, "genPlaneS");
     genPlaneT = gl.GetUniformLocation(program, "genPlaneT");
     genMatrix = gl.GetUniformLocation(program, "genMatrix");
+    genNormalScale = gl.GetUniformLocation(program, "genNormalScale");
 }
 
 bool ShadingCommon::buildProgram(const GlFunctions& gl, ShaderProgram& program,
@@ -281,6 +287,9 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform4fv(genPlaneS, 1, glm::value_ptr(g.plane[0]));
     gl.Uniform4fv(genPlaneT, 1, glm::value_ptr(g.plane[1]));
     gl.UniformMatrix4fv(genMatrix, 1, GL_FALSE, glm::value_ptr(g.matrix));
+    gl.Uniform1f(genNormalScale, g.normals == GL_NORMALIZE        ? 0.0f
+                                 : g.normals == GL_RESCALE_NORMAL ? rescaleFactor(object.modelview)
+                                                                  : 1.0f);
     // Between the toon bands' thresholds (their base colour), halftone's light dots.
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     const bool lit = object.lights.count > 0 && !object.flatLight;
@@ -393,6 +402,14 @@ ParamInfo ShadingCommon::reflectionsParam()
                            "reflections) shown as the object's texture (off: dropped; one on "
                            "GL_OBJECT_LINEAR or GL_EYE_LINEAR planes is always the surface's)",
                            false);
+}
+
+float ShadingCommon::rescaleFactor(const glm::mat4& modelview)
+{
+    // GL_RESCALE_NORMAL's f: one over the length of the inverse's third row.
+    const glm::mat3 inverse = glm::inverse(glm::mat3(modelview));
+    const float length = glm::length(glm::vec3(inverse[0][2], inverse[1][2], inverse[2][2]));
+    return length > 0.0f && std::isfinite(length) ? 1.0f / length : 1.0f;
 }
 
 glm::mat3 ShadingCommon::normalMatrix(const glm::mat4& modelview)

@@ -83,7 +83,7 @@ public:
         GLint lightmapped = -1, lightmapSampler = -1, flatLight = -1, ambientShare = -1, shine = -1;
         GLint diffuseShare = -1, twoSide = -1, shadowTint = -1;
         GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
-        GLint genMode = -1, genPlaneS = -1, genPlaneT = -1, genMatrix = -1;
+        GLint genMode = -1, genPlaneS = -1, genPlaneT = -1, genMatrix = -1, genNormalScale = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object) const;
@@ -115,6 +115,8 @@ public:
     // Whether the program's normals point out of the counter-clockwise side of its faces.
     static bool normalsFollowCcw(const reconstruct::ObjectMesh& mesh);
     static glm::mat3 normalMatrix(const glm::mat4& modelview);
+    // GL_RESCALE_NORMAL's factor for a modelview: unit normals stay unit under its scale.
+    static float rescaleFactor(const glm::mat4& modelview);
     // Where the object's origin lands, in window pixels: screen-space textures are anchored
     // there, so they follow the object when it moves across the screen instead of swimming.
     static glm::vec2 screenAnchor(const SceneObject& object, const glm::ivec4& viewport);
