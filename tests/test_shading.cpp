@@ -423,9 +423,9 @@ INSTANTIATE_TEST_SUITE_P(Styles, FrontFaceAtFlush,
                                            "pencil", "coverage"),
                          [](const auto& p) { return std::string(p.param); });
 
-// Every shading style takes the reflections parameter: a sphere-mapped texture is
-// dropped without it (the picture is the untextured sphere's, pixel for pixel) and shown with
-// it (the checkerboard's reflection changes the sphere).
+// Every shading style takes the reflections parameter: a sphere-mapped texture on a sphere
+// the program lit is dropped without it (the picture is the untextured sphere's, pixel for
+// pixel) and shown with it (the checkerboard's reflection changes the sphere).
 class Reflections : public Shading, public ::testing::WithParamInterface<const char*> {
 protected:
     PngImage reflecting(GLuint texture, bool shown)
@@ -436,6 +436,10 @@ protected:
         for (auto& o : scene.objects) {
             o.generated.texture = texture;
             o.generated.mode[0] = o.generated.mode[1] = GL_SPHERE_MAP;
+            // Lit by the program (one far light where makeScene's head-light is): the
+            // reflection is not its light (ReflectionLight).
+            o.lights.count = 1;
+            o.lights.lights[0].position = glm::vec4(kLight, 0.0f);
         }
         const std::string style = GetParam();
         PngImage image;
@@ -1324,6 +1328,42 @@ TEST_F(Shading, ReplicaReflectsASphereMapAboutTheNormalGlUses)
     }
     gl.DeleteTextures(1, &texture);
 }
+
+// Without GL lighting a sphere map is all the shading the program's picture has (blocktube's
+// blocks): where a style drops it, the reflection gives the style its light as a lightmap
+// does. An unlit quad reflecting a dark map comes out darker than one reflecting a bright map
+// (before, both were shaded alike by the head-light, and blocktube's blocks lost the order of
+// their lightness: 255 of 562 objects off the palette).
+class ReflectionLight : public Shading, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(ReflectionLight, AnUnlitSurfaceTakesItsLightFromTheReflectionItDrops)
+{
+    ASSERT_TRUE(harness.ok());
+    const styles::GlFunctions& gl = harness.gl();
+    auto lightness = [&](uint8_t grey) {
+        const uint8_t texel[4] = {grey, grey, grey, 255};
+        const GLuint map = nearestTexture(GL_RGBA8, 1, 1, GL_RGBA, texel);
+        reconstruct::Batch quad = facingQuad(glm::vec4(0.2f, 0.7f, 0.3f, 1.0f), false);
+        auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+        for (auto& o : scene.objects) {
+            o.lights.count = 0; // the program did not light it
+            o.generated.texture = map;
+            o.generated.mode[0] = o.generated.mode[1] = GL_SPHERE_MAP;
+        }
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, GetParam(), "", image, error)) << error;
+        gl.DeleteTextures(1, &map);
+        return meanLuminance(image, kSize / 2 - 10, kSize / 2 - 10, 20);
+    };
+    const float dark = lightness(20), bright = lightness(235);
+    EXPECT_GT(bright - dark, 0.03f) << "the reflection did not light the surface: " << dark
+                                   << " against " << bright;
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, ReflectionLight,
+                         ::testing::Values("toon", "textured", "halftone", "gooch", "xtoon"),
+                         [](const auto& p) { return std::string(p.param); });
 
 // A texture the program bound but never gave an image is incomplete: GL draws as if its unit
 // were off, the surface in its own colour (atunnel's lit tunnel came out black in every style).

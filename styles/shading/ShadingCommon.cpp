@@ -37,6 +37,7 @@ uniform mat4 genMatrix; // the unit's texture matrix, applied to generated coord
 // GL's sphere map reflects about the program's normal as the modelview moved it, times this
 // (GeneratedTexture::normals), or about the unit normal where it is 0 (GL_NORMALIZE).
 uniform float genNormalScale;
+uniform float reflectionLight; // 1: the sphere map dropped is the light (reflectionLight())
 // What the program's layers the styles do not draw multiply the colour by (SceneObject::
 // layerScale), per vertex: it commutes with the texture's modulation.
 uniform vec3 layerScale;
@@ -57,6 +58,10 @@ void main()
     vec3 r = reflect(normalize(eyePosition),
                      genNormalScale > 0.0 ? eyeNormal * genNormalScale : normalize(eyeNormal));
     vec2 sphere = r.xy / max(2.0 * length(r + vec3(0.0, 0.0, 1.0)), 1e-6) + 0.5;
+    if (reflectionLight > 0.5) { // the reflection is the surface's light, as a lightmap
+        vec4 moved = genMatrix * vec4(sphere, 0.0, 1.0);
+        lightUv = moved.xy / (moved.w != 0.0 ? moved.w : 1.0);
+    }
     uv = vec2(generated(genMode.x, genPlaneS, texcoord.x, sphere.x, eye),
               generated(genMode.y, genPlaneT, texcoord.y, sphere.y, eye));
     if (genMode.x > 0.5) { // the program's own coordinates came moved already
@@ -234,6 +239,7 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     genPlaneT = gl.GetUniformLocation(program, "genPlaneT");
     genMatrix = gl.GetUniformLocation(program, "genMatrix");
     genNormalScale = gl.GetUniformLocation(program, "genNormalScale");
+    reflectionLight = gl.GetUniformLocation(program, "reflectionLight");
 }
 
 bool ShadingCommon::buildProgram(const GlFunctions& gl, ShaderProgram& program,
@@ -287,6 +293,9 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     gl.Uniform4fv(genPlaneS, 1, glm::value_ptr(g.plane[0]));
     gl.Uniform4fv(genPlaneT, 1, glm::value_ptr(g.plane[1]));
     gl.UniformMatrix4fv(genMatrix, 1, GL_FALSE, glm::value_ptr(g.matrix));
+    const bool reflectedLight = object.lightmap != 0 && object.lightmap == g.texture &&
+                                !generates && object.lights.count == 0 && !object.flatLight;
+    gl.Uniform1f(reflectionLight, reflectedLight ? 1.0f : 0.0f);
     gl.Uniform1f(genNormalScale, g.normals == GL_NORMALIZE        ? 0.0f
                                  : g.normals == GL_RESCALE_NORMAL ? rescaleFactor(object.modelview)
                                                                   : 1.0f);
@@ -388,11 +397,28 @@ const SceneObject& ShadingCommon::withGenerated(const SceneObject& object, bool 
     // own texture; a sphere map reflects the surroundings, only shown when asked.
     const GeneratedTexture& g = object.generated;
     const bool reflects = g.mode[0] == GL_SPHERE_MAP || g.mode[1] == GL_SPHERE_MAP;
-    if ((reflects && !show) || g.texture == 0 || object.textured()) return object;
+    if (g.texture == 0 || object.textured()) return object;
+    if (reflects && !show) {
+        // Without GL lighting the reflection is all the light the program's picture shows
+        // (blocktube's blocks): it gives the styles their light, as a lightmap does, on the
+        // coordinates GL generates (reflectionLight).
+        if (!reflectionLight(object)) return object;
+        scratch = object;
+        scratch.lightmap = g.texture;
+        return scratch;
+    }
     scratch = object;
     scratch.texture = object.generated.texture;
     scratch.textureRuns.clear();
     return scratch;
+}
+
+bool ShadingCommon::reflectionLight(const SceneObject& object)
+{
+    const GeneratedTexture& g = object.generated;
+    const bool reflects = g.mode[0] == GL_SPHERE_MAP && g.mode[1] == GL_SPHERE_MAP;
+    return reflects && g.texture != 0 && object.texture != g.texture &&
+           object.lights.count == 0 && !object.flatLight && !object.lightmapped();
 }
 
 ParamInfo ShadingCommon::reflectionsParam()

@@ -84,6 +84,7 @@ public:
         GLint diffuseShare = -1, twoSide = -1, shadowTint = -1;
         GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
         GLint genMode = -1, genPlaneS = -1, genPlaneT = -1, genMatrix = -1, genNormalScale = -1;
+        GLint reflectionLight = -1;
 
         void find(const GlFunctions& gl, GLuint program);
         void set(const GlFunctions& gl, const SceneObject& object) const;
@@ -112,6 +113,9 @@ public:
     static const SceneObject& withGenerated(const SceneObject& object, bool show,
                                             SceneObject& scratch);
     static ParamInfo reflectionsParam();
+    // Whether a sphere map the style drops is the object's light: the program did not light
+    // it and it has no lightmap, so the reflection is the only shading GL shows on it.
+    static bool reflectionLight(const SceneObject& object);
     // Whether the program's normals point out of the counter-clockwise side of its faces.
     static bool normalsFollowCcw(const reconstruct::ObjectMesh& mesh);
     static glm::mat3 normalMatrix(const glm::mat4& modelview);
