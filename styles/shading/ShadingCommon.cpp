@@ -426,7 +426,8 @@ ParamInfo ShadingCommon::reflectionsParam()
     return ParamInfo::flag("reflections",
                            "a texture the program maps by GL_SPHERE_MAP coordinates (chrome, "
                            "reflections) shown as the object's texture (off: dropped; one on "
-                           "GL_OBJECT_LINEAR or GL_EYE_LINEAR planes is always the surface's)",
+                           "GL_OBJECT_LINEAR or GL_EYE_LINEAR planes is always the surface's; "
+                           "dropped from a surface GL does not light, it is the light)",
                            false);
 }
 
