@@ -48,6 +48,11 @@ float generated(float mode, vec4 plane, float own, float sphere, vec4 eye)
            : mode < 2.5 ? dot(plane, vec4(position, 1.0))
                         : dot(plane, eye);
 }
+vec2 byGenMatrix(vec2 st) // generated coordinates moved by the unit's texture matrix
+{
+    vec4 moved = genMatrix * vec4(st, 0.0, 1.0);
+    return moved.xy / (moved.w != 0.0 ? moved.w : 1.0);
+}
 void main()
 {
     eyeNormal = normalMatrix * normal;
@@ -58,16 +63,10 @@ void main()
     vec3 r = reflect(normalize(eyePosition),
                      genNormalScale > 0.0 ? eyeNormal * genNormalScale : normalize(eyeNormal));
     vec2 sphere = r.xy / max(2.0 * length(r + vec3(0.0, 0.0, 1.0)), 1e-6) + 0.5;
-    if (reflectionLight > 0.5) { // the reflection is the surface's light, as a lightmap
-        vec4 moved = genMatrix * vec4(sphere, 0.0, 1.0);
-        lightUv = moved.xy / (moved.w != 0.0 ? moved.w : 1.0);
-    }
+    if (reflectionLight > 0.5) lightUv = byGenMatrix(sphere); // the surface's light
     uv = vec2(generated(genMode.x, genPlaneS, texcoord.x, sphere.x, eye),
               generated(genMode.y, genPlaneT, texcoord.y, sphere.y, eye));
-    if (genMode.x > 0.5) { // the program's own coordinates came moved already
-        vec4 moved = genMatrix * vec4(uv, 0.0, 1.0);
-        uv = moved.xy / (moved.w != 0.0 ? moved.w : 1.0);
-    }
+    if (genMode.x > 0.5) uv = byGenMatrix(uv); // the program's own came moved already
     gl_Position = projection * eye;
 }
 )";
