@@ -1011,6 +1011,7 @@ void Compositor::buildScene()
             if (mTracked[o.firstBatch + b].culled != t.culled) s.culled = 0;
         }
         s.generated = t.generated;
+        s.normals = t.normals;
         s.alphaFunc = t.alphaFunc;
         s.alphaRef = t.alphaRef;
         for (uint32_t b = 0; b < o.batchCount; ++b) {

@@ -1018,7 +1018,6 @@ styles::GeneratedTexture StateTracker::generatedTexture() const
     g.texture = unitTexture(u);
     if (g.texture == 0) return {};
     g.matrix = mMatrices.texture(u);
-    g.normals = a.normalize ? GL_NORMALIZE : a.rescaleNormal ? GL_RESCALE_NORMAL : 0;
     auto mean = mTextureMeans.find(mUnitTextures[size_t(u)]);
     if (mean != mTextureMeans.end()) g.mean = mean->second;
     return g;
@@ -1706,6 +1705,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     }
     if (a.lighting) litBy(batch.lights);
     else batch.lights.count = 0;
+    batch.normals = a.normalize ? GL_NORMALIZE : a.rescaleNormal ? GL_RESCALE_NORMAL : 0;
     batch.lights.ambientShare = ambientShare;
     batch.lights.diffuseShare = diffuseShare;
     batch.lights.shadowTint = shadowTint;

@@ -45,6 +45,7 @@ struct TrackedBatch {
     // Every enabled light when the draw was lit, the brightest first (none: unlit, or no
     // light on).
     styles::SceneLights lights;
+    GLenum normals = GL_NORMALIZE; // styles::SceneObject::normals
     // glMaterial colours set between glBegin and glEnd (per face or per vertex, as
     // programs set them): each from vertex `first` on; before the first, the material at
     // glBegin. Empty: the material at the draw colours every vertex.

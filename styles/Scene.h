@@ -72,11 +72,6 @@ struct GeneratedTexture {
     // glTexGen transformed it by the modelview of its call) for GL_EYE_LINEAR.
     glm::vec4 plane[2]{glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)};
     glm::mat4 matrix{1.0f}; // the unit's texture matrix, which GL applies after generating
-    // The normal a sphere map reflects about: GL takes the program's as the modelview moved
-    // it, unit only under GL_NORMALIZE (GL_RESCALE_NORMAL takes out the modelview's scale).
-    // blocktube's normals are 0.7 long: GL shows about half the reflection a unit one gives.
-    // 0, GL_NORMALIZE or GL_RESCALE_NORMAL.
-    GLenum normals = GL_NORMALIZE;
     // The texture's mean colour (1 where unknown): where the styles drop the texture (a
     // reflection, see ShadingCommon::reflectionsParam) the surface keeps its average tint, as
     // a chrome or crystal object whose only colour is its reflection keeps its hue.
@@ -95,6 +90,11 @@ struct SceneObject {
     glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
     // Every light the program lit it with (none: lightDir alone, a head-light).
     SceneLights lights;
+    // The normal GL lights by and reflects a sphere map about: the program's as the modelview
+    // moved it, unit only under GL_NORMALIZE (GL_RESCALE_NORMAL takes out the modelview's
+    // scale). 0, GL_NORMALIZE or GL_RESCALE_NORMAL. blocktube's normals are 0.7 long, and
+    // boxed scales its balls by 3 without either: GL shows them a third as lit.
+    GLenum normals = GL_NORMALIZE;
     // Shaded in one even light (the shading styles' middle band): a sky or backdrop the
     // program did not light, which a head-light would shade by its faces' arbitrary normals.
     bool flatLight = false;

@@ -1312,7 +1312,7 @@ TEST_F(Shading, ReplicaReflectsASphereMapAboutTheNormalGlUses)
         for (auto& o : scene.objects) {
             o.texture = o.generated.texture = texture;
             o.generated.mode[0] = o.generated.mode[1] = GL_SPHERE_MAP;
-            o.generated.normals = normals;
+            o.normals = normals;
         }
         PngImage image;
         std::string error;

@@ -220,3 +220,30 @@ TEST(ToonBands, TheShadowBandIsInTheHueOfGlsUnlitColour)
     EXPECT_LT(lifted, own - 0.3f) << "the lift to the floor is not in the lit colour's hue";
     EXPECT_GT(lifted, 0.75f + 0.1f);
 }
+
+// GL lights by the program's normal as the modelview moved it, unit only under GL_NORMALIZE
+// (GL_RESCALE_NORMAL takes the modelview's scale out). A program that scales its objects by 3
+// with neither shows them a third as lit (boxed's balls): the styles lit them by the unit
+// normal and drew them in the full colour, far lighter than GL, and lighter than objects GL
+// shows lighter.
+TEST(ToonBands, AScaledNormalLightsAsGlTakesIt)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    reconstruct::Batch quad = facingQuad(0.0f, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f));
+    quad.modelview = glm::scale(quad.modelview, glm::vec3(3.0f));
+    for (reconstruct::Vertex& v : quad.vertices) v.position /= 3.0f; // the same quad on screen
+    auto centre = [&](GLenum normals) {
+        auto scene = harness.makeScene({quad}, perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+        litBy(scene.objects[0], glm::vec3(0.0f, 0.0f, 1.0f)); // head-on
+        scene.objects[0].normals = normals;
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", "toon.band=nearest", image, error)) << error;
+        return patch(image, kSize / 2, kSize / 2);
+    };
+    // GL: 0.05 + 0.95 / 3 of the colour, nearer the shadow band's lightness than the full's.
+    EXPECT_LT(centre(0), 0.45f) << "normals a third long lit the quad fully";
+    EXPECT_GT(centre(GL_NORMALIZE), 0.7f) << "GL_NORMALIZE: not lit head-on";
+    EXPECT_GT(centre(GL_RESCALE_NORMAL), 0.7f) << "GL_RESCALE_NORMAL: the scale not taken out";
+}

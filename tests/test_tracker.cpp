@@ -680,9 +680,9 @@ TEST(StateTracker, GeneratedCoordinatesKeepTheirModesAndPlanes)
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
     ASSERT_EQ(batches.size(), 6u);
-    EXPECT_EQ(batches[1].generated.normals, 0u) << "GL reflects about the normal as given";
-    EXPECT_EQ(batches[2].generated.normals, GLenum(GL_RESCALE_NORMAL));
-    EXPECT_EQ(batches[3].generated.normals, GLenum(GL_NORMALIZE)) << "GL_NORMALIZE wins";
+    EXPECT_EQ(batches[1].normals, 0u) << "GL reflects about the normal as given";
+    EXPECT_EQ(batches[2].normals, GLenum(GL_RESCALE_NORMAL));
+    EXPECT_EQ(batches[3].normals, GLenum(GL_NORMALIZE)) << "GL_NORMALIZE wins";
     batches.erase(batches.begin() + 2, batches.begin() + 4);
     const styles::GeneratedTexture& g = batches[0].generated;
     EXPECT_EQ(g.texture, 7u);

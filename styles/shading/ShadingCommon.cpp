@@ -12,6 +12,13 @@
 
 namespace nprgl::styles {
 
+// The normal GL lights by and reflects a sphere map about, for both shader stages: the
+// program's as the modelview moved it, times normalScale (SceneObject::normals), or the unit
+// normal where that is 0 (GL_NORMALIZE).
+#define NPRGL_GL_NORMAL                                                                          \
+    "uniform float normalScale;\n"                                                               \
+    "vec3 glNormal(vec3 n) { return normalScale > 0.0 ? n * normalScale : normalize(n); }\n"
+
 const char* ShadingCommon::vertexShader()
 {
     return R"(#version 130
@@ -34,13 +41,11 @@ uniform vec2 genMode;
 uniform vec4 genPlaneS;
 uniform vec4 genPlaneT;
 uniform mat4 genMatrix; // the unit's texture matrix, applied to generated coordinates
-// GL's sphere map reflects about the program's normal as the modelview moved it, times this
-// (GeneratedTexture::normals), or about the unit normal where it is 0 (GL_NORMALIZE).
-uniform float genNormalScale;
 uniform float reflectionLight; // 1: the sphere map dropped is the light (reflectionLight())
 // What the program's layers the styles do not draw multiply the colour by (SceneObject::
 // layerScale), per vertex: it commutes with the texture's modulation.
 uniform vec3 layerScale;
+)" NPRGL_GL_NORMAL R"(
 float generated(float mode, vec4 plane, float own, float sphere, vec4 eye)
 {
     return mode < 0.5   ? own
@@ -60,8 +65,7 @@ void main()
     lightUv = lightcoord;
     vec4 eye = modelview * vec4(position, 1.0);
     eyePosition = eye.xyz / eye.w;
-    vec3 r = reflect(normalize(eyePosition),
-                     genNormalScale > 0.0 ? eyeNormal * genNormalScale : normalize(eyeNormal));
+    vec3 r = reflect(normalize(eyePosition), glNormal(eyeNormal));
     vec2 sphere = r.xy / max(2.0 * length(r + vec3(0.0, 0.0, 1.0)), 1e-6) + 0.5;
     if (reflectionLight > 0.5) lightUv = byGenMatrix(sphere); // the surface's light
     uv = vec2(generated(genMode.x, genPlaneS, texcoord.x, sphere.x, eye),
@@ -141,15 +145,17 @@ float litDot(vec3 n, vec3 towardsLight, float most)
 }
 float litDot(vec3 n, vec3 towardsLight) { return litDot(n, towardsLight, 1.0); }
 
-// The normal GL lights this point by: the program's as it is, or with two-sided lighting
-// (SceneLights::twoSide) turned on back faces. Not shadingNormal(): GL lights a back face
+// The normal GL lights this point by: the program's as the modelview moved it (not unit
+// unless GL_NORMALIZE: SceneObject::normals), turned on back faces with two-sided lighting
+// (SceneLights::twoSide). Not shadingNormal(): GL lights a back face
 // seen from behind by its front's normal, dark where the front faces away from the light.
 // Back by the window winding, as GL tells them: the meshes keep the program's front
 // counter-clockwise (MeshBuilder turns clockwise batches), drawn by the program's matrices.
 uniform float twoSide;
+)" NPRGL_GL_NORMAL R"(
 vec3 programNormal(vec3 eyeNormal)
 {
-    vec3 n = normalize(eyeNormal);
+    vec3 n = glNormal(eyeNormal);
     return twoSide > 0.5 && !gl_FrontFacing ? -n : n;
 }
 
@@ -237,7 +243,7 @@ void ShadingCommon::ObjectUniforms::find(const GlFunctions& gl, GLuint program)
     genPlaneS = gl.GetUniformLocation(program, "genPlaneS");
     genPlaneT = gl.GetUniformLocation(program, "genPlaneT");
     genMatrix = gl.GetUniformLocation(program, "genMatrix");
-    genNormalScale = gl.GetUniformLocation(program, "genNormalScale");
+    normalScale = gl.GetUniformLocation(program, "normalScale");
     reflectionLight = gl.GetUniformLocation(program, "reflectionLight");
 }
 
@@ -295,9 +301,10 @@ void ShadingCommon::ObjectUniforms::set(const GlFunctions& gl, const SceneObject
     const bool reflectedLight = object.lightmap != 0 && object.lightmap == g.texture &&
                                 !generates && object.lights.count == 0 && !object.flatLight;
     gl.Uniform1f(reflectionLight, reflectedLight ? 1.0f : 0.0f);
-    gl.Uniform1f(genNormalScale, g.normals == GL_NORMALIZE        ? 0.0f
-                                 : g.normals == GL_RESCALE_NORMAL ? rescaleFactor(object.modelview)
-                                                                  : 1.0f);
+    gl.Uniform1f(normalScale, object.normals == GL_NORMALIZE ? 0.0f
+                              : object.normals == GL_RESCALE_NORMAL
+                                  ? rescaleFactor(object.modelview)
+                                  : 1.0f);
     // Between the toon bands' thresholds (their base colour), halftone's light dots.
     gl.Uniform1f(flatLight, object.flatLight ? 0.5f : -2.0f);
     const bool lit = object.lights.count > 0 && !object.flatLight;

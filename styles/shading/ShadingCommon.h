@@ -83,7 +83,7 @@ public:
         GLint lightmapped = -1, lightmapSampler = -1, flatLight = -1, ambientShare = -1, shine = -1;
         GLint diffuseShare = -1, twoSide = -1, shadowTint = -1;
         GLint lightPosition = -1, lightSpot = -1, lightFalloff = -1, lightWeight = -1;
-        GLint genMode = -1, genPlaneS = -1, genPlaneT = -1, genMatrix = -1, genNormalScale = -1;
+        GLint genMode = -1, genPlaneS = -1, genPlaneT = -1, genMatrix = -1, normalScale = -1;
         GLint reflectionLight = -1;
 
         void find(const GlFunctions& gl, GLuint program);
