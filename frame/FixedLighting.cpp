@@ -303,8 +303,11 @@ FixedLighting::SideLight FixedLighting::litSideLight(const AttribState& a, const
             a.lightPosition[i].w != 0.0f && a.attenuation[i] != glm::vec3(1.0f, 0.0f, 0.0f);
         glm::vec3 l;
         float reach = 1.0f;
-        const bool brightened =
-            !spot && attenuated && towardsLight(a, i, at, l, reach) && reach > 1.0f;
+        const bool towards = towardsLight(a, i, at, l, reach);
+        // A spot aimed away from the object adds none of its light there, its ambient
+        // included (GL's spot factor scales all of a light's terms).
+        if (towards && !(reach > 0.0f)) continue;
+        const bool brightened = !spot && attenuated && towards && reach > 1.0f;
         const glm::vec3 diffuse = kLitSide * (brightened ? std::min(reach, 1e3f) : 1.0f) *
                                   glm::max(a.lightDiffuse[i], glm::vec3(0.0f));
         const glm::vec3 own = glm::max(a.lightAmbient[i], glm::vec3(0.0f));
