@@ -785,10 +785,11 @@ TEST_P(DefaultStyle, EveryDemoAppRunsAndIsStylised)
         vividKept += chroma(styled, i) >= 40 && dominant(styled, i) == dominant(native, i);
     }
     ASSERT_GT(covered, 160u * 120u / 50) << "the program drew almost nothing";
-    // Measured with toon working: redrawn 21-98% of the drawing, vivid colours kept 58-96%;
-    // paper alone: 0% redrawn; toon drawing nothing: 0% kept on all but the demos whose
-    // vivid pixels are mostly 2D (overlay, state).
-    EXPECT_GT(redrawn * 100, covered * 12) << "the program's drawing is as it drew it: no toon";
+    // Measured with toon working: redrawn 11-98% of the drawing (overlay's 11.5% the least: a
+    // few small shapes, which toon's half band draws close to GL's own shading), vivid
+    // colours kept 58-96%; paper alone: 0% redrawn; toon drawing nothing: 0% kept on all but
+    // the demos whose vivid pixels are mostly 2D (overlay, state).
+    EXPECT_GT(redrawn * 100, covered * 5) << "the program's drawing is as it drew it: no toon";
     if (vivid * 20 >= covered) {
         EXPECT_GE(vividKept * 10, vivid * 4)
             << "the program's objects are missing: toon drew nothing";

@@ -247,3 +247,35 @@ TEST(ToonBands, AScaledNormalLightsAsGlTakesIt)
     EXPECT_GT(centre(GL_NORMALIZE), 0.7f) << "GL_NORMALIZE: not lit head-on";
     EXPECT_GT(centre(GL_RESCALE_NORMAL), 0.7f) << "GL_RESCALE_NORMAL: the scale not taken out";
 }
+
+// Two materials GL shows clearly apart keep their order through the bands. A light grey face
+// GL lights at 0.67 of its colour (0.53: the darker on screen) and a darker grey one it lights
+// fully (0.70). With the two bands alone, 0.67 is nearer the full colour's lightness than the
+// shadow's and the light grey face took its full 0.8: the lighter of the two, reversed
+// (cubestorm's beams, nakagin's walls, moebiusgears' gears). The half band, midway in
+// lightness, is within a quarter of the bands' distance of GL's light, and keeps the order.
+TEST(ToonBands, TwoMaterialsGlShowsApartKeepTheirOrder)
+{
+    StyleHarness harness(kSize, kSize);
+    ASSERT_TRUE(harness.ok());
+    auto scene = harness.makeScene({facingQuad(-1.0f, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f)),
+                                    facingQuad(1.0f, glm::vec4(0.7f, 0.7f, 0.7f, 1.0f))},
+                                   perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+    ASSERT_EQ(scene.objects.size(), 2u);
+    const float slanted = std::acos(0.65f); // GL: 0.05 + 0.95 x 0.65 = 0.67 of the colour
+    litBy(scene.objects[0], glm::vec3(std::sin(slanted), 0.0f, std::cos(slanted)));
+    litBy(scene.objects[1], glm::vec3(0.0f, 0.0f, 1.0f));
+    auto sides = [&](const std::string& config) {
+        PngImage image;
+        std::string error;
+        EXPECT_TRUE(harness.render(scene, "toon", config, image, error)) << error;
+        return std::pair{patch(image, kSize / 2 - 32, kSize / 2),
+                         patch(image, kSize / 2 + 32, kSize / 2)};
+    };
+    const auto [slantedLight, headOnDark] = sides("toon.band=nearest");
+    EXPECT_GT(headOnDark, slantedLight + 0.1f) << "the face GL shows darker came out lighter";
+    EXPECT_NEAR(headOnDark, 0.7f, 0.03f) << "a face GL lights fully is not in its full colour";
+    // Without the half band the two trade places: the test tells the two apart.
+    const auto [twoBandsLight, twoBandsDark] = sides("toon.band=nearest,toon.half_band=off");
+    EXPECT_GT(twoBandsLight, twoBandsDark);
+}

@@ -48,6 +48,17 @@ float above(float d, float t, float pixel)
 #endif
 }
 
+// Lightness against a colour value: GL's values are sRGB-encoded (a 2.2 power of luminance)
+// and L* is about luminance's cube root, so L* goes about as the values' 2.2/3 power.
+const float kLightness = 2.2 / 3.0;
+
+// The half band's colour: midway in lightness between the two it parts.
+vec3 halfTone(vec3 shadow, vec3 lit)
+{
+    vec3 k = vec3(kLightness);
+    return pow(0.5 * (pow(shadow, k) + pow(lit, k)), 1.0 / k);
+}
+
 // Ink coverage of a line lineWidth pixels wide centred on the boundary d == t.
 float boundaryInk(float d, float t, float pixel)
 {
@@ -72,20 +83,29 @@ void main()
     // The quantities the bands cut, their thresholds, and the highlight colour: the thesis's
     // L.n at t_d and t_h, or (PROGRAM_BANDS) where the program lit the object, GL's own light.
     float x = d, xt = diffuseThreshold;
+    float xt2 = 1.0; // HALF_BAND: the cut between the half band and the full colour
     float h = d, ht = highlightThreshold;
     vec3 highlight = HIGHLIGHT_COLOR;
     float shines = 1.0;
 #if PROGRAM_BANDS
     if (program) {
-        // GL's light here as a share of the lit side's (its ambient share up to 1), cut where
-        // its lightness (L*, a cube root) is nearer the full colour's than the shadow colour's:
-        // a face GL leaves dark stays dark, so objects keep the lightness order the program
-        // gave them. The highlight where GL's own is over half its peak, in GL's colour
-        // (thesis eq. 3.5: a_m + d_m + s_m); none where the material does not shine.
+        // GL's light here as a share of the lit side's (its ambient share up to 1), in the
+        // band nearest it in lightness (kLightness): a face GL leaves dark stays dark, so
+        // objects keep the lightness order the program gave them. With the half band midway
+        // between shadow and full colour, GL's light is within a quarter of their distance of
+        // the band it takes (half of it without): two materials GL shows clearly apart no
+        // longer trade places. The highlight where GL's own is over half its peak, in GL's
+        // colour (thesis eq. 3.5: a_m + d_m + s_m); none where the material does not shine.
         float adds = diffuseShare >= 0.0 ? diffuseShare : 1.0 - ambientShare;
         x = min(ambientShare + adds * max(d, 0.0), 1.0);
-        // t_d moves the cut from there (0: none), so that its slider still shades more or less.
-        xt = pow(0.5 * (pow(shadowShare(), 1.0 / 3.0) + 1.0), 3.0) + 0.5 * diffuseThreshold;
+        // t_d moves the cuts from there (0: none), so that its slider still shades more or less.
+        float low = pow(shadowShare(), kLightness), back = 1.0 / kLightness;
+#if HALF_BAND
+        xt = pow(0.25 * (3.0 * low + 1.0), back) + 0.5 * diffuseThreshold;
+        xt2 = pow(0.25 * (low + 3.0), back) + 0.5 * diffuseThreshold;
+#else
+        xt = pow(0.5 * (low + 1.0), back) + 0.5 * diffuseThreshold;
+#endif
         h = programShine(n);
         ht = 0.5;
         shines = dot(shine.rgb, shine.rgb) > 0.0 ? 1.0 : 0.0;
@@ -99,6 +119,12 @@ void main()
     float pixel = 1.0, hpixel = 1.0;
 #endif
     vec3 c = mix(SHADOW_COLOR, DIFFUSE_COLOR, above(x, xt, pixel));
+#if HALF_BAND
+    if (program) {
+        vec3 halfway = halfTone(SHADOW_COLOR, DIFFUSE_COLOR);
+        c = mix(mix(SHADOW_COLOR, halfway, above(x, xt, pixel)), DIFFUSE_COLOR, above(x, xt2, pixel));
+    }
+#endif
 #if TONES == 3
     c = mix(c, highlight, shines * above(h, ht, hpixel));
 #endif
@@ -115,6 +141,9 @@ void main()
 #endif
 #if BAND_LINES
     float ink = boundaryInk(x, xt, pixel);
+#if HALF_BAND
+    if (program) ink = max(ink, boundaryInk(x, xt2, pixel));
+#endif
 #if TONES == 3
     ink = max(ink, shines * boundaryInk(h, ht, hpixel));
 #endif
@@ -168,6 +197,11 @@ StyleInfo toonStyleInfo()
         ParamInfo::choice("detail", "the program's own texture as detail: off, modulate "
                                     "(multiplied with the shading) or decal (a sticker on top)",
                           {"off", "modulate", "decal"}, 1),
+        ParamInfo::flag("half_band",
+                        "with bands=program, a half-shadow band midway in lightness between "
+                        "the shadow and the full colour (objects GL shows apart in lightness "
+                        "keep their order)",
+                        true),
         ParamInfo::flag("band_lines", "ink lines between the shade bands (thesis fig. 3.8)",
                         false),
         ShadingCommon::reflectionsParam(),
@@ -185,6 +219,8 @@ std::string ToonStyle::fragmentSource(int detail, int lights) const
     s += "#define DETAIL " + std::to_string(detail) + "\n";
     s += std::string("#define BAND_LINES ") + (mBandLines ? "1" : "0") + "\n";
     s += std::string("#define PROGRAM_BANDS ") + (mProgramBands && lights > 0 ? "1" : "0") + "\n";
+    const bool half = mProgramBands && lights > 0 && mHalfBand;
+    s += std::string("#define HALF_BAND ") + (half ? "1" : "0") + "\n";
     s += "const float diffuseThreshold = " + f(mDiffuseThreshold) + ";\n";
     s += "const float highlightThreshold = " + f(mHighlightThreshold) + ";\n";
     s += "const float lineWidth = " + f(mLineWidth) + ";\n";
@@ -237,6 +273,7 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
     mShadowFloor = float(ctx.param("toon", "shadow_floor"));
     mHighlightMix = float(ctx.param("toon", "highlight_mix"));
     mProgramBands = ctx.param("toon", "bands") < 0.5;
+    mHalfBand = ctx.param("toon", "half_band") >= 0.5;
     mSmooth = ctx.param("toon", "band") >= 0.5;
     mDetail = int(std::lround(ctx.param("toon", "detail")));
     mBandLines = ctx.param("toon", "band_lines") >= 0.5;

@@ -37,6 +37,7 @@ private:
     float mDiffuseThreshold = 0.0f, mHighlightThreshold = 0.9f;
     float mShadowScale = 0.55f, mShadowFloor = 0.3f, mHighlightMix = 0.5f;
     bool mProgramBands = true; // bands by GL's own light where the program lit (toon.bands)
+    bool mHalfBand = true;     // and a half-shadow band between shadow and full colour there
     bool mSmooth = true, mBandLines = false;
     float mLineWidth = 1.5f;
     int mDetail = 1; // 0 off, 1 modulate, 2 decal
