@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 using namespace nprgl;
 using namespace nprgl::test;
@@ -66,6 +67,25 @@ void litBy(styles::SceneObject& object, glm::vec3 towards)
     lights.diffuseShare = 1.0f;
 }
 
+// Two facing quads, the left in `left` lit from `leftLight`, the right in `right` lit from
+// `rightLight` (eye space), drawn in toon with `config`: the mean luminance of each one's
+// centre.
+std::pair<float, float> twoLitQuads(StyleHarness& harness, const glm::vec4& left,
+                                    glm::vec3 leftLight, const glm::vec4& right,
+                                    glm::vec3 rightLight, const std::string& config)
+{
+    auto scene = harness.makeScene({facingQuad(-1.0f, left), facingQuad(1.0f, right)},
+                                   perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(scene.objects.size(), 2u);
+    if (scene.objects.size() != 2) return {0.0f, 0.0f};
+    litBy(scene.objects[0], leftLight);
+    litBy(scene.objects[1], rightLight);
+    PngImage image;
+    std::string error;
+    EXPECT_TRUE(harness.render(scene, "toon", config, image, error)) << error;
+    return {patch(image, kSize / 2 - 32, kSize / 2), patch(image, kSize / 2 + 32, kSize / 2)};
+}
+
 } // namespace
 
 // Two objects the program lit: a dark grey one head-on (GL: 0.35 of white) and a light grey
@@ -78,19 +98,11 @@ TEST(ToonBands, AnObjectGlShowsDarkerStaysDarker)
 {
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
-    auto scene = harness.makeScene({facingQuad(-1.0f, glm::vec4(0.35f, 0.35f, 0.35f, 1.0f)),
-                                    facingQuad(1.0f, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f))},
-                                   perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
-    ASSERT_EQ(scene.objects.size(), 2u);
-    litBy(scene.objects[0], glm::vec3(0.0f, 0.0f, 1.0f));
     const float grazing = std::acos(0.15f);
-    litBy(scene.objects[1], glm::vec3(std::sin(grazing), 0.0f, std::cos(grazing)));
     auto sides = [&](const std::string& config) {
-        PngImage image;
-        std::string error;
-        EXPECT_TRUE(harness.render(scene, "toon", config, image, error)) << error;
-        return std::pair{patch(image, kSize / 2 - 32, kSize / 2),
-                         patch(image, kSize / 2 + 32, kSize / 2)};
+        return twoLitQuads(harness, glm::vec4(0.35f, 0.35f, 0.35f, 1.0f),
+                           glm::vec3(0.0f, 0.0f, 1.0f), glm::vec4(0.8f, 0.8f, 0.8f, 1.0f),
+                           glm::vec3(std::sin(grazing), 0.0f, std::cos(grazing)), config);
     };
     const auto [headOn, grazed] = sides("toon.band=nearest");
     EXPECT_GT(headOn, grazed + 0.05f) << "the object GL shows darker came out the lighter";
@@ -258,19 +270,11 @@ TEST(ToonBands, TwoMaterialsGlShowsApartKeepTheirOrder)
 {
     StyleHarness harness(kSize, kSize);
     ASSERT_TRUE(harness.ok());
-    auto scene = harness.makeScene({facingQuad(-1.0f, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f)),
-                                    facingQuad(1.0f, glm::vec4(0.7f, 0.7f, 0.7f, 1.0f))},
-                                   perspective(), glm::vec3(0.0f, 0.0f, 1.0f));
-    ASSERT_EQ(scene.objects.size(), 2u);
     const float slanted = std::acos(0.65f); // GL: 0.05 + 0.95 x 0.65 = 0.67 of the colour
-    litBy(scene.objects[0], glm::vec3(std::sin(slanted), 0.0f, std::cos(slanted)));
-    litBy(scene.objects[1], glm::vec3(0.0f, 0.0f, 1.0f));
     auto sides = [&](const std::string& config) {
-        PngImage image;
-        std::string error;
-        EXPECT_TRUE(harness.render(scene, "toon", config, image, error)) << error;
-        return std::pair{patch(image, kSize / 2 - 32, kSize / 2),
-                         patch(image, kSize / 2 + 32, kSize / 2)};
+        return twoLitQuads(harness, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f),
+                           glm::vec3(std::sin(slanted), 0.0f, std::cos(slanted)),
+                           glm::vec4(0.7f, 0.7f, 0.7f, 1.0f), glm::vec3(0.0f, 0.0f, 1.0f), config);
     };
     const auto [slantedLight, headOnDark] = sides("toon.band=nearest");
     EXPECT_GT(headOnDark, slantedLight + 0.1f) << "the face GL shows darker came out lighter";
