@@ -35,7 +35,9 @@
 #                        capture, seconds, reason
 # and prints the programs that failed to record, with the reason. Exit status 0 when every
 # program was tried (failures are results), 1 on bad usage or a missing build.
-set -euo pipefail
+set -Eeuo pipefail
+# Once, after a game's recording, the script ended with status 1 and no word: say where.
+trap 'echo "corpus-captures: stopped at line $LINENO by a failing command: $BASH_COMMAND" >&2' ERR
 
 usage() {
     echo "usage: $0 OUTDIR [--quick]" >&2
@@ -197,8 +199,10 @@ record() {
     local count=0
     if [ -f "$out/$name.nprgl" ]; then
         # "frames: N  (context 1: A, context 2: B)": the longest context's frames.
-        count=$("$nprgl" info "$out/$name.nprgl" 2>/dev/null | sed -n 's/^frames: *//p' |
-            grep -o '[0-9][0-9]*' | sort -n | tail -n1)
+        # A capture nprgl info cannot read counts 0 frames (and is reported below) rather
+        # than ending the script.
+        count=$({ "$nprgl" info "$out/$name.nprgl" 2>/dev/null || true; } |
+            sed -n 's/^frames: *//p' | grep -o '[0-9][0-9]*' | sort -n | tail -n1 || true)
         count=${count:-0}
     fi
     local status=ok reason="-"
