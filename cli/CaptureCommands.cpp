@@ -1,11 +1,11 @@
 #include "cli/CaptureCommands.h"
 
-#include "cli/CommandReport.h"
 #include "capture/CaptureReader.h"
 #include "capture/ReadReport.h"
-#include "frame/CaptureBlobs.h"
+#include "cli/CommandReport.h"
 #include "frame/FrameExport.h"
 #include "frame/StateTracker.h"
+#include "replay/CaptureBlobs.h"
 #include "replay/Replayer.h"
 #include "replay/VideoWriter.h"
 #include "shim/ConfigFile.h"

@@ -2,7 +2,7 @@
 
 #include "cli/CommandReport.h"
 #include "common/FrameSet.h"
-#include "frame/CaptureBlobs.h"
+#include "replay/CaptureBlobs.h"
 #include "stream/CallPrinter.h"
 #include "stream/OpcodeMap.h"
 

@@ -3,7 +3,7 @@
 // ReplaySink: the decodeCall sink that replays a stream through the current context's
 // dispatch, refusing calls the driver would trust and crash or hang on.
 
-#include "frame/DisplayListBudget.h"
+#include "replay/DisplayListBudget.h"
 #include "frame/ShadowArrays.h"
 #include "replay/ReplayLimits.h"
 #include "shim/Api.h"

@@ -2,9 +2,9 @@
 
 #include "common/Log.h"
 #include "common/PngImage.h"
-#include "frame/CaptureBlobs.h"
 #include "frame/Compositor.h"
 #include "frame/ShadowArrays.h"
+#include "replay/CaptureBlobs.h"
 #include "replay/ReplaySink.h"
 #include "shim/Api.h"
 #include "shim/Context.h"

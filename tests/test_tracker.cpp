@@ -3,10 +3,10 @@
 
 #include "capture/CaptureReader.h"
 #include "frame/AttribStack.h"
-#include "frame/CaptureBlobs.h"
 #include "frame/MatrixStacks.h"
 #include "frame/StateTracker.h"
 #include "frame/TextureImage.h"
+#include "replay/CaptureBlobs.h"
 #include "stream/CallWriter.h"
 #include "stream/Opcodes.h"
 #include "tests/support/Process.h"

@@ -1,5 +1,7 @@
 #pragma once
 
+// CaptureBlobs: a capture file's blobs served to a CallReader (replay, dump, info, export).
+
 #include "capture/CaptureReader.h"
 #include "stream/CallReader.h"
 

@@ -1,4 +1,4 @@
-#include "frame/DisplayListBudget.h"
+#include "replay/DisplayListBudget.h"
 
 #include <GL/gl.h>
 
