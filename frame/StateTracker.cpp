@@ -1380,58 +1380,14 @@ void StateTracker::otherDraw()
 
 bool StateTracker::isVertexCall(uint16_t opcode) const
 {
-    switch (opcode) {
-    case op::glBegin:
-    case op::glEnd:
-    case op::glDrawArrays:
-    case op::glDrawElements:
-    case op::glDrawRangeElements:
-    case op::glMultiDrawArrays:
-    case op::glArrayElement:
-    case op::glRectf:
-    case op::glRectd:
-    case op::glRecti:
-    case op::glRects:
-    case op::kArrayData:
-    case op::kBatchRef:
-        return true;
-    default: {
-        // Which opcodes are glVertex*: worked out once from the names.
-        static const std::vector<bool> isVertex = [] {
-            std::vector<bool> v(op::kCount);
-            for (uint16_t i = 0; i < op::kCount; ++i) {
-                v[i] = std::strncmp(kOpcodeNames[i], "glVertex", 8) == 0;
-            }
-            return v;
-        }();
-        return opcode < op::kCount && (mInBegin || isVertex[opcode]);
-    }
-    }
+    // The recorder's client-array data and batch references are geometry too.
+    if (opcode == op::kArrayData || opcode == op::kBatchRef) return true;
+    return opcode < op::kCount && (mInBegin || (kOpcodeFacts[opcode] & fact::kVertex));
 }
 
 bool StateTracker::runsWhileCompiling(uint16_t opcode)
 {
-    // GL runs these at once even inside glNewList, never compiling them (client state,
-    // buffer objects, list and name management; OpenGL 2.1 section 5.4): a list that sets
-    // up its own vertex arrays still draws from them while it compiles.
-    static const std::vector<bool> immediate = [] {
-        static const char* const kNames[] = {
-            "glEnableClientState", "glDisableClientState", "glVertexPointer",
-            "glNormalPointer",     "glColorPointer",       "glTexCoordPointer",
-            "glIndexPointer",      "glEdgeFlagPointer",    "glInterleavedArrays",
-            "glClientActiveTexture", "glPushClientAttrib", "glPopClientAttrib",
-            "glPixelStorei",       "glPixelStoref",        "glBindBuffer",
-            "glBufferData",        "glBufferSubData",      "glGenBuffers",
-            "glDeleteBuffers",     "glGenLists",           "glDeleteLists",
-            "glSecondaryColorPointer", "glFogCoordPointer", "glVertexAttribPointer",
-            "glEnableVertexAttribArray", "glDisableVertexAttribArray"};
-        std::vector<bool> v(op::kCount);
-        for (uint16_t i = 0; i < op::kCount; ++i) {
-            for (const char* name : kNames) v[i] = v[i] || std::strcmp(kOpcodeNames[i], name) == 0;
-        }
-        return v;
-    }();
-    return opcode < op::kCount && immediate[opcode];
+    return opcode < op::kCount && (kOpcodeFacts[opcode] & fact::kRunsWhileCompiling);
 }
 
 bool StateTracker::runCalls(const uint8_t* data, size_t size, bool topLevel, std::string& error)

@@ -239,13 +239,41 @@ def sub(expr, prefix):
     return expr.replace("{a}", prefix)
 
 
-# Draws and vertices the compositor holds back: recorded, not sent to the driver (the styles
-# draw them). Attribute calls inside a held glBegin/glEnd still reach the driver (they are
-# valid outside glBegin/glEnd too), so the current colour, normal... stay the program's. A
-# glCallList that may be a pass over held geometry is recorded first and run once decided.
-HELD_RE = re.compile(r"gl(Begin|End|Vertex[234][dfis]v?|ArrayElement|EvalCoord[12][df]v?|"
-                     r"EvalPoint[12]|DrawArrays|DrawElements|DrawRangeElements|"
-                     r"MultiDrawArrays|Rect[dfis]v?|CallList)")
+# Facts about GL commands, written here once and emitted as kOpcodeFacts (nprgl_opcodes.inc)
+# for the tracker, the recorder and the compositor alike.
+# - vertex: makes geometry (a vertex, a draw, a rectangle; the tracker follows no glRect*v).
+#   The tracker runs it even while a list compiles, so that the list's batches are captured;
+#   inside glBegin/glEnd every call is one (the tracker's own rule).
+VERTEX_RE = re.compile(r"gl(Begin|End|Vertex[234][dfis]v?|ArrayElement|DrawArrays|DrawElements|"
+                       r"DrawRangeElements|MultiDrawArrays|Rect[dfis])")
+# - held: the compositor holds it back, recorded and not sent to the driver (the styles draw
+#   it): the vertex calls, evaluators, and glCallList (a list that may be a pass over held
+#   geometry is recorded first and run once decided). Attribute calls inside a held
+#   glBegin/glEnd still reach the driver (they are valid outside glBegin/glEnd too), so the
+#   current colour, normal... stay the program's.
+HELD_RE = re.compile(VERTEX_RE.pattern[:-1] + r"|Rect[dfis]v|EvalCoord[12][df]v?|EvalPoint[12]|"
+                     r"CallList)")
+# - immediate: GL runs it at once even inside glNewList, never compiling it (client state,
+#   buffer objects, list and name management; OpenGL 2.1 section 5.4): a list that sets up
+#   its own vertex arrays still draws from them while it compiles.
+IMMEDIATE = {
+    "glEnableClientState", "glDisableClientState", "glVertexPointer", "glNormalPointer",
+    "glColorPointer", "glTexCoordPointer", "glIndexPointer", "glEdgeFlagPointer",
+    "glInterleavedArrays", "glClientActiveTexture", "glPushClientAttrib", "glPopClientAttrib",
+    "glPixelStorei", "glPixelStoref", "glBindBuffer", "glBufferData", "glBufferSubData",
+    "glGenBuffers", "glDeleteBuffers", "glGenLists", "glDeleteLists", "glSecondaryColorPointer",
+    "glFogCoordPointer", "glVertexAttribPointer", "glEnableVertexAttribArray",
+    "glDisableVertexAttribArray"}
+FACT_VERTEX, FACT_IMMEDIATE, FACT_HELD = 1, 2, 4
+
+
+def commandFacts(name, mode):
+    facts = FACT_VERTEX if VERTEX_RE.fullmatch(name) else 0
+    if name in IMMEDIATE:
+        facts |= FACT_IMMEDIATE
+    if mode == "record" and HELD_RE.fullmatch(name):
+        facts |= FACT_HELD
+    return facts
 
 
 def emitRecord(cmds):
@@ -258,7 +286,7 @@ def emitRecord(cmds):
         for op, (ret, name, params, mode) in enumerate(cmds):
             if mode == "query":
                 continue
-            if heldOnly and (mode != "record" or not HELD_RE.fullmatch(name)):
+            if heldOnly and not commandFacts(name, mode) & FACT_HELD:
                 continue
             if heldOnly:
                 held.append(name)
@@ -395,6 +423,16 @@ def emitOpcodes(cmds):
     out.append("};")
     out.append("constexpr bool kOpcodeRecorded[] = {")
     out += [f"    {'true' if mode == 'record' else 'false'}," for _, _, _, mode in cmds]
+    out.append("};")
+    out.append("// What each command is (gen_codec.py's facts): fact::kVertex, kRunsWhileCompiling,")
+    out.append("// kHeld.")
+    out.append("namespace fact {")
+    out.append(f"constexpr uint8_t kVertex = {FACT_VERTEX};")
+    out.append(f"constexpr uint8_t kRunsWhileCompiling = {FACT_IMMEDIATE};")
+    out.append(f"constexpr uint8_t kHeld = {FACT_HELD};")
+    out.append("} // namespace fact")
+    out.append("constexpr uint8_t kOpcodeFacts[] = {")
+    out += [f"    {commandFacts(name, mode)}, // {name}" for _, name, _, mode in cmds]
     out.append("};")
     return "\n".join(out) + "\n"
 

@@ -218,6 +218,35 @@ TEST(CallCodec, BlobReferencesNeedASource)
     EXPECT_NE(error.find("blob"), std::string::npos) << error;
 }
 
+// Facts about commands come from one table in the generator (kOpcodeFacts), for the tracker,
+// the recorder and the compositor alike. The tracker's old rule, names beginning "glVertex",
+// took glVertexAttrib4f for a vertex: run while a list compiled, and not compiled into it.
+TEST(CommandFacts, SayWhatEachCommandIs)
+{
+    auto is = [](uint16_t opcode, uint8_t fact) { return (kOpcodeFacts[opcode] & fact) != 0; };
+    EXPECT_TRUE(is(op::glVertex3f, fact::kVertex));
+    EXPECT_TRUE(is(op::glDrawElements, fact::kVertex));
+    EXPECT_TRUE(is(op::glRectf, fact::kVertex));
+    EXPECT_FALSE(is(op::glVertexAttrib4f, fact::kVertex)) << "a generic attribute is no vertex";
+    EXPECT_FALSE(is(op::glVertexPointer, fact::kVertex));
+    EXPECT_FALSE(is(op::glColor3f, fact::kVertex));
+    // GL runs these at once inside glNewList (OpenGL 2.1 section 5.4); it compiles the others.
+    EXPECT_TRUE(is(op::glVertexPointer, fact::kRunsWhileCompiling));
+    EXPECT_TRUE(is(op::glBindBuffer, fact::kRunsWhileCompiling));
+    EXPECT_TRUE(is(op::glGenLists, fact::kRunsWhileCompiling));
+    EXPECT_FALSE(is(op::glColor3f, fact::kRunsWhileCompiling));
+    EXPECT_FALSE(is(op::glVertexAttrib4f, fact::kRunsWhileCompiling));
+    // Held back by the compositor: every vertex call, evaluators and glCallList; never an
+    // attribute, which reaches the driver inside a held glBegin/glEnd.
+    for (uint16_t i = 0; i < op::kCount; ++i) {
+        if (is(i, fact::kVertex)) EXPECT_TRUE(is(i, fact::kHeld)) << kOpcodeNames[i];
+    }
+    EXPECT_TRUE(is(op::glCallList, fact::kHeld));
+    EXPECT_TRUE(is(op::glEvalCoord2f, fact::kHeld));
+    EXPECT_FALSE(is(op::glColor3f, fact::kHeld));
+    EXPECT_FALSE(is(op::glNormal3f, fact::kHeld));
+}
+
 TEST(GlSizes, ImagesFollowTheUnpackState)
 {
     UnpackState tight;
