@@ -424,8 +424,8 @@ def emitOpcodes(cmds):
     out.append("constexpr bool kOpcodeRecorded[] = {")
     out += [f"    {'true' if mode == 'record' else 'false'}," for _, _, _, mode in cmds]
     out.append("};")
-    out.append("// What each command is (gen_codec.py's facts): fact::kVertex, kRunsWhileCompiling,")
-    out.append("// kHeld.")
+    out.append("// What each command is (gen_codec.py's facts): fact::kVertex,")
+    out.append("// kRunsWhileCompiling, kHeld.")
     out.append("namespace fact {")
     out.append(f"constexpr uint8_t kVertex = {FACT_VERTEX};")
     out.append(f"constexpr uint8_t kRunsWhileCompiling = {FACT_IMMEDIATE};")

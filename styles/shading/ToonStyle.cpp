@@ -122,7 +122,8 @@ void main()
 #if HALF_BAND
     if (program) {
         vec3 halfway = halfTone(SHADOW_COLOR, DIFFUSE_COLOR);
-        c = mix(mix(SHADOW_COLOR, halfway, above(x, xt, pixel)), DIFFUSE_COLOR, above(x, xt2, pixel));
+        c = mix(SHADOW_COLOR, halfway, above(x, xt, pixel));
+        c = mix(c, DIFFUSE_COLOR, above(x, xt2, pixel));
     }
 #endif
 #if TONES == 3
