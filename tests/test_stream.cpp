@@ -239,7 +239,9 @@ TEST(CommandFacts, SayWhatEachCommandIs)
     // Held back by the compositor: every vertex call, evaluators and glCallList; never an
     // attribute, which reaches the driver inside a held glBegin/glEnd.
     for (uint16_t i = 0; i < op::kCount; ++i) {
-        if (is(i, fact::kVertex)) EXPECT_TRUE(is(i, fact::kHeld)) << kOpcodeNames[i];
+        if (is(i, fact::kVertex)) {
+            EXPECT_TRUE(is(i, fact::kHeld)) << kOpcodeNames[i];
+        }
     }
     EXPECT_TRUE(is(op::glCallList, fact::kHeld));
     EXPECT_TRUE(is(op::glEvalCoord2f, fact::kHeld));
