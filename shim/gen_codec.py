@@ -247,12 +247,11 @@ def sub(expr, prefix):
 VERTEX_RE = re.compile(r"gl(Begin|End|Vertex[234][dfis]v?|ArrayElement|DrawArrays|DrawElements|"
                        r"DrawRangeElements|MultiDrawArrays|Rect[dfis])")
 # - held: the compositor holds it back, recorded and not sent to the driver (the styles draw
-#   it): the vertex calls, evaluators, and glCallList (a list that may be a pass over held
-#   geometry is recorded first and run once decided). Attribute calls inside a held
+#   it): the vertex calls and these (evaluators; glCallList, a list that may be a pass over
+#   held geometry, recorded first and run once decided). Attribute calls inside a held
 #   glBegin/glEnd still reach the driver (they are valid outside glBegin/glEnd too), so the
 #   current colour, normal... stay the program's.
-HELD_RE = re.compile(VERTEX_RE.pattern[:-1] + r"|Rect[dfis]v|EvalCoord[12][df]v?|EvalPoint[12]|"
-                     r"CallList)")
+HELD_TOO_RE = re.compile(r"gl(Rect[dfis]v|EvalCoord[12][df]v?|EvalPoint[12]|CallList)")
 # - immediate: GL runs it at once even inside glNewList, never compiling it (client state,
 #   buffer objects, list and name management; OpenGL 2.1 section 5.4): a list that sets up
 #   its own vertex arrays still draws from them while it compiles.
@@ -271,7 +270,7 @@ def commandFacts(name, mode):
     facts = FACT_VERTEX if VERTEX_RE.fullmatch(name) else 0
     if name in IMMEDIATE:
         facts |= FACT_IMMEDIATE
-    if mode == "record" and HELD_RE.fullmatch(name):
+    if mode == "record" and (facts & FACT_VERTEX or HELD_TOO_RE.fullmatch(name)):
         facts |= FACT_HELD
     return facts
 

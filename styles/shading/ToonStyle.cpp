@@ -118,13 +118,14 @@ void main()
 #else
     float pixel = 1.0, hpixel = 1.0;
 #endif
-    vec3 c = mix(SHADOW_COLOR, DIFFUSE_COLOR, above(x, xt, pixel));
+    // Shadow up to xt, then the full colour; where the program lit the object and the half
+    // band is on, the half band between xt and xt2.
 #if HALF_BAND
-    if (program) {
-        vec3 halfway = halfTone(SHADOW_COLOR, DIFFUSE_COLOR);
-        c = mix(SHADOW_COLOR, halfway, above(x, xt, pixel));
-        c = mix(c, DIFFUSE_COLOR, above(x, xt2, pixel));
-    }
+    vec3 middle = program ? halfTone(SHADOW_COLOR, DIFFUSE_COLOR) : DIFFUSE_COLOR;
+    vec3 c = mix(SHADOW_COLOR, middle, above(x, xt, pixel));
+    if (program) c = mix(c, DIFFUSE_COLOR, above(x, xt2, pixel));
+#else
+    vec3 c = mix(SHADOW_COLOR, DIFFUSE_COLOR, above(x, xt, pixel));
 #endif
 #if TONES == 3
     c = mix(c, highlight, shines * above(h, ht, hpixel));
