@@ -1,5 +1,6 @@
 #include "frame/StateTracker.h"
 
+#include "frame/TrackerDispatch.h"
 #include "frame/FixedLighting.h"
 
 #include "common/Log.h"
@@ -40,30 +41,6 @@ bool byAlpha(bool blend, GLenum src, GLenum dst)
     return blend && src == GL_SRC_ALPHA && dst == GL_ONE_MINUS_SRC_ALPHA;
 }
 
-// A texture format of depth (a shadow map), given as glTexImage2D's format or as an internal
-// format (glCopyTexImage2D, glTexStorage2D).
-bool depthFormat(GLenum format)
-{
-    switch (format) {
-    case GL_DEPTH_COMPONENT:
-    case GL_DEPTH_COMPONENT16:
-    case GL_DEPTH_COMPONENT24:
-    case GL_DEPTH_COMPONENT32:
-    case GL_DEPTH_COMPONENT32F:
-    case GL_DEPTH_STENCIL:
-    case GL_DEPTH24_STENCIL8:
-    case GL_DEPTH32F_STENCIL8: return true;
-    default: return false;
-    }
-}
-
-// An enum given as a float (glTexEnvf, glFogf, glTexGenf): 0, which names no mode, where the
-// value is none (NaN, negative, past 32 bits: converting those is undefined behaviour).
-GLenum enumOf(double value)
-{
-    return value >= 0.0 && value <= 4294967295.0 ? GLenum(value) : 0;
-}
-
 // Whether the alpha test passes a fragment of alpha 1.
 bool passesAlphaOne(GLenum func, float ref)
 {
@@ -79,341 +56,8 @@ bool passesAlphaOne(GLenum func, float ref)
     }
 }
 
-// Initial-exec like tThread: read per vertex, no __tls_get_addr call.
-constinit thread_local StateTracker* tTracker __attribute__((tls_model("initial-exec"))) =
-    nullptr;
-
 // Capacity the vertex pool keeps at most (a frame's worth for large scenes).
 constexpr size_t kPoolBytes = size_t(256) << 20;
-
-template <typename T>
-T zeroValue()
-{
-    return T{};
-}
-template <>
-void zeroValue<void>()
-{
-}
-
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "nprgl_track.inc"
-#pragma GCC diagnostic pop
-
-StateTracker& T() { return *tTracker; }
-
-template <typename F>
-glm::mat4 toMat(const F* m)
-{
-    glm::mat4 out;
-    for (int i = 0; i < 16; ++i) glm::value_ptr(out)[i] = float(m[i]);
-    return out;
-}
-
-// Hand-written tracking functions: state that decides where and how geometry is drawn.
-void APIENTRY tBegin(GLenum mode) { T().begin(mode); }
-void APIENTRY tEnd() { T().end(); }
-void APIENTRY tMatrixMode(GLenum mode) { T().matrixMode(mode); }
-void APIENTRY tLoadIdentity() { T().topMatrix() = glm::mat4(1.0f); }
-void APIENTRY tLoadMatrixf(const GLfloat* m) { T().topMatrix() = toMat(m); }
-void APIENTRY tLoadMatrixd(const GLdouble* m) { T().topMatrix() = toMat(m); }
-void APIENTRY tMultMatrixf(const GLfloat* m) { T().topMatrix() *= toMat(m); }
-void APIENTRY tMultMatrixd(const GLdouble* m) { T().topMatrix() *= toMat(m); }
-void APIENTRY tLoadTransposeMatrixf(const GLfloat* m)
-{
-    T().topMatrix() = glm::transpose(toMat(m));
-}
-void APIENTRY tLoadTransposeMatrixd(const GLdouble* m)
-{
-    T().topMatrix() = glm::transpose(toMat(m));
-}
-void APIENTRY tMultTransposeMatrixf(const GLfloat* m)
-{
-    T().topMatrix() *= glm::transpose(toMat(m));
-}
-void APIENTRY tMultTransposeMatrixd(const GLdouble* m)
-{
-    T().topMatrix() *= glm::transpose(toMat(m));
-}
-void rotate(float angle, float x, float y, float z)
-{
-    glm::vec3 axis(x, y, z);
-    if (glm::length(axis) > 0.0f) {
-        T().topMatrix() = glm::rotate(T().topMatrix(), glm::radians(angle), glm::normalize(axis));
-    }
-}
-void APIENTRY tRotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); }
-void APIENTRY tRotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z)
-{
-    rotate(float(a), float(x), float(y), float(z));
-}
-void APIENTRY tTranslatef(GLfloat x, GLfloat y, GLfloat z)
-{
-    T().topMatrix() = glm::translate(T().topMatrix(), glm::vec3(x, y, z));
-}
-void APIENTRY tTranslated(GLdouble x, GLdouble y, GLdouble z)
-{
-    tTranslatef(GLfloat(x), GLfloat(y), GLfloat(z));
-}
-void APIENTRY tScalef(GLfloat x, GLfloat y, GLfloat z)
-{
-    T().topMatrix() = glm::scale(T().topMatrix(), glm::vec3(x, y, z));
-}
-void APIENTRY tScaled(GLdouble x, GLdouble y, GLdouble z)
-{
-    tScalef(GLfloat(x), GLfloat(y), GLfloat(z));
-}
-void APIENTRY tFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f)
-{
-    T().topMatrix() *= glm::frustum(float(l), float(r), float(b), float(t), float(n), float(f));
-}
-void APIENTRY tOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f)
-{
-    T().topMatrix() *= glm::ortho(float(l), float(r), float(b), float(t), float(n), float(f));
-}
-void APIENTRY tPushMatrix() { T().pushMatrix(); }
-void APIENTRY tPopMatrix() { T().popMatrix(); }
-void APIENTRY tEnable(GLenum cap) { T().setEnabled(cap, true); }
-void APIENTRY tDisable(GLenum cap) { T().setEnabled(cap, false); }
-void APIENTRY tUseProgram(GLuint program) { T().useProgram(program); }
-void APIENTRY tMaterialfv(GLenum face, GLenum pname, const GLfloat* v)
-{
-    T().material(face, pname, v);
-}
-void APIENTRY tMaterialf(GLenum face, GLenum pname, GLfloat v)
-{
-    // Only single-valued pnames are valid here (the driver refuses the others).
-    const float values[4] = {v, 0.0f, 0.0f, 0.0f};
-    if (pnameCount(pname) == 1) T().material(face, pname, values);
-}
-// glMateriali is glMaterialf's integer twin: its one value (the shininess) an exponent.
-void APIENTRY tMateriali(GLenum face, GLenum pname, GLint v) { tMaterialf(face, pname, float(v)); }
-void APIENTRY tMaterialiv(GLenum face, GLenum pname, const GLint* v)
-{
-    float f[4];
-    for (size_t i = 0; i < pnameCount(pname) && i < 4; ++i) f[i] = float(v[i]) / 2147483647.0f;
-    if (pname == GL_SHININESS) f[0] = float(v[0]); // an exponent, not a colour
-    T().material(face, pname, f);
-}
-void APIENTRY tNewList(GLuint list, GLenum mode) { T().newList(list, mode); }
-void APIENTRY tEndList() { T().endList(); }
-void APIENTRY tCallList(GLuint list) { T().callList(list); }
-void APIENTRY tListBase(GLuint base) { T().listBase(base); }
-void APIENTRY tDeleteLists(GLuint list, GLsizei range) { T().deleteLists(list, range); }
-void APIENTRY tBindTexture(GLenum target, GLuint texture) { T().bindTexture(target, texture); }
-// glTexGen{i,f,d}[v]: the mode (one value) and the planes (four).
-template <typename P> void APIENTRY tTexGen(GLenum coord, GLenum pname, P param)
-{
-    const double value = double(param);
-    T().texGen(coord, pname, &value, 1);
-}
-template <typename P> void APIENTRY tTexGenv(GLenum coord, GLenum pname, const P* params)
-{
-    if (!params) return;
-    const size_t count = pname == GL_TEXTURE_GEN_MODE ? 1 : 4;
-    double values[4] = {};
-    for (size_t i = 0; i < count; ++i) values[i] = double(params[i]);
-    T().texGen(coord, pname, values, count);
-}
-void APIENTRY tTexEnvi(GLenum target, GLenum pname, GLint param)
-{
-    T().texEnv(target, pname, GLenum(param));
-}
-void APIENTRY tTexEnvf(GLenum target, GLenum pname, GLfloat param)
-{
-    T().texEnv(target, pname, enumOf(param));
-}
-void APIENTRY tTexEnviv(GLenum target, GLenum pname, const GLint* params)
-{
-    if (params) T().texEnv(target, pname, GLenum(params[0]));
-}
-void APIENTRY tTexEnvfv(GLenum target, GLenum pname, const GLfloat* params)
-{
-    // GL_TEXTURE_ENV_COLOR is four floats; the mode is one.
-    if (params && (pname == GL_TEXTURE_ENV_MODE || pname == GL_RGB_SCALE)) {
-        T().texEnv(target, pname, enumOf(params[0]));
-    }
-}
-void APIENTRY tTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
-                          GLsizei height, GLint, GLenum format, GLenum type, const void* pixels)
-{
-    T().texImage2D(target, level, internalFormat, width, height, format, type, pixels);
-}
-void APIENTRY tCopyTexImage2D(GLenum target, GLint level, GLenum internalFormat, GLint, GLint,
-                              GLsizei, GLsizei, GLint)
-{
-    T().texStorage2D(target, level, internalFormat, false);
-}
-void APIENTRY tTexStorage2D(GLenum target, GLsizei, GLenum internalFormat, GLsizei, GLsizei)
-{
-    T().texStorage2D(target, 0, internalFormat, true);
-}
-void APIENTRY tTexSubImage2D(GLenum target, GLint level, GLint, GLint, GLsizei width,
-                             GLsizei height, GLenum format, GLenum type, const void* pixels)
-{
-    T().texSubImage2D(target, level, width, height, format, type, pixels);
-}
-void APIENTRY tActiveTexture(GLenum unit) { T().activeTexture(unit); }
-void APIENTRY tEnableClientState(GLenum cap) { T().enableArray(cap, true); }
-void APIENTRY tDisableClientState(GLenum cap) { T().enableArray(cap, false); }
-void APIENTRY tClientActiveTexture(GLenum unit) { T().clientActiveTexture(unit); }
-void APIENTRY tVertexPointer(GLint size, GLenum type, GLsizei stride, const void* p)
-{
-    T().arrayPointer(kVertexArray, size, type, stride, p);
-}
-void APIENTRY tNormalPointer(GLenum type, GLsizei stride, const void* p)
-{
-    T().arrayPointer(kNormalArray, 3, type, stride, p);
-}
-void APIENTRY tColorPointer(GLint size, GLenum type, GLsizei stride, const void* p)
-{
-    T().arrayPointer(kColorArray, size, type, stride, p);
-}
-void APIENTRY tTexCoordPointer(GLint size, GLenum type, GLsizei stride, const void* p)
-{
-    T().arrayPointer(T().texCoordSlot(), size, type, stride, p);
-}
-void APIENTRY tBindBuffer(GLenum target, GLuint buffer) { T().bindBuffer(target, buffer); }
-void APIENTRY tBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum)
-{
-    T().bufferData(target, size, data);
-}
-void APIENTRY tBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, const void* data)
-{
-    T().bufferSubData(target, offset, size, data);
-}
-void APIENTRY tDrawArrays(GLenum mode, GLint first, GLsizei count)
-{
-    T().drawArrays(mode, first, count);
-}
-void APIENTRY tDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices)
-{
-    T().drawElements(mode, count, type, indices);
-}
-void APIENTRY tDrawRangeElements(GLenum mode, GLuint, GLuint, GLsizei count, GLenum type,
-                                 const void* indices)
-{
-    T().drawElements(mode, count, type, indices);
-}
-void APIENTRY tMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count, GLsizei n)
-{
-    for (GLsizei i = 0; first && count && i < n; ++i) T().drawArrays(mode, first[i], count[i]);
-}
-void APIENTRY tArrayElement(GLint i) { T().arrayElement(i); }
-void APIENTRY tRectf(GLfloat a, GLfloat b, GLfloat c, GLfloat d) { T().rect(a, b, c, d); }
-void APIENTRY tRectd(GLdouble a, GLdouble b, GLdouble c, GLdouble d)
-{
-    T().rect(float(a), float(b), float(c), float(d));
-}
-void APIENTRY tRecti(GLint a, GLint b, GLint c, GLint d)
-{
-    T().rect(float(a), float(b), float(c), float(d));
-}
-void APIENTRY tRects(GLshort a, GLshort b, GLshort c, GLshort d)
-{
-    T().rect(float(a), float(b), float(c), float(d));
-}
-
-void APIENTRY tLightfv(GLenum light, GLenum pname, const GLfloat* v) { T().light(light, pname, v); }
-void APIENTRY tLightiv(GLenum light, GLenum pname, const GLint* v)
-{
-    // Integer colours map their range onto -1..1; positions and the rest are taken as they are.
-    const bool colour = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
-    float f[4] = {0, 0, 0, 0};
-    for (size_t i = 0; i < pnameCount(pname) && i < 4; ++i)
-        f[i] = colour ? float(v[i]) / 2147483647.0f : float(v[i]);
-    T().light(light, pname, f);
-}
-void APIENTRY tLightf(GLenum light, GLenum pname, GLfloat v) { T().light(light, pname, &v); }
-void APIENTRY tLighti(GLenum light, GLenum pname, GLint v)
-{
-    const float f = float(v);
-    T().light(light, pname, &f);
-}
-void APIENTRY tLightModelfv(GLenum pname, const GLfloat* v) { T().lightModel(pname, v); }
-void APIENTRY tLightModeliv(GLenum pname, const GLint* v)
-{
-    float f[4] = {0, 0, 0, 0};
-    if (pname == GL_LIGHT_MODEL_AMBIENT) {
-        for (size_t i = 0; i < 4; ++i) f[i] = float(v[i]) / 2147483647.0f;
-    } else if (v) {
-        f[0] = float(v[0]);
-    }
-    T().lightModel(pname, f);
-}
-// Scalar forms (GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE): as a vector's first.
-void APIENTRY tLightModelf(GLenum pname, GLfloat v)
-{
-    const float f[4] = {v, 0, 0, 0};
-    if (pname != GL_LIGHT_MODEL_AMBIENT) T().lightModel(pname, f);
-}
-void APIENTRY tLightModeli(GLenum pname, GLint v) { tLightModelf(pname, float(v)); }
-void APIENTRY tShadeModel(GLenum mode) { T().shadeModel(mode); }
-void APIENTRY tPolygonMode(GLenum face, GLenum mode) { T().polygonMode(face, mode); }
-void APIENTRY tColorMaterial(GLenum face, GLenum mode) { T().colorMaterial(face, mode); }
-void APIENTRY tColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a)
-{
-    T().colorMask(r, g, b, a);
-}
-void APIENTRY tViewport(GLint x, GLint y, GLsizei w, GLsizei h)
-{
-    if (w >= 0 && h >= 0) T().setViewport({x, y, w, h});
-}
-void APIENTRY tDepthRange(GLdouble n, GLdouble f) { T().setDepthRange(float(n), float(f)); }
-void APIENTRY tDepthRangef(GLfloat n, GLfloat f) { T().setDepthRange(n, f); }
-void APIENTRY tScissor(GLint x, GLint y, GLsizei w, GLsizei h)
-{
-    if (w >= 0 && h >= 0) T().setScissor({x, y, w, h});
-}
-void APIENTRY tBlendFunc(GLenum src, GLenum dst) { T().blendFunc(src, dst); }
-void APIENTRY tBlendFuncSeparate(GLenum srcRgb, GLenum dstRgb, GLenum, GLenum)
-{
-    T().blendFunc(srcRgb, dstRgb);
-}
-void APIENTRY tDepthMask(GLboolean flag) { T().depthMask(flag == GL_TRUE); }
-void APIENTRY tDepthFunc(GLenum func) { T().depthFunc(func); }
-void APIENTRY tAlphaFunc(GLenum func, GLfloat ref) { T().alphaFunc(func, ref); }
-void APIENTRY tPolygonOffset(GLfloat factor, GLfloat units) { T().polygonOffset(factor, units); }
-void APIENTRY tCullFace(GLenum mode)
-{
-    if (mode == GL_FRONT || mode == GL_BACK || mode == GL_FRONT_AND_BACK) T().cullMode(mode);
-}
-void APIENTRY tFrontFace(GLenum mode)
-{
-    if (mode == GL_CW || mode == GL_CCW) T().frontFace(mode);
-}
-void APIENTRY tFogf(GLenum pname, GLfloat v) { T().fog(pname, &v, 1); }
-void APIENTRY tFogi(GLenum pname, GLint v)
-{
-    const float f = float(v);
-    T().fog(pname, &f, 1);
-}
-void APIENTRY tFogfv(GLenum pname, const GLfloat* v)
-{
-    if (v) T().fog(pname, v, pname == GL_FOG_COLOR ? 4 : 1);
-}
-void APIENTRY tFogiv(GLenum pname, const GLint* v)
-{
-    if (!v) return;
-    // Integer colours map the full int range to [-1, 1], as glFogiv's do.
-    float f[4] = {};
-    const size_t n = pname == GL_FOG_COLOR ? 4 : 1;
-    for (size_t i = 0; i < n; ++i) {
-        f[i] = pname == GL_FOG_COLOR ? float(v[i]) / 2147483647.0f : float(v[i]);
-    }
-    T().fog(pname, f, n);
-}
-void APIENTRY tPushAttrib(GLbitfield mask) { T().pushAttrib(mask); }
-void APIENTRY tPopAttrib() { T().popAttrib(); }
-void APIENTRY tPushClientAttrib(GLbitfield) { T().pushClientAttrib(); }
-void APIENTRY tPopClientAttrib() { T().popClientAttrib(); }
-void APIENTRY tBitmap(GLsizei, GLsizei, GLfloat, GLfloat, GLfloat, GLfloat, const GLubyte*)
-{
-    T().otherDraw();
-}
-void APIENTRY tDrawPixels(GLsizei, GLsizei, GLenum, GLenum, const void*) { T().otherDraw(); }
-void APIENTRY tCopyPixels(GLint, GLint, GLsizei, GLsizei, GLenum) { T().otherDraw(); }
 
 GLuint listId(GLenum type, const uint8_t* p, GLsizei i)
 {
@@ -434,21 +78,6 @@ GLuint listId(GLenum type, const uint8_t* p, GLsizei i)
     }
 }
 
-// While a list compiles: what it will call (for deciding whether it can be held).
-void APIENTRY tCallListCompiled(GLuint list) { T().noteCompiledCall(list); }
-// While a list compiles, a material between glBegin and glEnd still colours the batch's
-// vertices from there on (its state change is kept for the list's execution).
-void APIENTRY tMaterialfvCompiled(GLenum face, GLenum pname, const GLfloat* v)
-{
-    T().batchMaterial(face, pname, v);
-}
-void APIENTRY tCallListsCompiled(GLsizei, GLenum, const void*) { T().otherDraw(); }
-
-void APIENTRY tCallLists(GLsizei n, GLenum type, const void* lists)
-{
-    T().callLists(n, type, lists);
-}
-
 bool isPolygonMode(GLenum mode) { return mode >= GL_TRIANGLES && mode <= GL_POLYGON; }
 
 // Component i of an array element (unaligned).
@@ -462,125 +91,9 @@ T load(const uint8_t* p, int i)
 
 } // namespace
 
-StateTracker& currentTracker() { return *tTracker; }
-
 StateTracker::StateTracker()
 {
-    fillTrackingDispatch(mCompileOnly);
-    fillTrackingDispatch(mDispatch);
-    GlDispatch& d = mDispatch;
-    d.glBegin = tBegin;
-    d.glEnd = tEnd;
-    d.glMatrixMode = tMatrixMode;
-    d.glLoadIdentity = tLoadIdentity;
-    d.glLoadMatrixf = tLoadMatrixf;
-    d.glLoadMatrixd = tLoadMatrixd;
-    d.glMultMatrixf = tMultMatrixf;
-    d.glMultMatrixd = tMultMatrixd;
-    d.glLoadTransposeMatrixf = tLoadTransposeMatrixf;
-    d.glLoadTransposeMatrixd = tLoadTransposeMatrixd;
-    d.glMultTransposeMatrixf = tMultTransposeMatrixf;
-    d.glMultTransposeMatrixd = tMultTransposeMatrixd;
-    d.glRotatef = tRotatef;
-    d.glRotated = tRotated;
-    d.glTranslatef = tTranslatef;
-    d.glTranslated = tTranslated;
-    d.glScalef = tScalef;
-    d.glScaled = tScaled;
-    d.glFrustum = tFrustum;
-    d.glOrtho = tOrtho;
-    d.glPushMatrix = tPushMatrix;
-    d.glPopMatrix = tPopMatrix;
-    d.glEnable = tEnable;
-    d.glDisable = tDisable;
-    d.glUseProgram = tUseProgram;
-    d.glMaterialfv = tMaterialfv;
-    d.glMaterialf = tMaterialf;
-    d.glMateriali = tMateriali;
-    d.glMaterialiv = tMaterialiv;
-    d.glNewList = tNewList;
-    d.glEndList = tEndList;
-    d.glCallList = tCallList;
-    d.glCallLists = tCallLists;
-    d.glListBase = tListBase;
-    d.glDeleteLists = tDeleteLists;
-    d.glBindTexture = tBindTexture;
-    d.glTexImage2D = tTexImage2D;
-    d.glTexSubImage2D = tTexSubImage2D;
-    d.glCopyTexImage2D = tCopyTexImage2D;
-    d.glTexStorage2D = tTexStorage2D;
-    d.glTexEnvi = tTexEnvi;
-    d.glTexGeni = tTexGen<GLint>;
-    d.glTexGenf = tTexGen<GLfloat>;
-    d.glTexGend = tTexGen<GLdouble>;
-    d.glTexGeniv = tTexGenv<GLint>;
-    d.glTexGenfv = tTexGenv<GLfloat>;
-    d.glTexGendv = tTexGenv<GLdouble>;
-    d.glTexEnvf = tTexEnvf;
-    d.glTexEnviv = tTexEnviv;
-    d.glTexEnvfv = tTexEnvfv;
-    d.glActiveTexture = tActiveTexture;
-    d.glEnableClientState = tEnableClientState;
-    d.glDisableClientState = tDisableClientState;
-    d.glClientActiveTexture = tClientActiveTexture;
-    d.glVertexPointer = tVertexPointer;
-    d.glNormalPointer = tNormalPointer;
-    d.glColorPointer = tColorPointer;
-    d.glTexCoordPointer = tTexCoordPointer;
-    d.glBindBuffer = tBindBuffer;
-    d.glBufferData = tBufferData;
-    d.glBufferSubData = tBufferSubData;
-    d.glDrawArrays = tDrawArrays;
-    d.glDrawElements = tDrawElements;
-    d.glDrawRangeElements = tDrawRangeElements;
-    d.glMultiDrawArrays = tMultiDrawArrays;
-    d.glArrayElement = tArrayElement;
-    d.glRectf = tRectf;
-    d.glRectd = tRectd;
-    d.glRecti = tRecti;
-    d.glRects = tRects;
-    d.glLightf = tLightf;
-    d.glLighti = tLighti;
-    d.glLightfv = tLightfv;
-    d.glLightiv = tLightiv;
-    d.glLightModelfv = tLightModelfv;
-    d.glLightModeliv = tLightModeliv;
-    d.glLightModelf = tLightModelf;
-    d.glLightModeli = tLightModeli;
-    d.glShadeModel = tShadeModel;
-    d.glPolygonMode = tPolygonMode;
-    d.glColorMask = tColorMask;
-    d.glColorMaterial = tColorMaterial;
-    d.glBlendFunc = tBlendFunc;
-    d.glBlendFuncSeparate = tBlendFuncSeparate;
-    d.glDepthMask = tDepthMask;
-    d.glDepthFunc = tDepthFunc;
-    d.glAlphaFunc = tAlphaFunc;
-    d.glPolygonOffset = tPolygonOffset;
-    d.glCullFace = tCullFace;
-    d.glFrontFace = tFrontFace;
-    d.glFogf = tFogf;
-    d.glFogi = tFogi;
-    d.glFogfv = tFogfv;
-    d.glFogiv = tFogiv;
-    d.glViewport = tViewport;
-    d.glDepthRange = tDepthRange;
-    d.glDepthRangef = tDepthRangef;
-    d.glScissor = tScissor;
-    d.glPushAttrib = tPushAttrib;
-    d.glPopAttrib = tPopAttrib;
-    d.glPushClientAttrib = tPushClientAttrib;
-    d.glPopClientAttrib = tPopClientAttrib;
-    d.glBitmap = tBitmap;
-    d.glDrawPixels = tDrawPixels;
-    d.glCopyPixels = tCopyPixels;
-    // While a list compiles, these only mark it as drawing something that is not held.
-    mCompileOnly.glBitmap = tBitmap;
-    mCompileOnly.glDrawPixels = tDrawPixels;
-    mCompileOnly.glCopyPixels = tCopyPixels;
-    mCompileOnly.glCallList = tCallListCompiled;
-    mCompileOnly.glMaterialfv = tMaterialfvCompiled;
-    mCompileOnly.glCallLists = tCallListsCompiled;
+    fillTrackerDispatch(mDispatch, mCompileOnly);
 }
 
 StateTracker::~StateTracker() = default;
@@ -600,12 +113,9 @@ bool StateTracker::runFrame(const uint8_t* data, size_t size, BlobSource* blobs,
 
 bool StateTracker::feed(const uint8_t* data, size_t size, BlobSource* blobs, std::string& error)
 {
-    StateTracker* previous = tTracker;
-    tTracker = this;
+    const TrackerScope scope(*this);
     mBlobs = blobs;
-    bool ok = runCalls(data, size, true, error);
-    tTracker = previous;
-    return ok;
+    return runCalls(data, size, true, error);
 }
 
 void StateTracker::takeBatches(std::vector<TrackedBatch>& out)
@@ -851,7 +361,7 @@ uint32_t StateTracker::depthUnits() const
         // The unit's 2D texture is the one it applies (a cube map or another target wins).
         const bool twoD = u == 0 ? a.texture2D && !(a.textureUnits & 1u)
                                  : ((a.texture2DUnits & ~a.cubeUnits) >> u) & 1u;
-        if (twoD && mDepthTextures.contains(mUnitTextures[size_t(u)])) units |= 1u << u;
+        if (twoD && mTextures.depth(mUnitTextures[size_t(u)])) units |= 1u << u;
     }
     return units;
 }
@@ -1018,8 +528,7 @@ styles::GeneratedTexture StateTracker::generatedTexture() const
     g.texture = unitTexture(u);
     if (g.texture == 0) return {};
     g.matrix = mMatrices.texture(u);
-    auto mean = mTextureMeans.find(mUnitTextures[size_t(u)]);
-    if (mean != mTextureMeans.end()) g.mean = mean->second;
+    if (const glm::vec3* mean = mTextures.mean(mUnitTextures[size_t(u)])) g.mean = *mean;
     return g;
 }
 
@@ -1079,7 +588,7 @@ GLuint StateTracker::sceneTexture(GLuint name) const
 {
     // The default texture, once it has an image (enabled without one, GL draws untextured:
     // so do the styles). GL has one default 2D texture, whichever unit binds it.
-    return name == 0 && mDefaultImage ? styles::kDefaultTexture : name;
+    return name == 0 && mTextures.defaultImage() ? styles::kDefaultTexture : name;
 }
 
 bool StateTracker::wouldHoldList(GLuint list) const
@@ -1686,8 +1195,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     batch.alphaFunc = cuts ? a.alphaFunc : GL_ALWAYS;
     batch.alphaRef = a.alphaRef;
     if (cuts && batch.texture != 0) {
-        auto it = mCutFeatures.find(styles::textureName(batch.texture));
-        batch.cutFeature = it != mCutFeatures.end() ? it->second : 0.0f;
+        batch.cutFeature = mTextures.cutFeature(styles::textureName(batch.texture));
         // A texture the test keeps whole, faded by its colours' alpha below what the test
         // keeps of it: a surface fading as a whole, not a shape (its cut not known).
         if (batch.cutFeature == kKeptWhole) {
@@ -1952,7 +1460,7 @@ bool StateTracker::opaqueAlpha(const TrackedBatch& batch) const
     const GLenum mode = u >= 0 ? a.envMode[size_t(u)] : GL_MODULATE;
     // The texture's alpha counts unless GL_DECAL (the fragment keeps the colour's alpha).
     if (batch.texture != 0 && mode != GL_DECAL &&
-        !mOpaqueTextures.contains(styles::textureName(batch.texture))) {
+        !mTextures.opaque(styles::textureName(batch.texture))) {
         return false;
     }
     if (mode == GL_REPLACE && batch.texture != 0) return true;
@@ -2031,11 +1539,11 @@ void StateTracker::replacedByTexture(TrackedBatch& batch) const
     if (batch.texture == 0 || u < 0) return;
     const GLenum mode = mAttrib.envMode[size_t(u)];
     const GLuint name = styles::textureName(batch.texture);
-    const bool opaque = mOpaqueTextures.contains(name);
+    const bool opaque = mTextures.opaque(name);
     // GL_REPLACE takes the texture's alpha too where it has one (kept opaque: opaqueAlpha);
     // an alpha-only texture replaces the alpha alone. GL_DECAL keeps the fragment's alpha and
     // mixes the colours by the texture's, so only an opaque texture replaces them.
-    if ((mode == GL_REPLACE && !mAlphaTextures.contains(name)) || (mode == GL_DECAL && opaque)) {
+    if ((mode == GL_REPLACE && !mTextures.alphaOnly(name)) || (mode == GL_DECAL && opaque)) {
         for (TrackedVertex& v : batch.vertices) v.color = glm::vec4(glm::vec3(1.0f), v.color.a);
     }
 }
@@ -2083,11 +1591,11 @@ bool StateTracker::layerEffect(int unit, glm::vec3& scale, glm::vec3& offset) co
     // The unit's texture: a cube map where one is enabled (GL takes it over a 2D one).
     glm::vec3 m;
     if (a.cubeUnits & (1u << u)) {
-        if (!cubeMean(mUnitCubeTextures[u], m)) return false;
+        if (!mTextures.cubeMean(mUnitCubeTextures[u], m)) return false;
     } else {
-        auto mean = mTextureMeans.find(mUnitTextures[u]);
-        if (mean == mTextureMeans.end()) return false;
-        m = mean->second;
+        const glm::vec3* mean = mTextures.mean(mUnitTextures[u]);
+        if (!mean) return false;
+        m = *mean;
     }
     GLenum function = a.envMode[u];
     float k = 1.0f;
@@ -2129,17 +1637,6 @@ void StateTracker::layerEffects(TrackedBatch& batch) const
     }
 }
 
-bool StateTracker::cubeMean(GLuint texture, glm::vec3& mean) const
-{
-    auto it = mCubeFaceMeans.find(texture);
-    if (it == mCubeFaceMeans.end()) return false;
-    glm::vec4 sum(0.0f);
-    for (const glm::vec4& face : it->second) sum += face;
-    if (sum.w == 0.0f) return false;
-    mean = glm::vec3(sum) / sum.w;
-    return true;
-}
-
 void StateTracker::texImage2D(GLenum target, GLint level, GLint internalFormat,
                               GLsizei width, GLsizei height, GLenum format, GLenum type,
                               const void* pixels)
@@ -2148,47 +1645,16 @@ void StateTracker::texImage2D(GLenum target, GLint level, GLint internalFormat,
         level == 0 && size_t(mActiveUnit) < mUnitCubeTextures.size()) {
         // A face of the bound cube map: its mean joins the others' (an environment the
         // styles drop keeps its tint).
-        glm::vec3 mean;
-        glm::vec4& face = mCubeFaceMeans[mUnitCubeTextures[size_t(mActiveUnit)]]
-                                        [target - GL_TEXTURE_CUBE_MAP_POSITIVE_X];
-        face = TextureImage(width, height, format, type, pixels, mImageBytes).mean(mean)
-                   ? glm::vec4(mean, 1.0f)
-                   : glm::vec4(0.0f);
+        mTextures.cubeFace(mUnitCubeTextures[size_t(mActiveUnit)],
+                           int(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X), width, height, format,
+                           type, pixels, mImageBytes);
         return;
     }
     if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
         return;
     }
-    const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
-    if (texture == 0) mDefaultImage = width > 0 && height > 0;
-    if (depthFormat(format)) mDepthTextures.insert(texture);
-    else mDepthTextures.erase(texture);
-    if (format == GL_ALPHA) mAlphaTextures.insert(texture);
-    else mAlphaTextures.erase(texture);
-    mOpaqueTextures.erase(texture);
-    mFilledLater.erase(texture);
-    mCutFeatures.erase(texture);
-    mTextureSizes[texture] = {width, height};
-    const TextureAlpha alpha = textureAlpha(internalFormat);
-    mTextureAlphas[texture] = alpha;
-    // No pixels (storage only, or from a pixel-unpack buffer): the content is not known here.
-    // Storage alone is filled by glTexSubImage2D next (SFML's way): those decide.
-    if (!pixels || mImageBytes == 0) {
-        mTextureHashes.erase(texture);
-        mTextureMeans.erase(texture);
-        if (!pixels) mFilledLater.insert(texture);
-        return;
-    }
-    const TextureImage image(width, height, format, type, pixels, mImageBytes, alpha);
-    if (image.opaque()) mOpaqueTextures.insert(texture);
-    glm::vec3 mean;
-    if (image.mean(mean)) mTextureMeans[texture] = mean;
-    else mTextureMeans.erase(texture);
-    const float feature = image.cutFeature({width, height});
-    if (feature > 0.0f) mCutFeatures[texture] = feature;
-    const uint64_t shape[4] = {uint64_t(width), uint64_t(height), format, type};
-    uint64_t hash = XXH3_64bits_withSeed(pixels, mImageBytes, XXH3_64bits(shape, sizeof shape));
-    mTextureHashes[texture] = hash == 0 ? 1 : hash;
+    mTextures.image2D(mUnitTextures[size_t(mActiveUnit)], internalFormat, width, height, format,
+                      type, pixels, mImageBytes);
 }
 
 void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalFormat, bool empty)
@@ -2196,32 +1662,7 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
         return;
     }
-    const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
-    // Nothing of an earlier upload holds any more: its hash, mean and opacity go. Formats
-    // without alpha read alpha 1.
-    mTextureHashes.erase(texture);
-    mTextureMeans.erase(texture);
-    mCutFeatures.erase(texture);
-    mTextureSizes.erase(texture); // its size is not followed here
-    if (empty) mFilledLater.insert(texture);
-    else mFilledLater.erase(texture);
-    const TextureAlpha alpha = textureAlpha(GLint(internalFormat));
-    mTextureAlphas[texture] = alpha;
-    const bool isDepth = depthFormat(internalFormat);
-    if (isDepth) mDepthTextures.insert(texture);
-    else mDepthTextures.erase(texture);
-    const GLenum alphaOnly[] = {GL_ALPHA, GL_ALPHA4, GL_ALPHA8, GL_ALPHA12, GL_ALPHA16};
-    if (std::find(std::begin(alphaOnly), std::end(alphaOnly), internalFormat) !=
-        std::end(alphaOnly)) {
-        mAlphaTextures.insert(texture);
-    } else {
-        mAlphaTextures.erase(texture);
-    }
-    if (isDepth || alpha == TextureAlpha::One) {
-        mOpaqueTextures.insert(texture);
-    } else {
-        mOpaqueTextures.erase(texture);
-    }
+    mTextures.storage2D(mUnitTextures[size_t(mActiveUnit)], internalFormat, empty);
 }
 
 void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
@@ -2230,40 +1671,13 @@ void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsi
     if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
         return;
     }
-    // Into storage made without pixels: opaque while every part filled so far is (parts never
-    // filled are undefined in GL). Into an image of known pixels: a part with alpha below 1
-    // makes it not opaque; an opaque part changes nothing.
-    const GLuint texture = mUnitTextures[size_t(mActiveUnit)];
-    // The texture's internal format decides which of the part's channels is its alpha.
-    auto made = mTextureAlphas.find(texture);
-    const TextureAlpha alpha =
-        made != mTextureAlphas.end() ? made->second : TextureAlpha::FromAlpha;
-    const TextureImage image(width, height, format, type, pixels, mImageBytes, alpha);
-    const bool opaque =
-        alpha == TextureAlpha::One || (pixels && mImageBytes != 0 && image.opaque());
-    mTextureHashes.erase(texture); // its content is no longer the hashed upload
-    mTextureMeans.erase(texture);
-    // The finest cut of the parts filled (an image given in parts, or by parts only).
-    auto size = mTextureSizes.find(texture);
-    const float feature =
-        size != mTextureSizes.end()
-            ? image.cutFeature(size->second) : 0.0f;
-    auto known = mCutFeatures.find(texture);
-    if (feature > 0.0f && (known == mCutFeatures.end() || feature < known->second)) {
-        mCutFeatures[texture] = feature;
-    }
-    if (!opaque) {
-        mOpaqueTextures.erase(texture);
-        mFilledLater.erase(texture);
-    } else if (mFilledLater.contains(texture)) {
-        mOpaqueTextures.insert(texture);
-    }
+    mTextures.subImage2D(mUnitTextures[size_t(mActiveUnit)], width, height, format, type,
+                         pixels, mImageBytes);
 }
 
 uint64_t StateTracker::textureHash(GLuint texture) const
 {
-    auto it = mTextureHashes.find(texture);
-    return it == mTextureHashes.end() ? 0 : it->second;
+    return mTextures.hash(texture);
 }
 
 void StateTracker::enableArray(GLenum cap, bool on)

@@ -6,6 +6,7 @@
 #include "frame/MatrixStacks.h"
 #include "frame/ShadowArrays.h"
 #include "frame/TextureImage.h"
+#include "frame/TextureTable.h"
 #include "reconstruct/Batch.h"
 #include "shim/Api.h"
 #include "stream/CallReader.h"
@@ -448,7 +449,6 @@ private:
     // A generated texture on GL_OBJECT_LINEAR planes becomes the batch's texture on
     // coordinates made from its vertices.
     void bakeObjectLinear(TrackedBatch& batch) const;
-    bool cubeMean(GLuint texture, glm::vec3& mean) const;
     bool keep(TrackedBatch& batch);
     std::vector<TrackedVertex> takeVertices();
     void recycle(std::vector<TrackedVertex>&& vertices);
@@ -481,19 +481,8 @@ private:
     std::array<glm::vec2, 8> mUnitTexcoords{}; // every unit's current coordinates
     int mSurfaceUnit = 0; // mCurrent.texcoord is this unit's
     int mLightUnit = -1;  // mCurrent.lightcoord is this unit's (-1: no lightmap)
-    std::map<GLuint, uint64_t> mTextureHashes;
-    std::set<GLuint> mOpaqueTextures; // level 0 uploaded with alpha 1 everywhere
-    std::set<GLuint> mAlphaTextures;  // level 0 of GL_ALPHA: GL_REPLACE keeps the colour
-    std::map<GLuint, glm::vec3> mTextureMeans; // level 0's mean colour, where it is known
-    std::map<GLuint, float> mCutFeatures; // level 0's cutFeature, where it is known
-    std::map<GLuint, glm::ivec2> mTextureSizes; // level 0's size as glTexImage2D gave it
-    std::map<GLuint, TextureAlpha> mTextureAlphas; // level 0's, by its internal format
     std::array<GLuint, 8> mUnitCubeTextures{}; // every unit's GL_TEXTURE_CUBE_MAP
-    // Each cube map's faces' level-0 means (w 1 where known), +X -X +Y -Y +Z -Z.
-    std::map<GLuint, std::array<glm::vec4, 6>> mCubeFaceMeans;
-    bool mDefaultImage = false;       // texture object 0 (2D) has a level 0 image
-    std::set<GLuint> mFilledLater;    // level 0 made without pixels, no part below alpha 1 yet
-    std::set<GLuint> mDepthTextures;  // level 0 of GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL
+    TextureTable mTextures; // what each texture's uploads made of it
     LeaveRules mRules;
     size_t mImageBytes = 0; // of the call being decoded
     int mActiveUnit = 0;
@@ -568,8 +557,5 @@ private:
     uint64_t mLastFrame = 0;
     bool mFrameDone = false;
 };
-
-// The tracker the generated attribute functions report to (set while one runs).
-StateTracker& currentTracker();
 
 } // namespace nprgl
