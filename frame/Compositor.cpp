@@ -988,40 +988,22 @@ void Compositor::buildScene()
     for (const reconstruct::FrameObject& o : mObjects) {
         const TrackedBatch& t = mTracked[o.firstBatch];
         styles::SceneObject s;
+        static_cast<styles::Appearance&>(s) = t; // the first batch's look is the object's
         s.mesh = o.mesh;
         s.modelview = o.modelview;
-        s.projection = t.projection;
         s.lightDir = lightDirection(t);
-        s.lights = t.lights;
-        s.texture = t.texture;
-        s.lightmap = t.lightmap;
-        s.layerScale = t.layerScale;
-        s.layerOffset = t.layerOffset;
-        s.translucent = t.translucent;
-        s.depthWrite = t.depthWrite;
-        s.depthTest = t.depthTest;
-        s.depthAlways = t.depthAlways;
-        s.depthFunc = t.depthFunc;
         // One cull state for the object: its batches' when they agree (the first batch's
         // lost the others' faces where they did not). Where they do not, no one state culls
         // what each of them culled: the object is drawn whole, and depth hides the back of a
         // closed one as the culling did.
-        s.culled = t.culled;
         for (uint32_t b = 1; b < o.batchCount; ++b) {
             if (mTracked[o.firstBatch + b].culled != t.culled) s.culled = 0;
         }
-        s.generated = t.generated;
-        s.normals = t.normals;
-        s.alphaFunc = t.alphaFunc;
-        s.alphaRef = t.alphaRef;
-        for (uint32_t b = 0; b < o.batchCount; ++b) {
+        // The finest cut of its batches'.
+        for (uint32_t b = 1; b < o.batchCount; ++b) {
             const float f = mTracked[o.firstBatch + b].cutFeature;
             if (f > 0.0f && (s.cutFeature == 0.0f || f < s.cutFeature)) s.cutFeature = f;
         }
-        s.depthOnly = t.depthOnly;
-        s.offsetFactor = t.offsetFactor;
-        s.offsetUnits = t.offsetUnits;
-        s.fog = {t.fogMode, t.fogStart, t.fogEnd, t.fogDensity, t.fogColour};
         textureRuns(o, s);
         s.id = uint32_t(mScene.objects.size() + 1);
         mScene.objects.push_back(std::move(s));

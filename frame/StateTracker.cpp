@@ -1211,11 +1211,7 @@ bool StateTracker::keep(TrackedBatch& batch)
     // Decals: the styles pull the surface towards the eye by the program's offset.
     batch.offsetFactor = a.polygonOffsetFill ? a.offsetFactor : 0.0f;
     batch.offsetUnits = a.polygonOffsetFill ? a.offsetUnits : 0.0f;
-    batch.fogMode = a.fog ? a.fogMode : 0;
-    batch.fogStart = a.fogStart;
-    batch.fogEnd = a.fogEnd;
-    batch.fogDensity = a.fogDensity;
-    batch.fogColour = a.fogColour;
+    batch.fog = {a.fog ? a.fogMode : 0, a.fogStart, a.fogEnd, a.fogDensity, a.fogColour};
     batch.viewport = a.viewport;
     applyTextureMatrices(batch);
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.

@@ -33,20 +33,16 @@ enum class Attrib { Vertex, Normal, Color, TexCoord };
 using TrackedVertex = reconstruct::Vertex;
 
 
-// One polygonal draw of a frame, with the state reconstruction and the styles need.
-struct TrackedBatch {
+// One polygonal draw of a frame: its vertices and the state reconstruction needs, and its
+// look (styles::Appearance), which the scene object drawn from it takes whole.
+struct TrackedBatch : styles::Appearance {
     GLenum mode = GL_TRIANGLES;
     std::vector<TrackedVertex> vertices;
     glm::mat4 modelview{1.0f};
-    glm::mat4 projection{1.0f};
     uint32_t materialId = 0;
     bool hasNormals = false;
     bool is3D = false; // perspective projection or depth test on: what nprgl stylises
     bool held = false; // the compositor held it back (only when holding is on)
-    // Every enabled light when the draw was lit, the brightest first (none: unlit, or no
-    // light on).
-    styles::SceneLights lights;
-    GLenum normals = GL_NORMALIZE; // styles::SceneObject::normals
     // glMaterial colours set between glBegin and glEnd (per face or per vertex, as
     // programs set them): each from vertex `first` on; before the first, the material at
     // glBegin. Empty: the material at the draw colours every vertex.
@@ -61,41 +57,12 @@ struct TrackedBatch {
     std::vector<MaterialChange> materials;
     glm::vec4 beginMaterial{0.8f, 0.8f, 0.8f, 1.0f}; // the diffuse at glBegin
     glm::vec3 beginAmbient{0.2f};                     // and the ambient
-    GLuint texture = 0; // bound GL_TEXTURE_2D when enabled
-    // A texture on coordinates GL generates on the surface unit (texture is then 0).
-    styles::GeneratedTexture generated;
-    GLuint lightmap = 0; // the lightmap layered over it (lightUnit), 0: none
-    // What the layers the styles do not draw (droppedLayers) do to its colour on average:
-    // c scale + offset, from each layer's texture mean (a detail texture added signed over
-    // a terrain keeps the terrain's brightness). Identity where a layer is not followed.
-    glm::vec3 layerScale{1.0f};
-    glm::vec3 layerOffset{0.0f};
-    // Blended by its alpha over what is behind (StateTracker::translucent).
-    bool translucent = false;
-    bool depthWrite = true;
-    bool depthTest = true; // off: a sky or backdrop drawn first, or a 3D mark drawn on top
-    bool depthAlways = false; // the test on at GL_ALWAYS: none, but depthWrite writes depth
-    GLenum depthFunc = GL_LESS;
-    GLenum alphaFunc = GL_ALWAYS; // the alpha test, GL_ALWAYS when off
-    float alphaRef = 0.0f;
-    // Under the alpha test, how fine its texture's cut is (TextureImage::cutFeature), in
-    // texture coordinate units; 0 when not known, kKeptWhole when the test cuts nothing of
-    // the texture (a mostly opaque blended surface, shaped by its polygons).
-    float cutFeature = 0.0f;
-    bool depthOnly = false; // drawn with no colour channel: it only supplies depth
-    float offsetFactor = 0.0f, offsetUnits = 0.0f; // GL_POLYGON_OFFSET_FILL's, 0 when off
-    GLenum fogMode = 0; // GL_LINEAR, GL_EXP, GL_EXP2; 0 when fog is off
-    float fogStart = 0.0f, fogEnd = 1.0f, fogDensity = 1.0f;
-    glm::vec3 fogColour{0.0f};
     glm::ivec4 viewport{0, 0, 0, 0};
     uint64_t contentHash = 0; // reconstruct::hashVertices of the kept batch (0: not computed)
     // Drawn under glFrontFace(GL_CW): reconstruction assembles it the other way round, so
     // that the program's front faces are counter-clockwise in every batch of an object
     // (xscreensaver's involute gears turn the front face between the rings of one gear).
     bool clockwise = false;
-    // The winding culled (GL_CW, GL_CCW) in that assembled winding, all (GL_FRONT_AND_BACK) or
-    // none (0): two passes over one mesh that cull opposite faces draw different triangles.
-    GLenum culled = 0;
 };
 
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix

@@ -78,50 +78,34 @@ struct GeneratedTexture {
     glm::vec3 mean{1.0f};
 };
 
-// One object the compositor held back: a welded mesh and the state it was drawn with.
-// Colours per corner (mesh->corner(f, k).color) are what the program's picture shows: the
-// current colour, or the material's diffuse when it lit the object without colour-material.
-struct SceneObject {
-    std::shared_ptr<const reconstruct::ObjectMesh> mesh;
-    glm::mat4 modelview{1.0f};
+// How a draw looks, as the program's state at it says: what the tracker records per batch
+// (frame/StateTracker's TrackedBatch) and the styles draw each object with (SceneObject), one
+// record for both, so nothing is copied field by field between them.
+struct Appearance {
     glm::mat4 projection{1.0f};
-    // Towards the light in eye space, unit: the brightest enabled light's position (or
-    // direction) when the program lit the object, else a head-light from the upper left.
-    glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
-    // Every light the program lit it with (none: lightDir alone, a head-light).
+    // Every light the program lit it with, the brightest first (none: unlit, or no light on).
     SceneLights lights;
     // The normal GL lights by and reflects a sphere map about: the program's as the modelview
     // moved it, unit only under GL_NORMALIZE (GL_RESCALE_NORMAL takes out the modelview's
     // scale). 0, GL_NORMALIZE or GL_RESCALE_NORMAL. blocktube's normals are 0.7 long, and
     // boxed scales its balls by 3 without either: GL shows them a third as lit.
     GLenum normals = GL_NORMALIZE;
-    // Shaded in one even light (the shading styles' middle band): a sky or backdrop the
-    // program did not light, which a head-light would shade by its faces' arbitrary normals.
-    bool flatLight = false;
-    // The winding the program culled (GL_CW, GL_CCW), all (GL_FRONT_AND_BACK) or none (0):
-    // the styles cull the same faces (FaceCulling).
+    // The winding the program culled (GL_CW, GL_CCW) in the winding batches are assembled in,
+    // all (GL_FRONT_AND_BACK) or none (0): the styles cull the same faces (FaceCulling). Two
+    // passes over one mesh that cull opposite faces draw different triangles.
     GLenum culled = 0;
     // A texture on generated coordinates (texture is then 0): ShadingCommon::withGenerated.
     GeneratedTexture generated;
-    GLuint texture = 0;            // the program's GL_TEXTURE_2D when enabled, else 0
+    GLuint texture = 0; // the program's GL_TEXTURE_2D when enabled, else 0
     // A lightmap layered over the texture (its own coordinates: Vertex::lightcoord): with no
     // GL lighting, the shading styles take their light from it instead of L·n. 0: none.
     GLuint lightmap = 0;
-    // What the program's layers over the texture that the styles do not draw do to the colour
-    // on average (c scale + offset, before fog; TrackedBatch::layerScale).
+    // What the program's layers over the texture that the styles do not draw do to its colour
+    // on average: c scale + offset, before fog, from each layer's texture mean (a detail
+    // texture added signed over a terrain keeps the terrain's brightness). Identity where a
+    // layer is not followed.
     glm::vec3 layerScale{1.0f};
     glm::vec3 layerOffset{0.0f};
-    // Faces drawn with another texture than `texture` (a cube with a texture per face is one
-    // object): runs of consecutive faces, in the mesh's face order, covering all of them.
-    // Empty when every face has `texture`.
-    struct TextureRun {
-        uint32_t firstFace = 0;
-        uint32_t faceCount = 0;
-        GLuint texture = 0;
-        GLuint lightmap = 0;
-    };
-    std::vector<TextureRun> textureRuns;
-    uint32_t id = 0;               // 1, 2, ... in drawing order: for ID buffers
     // Blended over what is behind it by its alpha (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA):
     // drawn by the shading style after the opaque scene, with its depth writes as the program
     // had them (StyleChain::render).
@@ -143,14 +127,17 @@ struct SceneObject {
     // cut draw their lines (Style::outlinesCutOuts).
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;
-    // How fine the cut of its alpha-tested texture is, in texture coordinate units (the
-    // finest of its batches'; 0: not known).
+    // Under the alpha test, how fine its texture's cut is (TextureImage::cutFeature), in
+    // texture coordinate units (an object's: the finest of its batches'); 0 when not known,
+    // kKeptWhole when the test cuts nothing of the texture (a mostly opaque blended surface,
+    // shaped by its polygons).
     float cutFeature = 0.0f;
     // Drawn by the program with no colour channel (a depth pre-pass, an occluder): the chain
     // writes its depth after the opaque scene and draws no colour for it.
     bool depthOnly = false;
-    // The program's polygon offset (decals on a surface): applied in the shading pass;
-    // outline styles leave such objects out (their edges would fight the surface's).
+    // The program's polygon offset (GL_POLYGON_OFFSET_FILL's, 0 when off; decals on a
+    // surface): applied in the shading pass; outline styles leave such objects out (their
+    // edges would fight the surface's).
     float offsetFactor = 0.0f, offsetUnits = 0.0f;
     bool special() const
     {
@@ -166,6 +153,31 @@ struct SceneObject {
         float start = 0.0f, end = 1.0f, density = 1.0f;
         glm::vec3 colour{0.0f};
     } fog;
+};
+
+// One object the compositor held back: a welded mesh and the state it was drawn with.
+// Colours per corner (mesh->corner(f, k).color) are what the program's picture shows: the
+// current colour, or the material's diffuse when it lit the object without colour-material.
+struct SceneObject : Appearance {
+    std::shared_ptr<const reconstruct::ObjectMesh> mesh;
+    glm::mat4 modelview{1.0f};
+    // Towards the light in eye space, unit: the brightest enabled light's position (or
+    // direction) when the program lit the object, else a head-light from the upper left.
+    glm::vec3 lightDir{0.0f, 0.0f, 1.0f};
+    // Shaded in one even light (the shading styles' middle band): a sky or backdrop the
+    // program did not light, which a head-light would shade by its faces' arbitrary normals.
+    bool flatLight = false;
+    // Faces drawn with another texture than `texture` (a cube with a texture per face is one
+    // object): runs of consecutive faces, in the mesh's face order, covering all of them.
+    // Empty when every face has `texture`.
+    struct TextureRun {
+        uint32_t firstFace = 0;
+        uint32_t faceCount = 0;
+        GLuint texture = 0;
+        GLuint lightmap = 0;
+    };
+    std::vector<TextureRun> textureRuns;
+    uint32_t id = 0;               // 1, 2, ... in drawing order: for ID buffers
 
     // Whether any face is drawn with a texture of the program's.
     bool textured() const

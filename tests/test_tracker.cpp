@@ -1908,7 +1908,7 @@ TEST(StateTracker, FloatModesThatNameNoModeChangeNothing)
     std::vector<TrackedBatch> batches;
     tracker.takeBatches(batches);
     ASSERT_EQ(batches.size(), 1u);
-    EXPECT_EQ(batches[0].fogMode, GLenum(GL_LINEAR));
+    EXPECT_EQ(batches[0].fog.mode, GLenum(GL_LINEAR));
     EXPECT_EQ(batches[0].generated.mode[0], GLenum(GL_EYE_LINEAR)); // GL's default, kept
 }
 
