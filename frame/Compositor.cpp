@@ -992,16 +992,14 @@ void Compositor::buildScene()
         s.mesh = o.mesh;
         s.modelview = o.modelview;
         s.lightDir = lightDirection(t);
-        // One cull state for the object: its batches' when they agree (the first batch's
-        // lost the others' faces where they did not). Where they do not, no one state culls
-        // what each of them culled: the object is drawn whole, and depth hides the back of a
-        // closed one as the culling did.
+        // What the object's other batches change in it. One cull state: its batches' when
+        // they agree (the first batch's lost the others' faces where they did not). Where they
+        // do not, no one state culls what each of them culled: the object is drawn whole, and
+        // depth hides the back of a closed one as the culling did. And the finest cut of all.
         for (uint32_t b = 1; b < o.batchCount; ++b) {
-            if (mTracked[o.firstBatch + b].culled != t.culled) s.culled = 0;
-        }
-        // The finest cut of its batches'.
-        for (uint32_t b = 1; b < o.batchCount; ++b) {
-            const float f = mTracked[o.firstBatch + b].cutFeature;
+            const TrackedBatch& other = mTracked[o.firstBatch + b];
+            if (other.culled != t.culled) s.culled = 0;
+            const float f = other.cutFeature;
             if (f > 0.0f && (s.cutFeature == 0.0f || f < s.cutFeature)) s.cutFeature = f;
         }
         textureRuns(o, s);

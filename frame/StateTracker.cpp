@@ -9,8 +9,6 @@
 #include "stream/Opcodes.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <xxhash.h>
 
 #include <algorithm>

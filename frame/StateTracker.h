@@ -18,7 +18,6 @@
 #include <array>
 #include <cstdint>
 #include <map>
-#include <set>
 #include <memory>
 #include <string>
 #include <unordered_map>
