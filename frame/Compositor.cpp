@@ -954,6 +954,7 @@ void Compositor::buildScene()
         b.modelview = t.modelview;
         b.materialId = t.materialId;
         b.clockwise = t.clockwise;
+        b.quadCut = t.quadCut;
         // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render),
         // also among those drawn without the depth test or depth writes (bzflag's cloud layer,
         // blended, joined the opaque ground drawn before it and covered its sky in white).

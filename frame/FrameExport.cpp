@@ -15,6 +15,8 @@ std::vector<reconstruct::Batch> reconstructionBatches(const std::vector<TrackedB
         b.mode = tb.mode;
         b.modelview = tb.modelview;
         b.materialId = tb.materialId;
+        b.clockwise = tb.clockwise;
+        b.quadCut = tb.quadCut;
         b.vertices = tb.vertices; // the same vertex type: one copy, no conversion
         b.contentHash = tb.contentHash != 0 ? tb.contentHash : reconstruct::hashBatch(b);
         out.push_back(std::move(b));

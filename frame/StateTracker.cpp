@@ -1214,7 +1214,9 @@ bool StateTracker::keep(TrackedBatch& batch)
     applyTextureMatrices(batch);
     // Hashed now, while the vertices are in the cache; reconstruction looks its mesh up by it.
     batch.contentHash =
-        reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);
+        reconstruct::hashVertices(batch.vertices.data(), batch.vertices.size(),
+                                  reconstruct::assemblyMode(batch.mode, batch.clockwise,
+                                                            batch.quadCut));
     return true;
 }
 
@@ -1399,6 +1401,8 @@ void StateTracker::callListBody(GLuint list)
             batch.vertices = takeVertices();
             batch.vertices.assign(compiled.vertices.begin(), compiled.vertices.end());
             batch.mode = compiled.mode;
+            // The driver draws a list's quads as indexed ones (reconstruct::QuadCut).
+            batch.quadCut = reconstruct::QuadCut::V1V3;
             batch.hasNormals = compiled.hasNormals;
             batch.materials = compiled.materials;
             batch.beginMaterial = compiled.beginMaterial;
@@ -1877,6 +1881,7 @@ void StateTracker::drawElements(GLenum mode, GLsizei count, GLenum type, const v
     if (!data) return;
     TrackedBatch batch;
     batch.mode = mode;
+    batch.quadCut = reconstruct::QuadCut::V1V3; // indexed (reconstruct::QuadCut)
     batch.hasNormals = currentNormalCounts() || mArrayState[kNormalArray].array.enabled;
     batch.vertices = takeVertices();
     batch.vertices.reserve(size_t(count));

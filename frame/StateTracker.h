@@ -62,6 +62,7 @@ struct TrackedBatch : styles::Appearance {
     // that the program's front faces are counter-clockwise in every batch of an object
     // (xscreensaver's involute gears turn the front face between the rings of one gear).
     bool clockwise = false;
+    reconstruct::QuadCut quadCut = reconstruct::QuadCut::V0V2; // as the driver cuts its quads
 };
 
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix

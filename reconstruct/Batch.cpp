@@ -6,7 +6,7 @@ namespace nprgl::reconstruct {
 
 uint64_t hashBatch(const Batch& batch) noexcept
 {
-    return hashVertices(batch.vertices.data(), batch.vertices.size(), batch.mode);
+    return hashVertices(batch.vertices.data(), batch.vertices.size(), assemblyMode(batch));
 }
 
 uint64_t hashVertices(const Vertex* vertices, size_t count, uint32_t mode) noexcept

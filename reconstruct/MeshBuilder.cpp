@@ -467,7 +467,8 @@ std::shared_ptr<ObjectMesh> MeshBuilder::build(const Batch* batches, size_t coun
                 } else {
                     mTriangles.insert(mTriangles.end(), {i0, i1, i2});
                 }
-            });
+            },
+            batches[b].quadCut);
         state.batchFaceEnd.push_back(uint32_t(mTriangles.size() / 3));
         base += n;
     }

@@ -4,15 +4,18 @@
 
 #include <GL/gl.h> // primitive-mode constants only; nothing here calls GL
 
+#include "reconstruct/Batch.h"
+
 namespace nprgl::reconstruct {
 
 // Calls emit(a, b, c) for every triangle of one primitive of `count` vertices (indices from its
 // first vertex) with the winding the GL rasterises: strips alternate so that every triangle
-// keeps the first one's orientation, quads split along v0-v2, a quad strip's quad j is
-// (2j, 2j+1, 2j+3, 2j+2), polygons are fans. Returns the number of trailing vertices that make
+// keeps the first one's orientation, quads split along the diagonal `cut` names, a quad strip's
+// quad j is (2j, 2j+1, 2j+3, 2j+2) split along 2j-(2j+3), polygons are fans. Returns the number of trailing vertices that make
 // no primitive (the GL ignores them); modes without triangles return `count`.
 template <typename Emit>
-uint32_t assembleTriangles(uint32_t mode, uint32_t count, Emit&& emit)
+uint32_t assembleTriangles(uint32_t mode, uint32_t count, Emit&& emit,
+                           QuadCut cut = QuadCut::V0V2)
 {
     switch (mode) {
     case GL_TRIANGLES:
@@ -32,8 +35,13 @@ uint32_t assembleTriangles(uint32_t mode, uint32_t count, Emit&& emit)
         return 0;
     case GL_QUADS:
         for (uint32_t i = 0; i + 3 < count; i += 4) {
-            emit(i, i + 1, i + 2);
-            emit(i, i + 2, i + 3);
+            if (cut == QuadCut::V1V3) {
+                emit(i, i + 1, i + 3);
+                emit(i + 1, i + 2, i + 3);
+            } else {
+                emit(i, i + 1, i + 2);
+                emit(i, i + 2, i + 3);
+            }
         }
         return count % 4;
     case GL_QUAD_STRIP:

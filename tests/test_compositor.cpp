@@ -651,6 +651,32 @@ TEST(Compositor, BatchesCulledByTheirOwnFrontFaceKeepTheirFaces)
     }
 }
 
+// GL leaves to the implementation which diagonal cuts a quad into two triangles, and Mesa cuts
+// glBegin/glEnd quads along v0-v2 but indexed ones and display lists' along v1-v3. The replica
+// cuts each as the driver does: three quads with a colour per corner (red, green, white,
+// blue) show red and white meeting at the centre of the first, green and blue at the centre of
+// the other two, natively and in replica (the replica cut all three along v0-v2: pulsar's
+// listed quads came out with the wrong colours across their middles).
+TEST(Compositor, TheReplicaCutsQuadsAlongTheDiagonalTheDriverDoes)
+{
+    const PngImage native =
+        readPng(demoFrame("displaylist", "quad_cut_none", {"--style", "none"}, {"--corner-quads"}));
+    const PngImage replica = readPng(
+        demoFrame("displaylist", "quad_cut_replica", {"--style", "replica"}, {"--corner-quads"}));
+    ASSERT_FALSE(native.rgba.empty() || replica.rgba.empty());
+    const bool redCentre[3] = {true, false, false};
+    for (int q = 0; q < 3; ++q) {
+        const int x = 58 + 102 * q, y = 120; // the quads' centres at 320 x 240
+        const uint8_t* n = pixel(native, x, y);
+        const uint8_t* r = pixel(replica, x, y);
+        // Red there is 255 where red (v0) and white (v2) meet, 0 where green and blue do.
+        EXPECT_EQ(n[0] > 128, redCentre[q]) << "quad " << q << ": the driver cuts otherwise";
+        EXPECT_NEAR(r[0], n[0], 24) << "quad " << q;
+        EXPECT_NEAR(r[1], n[1], 24) << "quad " << q;
+        EXPECT_NEAR(r[2], n[2], 24) << "quad " << q;
+    }
+}
+
 // glxgears turns its gears by the time between frames, and its first frame has had none:
 // frame 1 shows the gears at angle 0 in every run, so style none and toon can be compared.
 TEST(Compositor, GlxgearsInToonKeepsItsRedGreenAndBlueGears)

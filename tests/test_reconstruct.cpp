@@ -145,11 +145,12 @@ void expectOutward(const ObjectMesh& m, glm::vec3 centre = glm::vec3(0.0f))
     }
 }
 
-std::vector<glm::uvec3> triangles(uint32_t mode, uint32_t count, uint32_t* leftover = nullptr)
+std::vector<glm::uvec3> triangles(uint32_t mode, uint32_t count, uint32_t* leftover = nullptr,
+                                  QuadCut cut = QuadCut::V0V2)
 {
     std::vector<glm::uvec3> out;
     const uint32_t left = assembleTriangles(
-        mode, count, [&](uint32_t a, uint32_t b, uint32_t c) { out.emplace_back(a, b, c); });
+        mode, count, [&](uint32_t a, uint32_t b, uint32_t c) { out.emplace_back(a, b, c); }, cut);
     if (leftover) *leftover = left;
     return out;
 }
@@ -168,6 +169,8 @@ TEST(Assembly, EveryModeWithGlWinding)
     EXPECT_EQ(triangles(GL_QUADS, 9, &left),
               (std::vector<glm::uvec3>{{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}));
     EXPECT_EQ(left, 1u);
+    EXPECT_EQ(triangles(GL_QUADS, 8, &left, QuadCut::V1V3),
+              (std::vector<glm::uvec3>{{0, 1, 3}, {1, 2, 3}, {4, 5, 7}, {5, 6, 7}}));
     EXPECT_EQ(triangles(GL_QUAD_STRIP, 7, &left),
               (std::vector<glm::uvec3>{{0, 1, 3}, {0, 3, 2}, {2, 3, 5}, {2, 5, 4}}));
     EXPECT_EQ(left, 1u);
@@ -175,6 +178,18 @@ TEST(Assembly, EveryModeWithGlWinding)
     EXPECT_EQ(left, 2u);
     EXPECT_TRUE(triangles(GL_LINES, 6, &left).empty());
     EXPECT_EQ(left, 6u);
+}
+
+// The same vertices cut along the other diagonal are other triangles: a batch whose cut
+// changes is a new mesh, not an update of the old one's positions.
+TEST(Assembly, TheQuadCutIsPartOfWhatABatchIs)
+{
+    Batch a = batch(GL_QUADS, {vertex({0, 0, 0}), vertex({1, 0, 0}), vertex({1, 1, 0.5f}),
+                               vertex({0, 1, 0})});
+    Batch b = a;
+    b.quadCut = QuadCut::V1V3;
+    EXPECT_NE(assemblyMode(a), assemblyMode(b));
+    EXPECT_NE(hashBatch(a), hashBatch(b));
 }
 
 TEST(Assembly, StripKeepsOrientation)

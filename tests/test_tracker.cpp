@@ -155,8 +155,9 @@ TEST(StateTracker, VerticesCarryTheirBatchNormalFlagAndContentHash)
         ASSERT_FALSE(batches.empty()) << name;
         for (const TrackedBatch& b : batches) {
             for (const TrackedVertex& v : b.vertices) ASSERT_EQ(v.hasNormal, b.hasNormals) << name;
+            const uint32_t mode = reconstruct::assemblyMode(b.mode, b.clockwise, b.quadCut);
             EXPECT_EQ(b.contentHash,
-                      reconstruct::hashVertices(b.vertices.data(), b.vertices.size(), b.mode))
+                      reconstruct::hashVertices(b.vertices.data(), b.vertices.size(), mode))
                 << name;
         }
     }

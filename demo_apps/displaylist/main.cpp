@@ -135,6 +135,20 @@ void drawAxle(float radius, float length)
     glEnd();
 }
 
+// Corners of a quad 2.4 wide at (x, 0, -20) facing the eye, and their colours: red, green,
+// white, blue, so the diagonal the driver cuts it along shows at its centre (red and white
+// meet on v0-v2, green and blue on v1-v3).
+const float kCornerColours[4][3] = {{1, 0, 0}, {0, 1, 0}, {1, 1, 1}, {0, 0, 1}};
+void cornerQuad(float x, float corners[4][3])
+{
+    const float c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int i = 0; i < 4; ++i) {
+        corners[i][0] = x + 1.2f * c[i][0];
+        corners[i][1] = 1.2f * c[i][1];
+        corners[i][2] = -20.0f;
+    }
+}
+
 class DisplayListScene : public demo::Scene {
 public:
     std::vector<demo::ExtraOption> extraOptions() const override
@@ -152,7 +166,11 @@ public:
                 {"clockwise-fronts", demo::ExtraOption::Kind::Flag,
                  "the gears' front faces are wound clockwise and drawn under "
                  "glFrontFace(GL_CW) inside their lists, the rest counter-clockwise (the "
-                 "same picture), as xscreensaver's involute gears turn the front face"}};
+                 "same picture), as xscreensaver's involute gears turn the front face"},
+                {"corner-quads", demo::ExtraOption::Kind::Flag,
+                 "instead of the gears, three unlit GL_QUADS with a colour per corner, drawn "
+                 "by glBegin/glEnd, glDrawElements and a display list (left to right): where "
+                 "the driver cuts each into triangles shows at its centre"}};
     }
 
     bool init(const demo::Options& options, std::string& error) override
@@ -161,6 +179,7 @@ public:
         glowingPlate_ = options.has("glowing-plate");
         shadowList_ = options.has("shadow-list");
         clockwiseFronts_ = options.has("clockwise-fronts");
+        cornerQuads_ = options.has("corner-quads");
         base_ = glGenLists(listCount);
         if (base_ == 0) {
             error = "glGenLists failed";
@@ -223,6 +242,19 @@ public:
         compileGear(gear1List, 0.8f, 0.1f, 0.0f, 1.0f, 4.0f, 1.0f, 20);
         compileGear(gear2List, 0.0f, 0.8f, 0.2f, 0.5f, 2.0f, 2.0f, 10);
         compileGear(gear3List, 0.2f, 0.2f, 1.0f, 1.3f, 2.0f, 0.5f, 10);
+        if (cornerQuads_) {
+            quadList_ = glGenLists(1);
+            float corners[4][3];
+            cornerQuad(3.4f, corners);
+            glNewList(quadList_, GL_COMPILE);
+            glBegin(GL_QUADS);
+            for (int i = 0; i < 4; ++i) {
+                glColor3fv(kCornerColours[i]);
+                glVertex3fv(corners[i]);
+            }
+            glEnd();
+            glEndList();
+        }
         return true;
     }
 
@@ -231,6 +263,10 @@ public:
         float angle = frame * 2.0f;
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glLoadIdentity();
+        if (cornerQuads_) {
+            drawCornerQuads();
+            return;
+        }
         glTranslatef(0.0f, 0.0f, -40.0f);
         glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
         glRotatef(30.0f + frame * 0.25f, 0.0f, 1.0f, 0.0f);
@@ -264,11 +300,38 @@ public:
 
     void shutdown() override
     {
+        if (quadList_) glDeleteLists(quadList_, 1);
         glDeleteLists(base_, listCount);
         if (shadow_) glDeleteLists(shadow_, 1);
     }
 
 private:
+    void drawCornerQuads()
+    {
+        glDisable(GL_LIGHTING);
+        glDisable(GL_CULL_FACE);
+        float corners[4][3];
+        cornerQuad(-3.4f, corners);
+        glBegin(GL_QUADS);
+        for (int i = 0; i < 4; ++i) {
+            glColor3fv(kCornerColours[i]);
+            glVertex3fv(corners[i]);
+        }
+        glEnd();
+        cornerQuad(0.0f, corners);
+        const GLubyte order[4] = {0, 1, 2, 3};
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glVertexPointer(3, GL_FLOAT, 0, corners);
+        glColorPointer(3, GL_FLOAT, 0, kCornerColours);
+        glDrawElements(GL_QUADS, 4, GL_UNSIGNED_BYTE, order);
+        glDisableClientState(GL_COLOR_ARRAY);
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glCallList(quadList_);
+        glEnable(GL_CULL_FACE);
+        glEnable(GL_LIGHTING);
+    }
+
     void compileGear(GLuint offset, float r, float g, float b, float inner, float outer,
                      float width, int teeth)
     {
@@ -294,7 +357,9 @@ private:
     bool glowingPlate_ = false;
     bool shadowList_ = false;
     bool clockwiseFronts_ = false;
+    bool cornerQuads_ = false;
     GLuint shadow_ = 0;
+    GLuint quadList_ = 0;
 };
 
 } // namespace
