@@ -43,6 +43,8 @@ public:
     // Points the dispatch slots the compositor needs at its own functions; the previous
     // slots (recording functions) are what they call next.
     void install(GlDispatch& dispatch);
+    // Points `dispatch`'s glEnd at the compositor's (the table of an open held glBegin).
+    static void installEnd(GlDispatch& dispatch);
 
     // The Recorder's hooks: the tracker consumes a glBegin..glEnd before the recorder
     // replaces it with a blob reference, and restarts when the Stream is cleared.

@@ -68,8 +68,10 @@ struct TrackedBatch : styles::Appearance {
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix
 // stacks, current attributes, materials and lighting, client arrays and buffer contents,
 // display lists (with glCallLists, glListBase and nesting) — by interpreting a stream's
-// decoded calls, and collects the frame's polygonal batches. The first user is mesh export;
-// the frame compositor will run the same tracker live.
+// decoded calls, and collects the frame's polygonal batches, for the compositor (live) and
+// for replay and mesh export. Defined by state group: StateTracker.cpp (frames, immediate
+// mode, enables, the batch finisher), TrackerArrays.cpp, TrackerLists.cpp,
+// TrackerTextures.cpp, TrackerLighting.cpp and TrackerHold.cpp (what is held and why).
 class StateTracker {
 public:
     static constexpr bool kReplays = true; // the decodeCall sink interface
