@@ -247,6 +247,20 @@ TEST(CommandFacts, SayWhatEachCommandIs)
     EXPECT_TRUE(is(op::glEvalCoord2f, fact::kHeld));
     EXPECT_FALSE(is(op::glColor3f, fact::kHeld));
     EXPECT_FALSE(is(op::glNormal3f, fact::kHeld));
+    // The compositor has a thunk for every draw the tracker follows outside glBegin/glEnd
+    // (a draw it lacked would reach the driver unheld, drawn twice under a shading style),
+    // for the list calls, and for no attribute or vertex inside glBegin/glEnd.
+    for (uint16_t i = 0; i < op::kCount; ++i) {
+        const std::string name = kOpcodeNames[i];
+        if (is(i, fact::kVertex) && name.rfind("glVertex", 0) != 0 && name != "glArrayElement") {
+            EXPECT_TRUE(is(i, fact::kIntercepted)) << name;
+        }
+    }
+    EXPECT_TRUE(is(op::glCallList, fact::kIntercepted));
+    EXPECT_TRUE(is(op::glCallLists, fact::kIntercepted));
+    EXPECT_TRUE(is(op::glClear, fact::kIntercepted));
+    EXPECT_FALSE(is(op::glVertex3f, fact::kIntercepted));
+    EXPECT_FALSE(is(op::glColor3f, fact::kIntercepted));
 }
 
 TEST(GlSizes, ImagesFollowTheUnpackState)
