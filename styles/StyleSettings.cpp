@@ -1,10 +1,13 @@
 #include "styles/StyleSettings.h"
 
 #include "common/KeyValue.h"
+#include "common/Log.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <mutex>
+#include <set>
 
 namespace nprgl {
 
@@ -88,11 +91,33 @@ std::string StyleSettings::chainName() const
     return name;
 }
 
+namespace {
+
+// The registry's parameter `key`; a style reading one it does not declare (a misspelt name in
+// nprgl's own code) is said once per name, where it would otherwise read 0 silently.
+const ParamInfo* declaredParam(const std::string& key)
+{
+    const ParamInfo* p = StyleRegistry::instance().findParam(key);
+    if (!p) {
+        static std::mutex mutex;
+        static std::set<std::string> said;
+        std::lock_guard lock(mutex);
+        if (said.insert(key).second) {
+            NPRGL_ERROR("a style reads the parameter %s, which no style declares (a fault in "
+                        "nprgl): it gets 0 or empty text",
+                        key.c_str());
+        }
+    }
+    return p;
+}
+
+} // namespace
+
 double StyleSettings::value(const std::string& style, const std::string& param) const
 {
     const std::string key = style + "." + param;
     if (auto it = mValues.find(key); it != mValues.end()) return it->second;
-    const ParamInfo* p = StyleRegistry::instance().findParam(key);
+    const ParamInfo* p = declaredParam(key);
     return p ? p->defaultValue : 0.0;
 }
 
@@ -122,7 +147,7 @@ std::string StyleSettings::text(const std::string& style, const std::string& par
 {
     const std::string key = style + "." + param;
     if (auto it = mTexts.find(key); it != mTexts.end()) return it->second;
-    const ParamInfo* p = StyleRegistry::instance().findParam(key);
+    const ParamInfo* p = declaredParam(key);
     return p ? p->defaultText : std::string();
 }
 

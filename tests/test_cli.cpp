@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -152,4 +153,29 @@ TEST(Cli, TheBuildTreesCommandPreloadsThroughTheLoadersLib)
     ProcessResult maps = runNprgl({"--style", "none", "--", "cat", "/proc/self/maps"});
     ASSERT_EQ(maps.exitCode, 0) << maps.err;
     EXPECT_NE(maps.out.find(libPath()), std::string::npos) << libPath() << "\n" << maps.out;
+}
+
+// A style reads its parameters by name; one it does not declare (a misspelling in nprgl) gets
+// 0, and is said. Every style that `nprgl styles` lists renders a fixture's frames without
+// that message, with its defaults and in the chain alone.
+TEST(Cli, EveryStyleReadsOnlyTheParametersItDeclares)
+{
+    ProcessResult list = runProcess({nprglCommand(), "styles"});
+    ASSERT_EQ(list.exitCode, 0);
+    std::istringstream lines(list.out.substr(0, list.out.find("Presets")));
+    std::string line;
+    std::getline(lines, line); // the title
+    const std::regex styleLine(R"(([a-z][a-z_-]*)( \[[a-z]+\])?)");
+    std::smatch m;
+    int count = 0;
+    while (std::getline(lines, line)) {
+        if (!std::regex_match(line, m, styleLine) || m[1] == "none") continue;
+        const std::string dir = freshDir("params_" + m[1].str());
+        ProcessResult r = runProcess({nprglCommand(), "replay", fixture("textured"), "--style",
+                                      m[1].str(), "--frames", "2", "-o", dir});
+        EXPECT_EQ(r.exitCode, 0) << m[1] << ": " << r.err;
+        EXPECT_EQ(r.err.find("which no style declares"), std::string::npos) << m[1] << ": " << r.err;
+        ++count;
+    }
+    EXPECT_GE(count, 10) << list.out;
 }

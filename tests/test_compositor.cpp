@@ -250,6 +250,8 @@ TEST(Compositor, EveryShippedPresetRuns)
                                       "--save-frames", "2"});
         EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
         EXPECT_TRUE(fs::exists(dir + "/displaylist_2.png")) << name;
+        // Its settings reach branches the styles' defaults do not (Cli.EveryStyleReads...).
+        EXPECT_EQ(r.err.find("which no style declares"), std::string::npos) << name << r.err;
         ++count;
     }
     EXPECT_GE(count, 3);

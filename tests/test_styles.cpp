@@ -145,3 +145,18 @@ TEST(PageTone, InkStandsOutOnEitherPage)
     const glm::vec3 chalk(0.9f, 0.9f, 0.8f);
     EXPECT_EQ(dark.ink(chalk), chalk) << "a light ink was changed on a dark page";
 }
+
+// A parameter no style declares reads 0 (or empty text) and says so, naming it.
+TEST(StyleSettings, AnUndeclaredParameterIsSaid)
+{
+    StyleSettings settings;
+    std::string error;
+    ASSERT_TRUE(StyleSettings::parse("toon", "", settings, error)) << error;
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(settings.value("toon", "tonez"), 0.0);
+    EXPECT_EQ(settings.text("toon", "shadow_colour"), "");
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_NE(said.find("toon.tonez"), std::string::npos) << said;
+    EXPECT_NE(said.find("toon.shadow_colour"), std::string::npos) << said;
+    EXPECT_EQ(settings.value("toon", "tones"), 3.0);
+}
