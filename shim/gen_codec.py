@@ -340,10 +340,15 @@ def emitRecord(cmds):
     return "\n".join(out) + "\n"
 
 
+def paramList(params):
+    """The C parameter list of a command ("GLenum mode, const void *p"; empty for none)."""
+    return ", ".join(f"{p.ctype} {p.name}" if not p.ctype.endswith("*")
+                     else f"{p.ctype}{p.name}" for p in params)
+
+
 def recordFunction(op, ret, name, params, mode, heldOnly):
     out = []
-    plist = ", ".join(f"{p.ctype} {p.name}" if not p.ctype.endswith("*")
-                      else f"{p.ctype}{p.name}" for p in params) or "void"
+    plist = paramList(params) or "void"
     args = ", ".join(p.name for p in params)
     call = f"gRealGl.{name}({args})"
     body = []
@@ -424,8 +429,7 @@ def emitTrack(cmds):
         comps = [f"float({c}) / {NORMALIZE[t]}" if norm else f"float({c})" for c in comps]
         default = ["0.0f", "0.0f", "0.0f", "1.0f"]
         comps = comps + default[len(comps):]
-        plist = ", ".join(f"{p.ctype} {p.name}" if not p.ctype.endswith("*")
-                          else f"{p.ctype}{p.name}" for p in params)
+        plist = paramList(params)
         if multi:
             # Every unit's coordinates: the unit a draw textures from may be any one.
             out.append(f"void {name}({plist}) {{ currentTracker().unitTexCoord("
@@ -491,8 +495,7 @@ def emitCompositor(cmds):
         taken.append(name)
         if kind[0] == "own":
             continue
-        plist = ", ".join(f"{p.ctype} {p.name}" if not p.ctype.endswith("*")
-                          else f"{p.ctype}{p.name}" for p in params)
+        plist = paramList(params)
         args = ", ".join(p.name for p in params)
         extra = f", {kind[1]}" if len(kind) > 1 else ""
         macro = "NPRGL_COMPOSITOR_" + re.sub(r"([A-Z])", r"_\1", kind[0]).upper()
