@@ -724,11 +724,7 @@ void Compositor::buildScene()
     for (size_t i = 0; i < mTracked.size(); ++i) {
         TrackedBatch& t = mTracked[i];
         reconstruct::Batch& b = mBatches[i];
-        b.mode = t.mode;
-        b.modelview = t.modelview;
-        b.materialId = t.materialId;
-        b.clockwise = t.clockwise;
-        b.quadCut = t.quadCut;
+        assignAssembly(b, t);
         // Translucent and alpha-tested surfaces are objects of their own (StyleChain::render),
         // also among those drawn without the depth test or depth writes (bzflag's cloud layer,
         // blended, joined the opaque ground drawn before it and covered its sky in white).

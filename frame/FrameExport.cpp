@@ -12,11 +12,7 @@ std::vector<reconstruct::Batch> reconstructionBatches(const std::vector<TrackedB
     for (const TrackedBatch& tb : batches) {
         if (!tb.is3D) continue; // 2D overlays are the program's own, never stylised
         reconstruct::Batch b;
-        b.mode = tb.mode;
-        b.modelview = tb.modelview;
-        b.materialId = tb.materialId;
-        b.clockwise = tb.clockwise;
-        b.quadCut = tb.quadCut;
+        assignAssembly(b, tb);
         b.vertices = tb.vertices; // the same vertex type: one copy, no conversion
         b.contentHash = tb.contentHash != 0 ? tb.contentHash : reconstruct::hashBatch(b);
         out.push_back(std::move(b));

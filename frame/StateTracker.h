@@ -65,6 +65,17 @@ struct TrackedBatch : styles::Appearance {
     reconstruct::QuadCut quadCut = reconstruct::QuadCut::V0V2; // as the driver cuts its quads
 };
 
+// What reconstruction takes of a tracked batch besides its vertices (which the caller lends
+// or copies): the fields its triangles and its object depend on.
+inline void assignAssembly(reconstruct::Batch& b, const TrackedBatch& t)
+{
+    b.mode = t.mode;
+    b.modelview = t.modelview;
+    b.materialId = t.materialId;
+    b.clockwise = t.clockwise;
+    b.quadCut = t.quadCut;
+}
+
 // Follows, without a GL context, the GL state that a frame's geometry depends on — matrix
 // stacks, current attributes, materials and lighting, client arrays and buffer contents,
 // display lists (with glCallLists, glListBase and nesting) — by interpreting a stream's

@@ -11,8 +11,9 @@ namespace nprgl::reconstruct {
 // Calls emit(a, b, c) for every triangle of one primitive of `count` vertices (indices from its
 // first vertex) with the winding the GL rasterises: strips alternate so that every triangle
 // keeps the first one's orientation, quads split along the diagonal `cut` names, a quad strip's
-// quad j is (2j, 2j+1, 2j+3, 2j+2) split along 2j-(2j+3), polygons are fans. Returns the number of trailing vertices that make
-// no primitive (the GL ignores them); modes without triangles return `count`.
+// quad j is (2j, 2j+1, 2j+3, 2j+2) split along 2j-(2j+3), polygons are fans. Returns the
+// number of trailing vertices that make no primitive (the GL ignores them); modes without
+// triangles return `count`.
 template <typename Emit>
 uint32_t assembleTriangles(uint32_t mode, uint32_t count, Emit&& emit,
                            QuadCut cut = QuadCut::V0V2)

@@ -174,7 +174,8 @@ TEST(Cli, EveryStyleReadsOnlyTheParametersItDeclares)
         ProcessResult r = runProcess({nprglCommand(), "replay", fixture("textured"), "--style",
                                       m[1].str(), "--frames", "2", "-o", dir});
         EXPECT_EQ(r.exitCode, 0) << m[1] << ": " << r.err;
-        EXPECT_EQ(r.err.find("which no style declares"), std::string::npos) << m[1] << ": " << r.err;
+        EXPECT_EQ(r.err.find("which no style declares"), std::string::npos)
+            << m[1] << ": " << r.err;
         ++count;
     }
     EXPECT_GE(count, 10) << list.out;

@@ -149,6 +149,19 @@ void cornerQuad(float x, float corners[4][3])
     }
 }
 
+// The corner quad at x by glBegin/glEnd (drawn now, or compiled into the list being made).
+void beginEndCornerQuad(float x)
+{
+    float corners[4][3];
+    cornerQuad(x, corners);
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 4; ++i) {
+        glColor3fv(kCornerColours[i]);
+        glVertex3fv(corners[i]);
+    }
+    glEnd();
+}
+
 class DisplayListScene : public demo::Scene {
 public:
     std::vector<demo::ExtraOption> extraOptions() const override
@@ -244,15 +257,8 @@ public:
         compileGear(gear3List, 0.2f, 0.2f, 1.0f, 1.3f, 2.0f, 0.5f, 10);
         if (cornerQuads_) {
             quadList_ = glGenLists(1);
-            float corners[4][3];
-            cornerQuad(3.4f, corners);
             glNewList(quadList_, GL_COMPILE);
-            glBegin(GL_QUADS);
-            for (int i = 0; i < 4; ++i) {
-                glColor3fv(kCornerColours[i]);
-                glVertex3fv(corners[i]);
-            }
-            glEnd();
+            beginEndCornerQuad(3.4f);
             glEndList();
         }
         return true;
@@ -310,14 +316,8 @@ private:
     {
         glDisable(GL_LIGHTING);
         glDisable(GL_CULL_FACE);
+        beginEndCornerQuad(-3.4f);
         float corners[4][3];
-        cornerQuad(-3.4f, corners);
-        glBegin(GL_QUADS);
-        for (int i = 0; i < 4; ++i) {
-            glColor3fv(kCornerColours[i]);
-            glVertex3fv(corners[i]);
-        }
-        glEnd();
         cornerQuad(0.0f, corners);
         const GLubyte order[4] = {0, 1, 2, 3};
         glEnableClientState(GL_VERTEX_ARRAY);
