@@ -100,7 +100,12 @@ TEST(I386, GlxgearsRecordedIsReplayedByThe64BitReplayer)
     ProcessResult replay = runProcess({nprglCommand(), "replay", file, "--style", "none", "-o",
                                        dir + "/replay", "--frames", "5"});
     ASSERT_EQ(replay.exitCode, 0) << replay.err;
-    ImageDiff diff = compareImages(shot(dir + "/live", 5), framePng(dir + "/replay", 5));
+    // The i386 Mesa that drew the live frame and the amd64 Mesa of the replay round
+    // differently: in about one run of six here (it depends on the gears' angle) a vertex
+    // lands on the other side of a pixel centre, or a smooth-shaded pixel is one level off.
+    // Edges may move by a pixel and colours by 2 levels; nothing else may differ.
+    ImageDiff diff = compareImages(shot(dir + "/live", 5), framePng(dir + "/replay", 5), 2);
     ASSERT_TRUE(diff.comparable) << diff.error;
-    EXPECT_EQ(diff.differingPixels, 0u) << "the replay is not the 32-bit program's picture";
+    EXPECT_EQ(diff.offEdgePixels, 0u) << "the replay is not the 32-bit program's picture";
+    EXPECT_LT(diff.differingPixels, 300u * 300u / 1000) << "more than edge rounding differs";
 }

@@ -9,6 +9,27 @@
 
 namespace nprgl::test {
 
+namespace {
+
+// Whether `from`'s colour at (x, y) is within `tolerance` of a pixel of `in` around it.
+bool nearby(const PngImage& from, const PngImage& in, int x, int y, int tolerance)
+{
+    const uint8_t* want = &from.rgba[(size_t(y) * from.width + x) * 4];
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= in.width || ny >= in.height) continue;
+            const uint8_t* have = &in.rgba[(size_t(ny) * in.width + nx) * 4];
+            int delta = 0;
+            for (int c = 0; c < 3; ++c) delta = std::max(delta, std::abs(want[c] - have[c]));
+            if (delta <= tolerance) return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
 ImageDiff compareImages(const std::string& a, const std::string& b, int tolerance)
 {
     ImageDiff diff;
@@ -23,7 +44,12 @@ ImageDiff compareImages(const std::string& a, const std::string& b, int toleranc
         int delta = 0;
         for (int c = 0; c < 3; ++c)
             delta = std::max(delta, std::abs(ia.rgba[i + c] - ib.rgba[i + c]));
-        if (delta > tolerance) ++diff.differingPixels;
+        if (delta > tolerance) {
+            ++diff.differingPixels;
+            const int x = int(i / 4 % ia.width), y = int(i / 4 / ia.width);
+            if (!nearby(ia, ib, x, y, tolerance) || !nearby(ib, ia, x, y, tolerance))
+                ++diff.offEdgePixels;
+        }
         diff.maxChannelDelta = std::max(diff.maxChannelDelta, delta);
     }
     return diff;

@@ -13,6 +13,11 @@ struct ImageDiff {
     std::string error;
     size_t differingPixels = 0;
     int maxChannelDelta = 0;
+    // Differing pixels that a one-pixel shift of an edge does not explain: A's colour is not
+    // within B's 3x3 neighbourhood there, or B's not within A's. Rasterisers that round a
+    // vertex differently (a 32-bit and a 64-bit Mesa) move coverage by a pixel along edges;
+    // a lost object, a wrong colour or a wrong matrix leaves pixels off every edge.
+    size_t offEdgePixels = 0;
 };
 
 // Compares two PNG files pixel by pixel (RGB only: GLX visuals may lack alpha); a pixel
