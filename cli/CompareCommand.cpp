@@ -9,6 +9,7 @@
 #include "styles/StyleSettings.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -113,6 +114,28 @@ std::map<uint64_t, std::string> statsByFrame(const std::string& text)
     return out;
 }
 
+// The native replay's --stats lines "frame 3: background: cleared to 0 0 0", by frame: the
+// colour each frame's last clear of the whole window left.
+std::map<uint64_t, std::array<uint8_t, 3>> clearsByFrame(const std::string& text)
+{
+    std::map<uint64_t, std::array<uint8_t, 3>> out;
+    size_t pos = 0;
+    while (pos < text.size()) {
+        size_t eol = text.find('\n', pos);
+        if (eol == std::string::npos) eol = text.size();
+        const std::string line = text.substr(pos, eol - pos);
+        unsigned long long frame = 0;
+        unsigned r = 0, g = 0, b = 0;
+        if (std::sscanf(line.c_str(), "frame %llu: background: cleared to %u %u %u", &frame, &r,
+                        &g, &b) == 4 &&
+            r < 256 && g < 256 && b < 256) {
+            out[frame] = {uint8_t(r), uint8_t(g), uint8_t(b)};
+        }
+        pos = eol + 1;
+    }
+    return out;
+}
+
 std::string jsonString(const std::string& s)
 {
     std::string out = "\"";
@@ -140,10 +163,12 @@ void writeFrameJson(std::FILE* f, uint64_t frame, const FrameFidelity& m,
 {
     std::fprintf(f,
                  "    {\"frame\": %llu, \"drawn\": %llu, \"fidelity\": %.5f, \"missing\": %.5f, "
-                 "\"clear\": [%d, %d, %d], \"draws\": %s,\n     \"objects\": [",
+                 "\"clear\": [%d, %d, %d], \"clearFrom\": \"%s\", \"draws\": %s,\n"
+                 "     \"objects\": [",
                  static_cast<unsigned long long>(frame),
                  static_cast<unsigned long long>(m.drawn), m.fidelity(), m.missingShare(),
-                 m.clear[0], m.clear[1], m.clear[2], jsonString(stats).c_str());
+                 m.clear[0], m.clear[1], m.clear[2], m.clearFromStream ? "stream" : "border",
+                 jsonString(stats).c_str());
     for (size_t i = 0; i < m.objects.size(); ++i) {
         const FrameFidelity::Object& o = m.objects[i];
         std::fprintf(f,
@@ -229,8 +254,10 @@ int compareCommand(const CompareOptions& options)
     std::string error;
     const std::string nativeDir = (scratch / "native").string();
     std::vector<std::string> native = replayArgs(nativeDir);
-    native.insert(native.end(), {"--style", "none"});
-    if (!runSelf(native, nullptr, error)) return fail(options.file + ": " + error);
+    native.insert(native.end(), {"--style", "none", "--stats"});
+    std::string nativeStats;
+    if (!runSelf(native, &nativeStats, error)) return fail(options.file + ": " + error);
+    const auto clears = clearsByFrame(nativeStats);
 
     const std::string styleDir = (scratch / "style").string();
     std::vector<std::string> styled = replayArgs(styleDir);
@@ -302,7 +329,9 @@ int compareCommand(const CompareOptions& options)
             e = PngImage();
         }
         FrameFidelity m;
-        if (!FrameFidelity::measure(a, b, c, !options.outDir.empty(), m, error, e)) {
+        const auto cl = clears.find(frame);
+        const uint8_t* clear = cl == clears.end() ? nullptr : cl->second.data();
+        if (!FrameFidelity::measure(a, b, c, !options.outDir.empty(), m, error, e, clear)) {
             return fail("frame " + std::to_string(frame) + ": " + error);
         }
         if (!options.outDir.empty()) {

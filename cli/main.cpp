@@ -116,7 +116,7 @@ int replayMain(int argc, char** argv)
     app.add_option("-o,--output", o.outDir, "directory for the PNGs (none: render only)");
     app.add_flag("--stats", o.stats,
                  "print each frame's 3D polygon draws, styled and left by reason (the run's "
-                 "totals are logged at the end)");
+                 "totals are logged at the end), and the colour it cleared the window to");
     app.add_option("-s,--style", o.style, "style chain");
     app.add_option("--preset", o.preset, "a shipped preset (see nprgl styles) or a preset file");
     app.add_option("--set", o.settings, "style parameter, style.param=value (repeatable)")

@@ -119,7 +119,7 @@ uint32_t FrameFidelity::paletteJudged() const
 
 bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, const PngImage& ids,
                             bool makeDiff, FrameFidelity& out, std::string& error,
-                            const PngImage& shading)
+                            const PngImage& shading, const uint8_t* clear)
 {
     out = FrameFidelity();
     const int w = native.width, h = native.height;
@@ -131,8 +131,10 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
                 std::to_string(styled.height) + " styled)";
         return false;
     }
-    clearColour(native, out.clear);
-    const Lab clear = Lab::fromSrgb(out.clear);
+    if (clear) std::copy(clear, clear + 3, out.clear);
+    else clearColour(native, out.clear);
+    out.clearFromStream = clear != nullptr;
+    const Lab clearLab = Lab::fromSrgb(out.clear);
     if (makeDiff) {
         out.diff.width = 3 * w;
         out.diff.height = h;
@@ -156,7 +158,7 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
             const uint8_t* d = &ids.rgba[p * 4];
             if (d[0] != n[0] || d[1] != n[1] || d[2] != n[2]) idAt[p] = idOf(d);
         }
-        drawnNatively[p] = Lab::deltaE(nativeLab[p], clear) > kDrawn;
+        drawnNatively[p] = Lab::deltaE(nativeLab[p], clearLab) > kDrawn;
         if (idAt[p] == 0 && !drawnNatively[p]) {
             bgL += styledLab[p].l, bgA += styledLab[p].a, bgB += styledLab[p].b;
             ++bgCount;
@@ -164,7 +166,7 @@ bool FrameFidelity::measure(const PngImage& native, const PngImage& styled, cons
     }
     const Lab background = bgCount ? Lab{float(bgL / bgCount), float(bgA / bgCount),
                                          float(bgB / bgCount)}
-                                   : clear;
+                                   : clearLab;
     std::unordered_map<uint32_t, Accumulator> perObject;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {

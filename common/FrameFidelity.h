@@ -46,6 +46,7 @@ struct FrameFidelity {
     };
 
     uint8_t clear[3] = {0, 0, 0}; // the frame's clear colour, as the native frame shows it
+    bool clearFromStream = false; // given by the replay, not guessed from the border
     uint64_t drawn = 0;          // drawn natively or by an object in the style
     uint64_t nativeDrawn = 0;
     // Drawn pixels within kMatch of native, the style's pixel or one of its eight neighbours
@@ -70,9 +71,11 @@ struct FrameFidelity {
     // `shading`: the same frame in the chain without its outline styles (may be empty: the
     // styled frame): the objects' styled tones, which the palette check judges, are its. Ink
     // is no object's colour: on a thin part (a wire, a bar) it covers most of its pixels.
+    // `clear`: the colour the frame's last clear of the whole window left (the replay knows
+    // it; nullptr: the frame did not clear it all, and its border's commonest colour is used).
     static bool measure(const PngImage& native, const PngImage& styled, const PngImage& ids,
                         bool makeDiff, FrameFidelity& out, std::string& error,
-                        const PngImage& shading = PngImage());
+                        const PngImage& shading = PngImage(), const uint8_t* clear = nullptr);
     // How the `ids` style writes object id 1..kMaxId: red the low byte, green the high one,
     // blue a fixed mark; idOf() is 0 for a colour that is no id.
     static constexpr uint32_t kMaxId = 0xFFFF;
@@ -87,7 +90,8 @@ struct FrameFidelity {
     {
         return rgb[2] == kIdMark ? (uint32_t(rgb[0]) | uint32_t(rgb[1]) << 8) : 0;
     }
-    // The most common colour of the native frame's border: what the program cleared to.
+    // The most common colour of the native frame's border: what a program that did not clear
+    // the whole window most likely shows where it drew nothing.
     static void clearColour(const PngImage& native, uint8_t rgb[3]);
 };
 

@@ -145,7 +145,9 @@ bool ReplaySink::pseudo(CallReader& r, uint16_t opcode)
             u.frames.push_back(frame);
         }
         mFrameUncaptured.clear();
-        return mFrameEnd(frame);
+        const bool ok = mFrameEnd(frame);
+        mCleared = false;
+        return ok;
     }
     if (opcode == op::kArrayData) return mArrays.apply(r);
     if (opcode == op::kBatchRef) return expandBatchRef(r, *this, mDepth);
@@ -657,6 +659,34 @@ void ReplaySink::issue_glViewport(GLint x, GLint y, GLsizei width, GLsizei heigh
 {
     if (scalesWindow(GL_DRAW_FRAMEBUFFER_BINDING)) scaleRect(x, y, width, height);
     gl().glViewport(x, y, width, height);
+}
+
+void ReplaySink::issue_glClear(GLbitfield mask)
+{
+    gl().glClear(mask);
+    // Asked as the program would ask (a style's own framebuffer is not the program's).
+    if (!(mask & GL_COLOR_BUFFER_BIT) || !mLists.executing() || !idle()) return;
+    GLint framebuffer = 0, box[4] = {0, 0, 0, 0};
+    GLboolean writes[4] = {GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE};
+    gl().glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    gl().glGetBooleanv(GL_COLOR_WRITEMASK, writes);
+    if (framebuffer != 0 || !writes[0] || !writes[1] || !writes[2]) return;
+    if (gl().glIsEnabled(GL_SCISSOR_TEST)) {
+        gl().glGetIntegerv(GL_SCISSOR_BOX, box);
+        if (box[0] > 0 || box[1] > 0 || box[0] + box[2] < mWindowWidth ||
+            box[1] + box[3] < mWindowHeight)
+            return;
+    }
+    GLfloat colour[4] = {0, 0, 0, 0};
+    gl().glGetFloatv(GL_COLOR_CLEAR_VALUE, colour);
+    // A normalised 8-bit buffer clamps and rounds to the nearest level (NaN: as 0); a driver
+    // may round a half the other way (Mesa stores 0.3 as 76), one level: far below the ΔE*ab
+    // of 3 within which compare takes a pixel for the clear colour.
+    for (int c = 0; c < 3; ++c) {
+        const float v = colour[c] > 0.0f ? std::min(colour[c], 1.0f) : 0.0f;
+        mClear[c] = uint8_t(std::lround(v * 255.0f));
+    }
+    mCleared = true;
 }
 
 void ReplaySink::issue_glScissor(GLint x, GLint y, GLsizei width, GLsizei height)

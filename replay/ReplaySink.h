@@ -106,6 +106,23 @@ public:
         mScaleX = sx;
         mScaleY = sy;
     }
+    // The replay's window size, for what a clear covers.
+    void setWindowSize(int width, int height)
+    {
+        mWindowWidth = width;
+        mWindowHeight = height;
+    }
+    // The colour the frame's last clear of the whole window cleared it to, in 8 bits (to a
+    // level: see issue_glClear): its background, where the program drew nothing. False when
+    // no clear of the frame covered the whole window (a scissored or masked one, none at all,
+    // one in a list).
+    bool frameClear(uint8_t rgb[3]) const
+    {
+        if (!mCleared) return false;
+        std::copy(mClear, mClear + 3, rgb);
+        return true;
+    }
+    void issue_glClear(GLbitfield mask);
     void issue_glViewport(GLint x, GLint y, GLsizei width, GLsizei height);
     void issue_glScissor(GLint x, GLint y, GLsizei width, GLsizei height);
     void issue_glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x,
@@ -181,6 +198,9 @@ private:
     DisplayListBudget mLists;
     double mScaleX = 1.0, mScaleY = 1.0;
     GLuint mCopyFramebuffer = 0; // draws into a texture: a scaled copy stretched back
+    int mWindowWidth = 0, mWindowHeight = 0;
+    bool mCleared = false; // this frame (see frameClear)
+    uint8_t mClear[3] = {0, 0, 0};
 };
 
 } // namespace nprgl

@@ -92,6 +92,7 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
     ShadowArrays arrays;
     std::string frameError;
     DrawCounts statsBefore;
+    const ReplaySink* replaying = nullptr; // the sink below, for what the frame cleared to
     auto frameEnd = [&](uint64_t frame) {
         // The program's frame is complete; OSMesa renders into our buffer.
         // Through the context's own glFinish: the compositor draws what it holds, as at the
@@ -108,6 +109,15 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
                         c ? c->runCounts().since(statsBefore).describe().c_str()
                           : "not styled (style none)");
             if (c) statsBefore = c->runCounts();
+            uint8_t clear[3];
+            if (replaying && replaying->frameClear(clear)) {
+                std::printf("frame %llu: background: cleared to %u %u %u\n",
+                            static_cast<unsigned long long>(frame), clear[0], clear[1],
+                            clear[2]);
+            } else {
+                std::printf("frame %llu: background: no clear of the whole window\n",
+                            static_cast<unsigned long long>(frame));
+            }
         }
         if ((options.outDir.empty() && !options.onFrame) ||
             (!options.frames.empty() && !options.frames.contains(frame))) {
@@ -129,6 +139,8 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
         return true;
     };
     ReplaySink sink(arrays, options.limits, frameEnd);
+    sink.setWindowSize(width, height);
+    replaying = &sink;
     const int recordedWidth = reader.metadata().width, recordedHeight = reader.metadata().height;
     if (recordedWidth > 0 && recordedHeight > 0 &&
         (width != recordedWidth || height != recordedHeight)) {

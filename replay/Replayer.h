@@ -20,7 +20,7 @@ struct ReplayOptions {
     int height = 0;
     uint32_t contextId = 0; // 0: the stream with the most frames
     bool progress = false;  // a progress bar on stderr
-    bool stats = false;     // each frame's styled and left 3D draws on stdout
+    bool stats = false;     // each frame's 3D draws and what it cleared to, on stdout
     ReplayLimits limits;    // what a call may ask of the driver before it is refused
     // The style and values to replay with; unset: the process's (the environment's).
     std::optional<Config> config;

@@ -101,7 +101,7 @@ CHECKED = {
 # Calls a replaying sink may issue itself, in another form: when it has issue_<name>(the
 # driver's arguments), that is called instead of the driver's entry point.
 ISSUED = {"glDrawRangeElements", "glViewport", "glScissor", "glCopyTexImage2D",
-          "glCopyTexSubImage2D", "glBlitFramebuffer"}
+          "glCopyTexSubImage2D", "glBlitFramebuffer", "glClear"}
 
 
 class Param:

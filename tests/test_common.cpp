@@ -205,6 +205,30 @@ TEST(FrameFidelity, TheLighterObjectStaysTheLighter)
     EXPECT_FALSE(m.objects[1].orderKept);
 }
 
+TEST(FrameFidelity, TheClearColourGivenIsTheBackground)
+{
+    // A band over the whole border (the border's commonest colour) around a cleared inside.
+    Frames f;
+    const uint8_t band[3] = {140, 89, 51}, cleared[3] = {30, 30, 30};
+    PngImage native = f.native;
+    paint(native, 0, 0, 40, 4, band);
+    paint(native, 0, 36, 40, 40, band);
+    paint(native, 0, 4, 4, 36, band);
+    paint(native, 36, 4, 40, 36, band);
+    FrameFidelity guessed, told;
+    std::string error;
+    ASSERT_TRUE(FrameFidelity::measure(native, native, f.ids, false, guessed, error)) << error;
+    EXPECT_FALSE(guessed.clearFromStream);
+    EXPECT_EQ(guessed.clear[0], band[0]);
+    ASSERT_TRUE(FrameFidelity::measure(native, native, f.ids, false, told, error, PngImage(),
+                                       cleared))
+        << error;
+    EXPECT_TRUE(told.clearFromStream);
+    EXPECT_EQ(told.clear[0], cleared[0]);
+    // The band is drawn; the inside around the square is not.
+    EXPECT_EQ(told.nativeDrawn, 40u * 40u - 32u * 32u + 400u);
+}
+
 TEST(FrameFidelity, FramesOfDifferentSizesAreRefused)
 {
     Frames f;

@@ -81,6 +81,36 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, FixtureFidelity,
                                            "dlopen", "glxgears", "immediate", "overlay",
                                            "textured"));
 
+// The frame's background is the colour its last clear of the whole window left, told by the
+// native replay. demo_immediate --frame covers the window's border with a band after its
+// clear (the border's commonest colour is the band's) and clears a corner through a scissor
+// in yellow after the whole-window clear (the last clear, but not of the whole window).
+TEST(Compare, TheBackgroundIsWhatTheFrameClearedTheWholeWindowTo)
+{
+    const std::string dir = freshDir("compare_clear");
+    const std::string file = dir + "/framed.nprgl";
+    const ProcessResult record =
+        runProcess({nprglCommand(), "record", "--style", "none", "-o", file, "--",
+                    demo("immediate"), "--frame", "--offscreen", "--frames", "3", "--size",
+                    "160x120"});
+    ASSERT_EQ(record.exitCode, 0) << record.err;
+    const ProcessResult stats =
+        runProcess({nprglCommand(), "replay", file, "--style", "none", "--stats"});
+    ASSERT_EQ(stats.exitCode, 0) << stats.err;
+    // glClearColor(0.10, 0.12, 0.16) in an 8-bit window.
+    EXPECT_NE(stats.out.find("frame 3: background: cleared to 26 31 41\n"), std::string::npos)
+        << stats.out;
+    const Summary s = compare(file, {"--style", "replica"}, "framed");
+    const std::string told = "\"clear\": [26, 31, 41], \"clearFrom\": \"stream\"";
+    size_t frames = 0;
+    for (size_t at = 0; (at = s.json.find("\"clear\": ", at)) != std::string::npos; ++at) {
+        ++frames;
+        EXPECT_EQ(s.json.compare(at, told.size(), told), 0) << s.json.substr(at, 60);
+    }
+    EXPECT_EQ(frames, 3u);
+    EXPECT_GE(s.median, 0.97);
+}
+
 TEST(Compare, AFileThatIsNoCaptureExitsOneWithItsName)
 {
     const std::string dir = freshDir("compare_bad");

@@ -53,6 +53,10 @@ public:
                 {"shine", demo::ExtraOption::Kind::Flag,
                  "draw the first shape a second time, adding light (GL_ONE, GL_ONE) over the "
                  "same vertices, as multi-pass programs draw a surface's layers"},
+                {"frame", demo::ExtraOption::Kind::Flag,
+                 "a flat 2D band around the window's edge, drawn after the clear, and a "
+                 "scissored clear of a corner in another colour: the border shows no clear "
+                 "colour, and not every clear is the background"},
                 {"light1", demo::ExtraOption::Kind::Text,
                  "a second white light as bright as the first, from the lower right: "
                  "'directional', 'spot' (positional, aimed at the shapes) or 'spot-away' (the "
@@ -66,6 +70,7 @@ public:
         report_ = options.report;
         scale_ = std::sqrt(static_cast<float>(options.intValue("detail", 1)));
         shine_ = options.has("shine");
+        frame_ = options.has("frame");
         light1_ = options.textValue("light1", "");
         if (!light1_.empty() && light1_ != "directional" && light1_ != "spot" &&
             light1_ != "spot-away") {
@@ -94,6 +99,7 @@ public:
     void draw(int frame) override
     {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (frame_) drawFrame();
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
         // Light fixed in eye space, above-left of the viewer.
@@ -146,6 +152,45 @@ private:
             glLightf(GL_LIGHT1, GL_SPOT_EXPONENT, 2.0f);
         }
         glEnable(GL_LIGHT1);
+    }
+
+    // A band a tenth of the window wide around its edge, unlit, in window coordinates, and a
+    // corner inside it cleared through a scissor.
+    void drawFrame() const
+    {
+        glClearColor(0.85f, 0.85f, 0.2f, 1.0f);
+        glScissor(width_ / 5, height_ / 5, width_ / 8, height_ / 8);
+        glEnable(GL_SCISSOR_TEST);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        glClearColor(0.10f, 0.12f, 0.16f, 1.0f);
+        glPushAttrib(GL_ENABLE_BIT);
+        glDisable(GL_LIGHTING);
+        glDisable(GL_DEPTH_TEST);
+        glMatrixMode(GL_PROJECTION);
+        glPushMatrix();
+        glLoadIdentity();
+        glOrtho(0, width_, 0, height_, -1, 1);
+        glMatrixMode(GL_MODELVIEW);
+        glPushMatrix();
+        glLoadIdentity();
+        const float w = float(width_), h = float(height_), b = 0.1f * std::min(w, h);
+        glColor3f(0.55f, 0.35f, 0.2f);
+        glBegin(GL_QUADS);
+        const float bands[4][4] = {{0, 0, w, b}, {0, h - b, w, h}, {0, b, b, h - b},
+                                   {w - b, b, w, h - b}};
+        for (const auto& r : bands) {
+            glVertex2f(r[0], r[1]);
+            glVertex2f(r[2], r[1]);
+            glVertex2f(r[2], r[3]);
+            glVertex2f(r[0], r[3]);
+        }
+        glEnd();
+        glPopMatrix();
+        glMatrixMode(GL_PROJECTION);
+        glPopMatrix();
+        glMatrixMode(GL_MODELVIEW);
+        glPopAttrib();
     }
 
     // The shape's second pass: unlit added light, no depth writes, the same vertices.
@@ -424,6 +469,7 @@ private:
     bool report_ = false;
     float scale_ = 1.0f;
     bool shine_ = false;
+    bool frame_ = false;
     std::string light1_;
     std::vector<Shape> shapes_;
 };
