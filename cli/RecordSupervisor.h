@@ -8,9 +8,11 @@ namespace nprgl::cli {
 
 // Runs argv (the environment already set up for the recording) as a child and waits for it,
 // however it ends: a signal the terminal sends reaches the child itself, one sent to this
-// process alone (kill PID) is passed on. Then prints one line about the capture at path and
-// ends the way the program ended (its exit status, or the same signal), so a shell or a
-// script sees the program's own result.
+// process alone (kill PID) is passed on. Then prints one line about the capture at path (and
+// one for each capture other processes of the program wrote beside it; when the started
+// process recorded nothing and one other did, that capture is moved to path) and ends the
+// way the program ended (its exit status, or the same signal), so a shell or a script sees
+// the program's own result.
 [[noreturn]] void superviseRecording(const std::vector<std::string>& argv, const std::string& path);
 
 // Replaces this process with argv (PATH searched); returns only on failure, having said why,

@@ -45,3 +45,12 @@ if ! installed "${i386[@]}"; then
         "${i386[@]}" ||
         echo "install-deps: the i386 packages could not be installed: no 32-bit library" >&2
 fi
+# 32-bit Windows programs under Wine (tests/test_wine.cpp, bits32): Debian's 32-bit wine
+# loader and the i686 mingw-w64 compiler for tests/wine/wingl.c. Without them those tests are
+# skipped, so a failure here only warns.
+wine32=(wine32:i386 gcc-mingw-w64-i686-win32)
+if dpkg --print-foreign-architectures | grep -qx i386 && ! installed "${wine32[@]}"; then
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+        "${wine32[@]}" ||
+        echo "install-deps: wine32 could not be installed: no 32-bit Windows program tests" >&2
+fi

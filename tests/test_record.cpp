@@ -540,6 +540,52 @@ TEST(Record, AForkedChildWritesItsOwnFile)
     }
 }
 
+// A launcher that draws nothing and starts the program that draws (a shell script, wine's
+// loader starting wine64 for a 64-bit .exe): the capture asked for is the drawing process's,
+// and the line at the end says whose. Two drawing children: both said, neither renamed.
+TEST(Record, TheCaptureOfTheOneProcessThatDrewIsTheFileAsked)
+{
+    const std::string run = demo("immediate") + " --offscreen --frames 3 --size 64x48";
+    for (int children : {1, 2}) {
+        SCOPED_TRACE(std::to_string(children) + " drawing children");
+        const std::string dir = freshDir("launcher"), file = dir + "/l.nprgl";
+        // The status kept and returned: the shell forks each command, it execs none.
+        std::string script = run + "; status=$?";
+        if (children == 2) script += "; " + run + " || status=$?";
+        script += "; exit $status";
+        ProcessResult r = runProcess({nprglCommand(), "record", "--style", "none", "-o", file,
+                                      "--", "sh", "-c", script});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::vector<std::string> files;
+        for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path().string());
+        if (children == 1) {
+            EXPECT_EQ(files, std::vector<std::string>{file}) << r.err;
+            EXPECT_TRUE(std::regex_search(r.err,
+                                          std::regex("nprgl: recorded 3 frames to " + file +
+                                                     " .*\\(by process [0-9]+, which the program "
+                                                     "started\\)")))
+                << r.err;
+            ProcessResult info = runProcess({nprglCommand(), "info", file});
+            EXPECT_EQ(info.exitCode, 0) << info.err;
+            EXPECT_NE(info.out.find("program:     demo_immediate"), std::string::npos)
+                << info.out;
+            EXPECT_NE(info.out.find("frames:      3"), std::string::npos) << info.out;
+        } else {
+            EXPECT_EQ(files.size(), 2u) << r.err;
+            EXPECT_FALSE(fs::exists(file));
+            EXPECT_NE(r.err.find("the program recorded nothing itself (no " + file +
+                                 "); 2 processes it started did:"),
+                      std::string::npos)
+                << r.err;
+            for (const std::string& f : files) {
+                EXPECT_NE(r.err.find("which the program started: recorded 3 frames to " + f),
+                          std::string::npos)
+                    << r.err;
+            }
+        }
+    }
+}
+
 TEST(Record, EachContextHasItsOwnStream)
 {
     std::string dir = freshDir("threads"), file = dir + "/t.nprgl";

@@ -235,9 +235,19 @@ TEST_P(Wine, RecordedAndReplayedAsDrawn)
     ASSERT_EQ(p.exitCode, 0) << p.err;
     const std::string live = screenshotOf(dir + "/live", exeName(), 3);
     ASSERT_FALSE(live.empty());
-    ImageDiff diff = compareImages(live, framePng(replay, 3));
-    ASSERT_TRUE(diff.comparable) << diff.error;
-    EXPECT_EQ(diff.differingPixels, 0u);
+    if (GetParam().bits == 64) {
+        ImageDiff diff = compareImages(live, framePng(replay, 3));
+        ASSERT_TRUE(diff.comparable) << diff.error;
+        EXPECT_EQ(diff.differingPixels, 0u);
+    } else {
+        // Drawn live by the i386 Mesa, replayed by the amd64 one, which may round a vertex or
+        // a shade the other way (as tests/test_i386.cpp says): a pixel along an edge, or 2
+        // levels, and nothing else.
+        ImageDiff diff = compareImages(live, framePng(replay, 3), 2);
+        ASSERT_TRUE(diff.comparable) << diff.error;
+        EXPECT_EQ(diff.offEdgePixels, 0u);
+        EXPECT_LT(diff.differingPixels, 320u * 240u / 1000);
+    }
     EXPECT_TRUE(fs::exists(framePng(replay, 5)));
     EXPECT_FALSE(fs::exists(framePng(replay, 6)));
 
