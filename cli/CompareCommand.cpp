@@ -94,23 +94,30 @@ std::map<uint64_t, fs::path> framesIn(const fs::path& dir)
     return frames;
 }
 
-// The replay's --stats lines, by frame: "frame 3: 3D polygon draws: 12 styled, ...".
-std::map<uint64_t, std::string> statsByFrame(const std::string& text)
+// Calls take(line) for each line of text.
+template <typename Take> void forEachLine(const std::string& text, Take take)
 {
-    std::map<uint64_t, std::string> out;
     size_t pos = 0;
     while (pos < text.size()) {
         size_t eol = text.find('\n', pos);
         if (eol == std::string::npos) eol = text.size();
-        const std::string line = text.substr(pos, eol - pos);
+        take(text.substr(pos, eol - pos));
+        pos = eol + 1;
+    }
+}
+
+// The replay's --stats lines, by frame: "frame 3: 3D polygon draws: 12 styled, ...".
+std::map<uint64_t, std::string> statsByFrame(const std::string& text)
+{
+    std::map<uint64_t, std::string> out;
+    forEachLine(text, [&](const std::string& line) {
         unsigned long long frame = 0;
         int used = 0;
         if (std::sscanf(line.c_str(), "frame %llu: 3D polygon draws: %n", &frame, &used) == 1 &&
             used > 0) {
             out[frame] = line.substr(size_t(used));
         }
-        pos = eol + 1;
-    }
+    });
     return out;
 }
 
@@ -119,11 +126,7 @@ std::map<uint64_t, std::string> statsByFrame(const std::string& text)
 std::map<uint64_t, std::array<uint8_t, 3>> clearsByFrame(const std::string& text)
 {
     std::map<uint64_t, std::array<uint8_t, 3>> out;
-    size_t pos = 0;
-    while (pos < text.size()) {
-        size_t eol = text.find('\n', pos);
-        if (eol == std::string::npos) eol = text.size();
-        const std::string line = text.substr(pos, eol - pos);
+    forEachLine(text, [&](const std::string& line) {
         unsigned long long frame = 0;
         unsigned r = 0, g = 0, b = 0;
         if (std::sscanf(line.c_str(), "frame %llu: background: cleared to %u %u %u", &frame, &r,
@@ -131,8 +134,7 @@ std::map<uint64_t, std::array<uint8_t, 3>> clearsByFrame(const std::string& text
             r < 256 && g < 256 && b < 256) {
             out[frame] = {uint8_t(r), uint8_t(g), uint8_t(b)};
         }
-        pos = eol + 1;
-    }
+    });
     return out;
 }
 
