@@ -167,13 +167,7 @@ private:
         glPushAttrib(GL_ENABLE_BIT);
         glDisable(GL_LIGHTING);
         glDisable(GL_DEPTH_TEST);
-        glMatrixMode(GL_PROJECTION);
-        glPushMatrix();
-        glLoadIdentity();
-        glOrtho(0, width_, 0, height_, -1, 1);
-        glMatrixMode(GL_MODELVIEW);
-        glPushMatrix();
-        glLoadIdentity();
+        demo::pushPixelProjection(width_, height_);
         const float w = float(width_), h = float(height_), b = 0.1f * std::min(w, h);
         glColor3f(0.55f, 0.35f, 0.2f);
         glBegin(GL_QUADS);
@@ -186,10 +180,7 @@ private:
             glVertex2f(r[0], r[3]);
         }
         glEnd();
-        glPopMatrix();
-        glMatrixMode(GL_PROJECTION);
-        glPopMatrix();
-        glMatrixMode(GL_MODELVIEW);
+        demo::popMatrices();
         glPopAttrib();
     }
 

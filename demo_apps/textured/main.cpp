@@ -654,13 +654,7 @@ public:
         glEnable(GL_TEXTURE_2D);
         glBindTexture(GL_TEXTURE_2D, envTexture_);
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-        glMatrixMode(GL_PROJECTION);
-        glPushMatrix();
-        glLoadIdentity();
-        glOrtho(0.0, width_, 0.0, height_, -1.0, 1.0);
-        glMatrixMode(GL_MODELVIEW);
-        glPushMatrix();
-        glLoadIdentity();
+        demo::pushPixelProjection(width_, height_);
         const float x0 = 0.0f, y0 = float(height_ - kEnvSize), s = float(kEnvSize);
         glBegin(GL_QUADS);
         glTexCoord2f(0.0f, 0.0f);
@@ -672,10 +666,7 @@ public:
         glTexCoord2f(0.0f, 1.0f);
         glVertex2f(x0, y0 + s);
         glEnd();
-        glPopMatrix();
-        glMatrixMode(GL_PROJECTION);
-        glPopMatrix();
-        glMatrixMode(GL_MODELVIEW);
+        demo::popMatrices();
         glPopAttrib();
     }
 
