@@ -10,6 +10,7 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -56,39 +57,46 @@ std::string megabytes(uint64_t bytes)
     std::_Exit(128 + signal);
 }
 
-// The capture at path, when this run wrote it (its header's start is not before the run's):
-// its writer's pid, else 0.
-uint32_t writtenSince(const std::string& path, uint64_t since)
+// The pid that wrote the capture at path, when this run wrote it (its header's start is not
+// before the run's); nullopt for no capture or an older one.
+std::optional<uint32_t> writerSince(const std::string& path, uint64_t since)
 {
     capture::CaptureReader reader;
     std::string error;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec) || !reader.open(path, error)) return 0;
+    if (!std::filesystem::is_regular_file(path, ec) || !reader.open(path, error)) return {};
     const auto& meta = reader.metadata();
-    return meta.startTimeUnix >= since ? std::max<uint32_t>(meta.pid, 1) : 0;
+    if (meta.startTimeUnix < since) return {};
+    return meta.pid;
 }
 
-// Captures other processes of this run wrote beside path: <stem>.<pid>.nprgl (the name
-// CaptureSession gives a process other than the one started) whose header names that pid and
-// a start not before the run's.
-std::vector<std::string> capturesOfOtherProcesses(const std::string& path, uint64_t since)
+// A capture another process of this run wrote beside the one asked for.
+struct OtherCapture {
+    std::string path;
+    uint32_t pid = 0;
+};
+
+// <stem>.<pid>.nprgl beside path (the name CaptureSession gives a process other than the one
+// started) whose header names that pid and a start not before the run's, by name.
+std::vector<OtherCapture> capturesOfOtherProcesses(const std::string& path, uint64_t since)
 {
     namespace fs = std::filesystem;
     const fs::path asked(path);
     std::string stem = asked.filename().string();
     if (stem.ends_with(".nprgl")) stem.resize(stem.size() - 6);
-    std::vector<std::string> found;
+    std::vector<OtherCapture> found;
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(asked.parent_path(), ec)) {
         const std::string name = entry.path().filename().string();
         if (!name.starts_with(stem + ".") || !name.ends_with(".nprgl")) continue;
         const std::string pid = name.substr(stem.size() + 1, name.size() - stem.size() - 7);
-        if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-        if (writtenSince(entry.path().string(), since) == uint32_t(std::stoul(pid))) {
-            found.push_back(entry.path().string());
-        }
+        if (pid.empty() || pid.size() > 10 || pid.find_first_not_of("0123456789") != pid.npos)
+            continue;
+        const auto writer = writerSince(entry.path().string(), since);
+        if (writer && *writer == std::stoul(pid)) found.push_back({entry.path().string(), *writer});
     }
-    std::sort(found.begin(), found.end());
+    std::sort(found.begin(), found.end(),
+              [](const OtherCapture& x, const OtherCapture& y) { return x.path < y.path; });
     return found;
 }
 
@@ -179,30 +187,31 @@ void superviseRecording(const std::vector<std::string>& argv, const std::string&
             how = "was stopped by " +
                   (name ? "SIG" + std::string(name) : "signal " + std::to_string(WTERMSIG(status)));
         }
-        std::vector<std::string> others = capturesOfOtherProcesses(path, start);
+        std::vector<OtherCapture> others = capturesOfOtherProcesses(path, start);
+        const bool startedWrote = writerSince(path, start).has_value();
         std::string by;
-        if (!writtenSince(path, start) && others.size() == 1) {
+        if (!startedWrote && others.size() == 1) {
             // The process started did not draw, the one it started did (wine's loader
             // starts wine64 for a 64-bit .exe, a launcher its game): its capture is the
             // one asked for.
             std::error_code ec;
-            std::filesystem::rename(others.front(), path, ec);
+            std::filesystem::rename(others.front().path, path, ec);
             if (!ec) {
-                by = " (by process " + std::to_string(writtenSince(path, start)) +
+                by = " (by process " + std::to_string(others.front().pid) +
                      ", which the program started)";
                 others.clear();
             }
         }
-        if (!others.empty() && !writtenSince(path, start)) {
+        if (!others.empty() && !startedWrote) {
             std::fprintf(stderr, "nprgl: the program recorded nothing itself (no %s); %zu "
                          "processes it started did:\n", path.c_str(), others.size());
         } else {
             std::fprintf(stderr, "nprgl: %s%s\n", recordingSummary(path, how).c_str(),
                          by.c_str());
         }
-        for (const std::string& other : others) {
+        for (const OtherCapture& other : others) {
             std::fprintf(stderr, "nprgl: and by process %u, which the program started: %s\n",
-                         writtenSince(other, start), recordingSummary(other, how).c_str());
+                         other.pid, recordingSummary(other.path, how).c_str());
         }
     }
     endAsTheProgramDid(status);
