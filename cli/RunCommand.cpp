@@ -1,10 +1,12 @@
 #include "cli/RunCommand.h"
 
 #include "capture/CaptureWriter.h"
-#include "cli/RecordSupervisor.h"
+#include "cli/ProgramSupervisor.h"
+#include "cli/VideoReceiver.h"
 #include "common/FrameSet.h"
 #include "common/Log.h"
 #include "common/ScreenshotSpec.h"
+#include "common/VideoFeed.h"
 #include "styles/Presets.h"
 #include "styles/StyleSettings.h"
 
@@ -242,8 +244,26 @@ int runProgram(const RunOptions& options)
 #endif
     setenv("LD_PRELOAD", preload.c_str(), 1);
 
+    // The frames come to this process, which encodes them while the program runs: FFmpeg is
+    // never loaded into the program.
+    VideoReceiver video;
+    if (!options.video.empty()) {
+        if (!video.open(options.video, options.fps, error)) return fail("--video: " + error);
+        setenv(video::kSocketVariable, video.socketName().c_str(), 1);
+        if (options.videoOnKey) {
+            setenv(video::kStartVariable, "key", 1);
+        } else {
+            unsetenv(video::kStartVariable);
+        }
+    } else {
+        // A feed of an nprgl command this one runs under is not this program's.
+        unsetenv(video::kSocketVariable);
+    }
+
     warnIfSecureExecution(command.front());
-    if (options.record) superviseRecording(command, recordPath);
+    if (options.record || !options.video.empty()) {
+        superviseProgram(command, recordPath, options.video.empty() ? nullptr : &video);
+    }
     return execProgram(command);
 }
 

@@ -17,6 +17,9 @@ struct RunOptions {
     std::string recordFile;   // default: <program>.nprgl in the current directory
     std::string recordFrames; // A-B
     bool recordForce = false; // replace recordFile if it is a capture
+    std::string video;        // encode the program's frames into this file
+    int fps = 30;
+    bool videoOnKey = false;  // the first recording starts at the video key, not at once
 };
 
 // Checks the options, sets up the environment and replaces this process with the program

@@ -257,6 +257,14 @@ int dispatch(int argc, char** argv)
                    "write frames as PNG: frames=1,10,100;dir=out");
     app.add_option("--log-level", options.logLevel, "error, warn, info or debug");
     app.add_option("--log-file", options.logFile, "log to this file instead of stderr");
+    CLI::Option* video = app.add_option(
+        "--video", options.video,
+        "encode the program's frames into this file (.mp4, .mkv, .mov: H.264; .webm: VP9) as "
+        "it runs; the video key (Shift_R+F6) stops it and starts the next file");
+    app.add_option("--fps", options.fps, "the video's frame rate (default 30)")->needs(video);
+    app.add_flag("--video-on-key", options.videoOnKey,
+                 "the first recording starts at the video key, not at the first frame")
+        ->needs(video);
     options.record = record;
     if (record) {
         app.add_option("-o,--output", options.recordFile, "the capture file");

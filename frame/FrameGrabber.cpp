@@ -32,24 +32,22 @@ bool knows(const ContextCaps& caps, int gl, int es)
 
 } // namespace
 
-bool FrameGrabber::writeFrame(const ContextCaps& caps, int width, int height,
-                              const std::string& path)
+const char* FrameGrabber::cannotRead(const ContextCaps& caps, int width, int height)
 {
-    const GlDispatch& gl = gRealGl;
-    if (caps.major == 0 || width <= 0 || height <= 0) {
-        NPRGL_WARN("cannot take a screenshot of this context (%s); skipping %s",
-                   caps.major == 0 ? "no GL version" : "unknown size", path.c_str());
-        return false;
-    }
+    if (caps.major == 0) return "no GL version";
+    if (width <= 0 || height <= 0) return "unknown size";
     if (!caps.core && !caps.es) {
         // glReadBuffer would be compiled into the list instead of executed.
         GLint listIndex = 0;
-        gl.glGetIntegerv(GL_LIST_INDEX, &listIndex);
-        if (listIndex != 0) {
-            NPRGL_WARN("frame ends inside glNewList; skipping screenshot %s", path.c_str());
-            return false;
-        }
+        gRealGl.glGetIntegerv(GL_LIST_INDEX, &listIndex);
+        if (listIndex != 0) return "the frame ends inside glNewList";
     }
+    return nullptr;
+}
+
+GLenum FrameGrabber::readFrame(const ContextCaps& caps, int width, int height, uint8_t* rgba)
+{
+    const GlDispatch& gl = gRealGl;
     // A read the driver refuses (an incomplete read framebuffer...) is nprgl's error, not the
     // program's.
     OwnGlCalls own;
@@ -80,11 +78,7 @@ bool FrameGrabber::writeFrame(const ContextCaps& caps, int width, int height,
     const bool switchBuffer = chooses && GLenum(readBuffer) != wanted;
     if (switchBuffer) gl.glReadBuffer(wanted);
 
-    PngImage image;
-    image.width = width;
-    image.height = height;
-    image.rgba.resize(size_t(width) * height * 4);
-    gl.glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    gl.glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 
     if (switchBuffer) gl.glReadBuffer(GLenum(readBuffer));
     if (readFramebuffer) {
@@ -98,7 +92,22 @@ bool FrameGrabber::writeFrame(const ContextCaps& caps, int width, int height,
             gl.glPixelStorei(p.name, pack[i]);
         }
     }
-    const GLenum refused = own.finish();
+    return own.finish();
+}
+
+bool FrameGrabber::writeFrame(const ContextCaps& caps, int width, int height,
+                              const std::string& path)
+{
+    if (const char* why = cannotRead(caps, width, height)) {
+        NPRGL_WARN("cannot take a screenshot of this context (%s); skipping %s", why,
+                   path.c_str());
+        return false;
+    }
+    PngImage image;
+    image.width = width;
+    image.height = height;
+    image.rgba.resize(size_t(width) * height * 4);
+    const GLenum refused = readFrame(caps, width, height, image.rgba.data());
     if (refused != GL_NO_ERROR) {
         NPRGL_ERROR("screenshot %s: the driver refused the read (GL error 0x%x); skipped",
                     path.c_str(), refused);

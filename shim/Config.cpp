@@ -59,7 +59,7 @@ const std::map<std::string, std::string>& defaultKeys()
 {
     static const std::map<std::string, std::string> keys = {
         {"toggle", "Shift_R+F9"}, {"cycle", "Shift_R+F10"}, {"screenshot", "Shift_R+F11"},
-        {"overlay", "Shift_R+F8"}, {"reload", "Shift_R+F7"}};
+        {"overlay", "Shift_R+F8"}, {"reload", "Shift_R+F7"}, {"video", "Shift_R+F6"}};
     return keys;
 }
 

@@ -38,7 +38,7 @@ bool checkCycleEntry(const std::string& entry, std::string& error)
 const std::vector<std::string>& ConfigFile::actions()
 {
     static const std::vector<std::string> names = {"toggle", "cycle", "screenshot", "overlay",
-                                                   "reload"};
+                                                   "reload", "video"};
     return names;
 }
 

@@ -6,6 +6,7 @@
 #include "frame/FrameGrabber.h"
 #include "frame/FrameReplay.h"
 #include "frame/LiveExport.h"
+#include "frame/LiveVideo.h"
 #include "frame/Recorder.h"
 #include "shim/ConfigWatcher.h"
 #include "shim/Overlay.h"
@@ -242,8 +243,10 @@ bool Context::endFrame(bool shown)
     applyKeys();
     ++mFrame;
     if (mRecorder) mRecorder->endFrame(mFrame);
+    LiveVideo* video = LiveVideo::instance();
+    mVideoFrame = video && video->wants(mSerial);
     return (mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame)) ||
-           !mShotNow.empty() || (mRecorder && mRecorder->frameKept());
+           !mShotNow.empty() || (mRecorder && mRecorder->frameKept()) || mVideoFrame;
 }
 
 void Context::pollKeys(_XDisplay* display)
@@ -265,6 +268,13 @@ void Context::applyKeys()
     }
     const uint32_t actions = std::exchange(mActions, 0u);
     if (!actions) return;
+    if (actions & Hotkeys::Video) {
+        if (LiveVideo* video = LiveVideo::instance()) {
+            video->toggle(mSerial);
+        } else {
+            NPRGL_WARN("video key: no video was asked for (nprgl run --video FILE)");
+        }
+    }
     if (actions & Hotkeys::Reload) {
         NPRGL_INFO("reload key: reading the configuration again");
         Config::reload();
@@ -460,6 +470,9 @@ void Context::writeFrameScreenshot(int width, int height)
 
 void Context::writeHotkeyScreenshot(int width, int height)
 {
+    if (std::exchange(mVideoFrame, false)) {
+        LiveVideo::instance()->addFrame(mSerial, mFrame, mCaps, width, height);
+    }
     if (mRecorder && mRecorder->frameKept()) writeScreenshotPair(width, height);
     if (mShotNow.empty()) return;
     FrameGrabber::writeFrame(mCaps, width, height, mShotNow);

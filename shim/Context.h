@@ -153,6 +153,7 @@ private:
     // written: mShotStem_styled.png and _unstyled.png. Where it cannot be drawn again, the
     // unstyled picture is of the frame after it (mShotNext, then mShotNow at its swap).
     std::string mShotStem;
+    bool mVideoFrame = false; // this frame goes to the video (at writeHotkeyScreenshot)
     std::string mShotNow;    // a hotkey screenshot of this frame, written at this swap
     std::string mShotNext;   // the fallback's unstyled picture, of the next frame
     bool mShotRestore = true; // styling on or off after the pair

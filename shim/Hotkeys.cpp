@@ -42,6 +42,7 @@ uint32_t actionBit(const std::string& name)
     if (name == "screenshot") return Hotkeys::Screenshot;
     if (name == "overlay") return Hotkeys::Overlay;
     if (name == "reload") return Hotkeys::Reload;
+    if (name == "video") return Hotkeys::Video;
     return 0;
 }
 

@@ -27,6 +27,7 @@ public:
         Screenshot = 1u << 2,
         Overlay = 1u << 3,
         Reload = 1u << 4,
+        Video = 1u << 5,
     };
 
     // Binds action names ("toggle", ...) to combinations ("Shift_R+F9"; "none" unbinds) on

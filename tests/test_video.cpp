@@ -187,3 +187,208 @@ TEST(VideoOptions, ABadNameOrRateIsAUsageErrorBeforeAnyFrame)
     EXPECT_EQ(rate.exitCode, 2) << rate.err;
     EXPECT_FALSE(fs::exists(dir + "/g.mp4"));
 }
+
+namespace {
+
+// The codec's loss on the toon cube's black outlines, mean levels in 255 (see below).
+constexpr double kLiveLoss = 3.0;
+
+// probe_hotkeys (a cube turning a step each frame) under `nprgl run --video` with the
+// screenshots of every frame beside it; `keys`: its --press options.
+ProcessResult runLive(const std::string& dir, const std::string& video, int frames,
+                      const std::vector<std::string>& keys, const std::vector<std::string>& extra)
+{
+    std::vector<std::string> command = {nprglCommand(), "run", "--style", "toon+edges",
+                                        "--video", video};
+    command.insert(command.end(), extra.begin(), extra.end());
+    command.insert(command.end(), {"--", binDir() + "/probe_hotkeys", "--frames",
+                                   std::to_string(frames)});
+    command.insert(command.end(), keys.begin(), keys.end());
+    return runProcess(command,
+                      {{"NPRGL_SCREENSHOT", "frames=1-" + std::to_string(frames) + ";dir=" + dir},
+                       {"NPRGL_CONFIG_FILE", ""},
+                       {"XDG_CONFIG_HOME", dir + "/home"}},
+                      300);
+}
+
+std::vector<PngImage> liveFrames(const std::string& dir, int frames)
+{
+    std::vector<PngImage> shots(static_cast<size_t>(frames));
+    std::string error;
+    for (int i = 0; i < frames; ++i) {
+        EXPECT_TRUE(PngImage::read(dir + "/probe_hotkeys_" + std::to_string(i + 1) + ".png",
+                                   shots[size_t(i)], error))
+            << error;
+    }
+    return shots;
+}
+
+// The program frame (from 1) each video frame is nearest to, and how near.
+std::vector<std::pair<int, double>> nearest(const Decoded& decoded,
+                                            const std::vector<PngImage>& shots)
+{
+    std::vector<std::pair<int, double>> found;
+    for (const PngImage& frame : decoded.frames) {
+        std::pair<int, double> best{0, 1e9};
+        for (size_t j = 0; j < shots.size(); ++j) {
+            const double d = meanDifference(frame, shots[j]);
+            if (d < best.second) best = {int(j) + 1, d};
+        }
+        found.push_back(best);
+    }
+    return found;
+}
+
+} // namespace
+
+// A live run's video holds the frames the program showed, in order: each video frame is,
+// within the codec's loss, one of the program's frames (its screenshot), and never an
+// earlier one than the video frame before it. The loss is about 2 levels in 255 on the
+// cube's outlines (kLiveLoss); the frame one step away is 3.2 off, ten steps away 19.
+TEST(LiveVideo, HoldsTheProgramsFramesInOrder)
+{
+    const std::string dir = freshDir("video_live");
+    const std::string video = dir + "/live.mp4";
+    const ProcessResult r = runLive(dir, video, 30, {}, {});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, "ok\n");
+    EXPECT_NE(r.err.find("video " + video + ": "), std::string::npos) << r.err;
+    Decoded decoded;
+    std::string error;
+    ASSERT_TRUE(decode(video, decoded, error)) << error;
+    EXPECT_EQ(decoded.codec, "h264");
+    ASSERT_GE(decoded.frames.size(), 1u);
+    const std::vector<PngImage> shots = liveFrames(dir, 30);
+    int previous = 0;
+    for (const auto& [frame, difference] : nearest(decoded, shots)) {
+        EXPECT_LT(difference, kLiveLoss) << "nearest program frame " << frame;
+        EXPECT_GE(frame, previous);
+        previous = frame;
+    }
+    EXPECT_EQ(nearest(decoded, shots).front().first, 1);
+}
+
+// The video key (Shift_R+F6) pressed at frame 10 stops the recording, pressed at 20 starts
+// the next one into live-2.mp4: the first file holds frames before 10, the second frames
+// from 20 on.
+TEST(LiveVideo, TheVideoKeyStopsItAndStartsTheNextFile)
+{
+    const std::string dir = freshDir("video_live_key");
+    const std::string video = dir + "/live.mp4";
+    const ProcessResult r = runLive(
+        dir, video, 30, {"--press", "10", "Shift_R+F6", "--press", "20", "Shift_R+F6"}, {});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("recording 1 stopped"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("recording 2 started"), std::string::npos) << r.err;
+    const std::vector<PngImage> shots = liveFrames(dir, 30);
+    Decoded first, second;
+    std::string error;
+    ASSERT_TRUE(decode(video, first, error)) << error;
+    ASSERT_TRUE(decode(dir + "/live-2.mp4", second, error)) << error;
+    ASSERT_GE(first.frames.size(), 1u);
+    ASSERT_GE(second.frames.size(), 1u);
+    for (const auto& [frame, difference] : nearest(first, shots)) {
+        EXPECT_LT(frame, 10);
+        EXPECT_LT(difference, kLiveLoss);
+    }
+    for (const auto& [frame, difference] : nearest(second, shots)) {
+        EXPECT_GE(frame, 20);
+        EXPECT_LT(difference, kLiveLoss);
+    }
+    EXPECT_FALSE(fs::exists(dir + "/live-3.mp4"));
+}
+
+// --video-on-key: nothing is recorded until the key; without a press, no file and a line
+// that says why.
+TEST(LiveVideo, OnKeyWaitsForTheKey)
+{
+    const std::string dir = freshDir("video_live_wait");
+    const std::string video = dir + "/live.mp4";
+    const ProcessResult idle = runLive(dir, video, 6, {}, {"--video-on-key"});
+    ASSERT_EQ(idle.exitCode, 0) << idle.err;
+    EXPECT_FALSE(fs::exists(video));
+    EXPECT_NE(idle.err.find("no frame was recorded"), std::string::npos) << idle.err;
+    const ProcessResult keyed =
+        runLive(dir, video, 12, {"--press", "6", "Shift_R+F6"}, {"--video-on-key"});
+    ASSERT_EQ(keyed.exitCode, 0) << keyed.err;
+    Decoded decoded;
+    std::string error;
+    ASSERT_TRUE(decode(video, decoded, error)) << error;
+    ASSERT_GE(decoded.frames.size(), 1u);
+    for (const auto& [frame, difference] : nearest(decoded, liveFrames(dir, 12))) {
+        EXPECT_GE(frame, 6);
+        EXPECT_LT(difference, kLiveLoss);
+    }
+}
+
+// Frames are placed on the video's clock by the time they carry: frames 40 ms apart at 50
+// fps fill two video frames each (the last one once), each video frame the grey of the
+// program frame shown at its time.
+TEST(LiveVideo, FramesArePlacedOnTheClockTheyCarry)
+{
+    const std::string dir = freshDir("video_live_clock");
+    const std::string video = dir + "/clock.mkv";
+    const ProcessResult r =
+        runProcess({nprglCommand(), "run", "--video", video, "--fps", "50", "--",
+                    binDir() + "/probe_video_feed", "--good", "4"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Decoded decoded;
+    std::string error;
+    ASSERT_TRUE(decode(video, decoded, error)) << error;
+    ASSERT_EQ(decoded.frames.size(), 7u) << r.err;
+    const int expected[] = {40, 40, 80, 80, 120, 120, 160};
+    for (size_t i = 0; i < decoded.frames.size(); ++i) {
+        const PngImage& frame = decoded.frames[i];
+        EXPECT_NEAR(frame.rgba[(size_t(16) * frame.width + 16) * 4], expected[i], 3) << i;
+    }
+    EXPECT_NE(r.err.find("(7 frames) from 4 frames of process"), std::string::npos) << r.err;
+}
+
+// What comes over the socket is checked: a stranger's hello, a header that is not one, a
+// frame larger than any video and one cut short are each said (with where) and end that
+// feed; the run itself is the program's, exit status 0, and no file claims frames it lacks.
+TEST(LiveVideo, ADamagedFeedIsSaidAndEndsThatFeed)
+{
+    const std::string dir = freshDir("video_live_damaged");
+    struct Case {
+        const char* mode;
+        const char* said;
+        bool file;
+    };
+    const Case cases[] = {
+        {"--not-nprgl", "a connection that is not nprgl's library", false},
+        {"--bad-magic", "a damaged frame message from process", true},
+        {"--huge", "a damaged frame message from process", false},
+        {"--truncated", "ended in the middle of frame 1", false},
+    };
+    for (const Case& c : cases) {
+        const std::string video = dir + "/" + std::string(c.mode + 2) + ".mp4";
+        const ProcessResult r = runProcess({nprglCommand(), "run", "--video", video, "--",
+                                            binDir() + "/probe_video_feed", c.mode});
+        EXPECT_EQ(r.exitCode, 0) << c.mode << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.said), std::string::npos) << c.mode << "\n" << r.err;
+        EXPECT_EQ(fs::exists(video), c.file) << c.mode << "\n" << r.err;
+    }
+}
+
+// A name no container takes, a bad rate, and --fps or --video-on-key without --video are
+// usage errors before the program starts.
+TEST(LiveVideo, BadOptionsAreUsageErrorsBeforeTheProgram)
+{
+    const std::string dir = freshDir("video_live_options");
+    const std::string marker = dir + "/ran";
+    const std::vector<std::string> program = {"--", "touch", marker};
+    const std::vector<std::vector<std::string>> bad = {
+        {"--video", dir + "/v.nosuchformat"},
+        {"--video", dir + "/v.mp4", "--fps", "0"},
+        {"--fps", "25"},
+        {"--video-on-key"},
+    };
+    for (std::vector<std::string> options : bad) {
+        options.insert(options.begin(), {nprglCommand(), "run"});
+        options.insert(options.end(), program.begin(), program.end());
+        const ProcessResult r = runProcess(options);
+        EXPECT_EQ(r.exitCode, 2) << options[2] << "\n" << r.err;
+        EXPECT_FALSE(fs::exists(marker)) << options[2];
+    }
+}

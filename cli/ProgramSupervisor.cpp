@@ -1,6 +1,7 @@
-#include "cli/RecordSupervisor.h"
+#include "cli/ProgramSupervisor.h"
 
 #include "capture/CaptureReader.h"
+#include "cli/VideoReceiver.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -142,7 +143,8 @@ int execProgram(const std::vector<std::string>& argv)
     return err == ENOENT ? 127 : 126;
 }
 
-void superviseRecording(const std::vector<std::string>& argv, const std::string& path)
+void superviseProgram(const std::vector<std::string>& argv, const std::string& path,
+                      VideoReceiver* video)
 {
     struct sigaction action {};
     action.sa_sigaction = passOn;
@@ -164,23 +166,27 @@ void superviseRecording(const std::vector<std::string>& argv, const std::string&
         // left running unwatched.
         prctl(PR_SET_PDEATHSIG, SIGTERM);
         if (getppid() != self) std::_Exit(128 + SIGTERM);
-        setenv("NPRGL_RECORD_PID", std::to_string(getpid()).c_str(), 1);
+        if (!path.empty()) setenv("NPRGL_RECORD_PID", std::to_string(getpid()).c_str(), 1);
         std::fflush(stderr);
         std::_Exit(execProgram(argv));
     }
     gChild = child;
     int status = 0;
-    while (waitpid(child, &status, 0) < 0) {
-        if (errno != EINTR) {
+    for (;;) {
+        if (video) video->serve(50);
+        const pid_t ended = waitpid(child, &status, video ? WNOHANG : 0);
+        if (ended == child) break;
+        if (ended < 0 && errno != EINTR) {
             std::fprintf(stderr, "nprgl: waiting for the program: %s\n", std::strerror(errno));
             std::exit(1);
         }
     }
     gChild = 0;
-    const bool couldNotStart = WIFEXITED(status) &&
+    if (video) video->finish();
+    const bool couldNotStart = !path.empty() && WIFEXITED(status) &&
                                (WEXITSTATUS(status) == 127 || WEXITSTATUS(status) == 126) &&
                                !std::filesystem::exists(path);
-    if (!couldNotStart) {
+    if (!path.empty() && !couldNotStart) {
         std::string how = "exited with status " + std::to_string(WEXITSTATUS(status));
         if (WIFSIGNALED(status)) {
             const char* name = sigabbrev_np(WTERMSIG(status));

@@ -1,0 +1,239 @@
+#include "frame/LiveVideo.h"
+
+#include "common/Log.h"
+#include "frame/FrameGrabber.h"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <pthread.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <thread>
+#include <unistd.h>
+#include <utility>
+
+namespace nprgl {
+
+namespace {
+
+std::mutex gInstanceMutex;
+LiveVideo* gInstance = nullptr; // never destroyed: its thread may outlive static destructors
+pid_t gInstancePid = 0;
+
+std::string environment(const char* name)
+{
+    const char* value = std::getenv(name);
+    return value ? value : "";
+}
+
+uint64_t monotonicNs()
+{
+    timespec now {};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return uint64_t(now.tv_sec) * 1000000000u + uint64_t(now.tv_nsec);
+}
+
+} // namespace
+
+LiveVideo* LiveVideo::instance()
+{
+    static const std::string name = environment(video::kSocketVariable);
+    if (name.empty()) return nullptr;
+    std::lock_guard lock(gInstanceMutex);
+    if (!gInstance || gInstancePid != getpid()) {
+        static bool registered = false;
+        gInstance = new LiveVideo(name, environment(video::kStartVariable) == "key");
+        gInstancePid = getpid();
+        if (!registered) {
+            registered = true;
+            std::atexit([] {
+                std::lock_guard guard(gInstanceMutex);
+                if (gInstance && gInstancePid == getpid()) gInstance->flushAtExit();
+            });
+        }
+    }
+    return gInstance;
+}
+
+LiveVideo::LiveVideo(std::string socketName, bool waitForKey)
+    : mSocketName(std::move(socketName)), mRecording(!waitForKey), mSpan(waitForKey ? 0 : 1)
+{
+}
+
+bool LiveVideo::wants(uint32_t serial)
+{
+    std::lock_guard lock(mMutex);
+    if (!mRecording || mStopped) return false;
+    if (mContext == 0) mContext = serial;
+    if (mContext != serial) {
+        if (!mOtherSaid) {
+            NPRGL_INFO("video: context %u is the one recorded; context %u is not", mContext,
+                       serial);
+            mOtherSaid = true;
+        }
+        return false;
+    }
+    if (mQueuedFull) {
+        ++mDropped;
+        return false;
+    }
+    return true;
+}
+
+void LiveVideo::addFrame(uint32_t serial, uint64_t frame, const ContextCaps& caps, int width,
+                         int height)
+{
+    const char* why = FrameGrabber::cannotRead(caps, width, height);
+    if (!why && (width > int(video::kMaxSide) || height > int(video::kMaxSide))) {
+        why = "larger than a video frame may be";
+    }
+    if (why) {
+        std::lock_guard lock(mMutex);
+        ++mDropped;
+        if (!std::exchange(mUnreadableSaid, true)) {
+            NPRGL_WARN("video: context %u: frame %llu cannot be read (%s); not in the video "
+                       "(said once)", serial, static_cast<unsigned long long>(frame), why);
+        }
+        return;
+    }
+    // wants() said the queue is empty: the sending thread does not touch mQueued until it is
+    // marked full below. Its storage is kept, so a frame of an unchanged size allocates nothing.
+    mQueued.resize(size_t(width) * size_t(height) * 4);
+    const GLenum refused = FrameGrabber::readFrame(caps, width, height, mQueued.data());
+    std::lock_guard lock(mMutex);
+    if (refused != GL_NO_ERROR) {
+        ++mDropped;
+        if (!std::exchange(mUnreadableSaid, true)) {
+            NPRGL_WARN("video: the driver refused to read frame %llu (GL error 0x%x); not in "
+                       "the video (said once)", static_cast<unsigned long long>(frame), refused);
+        }
+        return;
+    }
+    mQueuedHeader = video::FrameHeader{};
+    mQueuedHeader.span = mSpan;
+    mQueuedHeader.width = uint32_t(width);
+    mQueuedHeader.height = uint32_t(height);
+    mQueuedHeader.timeNs = monotonicNs();
+    mQueuedHeader.frame = frame;
+    mQueuedHeader.dropped = mDropped;
+    mQueuedFull = true;
+    if (!mThreadStarted) {
+        mThreadStarted = true;
+        // The program's signals are handled on its own threads, never on this one.
+        sigset_t all, old;
+        sigfillset(&all);
+        pthread_sigmask(SIG_SETMASK, &all, &old);
+        std::thread(&LiveVideo::sendLoop, this).detach();
+        pthread_sigmask(SIG_SETMASK, &old, nullptr);
+    }
+    mChanged.notify_all();
+}
+
+void LiveVideo::toggle(uint32_t serial)
+{
+    std::lock_guard lock(mMutex);
+    if (mStopped) {
+        NPRGL_WARN("video key: no video is being written (the connection to nprgl ended)");
+        return;
+    }
+    mRecording = !mRecording;
+    if (mRecording) {
+        ++mSpan;
+        NPRGL_INFO("video key (context %u): recording %u started", serial, mSpan);
+    } else {
+        NPRGL_INFO("video key (context %u): recording %u stopped", serial, mSpan);
+    }
+}
+
+bool LiveVideo::connectToReceiver()
+{
+    sockaddr_un address {};
+    address.sun_family = AF_UNIX;
+    if (mSocketName.size() + 1 > sizeof address.sun_path) {
+        NPRGL_ERROR("video: %s is too long a socket name; no video", video::kSocketVariable);
+        return false;
+    }
+    // An abstract name (a leading NUL): nothing in the file system to leave behind.
+    std::memcpy(address.sun_path + 1, mSocketName.data(), mSocketName.size());
+    const socklen_t length = socklen_t(offsetof(sockaddr_un, sun_path) + 1 + mSocketName.size());
+    mSocket = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (mSocket < 0 || connect(mSocket, reinterpret_cast<sockaddr*>(&address), length) != 0) {
+        NPRGL_ERROR("video: cannot reach the nprgl command that asked for it (%s); no video",
+                    std::strerror(errno));
+        return false;
+    }
+    video::Hello hello;
+    hello.pid = uint32_t(getpid());
+    char answer = 0;
+    if (!sendAll(&hello, sizeof hello) || recv(mSocket, &answer, 1, MSG_WAITALL) != 1) {
+        NPRGL_ERROR("video: the nprgl command did not answer; no video");
+        return false;
+    }
+    if (answer != video::kAccepted) {
+        NPRGL_INFO("video: another process of this run is being recorded; process %d is not",
+                   int(getpid()));
+        return false;
+    }
+    return true;
+}
+
+bool LiveVideo::sendAll(const void* data, size_t bytes)
+{
+    const auto* at = static_cast<const uint8_t*>(data);
+    while (bytes > 0) {
+        // MSG_NOSIGNAL: a receiver gone is an error here, never a SIGPIPE for the program.
+        const ssize_t sent = send(mSocket, at, bytes, MSG_NOSIGNAL);
+        if (sent < 0 && errno == EINTR) continue;
+        if (sent <= 0) return false;
+        at += sent;
+        bytes -= size_t(sent);
+    }
+    return true;
+}
+
+void LiveVideo::sendLoop()
+{
+    const bool connected = connectToReceiver();
+    for (bool ok = connected; ok;) {
+        video::FrameHeader header;
+        {
+            std::unique_lock lock(mMutex);
+            mChanged.wait(lock, [&] { return mQueuedFull; });
+            std::swap(mQueued, mSending);
+            header = mQueuedHeader;
+            mQueuedFull = false;
+            mSendingBusy = true;
+        }
+        ok = sendAll(&header, sizeof header) && sendAll(mSending.data(), mSending.size());
+        std::lock_guard lock(mMutex);
+        mSendingBusy = false;
+        if (!ok) {
+            NPRGL_WARN("video: the nprgl command stopped reading (%s); frames from %llu on are "
+                       "not in the video", std::strerror(errno),
+                       static_cast<unsigned long long>(header.frame));
+        }
+        mChanged.notify_all();
+    }
+    std::lock_guard lock(mMutex);
+    mStopped = true;
+    mQueuedFull = false;
+    if (mSocket >= 0) close(mSocket);
+    mSocket = -1;
+    mChanged.notify_all();
+}
+
+void LiveVideo::flushAtExit()
+{
+    std::unique_lock lock(mMutex);
+    if (!mThreadStarted) return;
+    // Bounded: a receiver that stopped reading must not keep the program from ending.
+    mChanged.wait_for(lock, std::chrono::seconds(3),
+                      [&] { return mStopped || (!mQueuedFull && !mSendingBusy); });
+}
+
+} // namespace nprgl
