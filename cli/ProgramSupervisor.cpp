@@ -171,6 +171,9 @@ void superviseProgram(const std::vector<std::string>& argv, const std::string& p
         std::_Exit(execProgram(argv));
     }
     gChild = child;
+    // The encoder shares the processors with the program: the program comes first (a frame
+    // the encoder has no time for is counted, the program never waits for it).
+    if (video) setpriority(PRIO_PROCESS, 0, 10);
     int status = 0;
     for (;;) {
         if (video) video->serve(50);

@@ -250,6 +250,7 @@ int runProgram(const RunOptions& options)
     if (!options.video.empty()) {
         if (!video.open(options.video, options.fps, error)) return fail("--video: " + error);
         setenv(video::kSocketVariable, video.socketName().c_str(), 1);
+        setenv(video::kFpsVariable, std::to_string(options.fps).c_str(), 1);
         if (options.videoOnKey) {
             setenv(video::kStartVariable, "key", 1);
         } else {

@@ -218,7 +218,7 @@ void VideoReceiver::startFile()
     mEmitted = mTaken = mDropped = 0;
     mLastEmitted = mFailed = false;
     std::string error;
-    if (!mWriter->open(fileName(mFiles), mFps, error)) {
+    if (!mWriter->open(fileName(mFiles), mFps, error, VideoWriter::Speed::Live)) {
         std::fprintf(stderr, "nprgl: video: %s\n", error.c_str());
         mFailed = true;
     }

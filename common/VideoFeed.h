@@ -6,9 +6,11 @@
 namespace nprgl::video {
 
 // The environment of a program `nprgl run --video` started: the socket's abstract name
-// (without the leading NUL), and "key" when the first recording waits for the video key.
+// (without the leading NUL), "key" when the first recording waits for the video key, and the
+// video's frame rate (a frame is read only when the video's clock has moved on to a new frame).
 inline constexpr const char* kSocketVariable = "NPRGL_VIDEO_SOCKET";
 inline constexpr const char* kStartVariable = "NPRGL_VIDEO_START";
+inline constexpr const char* kFpsVariable = "NPRGL_VIDEO_FPS";
 
 inline constexpr uint32_t kHelloMagic = 0x4f44564eu; // "NVDO"
 inline constexpr uint32_t kFrameMagic = 0x4d52464eu; // "NFRM"

@@ -47,7 +47,8 @@ LiveVideo* LiveVideo::instance()
     std::lock_guard lock(gInstanceMutex);
     if (!gInstance || gInstancePid != getpid()) {
         static bool registered = false;
-        gInstance = new LiveVideo(name, environment(video::kStartVariable) == "key");
+        const int fps = std::atoi(environment(video::kFpsVariable).c_str());
+        gInstance = new LiveVideo(name, environment(video::kStartVariable) == "key", fps);
         gInstancePid = getpid();
         if (!registered) {
             registered = true;
@@ -60,8 +61,9 @@ LiveVideo* LiveVideo::instance()
     return gInstance;
 }
 
-LiveVideo::LiveVideo(std::string socketName, bool waitForKey)
-    : mSocketName(std::move(socketName)), mRecording(!waitForKey), mSpan(waitForKey ? 0 : 1)
+LiveVideo::LiveVideo(std::string socketName, bool waitForKey, int fps)
+    : mSocketName(std::move(socketName)), mRecording(!waitForKey), mSpan(waitForKey ? 0 : 1),
+      mPeriodNs(fps >= 1 && fps <= 1000 ? 1000000000ull / uint64_t(fps) : 0)
 {
 }
 
@@ -78,10 +80,19 @@ bool LiveVideo::wants(uint32_t serial)
         }
         return false;
     }
+    const uint64_t now = monotonicNs();
+    if (mSpanStartNs != 0 && mPeriodNs != 0) {
+        // Still in the video frame of the last frame read: the video would not show it.
+        const uint64_t slot = (now - mSpanStartNs) / mPeriodNs;
+        if (slot <= mLastSlot) return false;
+    }
     if (mQueuedFull) {
         ++mDropped;
         return false;
     }
+    if (mSpanStartNs == 0) mSpanStartNs = now;
+    mLastSlot = mPeriodNs ? (now - mSpanStartNs) / mPeriodNs : 0;
+    mWantedNs = now;
     return true;
 }
 
@@ -118,7 +129,7 @@ void LiveVideo::addFrame(uint32_t serial, uint64_t frame, const ContextCaps& cap
     mQueuedHeader.span = mSpan;
     mQueuedHeader.width = uint32_t(width);
     mQueuedHeader.height = uint32_t(height);
-    mQueuedHeader.timeNs = monotonicNs();
+    mQueuedHeader.timeNs = mWantedNs;
     mQueuedHeader.frame = frame;
     mQueuedHeader.dropped = mDropped;
     mQueuedFull = true;
@@ -144,6 +155,7 @@ void LiveVideo::toggle(uint32_t serial)
     mRecording = !mRecording;
     if (mRecording) {
         ++mSpan;
+        mSpanStartNs = 0;
         NPRGL_INFO("video key (context %u): recording %u started", serial, mSpan);
     } else {
         NPRGL_INFO("video key (context %u): recording %u stopped", serial, mSpan);

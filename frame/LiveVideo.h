@@ -34,7 +34,7 @@ public:
     void toggle(uint32_t serial);
 
 private:
-    explicit LiveVideo(std::string socketName, bool waitForKey);
+    LiveVideo(std::string socketName, bool waitForKey, int fps);
     void sendLoop();
     // Connects and says hello; false (said once) when nprgl is not there or refuses.
     bool connectToReceiver();
@@ -52,6 +52,12 @@ private:
     uint32_t mContext = 0;   // the recorded context's serial; 0 until the first frame
     uint32_t mSpan = 0;
     uint64_t mDropped = 0;
+    // The video's clock: a frame is read when its time is in a video frame after the last
+    // one read (a program faster than the video has most of its frames never read).
+    uint64_t mPeriodNs = 0;
+    uint64_t mSpanStartNs = 0; // the recording's first frame; 0: none yet
+    uint64_t mLastSlot = 0;
+    uint64_t mWantedNs = 0;    // when wants() said yes: the frame's time
     bool mOtherSaid = false;
     bool mUnreadableSaid = false;
     bool mThreadStarted = false;

@@ -26,6 +26,7 @@ struct VideoWriter::State {
     int width = 0; // of the frames given
     int height = 0;
     int fps = 0;
+    bool live = false;
     const char* encoder = nullptr;
     bool webm = false;
     bool headerWritten = false;
@@ -61,12 +62,13 @@ VideoWriter::VideoWriter() = default;
 
 VideoWriter::~VideoWriter() = default;
 
-bool VideoWriter::open(const std::string& path, int fps, std::string& error)
+bool VideoWriter::open(const std::string& path, int fps, std::string& error, Speed speed)
 {
     mState = std::make_unique<State>();
     State& s = *mState;
     s.path = path;
     s.fps = fps;
+    s.live = speed == Speed::Live;
     // The encoders' statistics are not nprgl's to print; their errors still are.
     av_log_set_level(AV_LOG_ERROR);
     if (fps < 1 || fps > 1000) {
@@ -131,12 +133,12 @@ bool VideoWriter::start(int width, int height, std::string& error)
     if (s.webm) {
         s.codec->bit_rate = 0;
         av_opt_set(s.codec->priv_data, "crf", "20", 0);
-        av_opt_set(s.codec->priv_data, "deadline", "good", 0);
-        av_opt_set(s.codec->priv_data, "cpu-used", "4", 0);
+        av_opt_set(s.codec->priv_data, "deadline", s.live ? "realtime" : "good", 0);
+        av_opt_set(s.codec->priv_data, "cpu-used", s.live ? "8" : "4", 0);
         av_opt_set(s.codec->priv_data, "row-mt", "1", 0);
     } else {
         av_opt_set(s.codec->priv_data, "crf", "16", 0);
-        av_opt_set(s.codec->priv_data, "preset", "medium", 0);
+        av_opt_set(s.codec->priv_data, "preset", s.live ? "veryfast" : "medium", 0);
     }
     if (s.format->oformat->flags & AVFMT_GLOBALHEADER) {
         s.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
