@@ -53,6 +53,13 @@ int reportedItems(const std::string& out, int frames)
     return std::stoi(match[1]);
 }
 
+// demo_state's "glsl: ..." report line (its GLSL program as GL described it), or "".
+std::string glslLine(const std::string& out)
+{
+    std::smatch match;
+    return std::regex_search(out, match, std::regex("glsl: [^\n]*")) ? match.str() : "";
+}
+
 class StateUnderNprgl : public ::testing::TestWithParam<std::tuple<std::string, bool>> {};
 
 std::string stateCaseName(const ::testing::TestParamInfo<std::tuple<std::string, bool>>& info)
@@ -111,6 +118,10 @@ TEST_P(StateUnderNprgl, EveryQueryAnswersWhatWasSet)
     int items = reportedItems(r.out, 5);
     EXPECT_GE(items, 100) << r.out;
     EXPECT_EQ(items, reportedItems(native.out, 5)) << r.out;
+    // What GL said of the program's own GLSL program (compile and link results, logs,
+    // locations, active uniforms and attributes) is what it says natively.
+    EXPECT_EQ(glslLine(r.out), glslLine(native.out));
+    EXPECT_NE(glslLine(native.out), "");
     if (style != "none") {
         // The style did draw (a transparent nothing would pass the checks above too).
         std::string file = "/state_5.png";

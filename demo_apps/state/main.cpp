@@ -9,6 +9,7 @@
 
 #include "BitmapFont.h"
 #include "Demo.h"
+#include "GlslProbe.h"
 
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -229,6 +230,7 @@ public:
         glNewList(listBase_, GL_COMPILE);
         demo::drawTorus(0.55f, 0.18f, 32, 12);
         glEndList();
+        if (!glsl_.init(error)) return false;
         GLenum initError = glGetError();
         if (initError != GL_NO_ERROR) {
             error = std::string("setting up raised ") + errorName(initError);
@@ -256,6 +258,13 @@ public:
         // An error made before the draws must still be pending after them.
         glLineWidth(-1.0f);
         drawScene(frame);
+        // A draw with the program's own GLSL, and what GL says of that program from here on.
+        glsl_.draw(frame);
+        const std::vector<GlslProbe::Answer> answers = glsl_.expected();
+        for (size_t i = 0; i < answers.size(); ++i) {
+            expect("GLSL " + answers[i].name, [this, i] { return glsl_.ask()[i].values; },
+                   answers[i].values);
+        }
         expectError(GL_INVALID_VALUE, "glLineWidth(-1) made before the scene's draws");
 
         applyState(frame);
@@ -290,6 +299,7 @@ public:
             expectError(GL_INVALID_ENUM, "made before the last frame's SwapBuffers");
             verify("after the last frame's glFinish/SwapBuffers");
         }
+        glsl_.shutdown();
         glDeleteLists(listBase_, 2);
         glDeleteTextures(2, textures_);
         glDeleteBuffers(2, buffers_);
@@ -297,6 +307,7 @@ public:
 
     bool failed() const { return failed_; }
     bool report() const { return report_; }
+    std::string glslSummary() const { return glsl_.summary(); }
     int framesChecked() const { return framesChecked_; }
     size_t itemCount() const { return items_.size() + errorChecks_; }
 
@@ -1150,6 +1161,7 @@ private:
     demo::BitmapFont font_;
     std::array<uint8_t, imageSize * imageSize * 4> badge_{};
     std::vector<Item> items_;
+    GlslProbe glsl_;
 };
 
 } // namespace
@@ -1167,6 +1179,7 @@ int main(int argc, char** argv)
     if (scene.report()) {
         std::printf("state checks: %zu items x %d frames, all equal\n", scene.itemCount(),
                     scene.framesChecked());
+        std::printf("%s\n", scene.glslSummary().c_str());
     }
     return 0;
 }
