@@ -1,5 +1,7 @@
 #include "cli/VideoReceiver.h"
 
+#include "common/SocketIo.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -17,20 +19,6 @@
 namespace nprgl::cli {
 
 namespace {
-
-// Reads exactly `bytes`; false at the end of the stream or an error.
-bool readAll(int fd, void* data, size_t bytes)
-{
-    auto* at = static_cast<uint8_t*>(data);
-    while (bytes > 0) {
-        const ssize_t got = recv(fd, at, bytes, MSG_WAITALL);
-        if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) return false;
-        at += got;
-        bytes -= size_t(got);
-    }
-    return true;
-}
 
 // Waits up to timeoutMs for fd to have something to read.
 bool readable(int fd, int timeoutMs)
@@ -111,7 +99,8 @@ void VideoReceiver::accept()
         return;
     }
     video::Hello hello;
-    if (!readable(connection->fd, 2000) || !readAll(connection->fd, &hello, sizeof hello) ||
+    if (!readable(connection->fd, 2000) ||
+        !SocketIo::readAll(connection->fd, &hello, sizeof hello) ||
         hello.magic != video::kHelloMagic || hello.version != video::kVersion) {
         std::fprintf(stderr, "nprgl: video: a connection that is not nprgl's library; "
                      "ignored\n");
@@ -120,7 +109,7 @@ void VideoReceiver::accept()
     connection->pid = hello.pid;
     connection->bytes = sizeof hello;
     const char answer = mActive ? video::kRefused : video::kAccepted;
-    if (send(connection->fd, &answer, 1, MSG_NOSIGNAL) != 1 || mActive) return;
+    if (!SocketIo::sendAll(connection->fd, &answer, 1) || mActive) return;
     mActive = std::move(connection);
 }
 
@@ -128,7 +117,7 @@ bool VideoReceiver::readFrame()
 {
     Connection& c = *mActive;
     video::FrameHeader header;
-    if (!readAll(c.fd, &header, sizeof header)) return false; // the process ended
+    if (!SocketIo::readAll(c.fd, &header, sizeof header)) return false; // the process ended
     const bool sane = header.magic == video::kFrameMagic && header.span > 0 &&
                       header.width > 0 && header.height > 0 &&
                       header.width <= video::kMaxSide && header.height <= video::kMaxSide;
@@ -139,7 +128,7 @@ bool VideoReceiver::readFrame()
         return false;
     }
     mPixels.resize(size_t(header.width) * header.height * 4);
-    if (!readAll(c.fd, mPixels.data(), mPixels.size())) {
+    if (!SocketIo::readAll(c.fd, mPixels.data(), mPixels.size())) {
         std::fprintf(stderr, "nprgl: video: process %u ended in the middle of frame %llu; the "
                      "video ends at the frame before\n", c.pid,
                      static_cast<unsigned long long>(header.frame));

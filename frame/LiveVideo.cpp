@@ -1,6 +1,7 @@
 #include "frame/LiveVideo.h"
 
 #include "common/Log.h"
+#include "common/SocketIo.h"
 #include "frame/FrameGrabber.h"
 
 #include <cerrno>
@@ -182,7 +183,8 @@ bool LiveVideo::connectToReceiver()
     video::Hello hello;
     hello.pid = uint32_t(getpid());
     char answer = 0;
-    if (!sendAll(&hello, sizeof hello) || recv(mSocket, &answer, 1, MSG_WAITALL) != 1) {
+    if (!SocketIo::sendAll(mSocket, &hello, sizeof hello) ||
+        !SocketIo::readAll(mSocket, &answer, 1)) {
         NPRGL_ERROR("video: the nprgl command did not answer; no video");
         return false;
     }
@@ -190,20 +192,6 @@ bool LiveVideo::connectToReceiver()
         NPRGL_INFO("video: another process of this run is being recorded; process %d is not",
                    int(getpid()));
         return false;
-    }
-    return true;
-}
-
-bool LiveVideo::sendAll(const void* data, size_t bytes)
-{
-    const auto* at = static_cast<const uint8_t*>(data);
-    while (bytes > 0) {
-        // MSG_NOSIGNAL: a receiver gone is an error here, never a SIGPIPE for the program.
-        const ssize_t sent = send(mSocket, at, bytes, MSG_NOSIGNAL);
-        if (sent < 0 && errno == EINTR) continue;
-        if (sent <= 0) return false;
-        at += sent;
-        bytes -= size_t(sent);
     }
     return true;
 }
@@ -221,7 +209,8 @@ void LiveVideo::sendLoop()
             mQueuedFull = false;
             mSendingBusy = true;
         }
-        ok = sendAll(&header, sizeof header) && sendAll(mSending.data(), mSending.size());
+        ok = SocketIo::sendAll(mSocket, &header, sizeof header) &&
+             SocketIo::sendAll(mSocket, mSending.data(), mSending.size());
         std::lock_guard lock(mMutex);
         mSendingBusy = false;
         if (!ok) {

@@ -38,7 +38,6 @@ private:
     void sendLoop();
     // Connects and says hello; false (said once) when nprgl is not there or refuses.
     bool connectToReceiver();
-    bool sendAll(const void* data, size_t bytes);
     // The process ends: the frame being sent, and the one queued, still go (a bounded wait).
     void flushAtExit();
 
