@@ -27,7 +27,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from benchlib import RunFailed, clean_env, report_fps  # noqa: E402
 
-SUMMARY_RE = re.compile(r"video \S+: .* from (\d+) frames of process \d+ \(frames \d+ to \d+\)"
+SUMMARY_RE = re.compile(r"video \S+: .* from (\d+) frames? of process \d+ \(frames \d+ to \d+\)"
                         r"(?:; (\d+) not taken)?")
 
 

@@ -228,11 +228,11 @@ void VideoReceiver::endFile()
                            " not taken while the one before was still on its way"
                      : "";
         std::fprintf(stderr,
-                     "nprgl: video %s: %.1f s at %d fps (%llu frames) from %llu frames of "
+                     "nprgl: video %s: %.1f s at %d fps (%llu frame%s) from %llu frame%s of "
                      "process %u (frames %llu to %llu)%s\n",
                      name.c_str(), seconds(mEmitted, mFps), mFps,
-                     static_cast<unsigned long long>(mEmitted),
-                     static_cast<unsigned long long>(mTaken), mPid,
+                     static_cast<unsigned long long>(mEmitted), mEmitted == 1 ? "" : "s",
+                     static_cast<unsigned long long>(mTaken), mTaken == 1 ? "" : "s", mPid,
                      static_cast<unsigned long long>(mFirstFrame),
                      static_cast<unsigned long long>(mLastFrame), dropped.c_str());
     }
