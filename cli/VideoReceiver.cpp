@@ -5,14 +5,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <poll.h>
 #include <random>
 #include <sys/socket.h>
-#include <sys/un.h>
 #include <unistd.h>
 #include <utility>
 
@@ -63,13 +61,8 @@ bool VideoReceiver::open(const std::string& path, int fps, std::string& error)
     std::snprintf(name, sizeof name, "nprgl-video-%d-%08x%08x", int(getpid()), random(),
                   random());
     mSocketName = name;
-    sockaddr_un address {};
-    address.sun_family = AF_UNIX;
-    std::memcpy(address.sun_path + 1, mSocketName.data(), mSocketName.size());
-    const socklen_t length = socklen_t(offsetof(sockaddr_un, sun_path) + 1 + mSocketName.size());
-    mListen = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    if (mListen < 0 || bind(mListen, reinterpret_cast<sockaddr*>(&address), length) != 0 ||
-        listen(mListen, 8) != 0) {
+    mListen = SocketIo::listenAbstract(mSocketName, 8);
+    if (mListen < 0) {
         error = std::string("cannot listen for the program's frames: ") + std::strerror(errno);
         return false;
     }

@@ -7,13 +7,11 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
-#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <pthread.h>
 #include <sys/socket.h>
-#include <sys/un.h>
 #include <thread>
 #include <unistd.h>
 #include <utility>
@@ -82,17 +80,16 @@ bool LiveVideo::wants(uint32_t serial)
         return false;
     }
     const uint64_t now = monotonicNs();
-    if (mSpanStartNs != 0 && mPeriodNs != 0) {
-        // Still in the video frame of the last frame read: the video would not show it.
-        const uint64_t slot = (now - mSpanStartNs) / mPeriodNs;
-        if (slot <= mLastSlot) return false;
-    }
+    const uint64_t start = mSpanStartNs ? mSpanStartNs : now;
+    const uint64_t slot = mPeriodNs ? (now - start) / mPeriodNs : 0;
+    // Still in the video frame of the last frame read: the video would not show it.
+    if (mSpanStartNs != 0 && mPeriodNs != 0 && slot <= mLastSlot) return false;
     if (mQueuedFull) {
         ++mDropped;
         return false;
     }
-    if (mSpanStartNs == 0) mSpanStartNs = now;
-    mLastSlot = mPeriodNs ? (now - mSpanStartNs) / mPeriodNs : 0;
+    mSpanStartNs = start;
+    mLastSlot = slot;
     mWantedNs = now;
     return true;
 }
@@ -165,17 +162,12 @@ void LiveVideo::toggle(uint32_t serial)
 
 bool LiveVideo::connectToReceiver()
 {
-    sockaddr_un address {};
-    address.sun_family = AF_UNIX;
-    if (mSocketName.size() + 1 > sizeof address.sun_path) {
+    mSocket = SocketIo::connectAbstract(mSocketName);
+    if (mSocket < 0 && errno == ENAMETOOLONG) {
         NPRGL_ERROR("video: %s is too long a socket name; no video", video::kSocketVariable);
         return false;
     }
-    // An abstract name (a leading NUL): nothing in the file system to leave behind.
-    std::memcpy(address.sun_path + 1, mSocketName.data(), mSocketName.size());
-    const socklen_t length = socklen_t(offsetof(sockaddr_un, sun_path) + 1 + mSocketName.size());
-    mSocket = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    if (mSocket < 0 || connect(mSocket, reinterpret_cast<sockaddr*>(&address), length) != 0) {
+    if (mSocket < 0) {
         NPRGL_ERROR("video: cannot reach the nprgl command that asked for it (%s); no video",
                     std::strerror(errno));
         return false;

@@ -244,7 +244,7 @@ bool Context::endFrame(bool shown)
     ++mFrame;
     if (mRecorder) mRecorder->endFrame(mFrame);
     LiveVideo* video = LiveVideo::instance();
-    mVideoFrame = video && video->wants(mSerial);
+    mVideoFrame = video && video->wants(mSerial) ? video : nullptr;
     return (mConfig.screenshots && mConfig.screenshotFrames.contains(mFrame)) ||
            !mShotNow.empty() || (mRecorder && mRecorder->frameKept()) || mVideoFrame;
 }
@@ -470,8 +470,8 @@ void Context::writeFrameScreenshot(int width, int height)
 
 void Context::writeHotkeyScreenshot(int width, int height)
 {
-    if (std::exchange(mVideoFrame, false)) {
-        LiveVideo::instance()->addFrame(mSerial, mFrame, mCaps, width, height);
+    if (LiveVideo* video = std::exchange(mVideoFrame, nullptr)) {
+        video->addFrame(mSerial, mFrame, mCaps, width, height);
     }
     if (mRecorder && mRecorder->frameKept()) writeScreenshotPair(width, height);
     if (mShotNow.empty()) return;

@@ -13,6 +13,7 @@
 namespace nprgl {
 
 class Compositor;
+class LiveVideo;
 class Overlay;
 class Recorder;
 
@@ -153,7 +154,8 @@ private:
     // written: mShotStem_styled.png and _unstyled.png. Where it cannot be drawn again, the
     // unstyled picture is of the frame after it (mShotNext, then mShotNow at its swap).
     std::string mShotStem;
-    bool mVideoFrame = false; // this frame goes to the video (at writeHotkeyScreenshot)
+    // The video this frame goes to (at writeHotkeyScreenshot), when it goes to one.
+    LiveVideo* mVideoFrame = nullptr;
     std::string mShotNow;    // a hotkey screenshot of this frame, written at this swap
     std::string mShotNext;   // the fallback's unstyled picture, of the next frame
     bool mShotRestore = true; // styling on or off after the pair

@@ -37,7 +37,6 @@ public:
     std::vector<Answer> expected() const;
     // "glsl: ..." for the report: the answers at init, to compare with a native run's.
     std::string summary() const;
-    GLuint program() const { return mProgram; }
 
 private:
     GLuint mVertex = 0;

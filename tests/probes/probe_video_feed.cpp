@@ -3,6 +3,7 @@
 // that is not one), --bad-magic (a frame header that is not one), --huge (a frame larger
 // than any video), --truncated (a frame that ends half-way), --good N (N small frames, each
 // a grey level of its own, 40 ms apart on the clock they carry).
+#include "common/SocketIo.h"
 #include "common/VideoFeed.h"
 
 #include <cstddef>
@@ -10,8 +11,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
-#include <sys/socket.h>
-#include <sys/un.h>
 #include <unistd.h>
 #include <vector>
 
@@ -26,18 +25,14 @@ int connectFeed()
         std::fprintf(stderr, "probe_video_feed: no %s\n", video::kSocketVariable);
         std::exit(3);
     }
-    sockaddr_un address {};
-    address.sun_family = AF_UNIX;
-    std::memcpy(address.sun_path + 1, name, std::strlen(name));
-    const int fd = socket(AF_UNIX, SOCK_STREAM, 0);
-    const socklen_t length = socklen_t(offsetof(sockaddr_un, sun_path) + 1 + std::strlen(name));
-    if (connect(fd, reinterpret_cast<sockaddr*>(&address), length) != 0) std::exit(4);
+    const int fd = SocketIo::connectAbstract(name);
+    if (fd < 0) std::exit(4);
     return fd;
 }
 
 void sendAll(int fd, const void* data, size_t bytes)
 {
-    if (send(fd, data, bytes, MSG_NOSIGNAL) != ssize_t(bytes)) std::exit(5);
+    if (!SocketIo::sendAll(fd, data, bytes)) std::exit(5);
 }
 
 void hello(int fd)
@@ -46,7 +41,7 @@ void hello(int fd)
     h.pid = uint32_t(getpid());
     sendAll(fd, &h, sizeof h);
     char answer = 0;
-    if (recv(fd, &answer, 1, MSG_WAITALL) != 1 || answer != video::kAccepted) std::exit(6);
+    if (!SocketIo::readAll(fd, &answer, 1) || answer != video::kAccepted) std::exit(6);
 }
 
 video::FrameHeader header(uint32_t width, uint32_t height, uint64_t frame)
