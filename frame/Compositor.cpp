@@ -8,6 +8,7 @@
 #include "shim/RealGl.h"
 #include "shim/RecordingDispatch.h"
 #include "shim/ThreadState.h"
+#include "styles/textures/AbstractTextures.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -41,7 +42,14 @@ Compositor::Compositor(Context& ctx, Recorder& recorder)
     : mContext(ctx), mRecorder(recorder), mSettings(ctx.config().style)
 {
     mHasStyles = mSettings.chain().front()->create != nullptr;
+    // The textures' content as the state model knows it: the styles' abstractions are
+    // cached by it (texture 0's image goes by the scene's name for it).
+    mChain.context().textureContent = [this](GLuint texture) {
+        return mTracker.textureHash(texture == styles::kDefaultTexture ? 0 : texture);
+    };
 }
+
+void Compositor::finishStyleWorkAtOnce() { styles::AbstractTextures::setWait(true); }
 
 Compositor::~Compositor() { reportRunCounts(); }
 

@@ -45,6 +45,9 @@ public:
     void install(GlDispatch& dispatch);
     // Points `dispatch`'s glEnd at the compositor's (the table of an open held glBegin).
     static void installEnd(GlDispatch& dispatch);
+    // Work the styles do off the frame (the textures' abstractions) is done at once instead:
+    // a replay's pictures must not depend on timing.
+    static void finishStyleWorkAtOnce();
 
     // The Recorder's hooks: the tracker consumes a glBegin..glEnd before the recorder
     // replaces it with a blob reference, and restarts when the Stream is cleared.

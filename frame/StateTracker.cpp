@@ -600,14 +600,22 @@ void StateTracker::texStorage2D(GLenum target, GLint level, GLenum internalForma
     mTextures.storage2D(mUnitTextures[size_t(mActiveUnit)], internalFormat, empty);
 }
 
-void StateTracker::texSubImage2D(GLenum target, GLint level, GLsizei width, GLsizei height,
-                                 GLenum format, GLenum type, const void* pixels)
+void StateTracker::texSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei width,
+                                 GLsizei height, GLenum format, GLenum type, const void* pixels)
 {
     if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
         return;
     }
-    mTextures.subImage2D(mUnitTextures[size_t(mActiveUnit)], width, height, format, type,
+    mTextures.subImage2D(mUnitTextures[size_t(mActiveUnit)], x, y, width, height, format, type,
                          pixels, mImageBytes);
+}
+
+void StateTracker::texCopiedInto(GLenum target, GLint level)
+{
+    if (target != GL_TEXTURE_2D || level != 0 || size_t(mActiveUnit) >= mUnitTextures.size()) {
+        return;
+    }
+    mTextures.overwritten(mUnitTextures[size_t(mActiveUnit)]);
 }
 
 } // namespace nprgl

@@ -253,8 +253,12 @@ public:
     // (`empty`: glTexSubImage2D fills it, as after glTexImage2D without pixels).
     void texStorage2D(GLenum target, GLint level, GLenum internalFormat, bool empty);
     // glTexSubImage2D: what it does to level 0's opacity.
-    void texSubImage2D(GLenum target, GLint level, GLsizei width, GLsizei height, GLenum format,
-                       GLenum type, const void* pixels);
+    void texSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei width,
+                       GLsizei height, GLenum format, GLenum type, const void* pixels);
+    // GL wrote level 0 of a texture itself: the bound one's (glCopyTexSubImage2D), or one
+    // attached to a framebuffer (rendered into).
+    void texCopiedInto(GLenum target, GLint level);
+    void textureAttached(GLuint texture) { mTextures.overwritten(texture); }
     // The decoder's check of an image argument (format, type, sizes follow): how many bytes
     // the call carries.
     template <typename... Shape>

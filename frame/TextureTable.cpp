@@ -42,8 +42,10 @@ void TextureTable::image2D(GLuint texture, GLint internalFormat, GLsizei width, 
     // Storage alone is filled by glTexSubImage2D next (SFML's way): those decide.
     if (!pixels || bytes == 0) {
         t.filledLater = !pixels;
+        t.known = !pixels;
         return;
     }
+    t.known = true;
     const TextureImage image(width, height, format, type, pixels, bytes, t.alpha);
     t.opaque = image.opaque();
     glm::vec3 mean;
@@ -61,6 +63,7 @@ void TextureTable::storage2D(GLuint texture, GLenum internalFormat, bool empty)
     TextureRecord& t = mTextures[texture];
     t = {};
     t.filledLater = empty;
+    t.known = empty;
     t.alpha = textureAlpha(GLint(internalFormat));
     t.depth = depthFormat(internalFormat);
     const GLenum alphaOnly[] = {GL_ALPHA, GL_ALPHA4, GL_ALPHA8, GL_ALPHA12, GL_ALPHA16};
@@ -69,8 +72,17 @@ void TextureTable::storage2D(GLuint texture, GLenum internalFormat, bool empty)
     t.opaque = t.depth || t.alpha == TextureAlpha::One;
 }
 
-void TextureTable::subImage2D(GLuint texture, GLsizei width, GLsizei height, GLenum format,
-                              GLenum type, const void* pixels, size_t bytes)
+void TextureTable::overwritten(GLuint texture)
+{
+    auto it = mTextures.find(texture);
+    if (it == mTextures.end()) return;
+    it->second.known = false;
+    it->second.hash = 0;
+    it->second.mean.reset();
+}
+
+void TextureTable::subImage2D(GLuint texture, GLint x, GLint y, GLsizei width, GLsizei height,
+                              GLenum format, GLenum type, const void* pixels, size_t bytes)
 {
     // Into a texture never made here nothing is known to change.
     auto it = mTextures.find(texture);
@@ -82,7 +94,17 @@ void TextureTable::subImage2D(GLuint texture, GLsizei width, GLsizei height, GLe
     // of the part's channels is its alpha.
     const TextureImage image(width, height, format, type, pixels, bytes, t.alpha);
     const bool opaque = t.alpha == TextureAlpha::One || (pixels && bytes != 0 && image.opaque());
-    t.hash = 0; // its content is no longer the hashed upload
+    // Its content is the upload and the parts since: a texture filled part by part (SFML's
+    // way, glyph caches) is known by them, so the styles can cache what they make of it.
+    t.known = t.known && pixels && bytes != 0;
+    if (t.known) {
+        const uint64_t part[7] = {t.hash, uint64_t(x), uint64_t(y), uint64_t(width),
+                                  uint64_t(height), format, type};
+        const uint64_t hash = XXH3_64bits_withSeed(pixels, bytes, XXH3_64bits(part, sizeof part));
+        t.hash = hash == 0 ? 1 : hash;
+    } else {
+        t.hash = 0;
+    }
     t.mean.reset();
     // The finest cut of the parts filled (an image given in parts, or by parts only).
     const float feature = t.size ? image.cutFeature(*t.size) : 0.0f;

@@ -17,7 +17,9 @@ namespace nprgl {
 // Level 0 of one 2D texture object, as its uploads made it (Mesa keeps one gl_texture_object
 // per name; this is the part of it the hold policy and the styles ask about).
 struct TextureRecord {
-    uint64_t hash = 0; // XXH3 of the uploaded image with its shape; 0: content not known
+    // XXH3 of the uploaded image with its shape, chained with each part uploaded since (where
+    // it went and its pixels); 0: content not known.
+    uint64_t hash = 0;
     std::optional<glm::vec3> mean; // its mean colour, where known
     float cutFeature = 0.0f;       // TextureImage::cutFeature; 0: not known
     std::optional<glm::ivec2> size; // as glTexImage2D gave it (glTexStorage2D's is not followed)
@@ -26,6 +28,9 @@ struct TextureRecord {
     bool alphaOnly = false;   // GL_ALPHA: GL_REPLACE keeps the fragment's colour
     bool depth = false;       // GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL: a shadow map
     bool filledLater = false; // made without pixels, no part below alpha 1 filled since
+    // Every texel is what the stream's uploads put there (or undefined, before any): false
+    // once the framebuffer was copied or rendered into it, or pixels came from a buffer.
+    bool known = false;
 };
 
 // The records by GL name, and the cube maps' face means. Fed the bound texture of each
@@ -38,9 +43,12 @@ public:
     // glCopyTexImage2D or glTexStorage2D of level 0: made in `internalFormat`, content not
     // known (`empty`: glTexSubImage2D fills it).
     void storage2D(GLuint texture, GLenum internalFormat, bool empty);
-    // glTexSubImage2D into level 0.
-    void subImage2D(GLuint texture, GLsizei width, GLsizei height, GLenum format, GLenum type,
-                    const void* pixels, size_t bytes);
+    // glTexSubImage2D into level 0, at (x, y).
+    void subImage2D(GLuint texture, GLint x, GLint y, GLsizei width, GLsizei height,
+                    GLenum format, GLenum type, const void* pixels, size_t bytes);
+    // Level 0 written by GL itself (glCopyTexSubImage2D, or attached to a framebuffer): its
+    // content is no longer known.
+    void overwritten(GLuint texture);
     // Level 0 of face (0..5: +X -X +Y -Y +Z -Z) of a cube map.
     void cubeFace(GLuint cube, int face, GLsizei width, GLsizei height, GLenum format,
                   GLenum type, const void* pixels, size_t bytes);

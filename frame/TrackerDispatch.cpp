@@ -178,10 +178,19 @@ void APIENTRY tTexStorage2D(GLenum target, GLsizei, GLenum internalFormat, GLsiz
 {
     T().texStorage2D(target, 0, internalFormat, true);
 }
-void APIENTRY tTexSubImage2D(GLenum target, GLint level, GLint, GLint, GLsizei width,
+void APIENTRY tTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei width,
                              GLsizei height, GLenum format, GLenum type, const void* pixels)
 {
-    T().texSubImage2D(target, level, width, height, format, type, pixels);
+    T().texSubImage2D(target, level, x, y, width, height, format, type, pixels);
+}
+void APIENTRY tCopyTexSubImage2D(GLenum target, GLint level, GLint, GLint, GLint, GLint,
+                                 GLsizei, GLsizei)
+{
+    T().texCopiedInto(target, level);
+}
+void APIENTRY tFramebufferTexture2D(GLenum, GLenum, GLenum, GLuint texture, GLint level)
+{
+    if (level == 0) T().textureAttached(texture);
 }
 void APIENTRY tActiveTexture(GLenum unit) { T().activeTexture(unit); }
 void APIENTRY tEnableClientState(GLenum cap) { T().enableArray(cap, true); }
@@ -410,6 +419,8 @@ void fillTrackerDispatch(GlDispatch& d, GlDispatch& compileOnly)
     d.glTexImage2D = tTexImage2D;
     d.glTexSubImage2D = tTexSubImage2D;
     d.glCopyTexImage2D = tCopyTexImage2D;
+    d.glCopyTexSubImage2D = tCopyTexSubImage2D;
+    d.glFramebufferTexture2D = tFramebufferTexture2D;
     d.glTexStorage2D = tTexStorage2D;
     d.glTexEnvi = tTexEnvi;
     d.glTexGeni = tTexGen<GLint>;

@@ -59,6 +59,7 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
 {
     const std::string& path = reader.path();
     const auto& frames = reader.frames();
+    Compositor::finishStyleWorkAtOnce();
     const uint32_t contextId = options.contextId ? options.contextId : defaultContext(reader);
     const int width = options.width ? options.width : reader.metadata().width;
     const int height = options.height ? options.height : reader.metadata().height;

@@ -29,8 +29,8 @@ namespace nprgl::styles {
     X(IsBuffer) X(IsFramebuffer) X(IsQuery) X(IsRenderbuffer) X(IsTexture)                      \
     X(GenerateMipmap) X(GetBooleanv) X(GetError) X(GetFloatv) X(GetIntegerv) X(GetProgramInfoLog) \
     X(GetProgramiv) X(GetQueryObjectuiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString)        \
-    X(GetTexLevelParameteriv) X(GetTexParameteriv) X(GetUniformLocation) X(Hint) X(IsEnabled)   \
-    X(LineWidth)                                                                                \
+    X(GetTexImage) X(GetTexLevelParameteriv) X(GetTexParameteriv) X(GetUniformLocation) X(Hint) \
+    X(IsEnabled) X(LineWidth)                                                                   \
     X(LinkProgram) X(PixelStorei) X(PointSize) X(PolygonMode) X(PolygonOffset) X(ReadBuffer)    \
     X(ReadPixels) X(RenderbufferStorage) X(Scissor) X(ShaderSource) X(StencilFunc)              \
     X(StencilMask) X(StencilOp) X(TexImage2D) X(TexParameterf) X(TexParameteri) X(TexParameteriv) \

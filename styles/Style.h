@@ -5,6 +5,8 @@
 #include "styles/PageTone.h"
 #include "styles/Scene.h"
 
+#include <cstdint>
+#include <functional>
 #include <string>
 
 namespace nprgl {
@@ -12,6 +14,8 @@ class StyleSettings;
 }
 
 namespace nprgl::styles {
+
+class AbstractTextures;
 
 // What every style of a chain shares in one GL context.
 struct StyleContext {
@@ -22,6 +26,13 @@ struct StyleContext {
     const StyleSettings* settings = nullptr;
     bool alphaWrites = true; // the scene's (Scene::alphaWrites), set by the chain per flush
     PageTone page;           // dark or light this frame (the chain observes each flush)
+    // The program's textures as drawings (AbstractTextures, the chain's): a shading style
+    // sets textureDetail below 1 while it draws to have them bound in place of the program's.
+    AbstractTextures* abstractions = nullptr;
+    float textureDetail = 1.0f;
+    uint64_t frame = 0; // the scene's (Scene::frame), set by the chain per flush
+    // A program texture's content hash (0: not known), from the compositor's state model.
+    std::function<uint64_t(GLuint)> textureContent;
 
     // The value of style.param (configured, else the registry's default).
     double param(const char* style, const char* name) const;

@@ -57,6 +57,7 @@ bool StyleChain::init(const StyleSettings& settings, GlFunctions::GetProc getPro
 {
     mSettings = settings;
     mContext.settings = &mSettings;
+    mContext.abstractions = &mAbstractions;
     mHasShading = false; // a chain may be started again with other settings
     std::string missing;
     if (!mContext.gl.load(getProc, missing)) {
@@ -176,6 +177,7 @@ void StyleChain::render(const Scene& scene)
     // cut-outs' edges; a decal's would fight its surface's).
     // The window's background decides the page (an offscreen target's clear is a texture's).
     if (scene.framebuffer == 0) mContext.page.observe(scene.frame, glm::vec3(scene.clearColor));
+    mContext.frame = scene.frame;
     mOpaque.objects.clear();
     mTranslucent.objects.clear();
     mCutOut.objects.clear();
@@ -423,6 +425,7 @@ void StyleChain::shutdown()
         mContext.gl.DeleteTextures(1, &mContext.blankTexture);
     }
     mContext.blankTexture = 0;
+    mAbstractions.destroy(mContext.gl);
 }
 
 } // namespace nprgl::styles

@@ -4,6 +4,7 @@
 #include "styles/StyleSettings.h"
 #include "styles/background/GlowInk.h"
 #include "styles/shading/PlainShading.h"
+#include "styles/textures/AbstractTextures.h"
 
 #include <memory>
 #include <string>
@@ -46,6 +47,7 @@ public:
 private:
     StyleSettings mSettings;
     StyleContext mContext;
+    AbstractTextures mAbstractions; // the program's textures as drawings
     std::vector<std::unique_ptr<Style>> mStyles;
     std::vector<size_t> mBackgrounds; // indices in mStyles of the background styles
     bool mHasShading = false;

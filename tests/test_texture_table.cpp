@@ -65,13 +65,13 @@ TEST(TextureTable, StorageFilledInPartsIsOpaqueWhileEveryPartIs)
     EXPECT_FALSE(t.opaque(7));
     EXPECT_EQ(t.hash(7), 0u);
     const auto solid = rgba(8, 4, 0, 255, 0, 255);
-    t.subImage2D(7, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    t.subImage2D(7, 0, 0, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
     EXPECT_TRUE(t.opaque(7));
     const auto clear = rgba(8, 4, 0, 255, 0, 0);
-    t.subImage2D(7, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, clear.data(), clear.size());
+    t.subImage2D(7, 0, 4, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, clear.data(), clear.size());
     EXPECT_FALSE(t.opaque(7));
     // A transparent part is not undone by an opaque one over another part.
-    t.subImage2D(7, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    t.subImage2D(7, 0, 0, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
     EXPECT_FALSE(t.opaque(7));
 }
 
@@ -82,13 +82,55 @@ TEST(TextureTable, APartChangesWhatTheUploadWasKnownBy)
     t.image2D(2, GL_RGBA, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
     ASSERT_NE(t.hash(2), 0u);
     const auto part = rgba(2, 2, 0, 0, 0, 255);
-    t.subImage2D(2, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, part.data(), part.size());
-    EXPECT_EQ(t.hash(2), 0u);     // no longer the hashed upload
-    EXPECT_EQ(t.mean(2), nullptr); // nor its mean
-    EXPECT_TRUE(t.opaque(2));      // an opaque part over an opaque image
+    const uint64_t uploaded = t.hash(2);
+    t.subImage2D(2, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, part.data(), part.size());
+    const uint64_t afterPart = t.hash(2);
+    EXPECT_NE(afterPart, 0u);       // known: the upload and the part
+    EXPECT_NE(afterPart, uploaded); // no longer the hashed upload
+    EXPECT_EQ(t.mean(2), nullptr);  // nor its mean
+    EXPECT_TRUE(t.opaque(2));       // an opaque part over an opaque image
+    // The same part elsewhere is other content; the same sequence is the same content.
+    TextureTable other;
+    other.image2D(2, GL_RGBA, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    other.subImage2D(2, 4, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, part.data(), part.size());
+    EXPECT_NE(other.hash(2), afterPart);
+    TextureTable same;
+    same.image2D(2, GL_RGBA, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    same.subImage2D(2, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, part.data(), part.size());
+    EXPECT_EQ(same.hash(2), afterPart);
     // Into a texture never made here nothing is recorded.
-    t.subImage2D(9, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, part.data(), part.size());
+    t.subImage2D(9, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, part.data(), part.size());
     EXPECT_EQ(t.find(9), nullptr);
+}
+
+TEST(TextureTable, StorageFilledInPartsIsKnownByItsParts)
+{
+    TextureTable t;
+    t.image2D(7, GL_RGBA, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, nullptr, 0);
+    const auto solid = rgba(8, 8, 0, 255, 0, 255);
+    t.subImage2D(7, 0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    EXPECT_NE(t.hash(7), 0u);
+    // Pixels from a buffer object (none here) leave it unknown, and it stays so.
+    t.subImage2D(7, 0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, nullptr, 0);
+    EXPECT_EQ(t.hash(7), 0u);
+    t.subImage2D(7, 0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    EXPECT_EQ(t.hash(7), 0u);
+}
+
+TEST(TextureTable, WrittenByGlItsContentIsNotKnown)
+{
+    TextureTable t;
+    const auto solid = rgba(8, 8, 200, 200, 200, 255);
+    t.image2D(3, GL_RGBA, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    ASSERT_NE(t.hash(3), 0u);
+    t.overwritten(3); // glCopyTexSubImage2D, or rendered into
+    EXPECT_EQ(t.hash(3), 0u);
+    t.subImage2D(3, 0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    EXPECT_EQ(t.hash(3), 0u);
+    // Copied storage (glCopyTexImage2D) is not known either.
+    t.storage2D(4, GL_RGBA8, false);
+    t.subImage2D(4, 0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, solid.data(), solid.size());
+    EXPECT_EQ(t.hash(4), 0u);
 }
 
 TEST(TextureTable, StorageOfADepthFormatIsAShadowMap)

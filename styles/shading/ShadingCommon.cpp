@@ -2,6 +2,7 @@
 
 #include "styles/FaceCulling.h"
 #include "styles/ObjectNames.h"
+#include "styles/textures/AbstractTextures.h"
 #include "styles/textures/GlTexture.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -491,6 +492,12 @@ bool bindProgramTexture(StyleContext& ctx, GLuint texture, GLint (&swizzle)[4])
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
     if (format != GL_ALPHA && format != GL_ALPHA4 && format != GL_ALPHA8 &&
         format != GL_ALPHA12 && format != GL_ALPHA16) {
+        // Drawn as a drawing where the style asks for it (the abstraction binds itself).
+        if (ctx.abstractions && ctx.textureDetail < 1.0f) {
+            const uint64_t content = ctx.textureContent ? ctx.textureContent(texture) : 0;
+            ctx.abstractions->substitute(gl, textureName(texture), content, ctx.textureDetail,
+                                         ctx.frame);
+        }
         return false;
     }
     gl.GetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);

@@ -207,6 +207,12 @@ StyleInfo toonStyleInfo()
         ParamInfo::flag("band_lines", "ink lines between the shade bands (thesis fig. 3.8)",
                         false),
         ShadingCommon::reflectionsParam(),
+        ParamInfo::number("texture_detail",
+                          "how much of the program's texture detail is kept: 0 draws each "
+                          "region of a texture in one colour of a small palette of its own, "
+                          "1 is the program's texture (the abstraction is made once per "
+                          "texture, off the frame)",
+                          ToonStyle::kDefaultTextureDetail, 0.0, 1.0),
         ParamInfo::number("band_line_width", "width of the band lines in pixels", 1.5, 0.5, 8.0),
     };
     return info;
@@ -281,6 +287,7 @@ bool ToonStyle::init(StyleContext& ctx, std::string& error)
     mBandLines = ctx.param("toon", "band_lines") >= 0.5;
     mReflections = ctx.param("toon", "reflections") >= 0.5;
     mLineWidth = float(ctx.param("toon", "band_line_width"));
+    mTextureDetail = float(ctx.param("toon", "texture_detail"));
     const char* colorNames[3] = {"shadow_color", "diffuse_color", "highlight_color"};
     for (int i = 0; i < 3; ++i) {
         const std::string text = ctx.text("toon", colorNames[i]);
@@ -304,6 +311,7 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
     const GlFunctions& gl = ctx.gl;
     // The detail sampler is unit 0, the default of sampler uniforms.
     GLuint current = 0;
+    ctx.textureDetail = mTextureDetail;
     for (const SceneObject& listed : scene.objects) {
         const SceneObject& object = ShadingCommon::withGenerated(listed, mReflections, mReflected);
         const bool textured = object.textured() && mDetail != 0;
@@ -319,6 +327,7 @@ void ToonStyle::render(const Scene& scene, StyleContext& ctx)
         // drawn in one pass (shadingNormal).
         ShadingCommon::draw(ctx, object, variant.u, textured);
     }
+    ctx.textureDetail = 1.0f;
 }
 
 void ToonStyle::shutdown(StyleContext& ctx)

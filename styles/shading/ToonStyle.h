@@ -17,6 +17,9 @@ namespace nprgl::styles {
 // program's texture as a detail texture (modulated or as a decal "sticker").
 class ToonStyle : public Style {
 public:
+    // toon.texture_detail's default: chosen by looking at the textured games of the corpus.
+    static constexpr double kDefaultTextureDetail = 0.3;
+
     bool init(StyleContext& ctx, std::string& error) override;
     void render(const Scene& scene, StyleContext& ctx) override;
     void shutdown(StyleContext& ctx) override;
@@ -40,6 +43,7 @@ private:
     bool mHalfBand = true;     // and a half-shadow band between shadow and full colour there
     bool mSmooth = true, mBandLines = false;
     float mLineWidth = 1.5f;
+    float mTextureDetail = 1.0f;
     int mDetail = 1; // 0 off, 1 modulate, 2 decal
     bool mReflections = false; // generated textures shown as detail
     SceneObject mReflected;    // an object with its generated texture as its own

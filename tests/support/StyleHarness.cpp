@@ -118,6 +118,7 @@ bool StyleHarness::render(const styles::Scene& scene, const std::string& chain,
         if (!fresh->init(settings, &getProc, error)) return false;
     }
     styles::StyleChain& styleChain = mKept ? *mKept : *fresh;
+    styleChain.context().textureContent = mTextureContent;
     const styles::GlFunctions& gl = mGl;
     gl.Viewport(0, 0, mWidth, mHeight);
     gl.ClearColor(background.r, background.g, background.b, background.a);

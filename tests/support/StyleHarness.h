@@ -6,6 +6,7 @@
 #include "styles/Scene.h"
 #include "styles/StyleChain.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,12 @@ public:
     // as a program's frames do in one context (styles that remember earlier frames). Off (the
     // default): every render() starts new styles.
     void keepChain(bool keep);
+    // The program textures' content hashes as the compositor's state model gives them (none
+    // by default: every texture's content is unknown, and no style abstracts it).
+    void setTextureContent(std::function<uint64_t(GLuint)> content)
+    {
+        mTextureContent = std::move(content);
+    }
     const styles::GlFunctions& gl() const { return mGl; }
     // A depth-only program's sources (uniform mat4 mvp; attribute 0 position).
     static const char* depthVertexShader();
@@ -50,6 +57,7 @@ private:
     bool mKeepChain = false;
     std::unique_ptr<styles::StyleChain> mKept; // with mKeepChain: the last render()'s styles
     std::string mKeptKey;                      // its chain and config
+    std::function<uint64_t(GLuint)> mTextureContent;
     styles::GlFunctions mGl;
     reconstruct::Reconstructor mReconstructor;
     std::vector<reconstruct::FrameObject> mObjects;
