@@ -80,14 +80,16 @@ GLuint AbstractTextures::substitute(const GlFunctions& gl, GLuint texture, uint6
     if (!(detail < 1.0f) || texture == 0) return 0;
     collect(gl);
     Name& name = mNames[texture];
+    // Left as the program's: each name counted once, under its first reason.
+    auto leave = [&](const char* why, int& count) {
+        if (!name.counted) say(why, count);
+        name.counted = true;
+        return GLuint(0);
+    };
     if (content == 0) {
-        if (!name.counted) {
-            name.counted = true;
-            say("a texture whose content is not known (rendered into or copied from the "
-                "framebuffer) is drawn as the program's",
-                mCounts.unknownContent);
-        }
-        return 0;
+        return leave("a texture whose content is not known (rendered into or copied from the "
+                     "framebuffer) is drawn as the program's",
+                     mCounts.unknownContent);
     }
     if (name.content != content) {
         if (name.content != 0) {
@@ -99,13 +101,9 @@ GLuint AbstractTextures::substitute(const GlFunctions& gl, GLuint texture, uint6
         name.changes = 0; // it has held still: a drawing again
     }
     if (name.changes >= kChangesAllowed) {
-        if (!name.counted) {
-            name.counted = true;
-            say("a texture whose content keeps changing (video, animation) is drawn as the "
-                "program's",
-                mCounts.changing);
-        }
-        return 0;
+        return leave("a texture whose content keeps changing (video, animation) is drawn as "
+                     "the program's",
+                     mCounts.changing);
     }
     const uint64_t key = keyOf(content, detail);
     auto it = mEntries.find(key);
