@@ -263,7 +263,7 @@ TEST_F(Drawings, ATextureThatKeepsChangingIsTheProgramsOwn)
     uint64_t content = 1;
     harness.setTextureContent([&](GLuint t) { return t == grainy ? content : 0u; });
     std::vector<double> grains;
-    for (int frame = 0; frame < 4; ++frame, ++content) {
+    for (int n = 0; n < 4; ++n, ++content) {
         grains.push_back(grain(render("toon.texture_detail=0", grainy)));
     }
     EXPECT_LT(grains[0], 0.05); // abstracted while it is new...
