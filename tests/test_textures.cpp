@@ -57,7 +57,8 @@ std::set<Texel> coloursIn(const TextureImage& image, int x0, int x1)
 {
     std::set<Texel> out;
     for (int y = 0; y < image.height; ++y) {
-        for (int x = x0; x < x1; ++x) out.insert(texel(image, x, y));
+        for (int x = x0; x < x1; ++x)
+            out.insert(texel(image, x, y));
     }
     return out;
 }
@@ -75,7 +76,8 @@ TEST(TextureAbstraction, RegionsBecomeFlatAndTheirBorderStays)
     const std::set<Texel> left = coloursIn(out, 4, 28), right = coloursIn(out, 36, 60);
     EXPECT_LE(left.size(), 2u);
     EXPECT_LE(right.size(), 2u);
-    for (const Texel& c : left) EXPECT_EQ(right.count(c), 0u);
+    for (const Texel& c : left)
+        EXPECT_EQ(right.count(c), 0u);
     // Up to the border column on either side: the smoothing does not cross the edge.
     for (int y = 0; y < 64; ++y) {
         EXPECT_GT(std::get<0>(texel(out, 31, y)), 150) << "row " << y;
@@ -89,7 +91,8 @@ TEST(TextureAbstraction, AlphaIsTheProgramsAndDetailOneIsItsTexture)
 {
     const TextureImage in = grainyHalves();
     const TextureImage flat = TextureAbstraction::abstracted(in, 0.0f);
-    for (size_t i = 3; i < in.pixels.size(); i += 4) ASSERT_EQ(flat.pixels[i], in.pixels[i]);
+    for (size_t i = 3; i < in.pixels.size(); i += 4)
+        ASSERT_EQ(flat.pixels[i], in.pixels[i]);
     EXPECT_EQ(TextureAbstraction::abstracted(in, 1.0f).pixels, in.pixels);
     // Halfway: between the flat colour and the program's texel.
     const TextureImage half = TextureAbstraction::abstracted(in, 0.5f);
@@ -136,6 +139,41 @@ TEST(TextureAbstraction, ClearTexelsTakeNoPaletteColour)
     }
 }
 
+// A soft glow drawn with additive blending (a luminance blip, as a radar's or a particle's):
+// its black surround adds nothing, so it must stay black, and its core stays the lightest. A
+// palette mean of the dark end would lighten the whole surround into a visible disc.
+TEST(TextureAbstraction, AGlowsBlackSurroundAndWhiteCoreStay)
+{
+    TextureImage in;
+    in.width = in.height = 64;
+    in.channels = 4;
+    in.pixels.resize(64 * 64 * 4);
+    for (int y = 0; y < 64; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const float r = std::hypot(float(x) - 31.5f, float(y) - 31.5f) / 20.0f;
+            const float fall = std::max(0.0f, 1.0f - r);
+            const uint8_t v = uint8_t(std::lround(255.0f * fall * fall * fall));
+            uint8_t* p = &in.pixels[size_t(y * 64 + x) * 4];
+            p[0] = p[1] = p[2] = v;
+            p[3] = 255;
+        }
+    }
+    ASSERT_EQ(texel(in, 0, 0), Texel(0, 0, 0));
+    const TextureImage out = TextureAbstraction::abstracted(in, 0.0f);
+    for (int y = 0; y < 64; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            if (std::hypot(float(x) - 31.5f, float(y) - 31.5f) < 22.0f) continue;
+            ASSERT_EQ(texel(out, x, y), Texel(0, 0, 0)) << "the surround at " << x << "," << y;
+        }
+    }
+    // The core keeps the lightest colour the smoothing left of its peak.
+    int lightest = 0;
+    for (size_t i = 0; i < out.pixels.size(); i += 4)
+        lightest = std::max<int>(lightest, out.pixels[i]);
+    EXPECT_EQ(std::get<0>(texel(out, 31, 31)), lightest);
+    EXPECT_GE(lightest, 180) << "the core";
+}
+
 TEST(TextureAbstraction, NoImageNoAbstraction)
 {
     TextureImage grey = TextureImage::grey(8, 8, 100); // one channel: not an RGBA texture
@@ -162,7 +200,8 @@ protected:
         }
         const glm::mat4 projection = glm::perspective(glm::radians(40.0f), 1.0f, 1.0f, 20.0f);
         auto scene = harness.makeScene({sphere}, projection, glm::vec3(0, 0, 1));
-        for (auto& o : scene.objects) o.texture = texture;
+        for (auto& o : scene.objects)
+            o.texture = texture;
         scene.frame = frame;
         PngImage image;
         std::string error;

@@ -58,8 +58,8 @@ void TextureAbstraction::smoothPass(std::vector<glm::vec4>& texels, int width, i
             float total = 0.0f;
             for (int k = -radius; k <= radius; ++k) {
                 const glm::vec4& t = at(i + k);
-                const float d2 = std::min(distance2(glm::vec3(t), glm::vec3(centre)),
-                                          kMaxDistance2);
+                const float d2 =
+                    std::min(distance2(glm::vec3(t), glm::vec3(centre)), kMaxDistance2);
                 // Clear texels hardly count: their colour is never seen.
                 const float w = spatial[size_t(k + radius)] *
                                 range[size_t(d2 / kMaxDistance2 * kRangeBins)] *
@@ -83,38 +83,52 @@ std::vector<glm::vec3> TextureAbstraction::palette(const std::vector<glm::vec4>&
         if (texels[i].a > 0.0f) sample.push_back(texels[i]);
     }
     if (sample.empty()) return {};
-    // Started at evenly spaced quantiles of lightness.
     auto lightness = [](const glm::vec4& c) { return 0.3f * c.r + 0.59f * c.g + 0.11f * c.b; };
     std::vector<glm::vec4> sorted = sample;
-    std::sort(sorted.begin(), sorted.end(), [&](const glm::vec4& a, const glm::vec4& b) {
-        return lightness(a) < lightness(b);
-    });
-    std::vector<glm::vec3> centres;
-    for (int k = 0; k < kPaletteSize; ++k) {
+    std::sort(sorted.begin(), sorted.end(),
+              [&](const glm::vec4& a, const glm::vec4& b) { return lightness(a) < lightness(b); });
+    // The darkest and the lightest colour are kept as they are: a glow's black surround (unseen
+    // under additive blending) stays black and a mask's full cover stays full, where a mean
+    // of the dark end would lighten the whole surround. The others are k-means, started at
+    // evenly spaced quantiles between.
+    std::vector<glm::vec3> ends = {glm::vec3(sorted.front())};
+    if (distance2(ends[0], glm::vec3(sorted.back())) > 0.0f)
+        ends.push_back(glm::vec3(sorted.back()));
+    std::vector<glm::vec3> means;
+    for (int k = 1; k + 1 < kPaletteSize; ++k) {
         const size_t at = (sorted.size() - 1) * size_t(2 * k + 1) / size_t(2 * kPaletteSize);
-        centres.push_back(glm::vec3(sorted[at]));
+        means.push_back(glm::vec3(sorted[at]));
     }
-    std::vector<int> nearest(sample.size(), 0);
+    auto joined = [&] {
+        std::vector<glm::vec3> all = ends;
+        all.insert(all.end(), means.begin(), means.end());
+        return all;
+    };
     for (int iteration = 0; iteration < 10; ++iteration) {
+        const std::vector<glm::vec3> centres = joined();
         std::vector<glm::vec3> sums(centres.size(), glm::vec3(0.0f));
         std::vector<float> weights(centres.size(), 0.0f);
-        for (size_t i = 0; i < sample.size(); ++i) {
-            const glm::vec3 c(sample[i]);
-            int best = 0;
+        for (const glm::vec4& texel : sample) {
+            const glm::vec3 c(texel);
+            size_t best = 0;
             for (size_t k = 1; k < centres.size(); ++k) {
-                if (distance2(c, centres[k]) < distance2(c, centres[size_t(best)])) best = int(k);
+                if (distance2(c, centres[k]) < distance2(c, centres[best])) best = k;
             }
-            nearest[i] = best;
-            sums[size_t(best)] += sample[i].a * c;
-            weights[size_t(best)] += sample[i].a;
+            sums[best] += texel.a * c;
+            weights[best] += texel.a;
         }
-        // Colours closer than kMergeDistance are one: a region's leftover grain does not
-        // take palette entries that a flat region would show as blotches.
+        // A mean closer than kMergeDistance to an end or another mean is one with it: a
+        // region's leftover grain does not take palette entries that a flat region would show
+        // as blotches.
         std::vector<glm::vec3> next;
         std::vector<float> nextWeights;
-        for (size_t k = 0; k < centres.size(); ++k) {
+        for (size_t k = ends.size(); k < centres.size(); ++k) {
             if (weights[k] <= 0.0f) continue;
             const glm::vec3 c = sums[k] / weights[k];
+            const bool atEnd = std::any_of(ends.begin(), ends.end(), [&](const glm::vec3& e) {
+                return distance2(c, e) < kMergeDistance * kMergeDistance;
+            });
+            if (atEnd) continue;
             size_t merged = next.size();
             for (size_t j = 0; j < next.size(); ++j) {
                 if (distance2(c, next[j]) < kMergeDistance * kMergeDistance) merged = j;
@@ -128,9 +142,9 @@ std::vector<glm::vec3> TextureAbstraction::palette(const std::vector<glm::vec4>&
                 nextWeights[merged] = w;
             }
         }
-        centres = std::move(next);
+        means = std::move(next);
     }
-    return centres;
+    return joined();
 }
 
 TextureImage TextureAbstraction::abstracted(const TextureImage& rgba, float detail)
