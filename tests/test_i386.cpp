@@ -44,6 +44,7 @@ std::string missing()
         return "no i386 glxgears at " + glxgears32() +
                " (scripts/build-i386.sh unpacks Debian's mesa-utils-bin:i386)";
     }
+    if (const std::string why = why32BitProgramsCannotRun(); !why.empty()) return why;
     // Its libraries as the i386 loader resolves them (libGL.so.1 of libgl1:i386...).
     ProcessResult list = runProcess({"/lib/ld-linux.so.2", "--list", glxgears32()}, {}, 60);
     if (list.exitCode != 0 || list.out.find("not found") != std::string::npos) {

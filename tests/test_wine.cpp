@@ -23,6 +23,20 @@ namespace {
 const std::string kPrefix = NPRGL_WINE_PREFIX;
 // Debian's wine32:i386 installs the 32-bit loader here; without it wine runs no 32-bit .exe.
 const std::string kWine32Loader = "/usr/lib/wine/wine";
+// Debian's wine64 loader: the one `wine` runs when there is no 32-bit one.
+const std::string kWine64Loader = "/usr/lib/wine/wine64";
+
+// Whether wine's 32-bit half can run here: installed, and a kernel that runs 32-bit code.
+bool wine32Runs() { return fs::exists(kWine32Loader) && why32BitProgramsCannotRun().empty(); }
+
+// The command that starts a Windows program. Debian's `wine` picks the 32-bit loader whenever
+// it is installed, even on a kernel that cannot run it (every program then fails with "Exec
+// format error"); there the 64-bit loader is what runs a 64-bit program.
+std::vector<std::string> wineCommand()
+{
+    if (wine32Runs() || !fs::exists(kWine64Loader)) return {"wine"};
+    return {kWine64Loader};
+}
 
 // The 64-bit program with nprgl's own library; the 32-bit one with the i386 library.
 struct WineCase {
@@ -49,8 +63,11 @@ std::string inPath(const std::string& name)
 // A private prefix in the build tree; no Mono or Gecko installer prompts, no Wine chatter.
 std::map<std::string, std::string> wineEnv()
 {
-    return {
+    std::map<std::string, std::string> env = {
         {"WINEPREFIX", kPrefix}, {"WINEDEBUG", "-all"}, {"WINEDLLOVERRIDES", "mscoree,mshtml="}};
+    // Wine's own child processes (wineboot's services, start.exe) come from WINELOADER.
+    if (wineCommand()[0] != "wine") env["WINELOADER"] = wineCommand()[0];
+    return env;
 }
 
 // Waits until the prefix's wineserver and the processes it started (explorer, services) are
@@ -74,7 +91,9 @@ protected:
     std::string exeName() const { return "wingl" + std::to_string(GetParam().bits) + ".exe"; }
     std::vector<std::string> wingl(int frames) const
     {
-        return {"wine", GetParam().exe, "--frames", std::to_string(frames)};
+        std::vector<std::string> argv = wineCommand();
+        argv.insert(argv.end(), {GetParam().exe, "--frames", std::to_string(frames)});
+        return argv;
     }
     // For the runs through nprgl: a 32-bit program needs the i386 library.
     void needLibrary() const
@@ -107,6 +126,9 @@ protected:
             GTEST_SKIP() << "wine32 is not installed (" << kWine32Loader
                          << "; on Debian: dpkg --add-architecture i386, wine32:i386)";
         }
+        if (c.bits == 32 && !wine32Runs()) {
+            GTEST_SKIP() << "wine32 cannot run here: " << why32BitProgramsCannotRun();
+        }
         const char* display = std::getenv("DISPLAY");
         ASSERT_TRUE(display && *display) << "run through scripts/test.sh (Xvfb)";
         // The first boot makes the prefix; a marker says it finished (a boot cut short is
@@ -114,12 +136,14 @@ protected:
         // A prefix booted before wine32 was installed (or removed) has no (or a stale)
         // 32-bit half: the marker names the loaders it was booted with.
         const fs::path booted = fs::path(kPrefix) / "nprgl-booted";
-        const std::string loaders = fs::exists(kWine32Loader) ? "wine64 wine32" : "wine64";
+        const std::string loaders = wine32Runs() ? "wine64 wine32" : "wine64";
         std::string was;
         std::getline(std::ifstream(booted.string()) >> std::ws, was);
         if (was != loaders) {
             fs::remove_all(kPrefix);
-            ProcessResult r = runProcess({"wineboot", "-i"}, wineEnv(), 600);
+            std::vector<std::string> boot = wineCommand();
+            boot.insert(boot.end(), {"wineboot", "-i"});
+            ProcessResult r = runProcess(boot, wineEnv(), 600);
             ASSERT_EQ(r.exitCode, 0) << r.err;
             waitForWineserver();
             std::ofstream(booted.string()) << loaders << "\n";

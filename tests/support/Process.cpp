@@ -40,8 +40,8 @@ ProcessResult runUntilFile(const std::vector<std::string>& argv,
                            const std::map<std::string, std::string>& env,
                            const std::string& stopFile, int stopSignal, int timeoutSeconds)
 {
-    return runUntil(argv, env, [&] { return std::filesystem::exists(stopFile); }, stopSignal,
-                    timeoutSeconds);
+    return runUntil(
+        argv, env, [&] { return std::filesystem::exists(stopFile); }, stopSignal, timeoutSeconds);
 }
 
 ProcessResult runUntil(const std::vector<std::string>& argv,
@@ -62,12 +62,15 @@ ProcessResult runUntil(const std::vector<std::string>& argv,
         }
     }
     std::vector<std::string> envStrings;
-    for (const auto& [key, value] : merged) envStrings.push_back(key + "=" + value);
+    for (const auto& [key, value] : merged)
+        envStrings.push_back(key + "=" + value);
     std::vector<char*> envp, args;
-    for (auto& s : envStrings) envp.push_back(s.data());
+    for (auto& s : envStrings)
+        envp.push_back(s.data());
     envp.push_back(nullptr);
     std::vector<std::string> argCopy = argv;
-    for (auto& s : argCopy) args.push_back(s.data());
+    for (auto& s : argCopy)
+        args.push_back(s.data());
     args.push_back(nullptr);
 
     std::string dir = freshDir("proc");
@@ -132,8 +135,8 @@ namespace {
 
 // Removes this process's scratch files at exit, unless NPRGL_KEEP_TEST_FILES is set.
 struct ScratchArea {
-    std::filesystem::path base = std::filesystem::temp_directory_path() /
-                                 ("nprgl-test-" + std::to_string(getpid()));
+    std::filesystem::path base =
+        std::filesystem::temp_directory_path() / ("nprgl-test-" + std::to_string(getpid()));
     ~ScratchArea()
     {
         std::error_code ec;
@@ -188,6 +191,22 @@ bool haveDisplay()
 {
     const char* d = std::getenv("DISPLAY");
     return d && *d;
+}
+
+std::string why32BitProgramsCannotRun()
+{
+    static const std::string why = [] {
+        const std::string loader = "/lib/ld-linux.so.2";
+        if (access(loader.c_str(), X_OK) != 0) return "no i386 loader at " + loader;
+        // The loader's own --help: a 32-bit executable that needs nothing else.
+        const ProcessResult r = runProcess({loader, "--help"}, {}, 60);
+        if (r.exitCode == 0) return std::string();
+        const std::string how =
+            r.exitCode < 0 ? "did not start" : "exit " + std::to_string(r.exitCode);
+        return "this kernel does not run 32-bit programs (" + loader + " --help " + how +
+               (r.err.empty() ? "" : ": " + r.err) + "; a kernel without IA32 emulation)";
+    }();
+    return why;
 }
 
 } // namespace nprgl::test

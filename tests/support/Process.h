@@ -60,6 +60,10 @@ std::string readAll(const std::string& path);
 void writeAll(const std::string& path, const std::string& data);
 // Whether an X display is named (tests that need one skip or fail with a reason without).
 bool haveDisplay();
+// Why this machine cannot run a 32-bit x86 program, or empty: no i386 loader
+// (/lib/ld-linux.so.2, libc6:i386), or a kernel built without IA32 emulation, where every
+// 32-bit executable fails with "Exec format error" (some virtual machines' kernels).
+std::string why32BitProgramsCannotRun();
 // The "covered N" a probe prints (pixels of its last frame not of its clear colour), or -1.
 int coveredCount(const std::string& out);
 
