@@ -53,20 +53,26 @@ void Compositor::finishStyleWorkAtOnce() { styles::AbstractTextures::setWait(tru
 
 Compositor::~Compositor() { reportRunCounts(); }
 
-void Compositor::reportRunCounts() { report(mRunCounts, ""); }
+void Compositor::reportRunCounts() { report(mRunCounts, mChain.textureCounts(), ""); }
 
 void Compositor::reportRunCountsAtFrameEnd()
 {
     std::lock_guard lock(mFrameEndCountsMutex);
-    report(mFrameEndCounts, " (to its last frame end: it is current on another thread)");
+    report(mFrameEndCounts, mFrameEndTextures,
+           " (to its last frame end: it is current on another thread)");
 }
 
-void Compositor::report(const DrawCounts& counts, const char* note)
+void Compositor::report(const DrawCounts& counts, const styles::AbstractTextures::Counts& textures,
+                        const char* note)
 {
     if (counts.styled() == 0 && counts.left() == 0) return;
     if (mRunCountsReported.exchange(true)) return;
-    NPRGL_INFO("context %u: 3D polygon draws: %s%s", mContext.serial(),
-               counts.describe().c_str(), note);
+    NPRGL_INFO("context %u: 3D polygon draws: %s%s", mContext.serial(), counts.describe().c_str(),
+               note);
+    if (textures.any()) {
+        NPRGL_INFO("context %u: textures as drawings: %s%s", mContext.serial(),
+                   textures.describe().c_str(), note);
+    }
 }
 
 void Compositor::syncStream()
@@ -227,8 +233,7 @@ void Compositor::restyle(const StyleSettings& settings, bool announce)
 
 PickResult Compositor::pick(int x, int y, int windowHeight, uint64_t& textureHash) const
 {
-    const PickResult hit =
-        pickScene(mScene, float(x) + 0.5f, float(windowHeight - 1 - y) + 0.5f);
+    const PickResult hit = pickScene(mScene, float(x) + 0.5f, float(windowHeight - 1 - y) + 0.5f);
     textureHash = hit.texture ? mTracker.textureHash(styles::textureName(hit.texture)) : 0;
     return hit;
 }
@@ -240,6 +245,7 @@ void Compositor::endFrameCounts()
     {
         std::lock_guard lock(mFrameEndCountsMutex); // taken only here and at exit
         mFrameEndCounts = mRunCounts;
+        mFrameEndTextures = mChain.textureCounts();
     }
     mLastFrameComposeMs = std::exchange(mFrameComposeMs, 0.0);
 }
@@ -452,11 +458,15 @@ void Compositor::callList(GLuint list)
         return;
     }
     const bool masked = placed == Placement::Held && mShading;
-    if (masked) mask();
-    else tintBegin(list);
+    if (masked)
+        mask();
+    else
+        tintBegin(list);
     mNext.glCallList(list);
-    if (masked) unmask();
-    else tintEnd();
+    if (masked)
+        unmask();
+    else
+        tintEnd();
 }
 
 Compositor::Placement Compositor::placeList(GLuint list)
@@ -619,8 +629,10 @@ void Compositor::copyToTexture()
             return c.framebuffer == copied.framebuffer && c.viewport == copied.viewport;
         };
         auto it = std::find_if(mCopied.begin(), mCopied.end(), same);
-        if (it != mCopied.end()) it->frame = frame;
-        else if (mCopied.size() < 64) mCopied.push_back(copied);
+        if (it != mCopied.end())
+            it->frame = frame;
+        else if (mCopied.size() < 64)
+            mCopied.push_back(copied);
     }
     mCopyFlush = true;
     barrier();
@@ -719,8 +731,7 @@ void Compositor::flush()
     if (!mScene.objects.empty()) render();
     mFresh.drawn = true; // the styles' picture
     mFrameComposeMs +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     mInFlush = false;
 }
 
@@ -737,14 +748,11 @@ void Compositor::buildScene()
         // also among those drawn without the depth test or depth writes (bzflag's cloud layer,
         // blended, joined the opaque ground drawn before it and covered its sky in white).
         const bool offset = t.offsetFactor != 0.0f || t.offsetUnits != 0.0f;
-        const int look = t.translucent               ? 1
-                         : t.alphaFunc != GL_ALWAYS ? 2
-                         : offset                   ? 4
-                                                    : 0;
-        b.pass = !t.depthTest                       ? 5 + 10 * look
-                 : t.depthOnly                      ? 3
+        const int look = t.translucent ? 1 : t.alphaFunc != GL_ALWAYS ? 2 : offset ? 4 : 0;
+        b.pass = !t.depthTest                      ? 5 + 10 * look
+                 : t.depthOnly                     ? 3
                  : !t.depthWrite && !t.translucent ? 6 + 10 * look
-                                                    : look;
+                                                   : look;
         b.vertices.swap(t.vertices);
         b.contentHash = t.contentHash != 0 ? t.contentHash : reconstruct::hashBatch(b);
     }
@@ -752,7 +760,8 @@ void Compositor::buildScene()
     // place rather than copied (the Reconstructor copies a mesh someone else still holds).
     mScene.objects.clear();
     mReconstructor.build(mBatches, mObjects);
-    for (size_t i = 0; i < mTracked.size(); ++i) mTracked[i].vertices.swap(mBatches[i].vertices);
+    for (size_t i = 0; i < mTracked.size(); ++i)
+        mTracked[i].vertices.swap(mBatches[i].vertices);
     mTracker.recycle(mTracked);
     if (logEnabled(LogLevel::Debug)) {
         const reconstruct::CacheStats st = mReconstructor.cacheStats();
@@ -839,8 +848,10 @@ void Compositor::render()
         gRealGl.glGetFloatv(GL_COLOR_CLEAR_VALUE, glm::value_ptr(mScene.clearColor));
         // A scene read back is drawn as the program drew it: without a shading style the
         // program's own draws are there already, and no style goes over them.
-        if (!mPlainFlush) mChain.render(mScene);
-        else if (mShading && !mChain.renderPlain(mScene)) mChain.render(mScene);
+        if (!mPlainFlush)
+            mChain.render(mScene);
+        else if (mShading && !mChain.renderPlain(mScene))
+            mChain.render(mScene);
         mSaved.restore();
     } else if (!mStackWarned) {
         // The tracker holds nothing while the stacks are full, so only a program that

@@ -172,9 +172,9 @@ private:
     enum class Phase { Unknown, Ready, Off };
     Phase mPhase = Phase::Unknown;
     styles::StyleChain mChain;
-    StyleSettings mSettings;  // what the chain runs: the context's, then each restyle's
-    bool mHasStyles = true;   // mSettings names at least one style
-    bool mEnabled = true;     // styling on (the toggle key)
+    StyleSettings mSettings; // what the chain runs: the context's, then each restyle's
+    bool mHasStyles = true;  // mSettings names at least one style
+    bool mEnabled = true;    // styling on (the toggle key)
     bool mShading = true;
     bool mTintLeft = false; // the chain has the coverage style
     bool mLeftNow = false;  // the draw being forwarded was counted as left
@@ -184,13 +184,13 @@ private:
     bool mMixedGlowSaid = false;
     uint32_t mLayersSaid = 0;    // texture units whose dropped layers were said
     uint32_t mLightmapsSaid = 0; // texture units whose lightmaps were said
-    GlDispatch mHeldNext{};  // mNext with draws and vertices recorded only
-    GlDispatch mHeldTable{}; // the context's table while a held glBegin..glEnd is open
+    GlDispatch mHeldNext{};      // mNext with draws and vertices recorded only
+    GlDispatch mHeldTable{};     // the context's table while a held glBegin..glEnd is open
 
     bool mHeld = false;         // held batches wait for the next flush
     bool mHoldingBegin = false; // inside a held glBegin..glEnd
     static constexpr size_t kNoLayer = SIZE_MAX;
-    size_t mLayerMark = kNoLayer;    // stream size at a possible layer's glBegin
+    size_t mLayerMark = kNoLayer;     // stream size at a possible layer's glBegin
     std::vector<uint8_t> mLayerCalls; // its calls, for the driver when it is not merged
     const char* mLayerWhy = nullptr;  // why a possible layer would be left
     bool mReplaySaid = false;
@@ -207,11 +207,14 @@ private:
     // in this frame: styled, and left as the program draws them by reason (each reason said
     // at its first).
     DrawCounts mRunCounts, mFrameCounts, mLastFrameCounts;
-    // Logs `counts` (the run's, or their copy at a frame end), with `note` after, once.
-    void report(const DrawCounts& counts, const char* note);
+    // Logs `counts` (the run's, or their copy at a frame end) and the textures drawn as
+    // drawings, with `note` after, once.
+    void report(const DrawCounts& counts, const styles::AbstractTextures::Counts& textures,
+                const char* note);
     // mRunCounts at the last frame end, for a thread that may not read mRunCounts itself.
     std::mutex mFrameEndCountsMutex;
     DrawCounts mFrameEndCounts;
+    styles::AbstractTextures::Counts mFrameEndTextures;
     std::atomic<bool> mRunCountsReported{false};
     uint64_t mMergedSeen = 0; // the tracker's merged passes already counted
     bool mMergeSaid = false;

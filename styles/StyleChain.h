@@ -38,6 +38,8 @@ public:
     }
     void glowEnd() { mGlowInk.end(mContext.gl); }
     StyleContext& context() { return mContext; }
+    // The program's textures drawn as drawings so far, and those left as the program's.
+    const AbstractTextures::Counts& textureCounts() const { return mAbstractions.counts(); }
 
     // paper.tone, or what the chain's paper colour and styles ask of the page.
     PageTone::Mode pageMode() const;
@@ -61,8 +63,7 @@ private:
     // alpha test, offset), each from the baseline with its alpha test and offset applied:
     // draw(run, first) sets the rest and renders (run: mRun, or `part` when it is one run);
     // test and offset are undone after.
-    template <typename Draw>
-    void forEachRun(const Scene& part, Draw&& draw);
+    template <typename Draw> void forEachRun(const Scene& part, Draw&& draw);
     // The depth test (depth-tested objects by `testedFunc`), depth writes and blending a run
     // is drawn with as the program drew it; the caller disables blending after.
     void setDrawnState(const SceneObject& first, GLenum testedFunc);
@@ -80,9 +81,9 @@ private:
     bool collectCutOuts();
 
     Scene mOpaque, mCutOut, mDepthOnly, mTranslucent, mRun; // render()'s parts, kept
-    Scene mDepthOnlyFirst; // depth-only objects drawn before every coloured one
-    Scene mBlendedCutOut; // translucent, shaped by their alpha test and depth writes
-    Scene mWithCutOuts; // the opaque scene and the cut-outs (Style::outlinesCutOuts)
+    Scene mDepthOnlyFirst;   // depth-only objects drawn before every coloured one
+    Scene mBlendedCutOut;    // translucent, shaped by their alpha test and depth writes
+    Scene mWithCutOuts;      // the opaque scene and the cut-outs (Style::outlinesCutOuts)
     Scene mBackdrop, mOnTop; // drawn as the program did, before or after the scene
 };
 

@@ -2,6 +2,7 @@
 // drawing a textured sphere with them (AbstractTextures) in-process through the style harness.
 #include "styles/textures/AbstractTextures.h"
 #include "styles/textures/TextureAbstraction.h"
+#include "tests/support/Process.h"
 #include "tests/support/StyleHarness.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <regex>
 #include <set>
 #include <tuple>
 
@@ -331,4 +333,26 @@ TEST_F(Drawings, ANameReusedNowAndThenIsADrawingEachTime)
         EXPECT_LT(grain(render("toon.texture_detail=0", grainy)), 0.05) << "level " << level;
     }
     glDeleteTextures(1, &grainy);
+}
+
+// Nothing silent: the run's report says how many of the program's textures were drawn as
+// drawings and how many were left as the program's, by reason; and none at texture_detail 1.
+TEST(DrawingsReport, CountsTheTexturesDrawnAsDrawings)
+{
+    const std::string dir = freshDir("drawings_report");
+    const ProcessResult abstracted =
+        runProcess({nprglCommand(), "replay", fixture("textured"), "-o", dir + "/default"},
+                   {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""}, {"NPRGL_PRESET", ""}});
+    ASSERT_EQ(abstracted.exitCode, 0) << abstracted.err;
+    EXPECT_TRUE(std::regex_search(
+        abstracted.err,
+        std::regex("context [0-9]+: textures as drawings: [1-9][0-9]* abstracted; left as the "
+                   "program's: 0 of unknown content, 0 changing, 0 too large\n")))
+        << abstracted.err;
+    const ProcessResult kept =
+        runProcess({nprglCommand(), "replay", fixture("textured"), "-o", dir + "/detail1", "--set",
+                    "toon.texture_detail=1"},
+                   {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""}, {"NPRGL_PRESET", ""}});
+    ASSERT_EQ(kept.exitCode, 0) << kept.err;
+    EXPECT_EQ(kept.err.find("textures as drawings"), std::string::npos) << kept.err;
 }

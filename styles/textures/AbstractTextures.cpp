@@ -43,8 +43,8 @@ void readLevel0(const GlFunctions& gl, TextureImage& image)
     const int channels = intensity > 0 ? 1 : 2;
     std::vector<uint8_t> read(texels * size_t(channels));
     gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl.GetTexImage(GL_TEXTURE_2D, 0, intensity > 0 ? GL_RED : GL_LUMINANCE_ALPHA,
-                   GL_UNSIGNED_BYTE, read.data());
+    gl.GetTexImage(GL_TEXTURE_2D, 0, intensity > 0 ? GL_RED : GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE,
+                   read.data());
     gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
     for (size_t i = 0; i < texels; ++i) {
         const uint8_t value = read[i * size_t(channels)];
@@ -68,6 +68,14 @@ AbstractTextures::~AbstractTextures()
 }
 
 void AbstractTextures::setWait(bool wait) { sWait = wait; }
+
+std::string AbstractTextures::Counts::describe() const
+{
+    return std::to_string(abstracted) +
+           " abstracted; left as the program's: " + std::to_string(unknownContent) +
+           " of unknown content, " + std::to_string(changing) + " changing, " +
+           std::to_string(tooLarge) + " too large";
+}
 
 void AbstractTextures::say(const char* what, int& count)
 {

@@ -9,6 +9,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <unordered_map>
 
 namespace nprgl::styles {
@@ -40,6 +41,9 @@ public:
         int unknownContent = 0;
         int changing = 0;
         int tooLarge = 0;
+        bool any() const { return abstracted + unknownContent + changing + tooLarge > 0; }
+        // "3 abstracted; left as the program's: 1 of unknown content, 0 changing, 0 too large"
+        std::string describe() const;
     };
 
     AbstractTextures();
