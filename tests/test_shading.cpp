@@ -154,22 +154,10 @@ protected:
         return nearestTexture(GL_ALPHA, 16, 16, GL_ALPHA, texels.data());
     }
 
-    // A texture of bytes, tightly packed, sampled nearest (one texel a face's part).
     GLuint nearestTexture(GLint internalFormat, int width, int height, GLenum format,
                           const uint8_t* texels)
     {
-        const styles::GlFunctions& gl = harness.gl();
-        GLuint id = 0;
-        glGenTextures(1, &id);
-        gl.BindTexture(GL_TEXTURE_2D, id);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format,
-                      GL_UNSIGNED_BYTE, texels);
-        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        gl.BindTexture(GL_TEXTURE_2D, 0);
-        return id;
+        return harness.nearestTexture(internalFormat, width, height, format, texels);
     }
 
     StyleHarness harness{kSize, kSize};

@@ -223,17 +223,8 @@ protected:
                 if (channels == 2) bytes.push_back(rgba.pixels[i + 3]); // and alpha
             }
         }
-        const GlFunctions& gl = harness.gl();
-        GLuint id = 0;
-        glGenTextures(1, &id);
-        gl.BindTexture(GL_TEXTURE_2D, id);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, rgba.width, rgba.height, 0, format,
-                      GL_UNSIGNED_BYTE, bytes.data());
-        gl.BindTexture(GL_TEXTURE_2D, 0);
-        return id;
+        return harness.nearestTexture(internalFormat, rgba.width, rgba.height, format,
+                                      bytes.data());
     }
     // The share of neighbouring pixels in the sphere's middle that differ: the grain makes
     // most of them differ, flat regions only those along region and band borders.

@@ -215,4 +215,20 @@ reconstruct::Batch boxBatch(const glm::mat4& modelview, glm::vec3 h, glm::vec4 c
     return b;
 }
 
+GLuint StyleHarness::nearestTexture(GLint internalFormat, int width, int height, GLenum format,
+                                    const uint8_t* texels) const
+{
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    mGl.BindTexture(GL_TEXTURE_2D, id);
+    mGl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    mGl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    mGl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    mGl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, GL_UNSIGNED_BYTE,
+                   texels);
+    mGl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    mGl.BindTexture(GL_TEXTURE_2D, 0);
+    return id;
+}
+
 } // namespace nprgl::test

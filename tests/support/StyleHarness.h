@@ -43,6 +43,10 @@ public:
         mTextureContent = std::move(content);
     }
     const styles::GlFunctions& gl() const { return mGl; }
+    // A 2D texture of bytes, tightly packed, sampled nearest (one texel a face's part); the
+    // unpack alignment and the binding are left at their defaults.
+    GLuint nearestTexture(GLint internalFormat, int width, int height, GLenum format,
+                          const uint8_t* texels) const;
     // A depth-only program's sources (uniform mat4 mvp; attribute 0 position).
     static const char* depthVertexShader();
     static const char* depthFragmentShader();
