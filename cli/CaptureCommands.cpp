@@ -107,6 +107,8 @@ int replayCommand(const ReplayCommandOptions& options)
     replay.outDir = options.outDir;
     replay.contextId = options.context;
     replay.stats = options.stats;
+    if (options.overlays && !options.stats) return usage("--overlays needs --stats");
+    replay.overlays = options.overlays;
     // The progress bar would interleave with the per-frame figures.
     replay.progress = isatty(STDERR_FILENO) && !options.stats;
     VideoWriter video;

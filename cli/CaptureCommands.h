@@ -16,6 +16,7 @@ struct ReplayCommandOptions {
     std::string outDir;
     unsigned context = 0;
     bool stats = false;
+    bool overlays = false; // with stats: each 2D draw's contrast
     std::string rules; // a configuration file whose leave_texture and leave_state rules apply
     std::string video; // a video of the frames (.mp4, .mkv, .mov: H.264; .webm: VP9)
     int fps = 30;

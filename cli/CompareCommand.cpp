@@ -2,6 +2,7 @@
 
 #include "capture/CaptureReader.h"
 #include "common/FrameFidelity.h"
+#include "common/OverlayLegibility.h"
 #include "common/PngImage.h"
 #include "styles/Presets.h"
 #include "styles/Style.h"
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fcntl.h>
 #include <map>
+#include <optional>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -121,6 +123,30 @@ std::map<uint64_t, std::string> statsByFrame(const std::string& text)
     return out;
 }
 
+// The replays' --overlays lines "frame 3: 2D draws: 2 measured: 120:12.41 0:-", by frame; a
+// line that does not parse is said and its frame left unjudged.
+std::map<uint64_t, std::vector<OverlayDraw>> overlaysByFrame(const std::string& text,
+                                                             const char* which)
+{
+    std::map<uint64_t, std::vector<OverlayDraw>> out;
+    forEachLine(text, [&](const std::string& line) {
+        unsigned long long frame = 0;
+        int used = 0;
+        if (std::sscanf(line.c_str(), "frame %llu: 2D draws: %n", &frame, &used) != 1 ||
+            used <= 0) {
+            return;
+        }
+        std::vector<OverlayDraw> draws;
+        if (OverlayLegibility::parse(line.substr(size_t(used)), draws)) {
+            out[frame] = std::move(draws);
+        } else {
+            std::fprintf(stderr, "nprgl: frame %llu: the %s replay's 2D draws do not read: %s\n",
+                         frame, which, line.c_str());
+        }
+    });
+    return out;
+}
+
 // The native replay's --stats lines "frame 3: background: cleared to 0 0 0", by frame: the
 // colour each frame's last clear of the whole window left.
 std::map<uint64_t, std::array<uint8_t, 3>> clearsByFrame(const std::string& text)
@@ -161,16 +187,27 @@ std::string jsonTone(const FrameFidelity::Tone& t)
 }
 
 void writeFrameJson(std::FILE* f, uint64_t frame, const FrameFidelity& m,
-                    const std::string& stats, bool last)
+                    const std::string& stats, const OverlayLegibility* overlays, bool last)
 {
     std::fprintf(f,
                  "    {\"frame\": %llu, \"drawn\": %llu, \"fidelity\": %.5f, \"missing\": %.5f, "
-                 "\"clear\": [%d, %d, %d], \"clearFrom\": \"%s\", \"draws\": %s,\n"
-                 "     \"objects\": [",
+                 "\"clear\": [%d, %d, %d], \"clearFrom\": \"%s\", \"draws\": %s,\n",
                  static_cast<unsigned long long>(frame),
                  static_cast<unsigned long long>(m.drawn), m.fidelity(), m.missingShare(),
                  m.clear[0], m.clear[1], m.clear[2], m.clearFromStream ? "stream" : "border",
                  jsonString(stats).c_str());
+    if (!overlays || !overlays->mismatch.empty()) {
+        std::fprintf(f, "     \"overlays\": null,\n");
+    } else {
+        std::fprintf(f, "     \"overlays\": {\"judged\": %zu, \"short\": [", overlays->judged);
+        for (size_t i = 0; i < overlays->shortOf.size(); ++i) {
+            const OverlayLegibility::Short& o = overlays->shortOf[i];
+            std::fprintf(f, "%s{\"draw\": %zu, \"pixels\": %u, \"native\": %.2f, \"styled\": %.2f}",
+                         i ? ", " : "", o.index, o.pixels, o.native, o.styled);
+        }
+        std::fprintf(f, "]},\n");
+    }
+    std::fprintf(f, "     \"objects\": [");
     for (size_t i = 0; i < m.objects.size(); ++i) {
         const FrameFidelity::Object& o = m.objects[i];
         std::fprintf(f,
@@ -256,20 +293,22 @@ int compareCommand(const CompareOptions& options)
     std::string error;
     const std::string nativeDir = (scratch / "native").string();
     std::vector<std::string> native = replayArgs(nativeDir);
-    native.insert(native.end(), {"--style", "none", "--stats"});
+    native.insert(native.end(), {"--style", "none", "--stats", "--overlays"});
     std::string nativeStats;
     if (!runSelf(native, &nativeStats, error)) return fail(options.file + ": " + error);
     const auto clears = clearsByFrame(nativeStats);
+    const auto nativeOverlays = overlaysByFrame(nativeStats, "native");
 
     const std::string styleDir = (scratch / "style").string();
     std::vector<std::string> styled = replayArgs(styleDir);
-    styled.push_back("--stats");
+    styled.insert(styled.end(), {"--stats", "--overlays"});
     if (!options.style.empty()) styled.insert(styled.end(), {"--style", options.style});
     if (!options.preset.empty()) styled.insert(styled.end(), {"--preset", options.preset});
     for (const std::string& s : options.settings) styled.insert(styled.end(), {"--set", s});
     std::string statsText;
     if (!runSelf(styled, &statsText, error)) return fail(options.file + ": " + error);
     const std::map<uint64_t, std::string> stats = statsByFrame(statsText);
+    const auto styledOverlays = overlaysByFrame(statsText, "styled");
 
     // The palette is the shading's: the same chain without its outline styles, when it has
     // both (the ink over a thin part is most of its pixels, and no object's colour).
@@ -310,6 +349,7 @@ int compareCommand(const CompareOptions& options)
     const auto shadingFrames = shading.empty() ? decltype(idsFrames)() : framesIn(shadingDir);
     std::vector<double> fidelities;
     uint64_t nativeDrawn = 0, missing = 0, judged = 0, failures = 0;
+    uint64_t overlayDraws = 0, overlaysShort = 0, overlaysUnjudged = 0;
     size_t index = 0;
     for (const auto& [frame, nativePath] : nativeFrames) {
         ++index;
@@ -344,18 +384,36 @@ int compareCommand(const CompareOptions& options)
         }
         const auto st = stats.find(frame);
         const std::string draws = st == stats.end() ? "" : st->second;
+        // The 2D draws, when both replays measured this frame's.
+        const auto no = nativeOverlays.find(frame), so = styledOverlays.find(frame);
+        std::optional<OverlayLegibility> overlays;
+        if (no != nativeOverlays.end() && so != styledOverlays.end()) {
+            overlays = OverlayLegibility::judge(no->second, so->second);
+            if (overlays->mismatch.empty()) {
+                overlayDraws += overlays->judged;
+                overlaysShort += overlays->shortOf.size();
+            } else {
+                ++overlaysUnjudged;
+            }
+        } else {
+            ++overlaysUnjudged;
+        }
         std::printf("frame %llu: fidelity %.3f, missing %.2f%%, %llu drawn px, %zu objects "
-                    "(palette: %u of %u judged off)%s%s\n",
+                    "(palette: %u of %u judged off); 2D draws: %s%s%s\n",
                     static_cast<unsigned long long>(frame), m.fidelity(),
                     100.0 * m.missingShare(), static_cast<unsigned long long>(m.drawn),
                     m.objects.size(), m.paletteFailures(), m.paletteJudged(),
+                    overlays ? overlays->summary().c_str() : "not measured",
                     draws.empty() ? "" : "; 3D polygon draws: ", draws.c_str());
         fidelities.push_back(m.fidelity());
         nativeDrawn += m.nativeDrawn;
         missing += m.missing;
         judged += m.paletteJudged();
         failures += m.paletteFailures();
-        if (json) writeFrameJson(json, frame, m, draws, index == nativeFrames.size());
+        if (json) {
+            writeFrameJson(json, frame, m, draws, overlays ? &*overlays : nullptr,
+                           index == nativeFrames.size());
+        }
     }
     if (fidelities.empty()) {
         if (json) std::fclose(json);
@@ -369,18 +427,28 @@ int compareCommand(const CompareOptions& options)
                                                      sorted[sorted.size() / 2]);
     const double missingShare = nativeDrawn ? double(missing) / double(nativeDrawn) : 0.0;
     std::printf("fidelity: median %.3f, min %.3f over %zu frames; missing %.2f%%; palette: "
-                "%llu of %llu judged objects off\n",
+                "%llu of %llu judged objects off; 2D draws: %llu of %llu short of their "
+                "contrast%s\n",
                 median, sorted.front(), sorted.size(), 100.0 * missingShare,
                 static_cast<unsigned long long>(failures),
-                static_cast<unsigned long long>(judged));
+                static_cast<unsigned long long>(judged),
+                static_cast<unsigned long long>(overlaysShort),
+                static_cast<unsigned long long>(overlayDraws),
+                overlaysUnjudged ? (" (" + std::to_string(overlaysUnjudged) +
+                                    " frames not judged)").c_str()
+                                 : "");
     if (json) {
         std::fprintf(json,
                      "  ],\n  \"summary\": {\"frames\": %zu, \"fidelityMedian\": %.5f, "
                      "\"fidelityMin\": %.5f, \"missing\": %.5f, \"paletteObjects\": %llu, "
-                     "\"paletteFailures\": %llu, \"paletteOk\": %s}\n}\n",
+                     "\"paletteFailures\": %llu, \"paletteOk\": %s, \"overlayDraws\": %llu, "
+                     "\"overlaysShort\": %llu, \"overlayFramesUnjudged\": %llu}\n}\n",
                      sorted.size(), median, sorted.front(), missingShare,
                      static_cast<unsigned long long>(judged),
-                     static_cast<unsigned long long>(failures), failures == 0 ? "true" : "false");
+                     static_cast<unsigned long long>(failures), failures == 0 ? "true" : "false",
+                     static_cast<unsigned long long>(overlayDraws),
+                     static_cast<unsigned long long>(overlaysShort),
+                     static_cast<unsigned long long>(overlaysUnjudged));
         if (std::fclose(json) != 0) return fail("cannot write " + options.json);
     }
     return 0;

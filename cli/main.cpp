@@ -117,6 +117,9 @@ int replayMain(int argc, char** argv)
     app.add_flag("--stats", o.stats,
                  "print each frame's 3D polygon draws, styled and left by reason (the run's "
                  "totals are logged at the end), and the colour it cleared the window to");
+    app.add_flag("--overlays", o.overlays,
+                 "with --stats: also each 2D draw's pixels and contrast with its surroundings "
+                 "(WCAG ratio), read around the draw (slow: for nprgl compare)");
     app.add_option("-s,--style", o.style, "style chain");
     app.add_option("--preset", o.preset, "a shipped preset (see nprgl styles) or a preset file");
     app.add_option("--set", o.settings, "style parameter, style.param=value (repeatable)")

@@ -261,6 +261,7 @@ void Compositor::setEnabled(bool enabled)
 
 void Compositor::tintBegin(GLuint list)
 {
+    overlayBegin();
     mFresh.drawn = true;
     if (!mLeftNow) return;
     mLeftNow = false;
@@ -330,9 +331,35 @@ void Compositor::tintEnd()
         gRealGl.glPopAttrib();
         mGlowing = false;
     }
-    if (!mTinting) return;
-    gRealGl.glPopAttrib();
-    mTinting = false;
+    if (mTinting) {
+        gRealGl.glPopAttrib();
+        mTinting = false;
+    }
+    overlayEnd();
+}
+
+void Compositor::overlayBegin()
+{
+    mMeasuring = false;
+    if (!OverlayContrast::measuring() || mPhase != Phase::Ready || mBroken) return;
+    // Without styles placeDraw does not follow the stream: the tracker is brought up to date
+    // here (a native replay's figures are taken in style none).
+    syncStream();
+    if (mTracker.is3D() || !mTracker.executing() || mTracker.compiling() ||
+        mTracker.renderMode() != GL_RENDER) {
+        return;
+    }
+    GLint framebuffer = 0;
+    gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    if (framebuffer != 0) return;
+    mOverlays.before(mContext.caps(), mContext.drawableWidth(), mContext.drawableHeight());
+    mMeasuring = true;
+}
+
+void Compositor::overlayEnd()
+{
+    if (!std::exchange(mMeasuring, false)) return;
+    mOverlays.after();
 }
 
 void Compositor::noteUnstyled(bool polygonal)

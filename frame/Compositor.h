@@ -1,6 +1,7 @@
 #pragma once
 
 #include "frame/DrawCounts.h"
+#include "frame/OverlayContrast.h"
 #include "frame/SavedGlState.h"
 #include "frame/ScenePick.h"
 #include "frame/StateTracker.h"
@@ -136,6 +137,12 @@ public:
     // on a page, a glow is drawn as ink. list: the display list the draw calls, if any.
     void tintBegin(GLuint list = 0);
     void tintEnd();
+    // Around a draw left as the program draws it, and around glBitmap and glDrawPixels: with
+    // OverlayContrast enabled (a replay's --overlays), a 2D draw into the window is measured.
+    void overlayBegin();
+    void overlayEnd();
+    // The 2D draws measured since the last call (OverlayContrast::takeFrame).
+    std::vector<OverlayContrast::Draw> takeOverlays() { return mOverlays.takeFrame(); }
     GLint renderMode(GLenum mode);
     const GlDispatch& next() const { return mNext; }
 
@@ -258,6 +265,8 @@ private:
     } mFresh;
 
     SavedGlState mSaved; // the program's state while the chain starts or renders
+    OverlayContrast mOverlays;
+    bool mMeasuring = false; // overlayBegin read the window for the draw under way
     PFNGLBINDFRAMEBUFFERPROC mBindFramebuffer = nullptr;
 };
 

@@ -68,6 +68,18 @@ void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
         C().colourDrawn();                                                                      \
         return C().next().name args;                                                            \
     }
+// Raster images (glBitmap, glDrawPixels): drawings into colour that may be 2D overlays (a
+// bitmap font's glyphs), measured as such with OverlayContrast enabled.
+#define NPRGL_COMPOSITOR_RASTER(ret, name, params, args)                                        \
+    ret APIENTRY c_##name params                                                               \
+    {                                                                                           \
+        Compositor& c = C();                                                                    \
+        c.barrier();                                                                            \
+        c.colourDrawn();                                                                        \
+        c.overlayBegin();                                                                       \
+        c.next().name args;                                                                     \
+        c.overlayEnd();                                                                         \
+    }
 // Clears: barriers that also tell the page (paper) where the program's background is new.
 #define NPRGL_COMPOSITOR_CLEAR(ret, name, colour, params, args)                                 \
     ret APIENTRY c_##name params                                                               \
@@ -107,6 +119,7 @@ GLint APIENTRY c_glRenderMode(GLenum mode) { return C().renderMode(mode); }
 #undef NPRGL_COMPOSITOR_HELD_DRAW
 #undef NPRGL_COMPOSITOR_BARRIER
 #undef NPRGL_COMPOSITOR_DRAWING
+#undef NPRGL_COMPOSITOR_RASTER
 #undef NPRGL_COMPOSITOR_CLEAR
 #undef NPRGL_COMPOSITOR_COPY_TO_TEXTURE
 #undef NPRGL_COMPOSITOR_BIND_FRAMEBUFFER

@@ -166,6 +166,7 @@ public:
     ListDraws listDraws(GLuint list) const;
     bool is3D() const;
     void setRenderMode(GLenum mode) { mRenderMode = mode; }
+    GLenum renderMode() const { return mRenderMode; }
     // The driver's attribute stack depths (GL_MAX_ATTRIB_STACK_DEPTH, ..._CLIENT_...).
     void setStackLimits(int attrib, int client)
     {

@@ -60,6 +60,7 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
     const std::string& path = reader.path();
     const auto& frames = reader.frames();
     Compositor::finishStyleWorkAtOnce();
+    if (options.overlays) OverlayContrast::enable();
     const uint32_t contextId = options.contextId ? options.contextId : defaultContext(reader);
     const int width = options.width ? options.width : reader.metadata().width;
     const int height = options.height ? options.height : reader.metadata().height;
@@ -110,6 +111,12 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
                         c ? c->runCounts().since(statsBefore).describe().c_str()
                           : "not styled (style none)");
             if (c) statsBefore = c->runCounts();
+            if (OverlayContrast::measuring()) {
+                Compositor* o = tThread.context ? tThread.context->compositor() : nullptr;
+                std::printf("frame %llu: 2D draws: %s\n", static_cast<unsigned long long>(frame),
+                            o ? OverlayLegibility::describe(o->takeOverlays()).c_str()
+                              : "not measured (no compositor)");
+            }
             uint8_t clear[3];
             if (replaying && replaying->frameClear(clear)) {
                 std::printf("frame %llu: background: cleared to %u %u %u\n",
@@ -158,6 +165,9 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
     for (size_t i = 0; ok && i < frames.size(); ++i) {
         if (frames[i].contextId != contextId) continue;
         if (!options.frames.empty() && frames[i].frameNumber > options.frames.last()) break;
+        // Two read-backs per 2D draw: only in the frames asked for.
+        OverlayContrast::setPaused(!options.frames.empty() &&
+                                   !options.frames.contains(frames[i].frameNumber));
         if (!reader.readFrame(i, calls, error)) {
             if (report) {
                 NPRGL_ERROR("%s; frame %llu skipped", error.c_str(),

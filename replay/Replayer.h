@@ -21,6 +21,7 @@ struct ReplayOptions {
     uint32_t contextId = 0; // 0: the stream with the most frames
     bool progress = false;  // a progress bar on stderr
     bool stats = false;     // each frame's 3D draws and what it cleared to, on stdout
+    bool overlays = false;  // with stats: each frame's 2D draws and their contrast
     ReplayLimits limits;    // what a call may ask of the driver before it is refused
     // The style and values to replay with; unset: the process's (the environment's).
     std::optional<Config> config;

@@ -124,8 +124,9 @@ Context::Context(WindowSystem ws, const void* handle, uint32_t serial, const Con
     // The compositor reads the Stream too (from memory, frame by frame). With a configuration
     // file it is there even for style none, so that a change of the file can style the
     // program without a restart.
-    const bool styled =
-        mConfig.style.chain().front()->create != nullptr || !mConfig.files.empty();
+    // A replay measuring 2D draws (OverlayContrast) needs it in style none too.
+    const bool styled = mConfig.style.chain().front()->create != nullptr ||
+                        !mConfig.files.empty() || OverlayContrast::enabled();
     if (sink || styled) {
         mRecorder = std::make_unique<Recorder>(*this, sink);
         installRecording(mDispatch);

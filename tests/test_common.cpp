@@ -1,6 +1,7 @@
 #include "common/FrameFidelity.h"
 #include "common/FrameSet.h"
 #include "common/KeyValue.h"
+#include "common/OverlayLegibility.h"
 #include "common/PngImage.h"
 #include "common/ProcessName.h"
 #include "tests/support/Process.h"
@@ -300,6 +301,116 @@ TEST(FrameFidelity, ASpeckAPixelApartIsRasterisationNotAnError)
 // Wine moves the Windows program's command line over its loader's arguments: the name glibc
 // kept pointed at "" or "uild/wine/wingl64.exe" (screenshots to a missing folder, the
 // per-program file ".conf"), and the command line ends in NUL padding, taken for words.
+namespace {
+
+// A w x h RGBA window of one grey, and a rectangle painted in another.
+std::vector<uint8_t> window(int w, int h, uint8_t grey)
+{
+    std::vector<uint8_t> rgba(size_t(w) * size_t(h) * 4, grey);
+    for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
+    return rgba;
+}
+
+void paint(std::vector<uint8_t>& rgba, int w, int x0, int y0, int x1, int y1, uint8_t grey)
+{
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            for (int c = 0; c < 3; ++c) rgba[(size_t(y) * size_t(w) + size_t(x)) * 4 + c] = grey;
+        }
+    }
+}
+
+} // namespace
+
+// A glyph is measured against the pixels around it, not against the whole window: a white
+// glyph on a grey panel laid over black counts the panel, where the black is out of reach.
+TEST(OverlayLegibility, AGlyphStandsOutFromWhatIsAroundIt)
+{
+    const int w = 40, h = 20;
+    std::vector<uint8_t> before = window(w, h, 0);
+    paint(before, w, 5, 2, 30, 17, 128); // the panel, drawn earlier
+    std::vector<uint8_t> after = before;
+    paint(after, w, 10, 6, 15, 13, 255); // a 6 x 8 glyph
+    const OverlayDraw d = OverlayLegibility::measure(before.data(), after.data(), w, h);
+    EXPECT_EQ(d.pixels, 48u);
+    ASSERT_TRUE(d.surrounded);
+    const uint8_t white[3] = {255, 255, 255}, grey[3] = {128, 128, 128};
+    const float expected = OverlayLegibility::ratio(OverlayLegibility::luminance(white),
+                                                    OverlayLegibility::luminance(grey));
+    EXPECT_NEAR(d.contrast, expected, 1e-3f);
+    EXPECT_NEAR(expected, 3.95f, 0.01f); // WCAG: white on #808080
+    // The panel itself against the black scene around it.
+    const std::vector<uint8_t> black = window(w, h, 0);
+    const OverlayDraw panel = OverlayLegibility::measure(black.data(), before.data(), w, h);
+    EXPECT_EQ(panel.pixels, 26u * 16u);
+    EXPECT_NEAR(panel.contrast,
+                OverlayLegibility::ratio(OverlayLegibility::luminance(grey), 0.0), 1e-3f);
+}
+
+// Text in the colour of the page changes nothing: no pixels, no contrast.
+TEST(OverlayLegibility, TextInThePagesColourChangesNothing)
+{
+    const std::vector<uint8_t> page = window(32, 16, 231);
+    std::vector<uint8_t> text = page;
+    paint(text, 32, 4, 4, 12, 10, 233); // within kChanged of the page
+    const OverlayDraw d = OverlayLegibility::measure(page.data(), text.data(), 32, 16);
+    EXPECT_EQ(d.pixels, 0u);
+    EXPECT_FALSE(d.surrounded);
+    // Covering the whole window leaves no surroundings to judge it by.
+    const std::vector<uint8_t> black = window(32, 16, 0);
+    const OverlayDraw all = OverlayLegibility::measure(black.data(), page.data(), 32, 16);
+    EXPECT_EQ(all.pixels, 32u * 16u);
+    EXPECT_FALSE(all.surrounded);
+}
+
+// A draw keeps its legibility at min(native, 4.5:1) (less 5% for antialiasing), and only
+// where it is still seen.
+TEST(OverlayLegibility, AStyleMustKeepTheSmallerOfNativesContrastAndAA)
+{
+    const std::vector<OverlayDraw> native = {
+        {300, 12.0f, true}, {300, 12.0f, true}, {300, 12.0f, true}, {300, 2.0f, true},
+        {300, 2.0f, true},  {10, 15.0f, true},  {5000, 1.0f, false}};
+    const std::vector<OverlayDraw> styled = {
+        {300, 1.3f, true},  // lost its contrast
+        {20, 15.0f, true},  // drawn in the page's colour: few pixels changed
+        {290, 4.4f, true},  // 4.5:1 within the slack
+        {300, 1.95f, true}, // native's own low contrast, kept within the slack
+        {300, 1.5f, true},  // native's low contrast, lost
+        {10, 1.0f, true},   // a speck: not judged
+        {5000, 1.0f, false}};
+    const OverlayLegibility l = OverlayLegibility::judge(native, styled);
+    EXPECT_TRUE(l.mismatch.empty());
+    EXPECT_EQ(l.judged, 5u);
+    ASSERT_EQ(l.shortOf.size(), 3u);
+    EXPECT_EQ(l.shortOf[0].index, 0u);
+    EXPECT_EQ(l.shortOf[1].index, 1u);
+    EXPECT_FLOAT_EQ(l.shortOf[1].styled, 1.0f) << "a draw not seen has no contrast";
+    EXPECT_EQ(l.shortOf[2].index, 4u);
+    EXPECT_NE(l.summary().find("3 of 5 short"), std::string::npos) << l.summary();
+    const OverlayLegibility differ = OverlayLegibility::judge(native, {styled[0]});
+    EXPECT_FALSE(differ.mismatch.empty());
+    EXPECT_EQ(differ.judged, 0u);
+}
+
+TEST(OverlayLegibility, TheReplaysLinesReadBackAndBadOnesAreRefused)
+{
+    const std::vector<OverlayDraw> draws = {{120, 12.41f, true}, {0, 1.0f, false}};
+    const std::string text = OverlayLegibility::describe(draws);
+    EXPECT_EQ(text, "2 measured: 120:12.41 0:-");
+    std::vector<OverlayDraw> back;
+    ASSERT_TRUE(OverlayLegibility::parse(text, back));
+    ASSERT_EQ(back.size(), 2u);
+    EXPECT_EQ(back[0].pixels, 120u);
+    EXPECT_NEAR(back[0].contrast, 12.41f, 1e-4f);
+    EXPECT_FALSE(back[1].surrounded);
+    EXPECT_TRUE(OverlayLegibility::parse("0 measured:", back));
+    EXPECT_TRUE(back.empty());
+    for (const char* bad : {"", "x", "2 measured: 1:2.0", "1 measured: 5:0.5", "1 measured: 5",
+                            "1 measured: 5:30", "1 measured: :2", "1 measured: 5:2 junk"}) {
+        EXPECT_FALSE(OverlayLegibility::parse(bad, back)) << bad;
+    }
+}
+
 TEST(ProcessName, AProgramIsNamedByItsCommandLineAsItIsNow)
 {
     EXPECT_EQ(programNameFrom({"/usr/bin/glxgears"}, "glxgears"), "glxgears");

@@ -19,6 +19,7 @@ namespace {
 struct Summary {
     double median = -1.0, min = -1.0, missing = -1.0;
     long paletteObjects = -1, paletteFailures = -1;
+    long overlayDraws = -1, overlaysShort = -1;
     std::string json;
 };
 
@@ -48,6 +49,8 @@ Summary compare(const std::string& capture, const std::vector<std::string>& styl
     s.missing = field(s.json, "missing");
     s.paletteObjects = long(field(s.json, "paletteObjects"));
     s.paletteFailures = long(field(s.json, "paletteFailures"));
+    s.overlayDraws = long(field(s.json, "overlayDraws"));
+    s.overlaysShort = long(field(s.json, "overlaysShort"));
     return s;
 }
 
@@ -73,6 +76,9 @@ TEST_P(FixtureFidelity, DefaultStyleLosesNothingAndKeepsHues)
     EXPECT_LE(s.missing, 0.005);
     EXPECT_GT(s.paletteObjects, 0) << "no object judged: no test";
     EXPECT_EQ(s.json.find("\"hueKept\": false"), std::string::npos) << s.json.substr(0, 3000);
+    // Every 2D draw keeps the smaller of its own contrast and 4.5:1 (issue 39's rule).
+    EXPECT_EQ(s.overlaysShort, 0) << s.json.substr(0, 3000);
+    EXPECT_EQ(field(s.json, "overlayFramesUnjudged"), 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, FixtureFidelity,
@@ -109,6 +115,21 @@ TEST(Compare, TheBackgroundIsWhatTheFrameClearedTheWholeWindowTo)
     }
     EXPECT_EQ(frames, 3u);
     EXPECT_GE(s.median, 0.97);
+}
+
+// demo_overlay draws pale text and a white frame over its dark scene. On the page that
+// follows the program (dark) they keep their contrast; on a light page forced over them they
+// do not, and compare says so per draw.
+TEST(Compare, OverlaysKeepTheirContrastOnlyOnAPageOfTheProgramsTone)
+{
+    const Summary dark = compare(fixture("overlay"), {"--frames", "1-3"}, "overlay_auto");
+    EXPECT_GE(dark.overlayDraws, 3 * 20) << "the HUD's glyphs, panel and bar were not judged";
+    EXPECT_EQ(dark.overlaysShort, 0) << dark.json.substr(0, 3000);
+    const Summary light = compare(fixture("overlay"), {"--frames", "1-3", "--set",
+                                                       "paper.tone=light"}, "overlay_light");
+    EXPECT_EQ(light.overlayDraws, dark.overlayDraws);
+    EXPECT_GE(light.overlaysShort, 3 * 11) << "the pale title's glyphs on a light page";
+    EXPECT_NE(light.json.find("\"short\": [{\"draw\": "), std::string::npos);
 }
 
 TEST(Compare, AFileThatIsNoCaptureExitsOneWithItsName)
