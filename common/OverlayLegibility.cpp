@@ -47,60 +47,72 @@ float OverlayLegibility::ratio(double l1, double l2)
     return float((hi + 0.05) / (lo + 0.05));
 }
 
-OverlayDraw OverlayLegibility::measure(const uint8_t* before, const uint8_t* after, int width,
-                                       int height)
+void OverlayLegibility::changedPixels(const uint8_t* before, const uint8_t* after, int width,
+                                      int height, std::vector<uint32_t>& out)
+{
+    out.clear();
+    const size_t n = size_t(width) * size_t(height);
+    for (size_t i = 0; i < n; ++i) {
+        if (changed(before + i * 4, after + i * 4)) out.push_back(uint32_t(i));
+    }
+}
+
+OverlayDraw OverlayLegibility::measure(const std::vector<uint32_t>& pixels, const uint8_t* shown,
+                                       int width, int height, const uint8_t* later)
 {
     OverlayDraw d;
+    d.pixels = uint32_t(pixels.size());
+    if (pixels.empty()) return d;
     int x0 = width, y0 = height, x1 = -1, y1 = -1;
-    double fg = 0.0;
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const size_t i = (size_t(y) * size_t(width) + size_t(x)) * 4;
-            if (!changed(before + i, after + i)) continue;
-            ++d.pixels;
-            fg += luminance(after + i);
-            x0 = std::min(x0, x), x1 = std::max(x1, x);
-            y0 = std::min(y0, y), y1 = std::max(y1, y);
-        }
+    for (const uint32_t i : pixels) {
+        const int x = int(i % uint32_t(width)), y = int(i / uint32_t(width));
+        x0 = std::min(x0, x), x1 = std::max(x1, x);
+        y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
-    if (d.pixels == 0) return d;
-    // The changed pixels of the box around them grown by kRing, grown by kRing along rows
-    // and then along columns: a square neighbourhood.
+    // The draw's pixels in the box around them grown by kRing, grown by kRing along rows and
+    // then along columns: a square neighbourhood.
     x0 = std::max(0, x0 - kRing), y0 = std::max(0, y0 - kRing);
     x1 = std::min(width - 1, x1 + kRing), y1 = std::min(height - 1, y1 + kRing);
     const int w = x1 - x0 + 1, h = y1 - y0 + 1;
-    std::vector<uint8_t> mine(size_t(w) * size_t(h)), rows(mine.size()), near(mine.size());
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const size_t i = (size_t(y + y0) * size_t(width) + size_t(x + x0)) * 4;
-            mine[size_t(y) * size_t(w) + size_t(x)] = changed(before + i, after + i);
-        }
+    auto at = [w](int x, int y) { return size_t(y) * size_t(w) + size_t(x); };
+    std::vector<uint8_t> mine(size_t(w) * size_t(h)), rows(mine.size());
+    for (const uint32_t i : pixels) {
+        mine[at(int(i % uint32_t(width)) - x0, int(i / uint32_t(width)) - y0)] = 1;
     }
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             bool any = false;
             for (int k = std::max(0, x - kRing); k <= std::min(w - 1, x + kRing) && !any; ++k)
-                any = mine[size_t(y) * size_t(w) + size_t(k)] != 0;
-            rows[size_t(y) * size_t(w) + size_t(x)] = any;
+                any = mine[at(k, y)] != 0;
+            rows[at(x, y)] = any;
         }
     }
-    double bg = 0.0;
-    uint64_t ring = 0;
+    double ring = 0.0;
+    uint64_t ringPixels = 0;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const size_t m = size_t(y) * size_t(w) + size_t(x);
-            if (mine[m]) continue;
+            const size_t i = size_t(y + y0) * size_t(width) + size_t(x + x0);
+            if (mine[at(x, y)] || (later && later[i])) continue;
             bool any = false;
             for (int k = std::max(0, y - kRing); k <= std::min(h - 1, y + kRing) && !any; ++k)
-                any = rows[size_t(k) * size_t(w) + size_t(x)] != 0;
+                any = rows[at(x, k)] != 0;
             if (!any) continue;
-            ++ring;
-            bg += luminance(after + (size_t(y + y0) * size_t(width) + size_t(x + x0)) * 4);
+            ++ringPixels;
+            ring += luminance(shown + i * 4);
         }
     }
-    if (ring == 0) return d;
+    if (ringPixels == 0) return d;
+    ring /= double(ringPixels);
+    // Each pixel against the mean of the surroundings; the draw's figure is the quantile
+    // kStrokes of them: its strokes' cores, not their antialiased fringe.
+    std::vector<float> each;
+    each.reserve(pixels.size());
+    for (const uint32_t i : pixels)
+        each.push_back(ratio(luminance(shown + size_t(i) * 4), ring));
+    const size_t q = std::min(each.size() - 1, size_t(double(each.size()) * kStrokes));
+    std::nth_element(each.begin(), each.begin() + std::ptrdiff_t(q), each.end());
     d.surrounded = true;
-    d.contrast = ratio(fg / d.pixels, bg / double(ring));
+    d.contrast = each[q];
     return d;
 }
 
@@ -162,6 +174,9 @@ OverlayLegibility OverlayLegibility::judge(const std::vector<OverlayDraw>& nativ
         const OverlayDraw& s = styled[i];
         if (n.pixels < kMinPixels || !n.surrounded) continue;
         ++out.judged;
+        // Shown on far more pixels than natively (a shadow pass in the clear colour, seen on
+        // the page): the style lost nothing of it.
+        if (float(s.pixels) > kGained * float(n.pixels)) continue;
         const bool seen = s.surrounded && float(s.pixels) >= kSeen * float(n.pixels);
         const float kept = seen ? s.contrast : 1.0f;
         if (kept >= std::min(n.contrast, kTarget) * kSlack) continue;

@@ -338,30 +338,6 @@ void Compositor::tintEnd()
     overlayEnd();
 }
 
-void Compositor::overlayBegin()
-{
-    mMeasuring = false;
-    if (!OverlayContrast::measuring() || mPhase != Phase::Ready || mBroken) return;
-    // Without styles placeDraw does not follow the stream: the tracker is brought up to date
-    // here (a native replay's figures are taken in style none).
-    syncStream();
-    if (mTracker.is3D() || !mTracker.executing() || mTracker.compiling() ||
-        mTracker.renderMode() != GL_RENDER) {
-        return;
-    }
-    GLint framebuffer = 0;
-    gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    if (framebuffer != 0) return;
-    mOverlays.before(mContext.caps(), mContext.drawableWidth(), mContext.drawableHeight());
-    mMeasuring = true;
-}
-
-void Compositor::overlayEnd()
-{
-    if (!std::exchange(mMeasuring, false)) return;
-    mOverlays.after();
-}
-
 void Compositor::noteUnstyled(bool polygonal)
 {
     if (polygonal) noteLeft(mTracker.unstylableState());
@@ -386,7 +362,9 @@ void Compositor::noteLeft(const char* why)
 
 Compositor::Placement Compositor::placeDraw(GLenum mode, bool layers)
 {
-    if (!ready()) return Placement::Left;
+    const bool isReady = ready();
+    overlayPlaced();
+    if (!isReady) return Placement::Left;
     syncStream();
     if (!mTracker.wouldHold(mode)) {
         // Decided once the tracker has its vertices (settleLayer), before it reaches the
@@ -498,7 +476,9 @@ void Compositor::callList(GLuint list)
 
 Compositor::Placement Compositor::placeList(GLuint list)
 {
-    if (!ready()) return Placement::Left;
+    const bool isReady = ready();
+    overlayPlaced();
+    if (!isReady) return Placement::Left;
     syncStream();
     if (!mTracker.wouldHoldList(list)) {
         if (mHeld && mTracker.mayLayerList(list)) {
@@ -516,7 +496,9 @@ Compositor::Placement Compositor::placeList(GLuint list)
 
 bool Compositor::holdLists(GLsizei n, GLenum type, const void* lists)
 {
-    if (!ready()) return false;
+    const bool isReady = ready();
+    overlayPlaced();
+    if (!isReady) return false;
     syncStream();
     if (!mTracker.wouldHoldLists(n, type, lists)) {
         noteLeft(mTracker.listsUnstylable(n, type, lists));
@@ -696,6 +678,7 @@ void Compositor::barrier()
 void Compositor::clear(bool colour)
 {
     barrier();
+    if (colour) endOverlayRun();
     if (!colour || !ready()) return;
     GLint framebuffer = 0;
     gRealGl.glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);

@@ -137,10 +137,12 @@ public:
     // on a page, a glow is drawn as ink. list: the display list the draw calls, if any.
     void tintBegin(GLuint list = 0);
     void tintEnd();
-    // Around a draw left as the program draws it, and around glBitmap and glDrawPixels: with
-    // OverlayContrast enabled (a replay's --overlays), a 2D draw into the window is measured.
+    // With OverlayContrast enabled (a replay's --overlays, CompositorOverlays.cpp): around a
+    // draw left as the program draws it and around glBitmap and glDrawPixels, a 2D draw into
+    // the window is measured; any other draw, a clear or a blit ends the run of 2D draws.
     void overlayBegin();
     void overlayEnd();
+    void endOverlayRun() { mOverlays.endRun(); }
     // The 2D draws measured since the last call (OverlayContrast::takeFrame).
     std::vector<OverlayContrast::Draw> takeOverlays() { return mOverlays.takeFrame(); }
     GLint renderMode(GLenum mode);
@@ -155,6 +157,9 @@ private:
     // Shuts the chain down (when it ran) and starts mSettings' chain, with the program's
     // state and pending GL error kept; false with a message when it cannot start.
     bool startChain(bool restart, std::string& error);
+    // A draw measured as a 2D overlay now; at a draw's placement, ends the run if not.
+    bool overlayMeasurable();
+    void overlayPlaced();
     void noteHeld();
     void noteLayers();
     void noteUnstyled(bool polygonal);

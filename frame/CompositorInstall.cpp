@@ -66,6 +66,7 @@ void APIENTRY c_glCallLists(GLsizei n, GLenum type, const void* lists)
     {                                                                                           \
         C().barrier();                                                                          \
         C().colourDrawn();                                                                      \
+        C().endOverlayRun();                                                                    \
         return C().next().name args;                                                            \
     }
 // Raster images (glBitmap, glDrawPixels): drawings into colour that may be 2D overlays (a

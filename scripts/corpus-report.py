@@ -98,6 +98,9 @@ def summary_of(doc):
         "paletteOk": s.get("paletteOk"),
         "paletteObjects": s.get("paletteObjects"),
         "paletteFailures": s.get("paletteFailures"),
+        "overlayDraws": s.get("overlayDraws"),
+        "overlaysShort": s.get("overlaysShort"),
+        "overlayFramesUnjudged": s.get("overlayFramesUnjudged"),
         "worst": None,
     }
     if fid:
@@ -260,6 +263,18 @@ def main():
         w(f"- default style, palette kept on every object: {len(pal_ok)} of {len(pal)} programs "
           f"({100 * share:.1f}%; target ≥ {100 * TARGET_PALETTE_SHARE:.0f}%): "
           f"{'met' if pal and share >= TARGET_PALETTE_SHARE else 'NOT met'}.")
+        # Issue 39's legibility rule: each 2D draw keeps min(its native contrast, 4.5:1).
+        ov = [r for r in dfl if r["default"].get("overlayDraws")]
+        ov_short = [r for r in ov if r["default"].get("overlaysShort")]
+        unjudged = [r for r in dfl if r["default"].get("overlayFramesUnjudged")]
+        w(f"- default style, 2D draws (text, HUD) keeping min(native contrast, 4.5:1): "
+          f"{len(ov) - len(ov_short)} of {len(ov)} programs with judged 2D draws"
+          + (": short on " + ", ".join(
+              f"{r['name']} ({r['default']['overlaysShort']} of {r['default']['overlayDraws']})"
+              for r in sorted(ov_short, key=lambda r: r["name"])) if ov_short else "")
+          + (f"; 2D draws not judged in some frames of " + ", ".join(
+              r["name"] for r in sorted(unjudged, key=lambda r: r["name"])) if unjudged else "")
+          + ".")
         miss_bad = [r for r in dfl if (r["default"]["missing"] or 0) > TARGET_MISSING]
         w(f"- default style missing ≤ 0.5% on every program: {len(dfl) - len(miss_bad)} of "
           f"{len(dfl)}" + (": over it " + ", ".join(
@@ -282,9 +297,9 @@ def main():
     w("### Per program")
     w("")
     w("| program | frames | replica fidelity (median / min @frame) | default fidelity | "
-      "missing (replica / default) | palette (objects / failures) | styled / left | live | "
-      "reasons | GL features in the stream |")
-    w("|---|---|---|---|---|---|---|---|---|---|")
+      "missing (replica / default) | palette (objects / failures) | 2D draws (judged / short) "
+      "| styled / left | live | reasons | GL features in the stream |")
+    w("|---|---|---|---|---|---|---|---|---|---|---|")
 
     def sort_key(r):
         rp = r.get("replica")
@@ -302,7 +317,7 @@ def main():
             reasons.append(f"not recorded: {r['reason']}")
             lv = live.get(r["name"])
             live_cell = f"{lv[0]}/{lv[1]}" if lv else "-"
-            w(f"| {name} | - | - | - | - | - | - | {live_cell} | {'; '.join(reasons)} | - |")
+            w(f"| {name} | - | - | - | - | - | - | - | {live_cell} | {'; '.join(reasons)} | - |")
             continue
         if r["reason"] not in ("-", ""):
             reasons.append(r["reason"])
@@ -317,6 +332,12 @@ def main():
                         f"{df['paletteFailures'] if df['paletteFailures'] is not None else '-'})")
         else:
             pal_cell = "-"
+        if df and df.get("overlayDraws") is not None:
+            ov_cell = f"{df['overlayDraws']} / {df['overlaysShort']}"
+            if df.get("overlayFramesUnjudged"):
+                ov_cell += f" ({df['overlayFramesUnjudged']} frames not judged)"
+        else:
+            ov_cell = "-"
         if st:
             st_cell = f"{st[0]:,} / {st[1]:,}"
             if st[2]:
@@ -336,7 +357,7 @@ def main():
         if rp and rp["frames"] and str(rp["frames"]) != str(int(r["last"]) - int(r["first"]) + 1):
             frames_cell += f" (compared: {rp['frames']})"
         w(f"| {name} | {frames_cell} | {rep_cell} | {df_cell} | {miss_cell} | "
-          f"{pal_cell} | {st_cell} | {live_cell} | {'; '.join(reasons) or '-'} | "
+          f"{pal_cell} | {ov_cell} | {st_cell} | {live_cell} | {'; '.join(reasons) or '-'} | "
           f"{r.get('features', '-')} |")
     w("")
     w("Launch: every hack with `-window -geometry WxH` and no other argument; the games as "

@@ -322,6 +322,17 @@ void paint(std::vector<uint8_t>& rgba, int w, int x0, int y0, int x1, int y1, ui
 
 } // namespace
 
+// The draw of `before` -> `after` as `shown` shows it (its run's end).
+OverlayDraw measured(const std::vector<uint8_t>& before, const std::vector<uint8_t>& after,
+                     const std::vector<uint8_t>& shown, int w, int h,
+                     const std::vector<uint8_t>& later = {})
+{
+    std::vector<uint32_t> pixels;
+    OverlayLegibility::changedPixels(before.data(), after.data(), w, h, pixels);
+    return OverlayLegibility::measure(pixels, shown.data(), w, h,
+                                      later.empty() ? nullptr : later.data());
+}
+
 // A glyph is measured against the pixels around it, not against the whole window: a white
 // glyph on a grey panel laid over black counts the panel, where the black is out of reach.
 TEST(OverlayLegibility, AGlyphStandsOutFromWhatIsAroundIt)
@@ -331,7 +342,7 @@ TEST(OverlayLegibility, AGlyphStandsOutFromWhatIsAroundIt)
     paint(before, w, 5, 2, 30, 17, 128); // the panel, drawn earlier
     std::vector<uint8_t> after = before;
     paint(after, w, 10, 6, 15, 13, 255); // a 6 x 8 glyph
-    const OverlayDraw d = OverlayLegibility::measure(before.data(), after.data(), w, h);
+    const OverlayDraw d = measured(before, after, after, w, h);
     EXPECT_EQ(d.pixels, 48u);
     ASSERT_TRUE(d.surrounded);
     const uint8_t white[3] = {255, 255, 255}, grey[3] = {128, 128, 128};
@@ -341,10 +352,47 @@ TEST(OverlayLegibility, AGlyphStandsOutFromWhatIsAroundIt)
     EXPECT_NEAR(expected, 3.95f, 0.01f); // WCAG: white on #808080
     // The panel itself against the black scene around it.
     const std::vector<uint8_t> black = window(w, h, 0);
-    const OverlayDraw panel = OverlayLegibility::measure(black.data(), before.data(), w, h);
+    const OverlayDraw panel = measured(black, before, before, w, h);
     EXPECT_EQ(panel.pixels, 26u * 16u);
     EXPECT_NEAR(panel.contrast,
                 OverlayLegibility::ratio(OverlayLegibility::luminance(grey), 0.0), 1e-3f);
+}
+
+// An antialiased glyph is judged by its strokes' cores: a fringe of pixels between glyph and
+// page (a quarter of them here) does not pull its figure down.
+TEST(OverlayLegibility, AnAntialiasedFringeDoesNotCountAgainstTheGlyph)
+{
+    const int w = 30, h = 20;
+    const std::vector<uint8_t> page = window(w, h, 0);
+    std::vector<uint8_t> text = page;
+    paint(text, w, 9, 4, 20, 15, 60);   // the fringe, 144 pixels
+    paint(text, w, 11, 5, 18, 14, 255); // the core, 80 of them
+    const OverlayDraw d = measured(page, text, text, w, h);
+    EXPECT_EQ(d.pixels, 144u);
+    EXPECT_NEAR(d.contrast, 21.0f, 1e-3f);
+}
+
+// A shadow pass (black text under the white one, drawn first) is judged as its run shows it:
+// with the white text over it, not as black on a dark page.
+TEST(OverlayLegibility, AShadowIsJudgedWithTheTextDrawnOverIt)
+{
+    const int w = 40, h = 20;
+    const std::vector<uint8_t> page = window(w, h, 40);
+    std::vector<uint8_t> shadow = page;
+    paint(shadow, w, 11, 7, 21, 13, 0);
+    std::vector<uint8_t> text = shadow;
+    paint(text, w, 10, 6, 20, 12, 255);
+    // What the white pass changed is no part of the shadow's surroundings.
+    std::vector<uint32_t> white;
+    OverlayLegibility::changedPixels(shadow.data(), text.data(), w, h, white);
+    std::vector<uint8_t> later(size_t(w) * size_t(h), 0);
+    for (const uint32_t i : white) later[i] = 1;
+    const OverlayDraw alone = measured(page, shadow, shadow, w, h);
+    const OverlayDraw underText = measured(page, shadow, text, w, h, later);
+    EXPECT_LT(alone.contrast, 1.5f) << "black on a dark page";
+    const uint8_t grey[3] = {40, 40, 40};
+    EXPECT_NEAR(underText.contrast, OverlayLegibility::ratio(1.0, OverlayLegibility::luminance(grey)),
+                1e-3f) << "white against the page";
 }
 
 // Text in the colour of the page changes nothing: no pixels, no contrast.
@@ -353,12 +401,12 @@ TEST(OverlayLegibility, TextInThePagesColourChangesNothing)
     const std::vector<uint8_t> page = window(32, 16, 231);
     std::vector<uint8_t> text = page;
     paint(text, 32, 4, 4, 12, 10, 233); // within kChanged of the page
-    const OverlayDraw d = OverlayLegibility::measure(page.data(), text.data(), 32, 16);
+    const OverlayDraw d = measured(page, text, text, 32, 16);
     EXPECT_EQ(d.pixels, 0u);
     EXPECT_FALSE(d.surrounded);
     // Covering the whole window leaves no surroundings to judge it by.
     const std::vector<uint8_t> black = window(32, 16, 0);
-    const OverlayDraw all = OverlayLegibility::measure(black.data(), page.data(), 32, 16);
+    const OverlayDraw all = measured(black, page, page, 32, 16);
     EXPECT_EQ(all.pixels, 32u * 16u);
     EXPECT_FALSE(all.surrounded);
 }
@@ -369,7 +417,7 @@ TEST(OverlayLegibility, AStyleMustKeepTheSmallerOfNativesContrastAndAA)
 {
     const std::vector<OverlayDraw> native = {
         {300, 12.0f, true}, {300, 12.0f, true}, {300, 12.0f, true}, {300, 2.0f, true},
-        {300, 2.0f, true},  {10, 15.0f, true},  {5000, 1.0f, false}};
+        {300, 2.0f, true},  {10, 15.0f, true},  {5000, 1.0f, false}, {100, 6.5f, true}};
     const std::vector<OverlayDraw> styled = {
         {300, 1.3f, true},  // lost its contrast
         {20, 15.0f, true},  // drawn in the page's colour: few pixels changed
@@ -377,16 +425,17 @@ TEST(OverlayLegibility, AStyleMustKeepTheSmallerOfNativesContrastAndAA)
         {300, 1.95f, true}, // native's own low contrast, kept within the slack
         {300, 1.5f, true},  // native's low contrast, lost
         {10, 1.0f, true},   // a speck: not judged
-        {5000, 1.0f, false}};
+        {5000, 1.0f, false},
+        {2000, 2.1f, true}}; // shown on far more pixels than natively: gained, not lost
     const OverlayLegibility l = OverlayLegibility::judge(native, styled);
     EXPECT_TRUE(l.mismatch.empty());
-    EXPECT_EQ(l.judged, 5u);
+    EXPECT_EQ(l.judged, 6u);
     ASSERT_EQ(l.shortOf.size(), 3u);
     EXPECT_EQ(l.shortOf[0].index, 0u);
     EXPECT_EQ(l.shortOf[1].index, 1u);
     EXPECT_FLOAT_EQ(l.shortOf[1].styled, 1.0f) << "a draw not seen has no contrast";
     EXPECT_EQ(l.shortOf[2].index, 4u);
-    EXPECT_NE(l.summary().find("3 of 5 short"), std::string::npos) << l.summary();
+    EXPECT_NE(l.summary().find("3 of 6 short"), std::string::npos) << l.summary();
     const OverlayLegibility differ = OverlayLegibility::judge(native, {styled[0]});
     EXPECT_FALSE(differ.mismatch.empty());
     EXPECT_EQ(differ.judged, 0u);

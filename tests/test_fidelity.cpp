@@ -132,6 +132,14 @@ TEST(Compare, OverlaysKeepTheirContrastOnlyOnAPageOfTheProgramsTone)
     EXPECT_NE(light.json.find("\"short\": [{\"draw\": "), std::string::npos);
 }
 
+TEST(Compare, OverlaysWithoutStatsIsAUsageError)
+{
+    const ProcessResult r =
+        runProcess({nprglCommand(), "replay", fixture("overlay"), "--overlays"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--overlays needs --stats"), std::string::npos) << r.err;
+}
+
 TEST(Compare, AFileThatIsNoCaptureExitsOneWithItsName)
 {
     const std::string dir = freshDir("compare_bad");
