@@ -116,7 +116,8 @@ int replayMain(int argc, char** argv)
     app.add_option("-o,--output", o.outDir, "directory for the PNGs (none: render only)");
     app.add_flag("--stats", o.stats,
                  "print each frame's 3D polygon draws, styled and left by reason (the run's "
-                 "totals are logged at the end), and the colour it cleared the window to");
+                 "totals are logged at the end), the textures drawn as drawings so far, and the "
+                 "colour it cleared the window to");
     app.add_flag("--overlays", o.overlays,
                  "with --stats: also each 2D draw's pixels and contrast with its surroundings "
                  "(WCAG ratio), read around the draw (slow: for nprgl compare)");

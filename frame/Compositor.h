@@ -73,6 +73,11 @@ public:
     void endFrameCounts();
     const DrawCounts& lastFrameCounts() const { return mLastFrameCounts; }
     const DrawCounts& runCounts() const { return mRunCounts; }
+    // The textures the chain drew as drawings so far, and those it left, by reason.
+    const styles::AbstractTextures::Counts& textureCounts() const
+    {
+        return mChain.textureCounts();
+    }
     // Logs the run's counts, once: when the context goes, or at exit for a context the
     // program never destroyed (most programs just exit). On the context's thread, or where
     // no thread has it current.

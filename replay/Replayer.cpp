@@ -111,6 +111,12 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
                         c ? c->runCounts().since(statsBefore).describe().c_str()
                           : "not styled (style none)");
             if (c) statsBefore = c->runCounts();
+            if (c && c->textureCounts().any()) {
+                // The run's textures as they stand: each is counted once, at first sight.
+                std::printf("frame %llu: textures as drawings: %s\n",
+                            static_cast<unsigned long long>(frame),
+                            c->textureCounts().describe().c_str());
+            }
             if (OverlayContrast::measuring()) {
                 Compositor* o = tThread.context ? tThread.context->compositor() : nullptr;
                 std::printf("frame %llu: 2D draws: %s\n", static_cast<unsigned long long>(frame),

@@ -347,3 +347,26 @@ TEST(DrawingsReport, CountsTheTexturesDrawnAsDrawings)
     ASSERT_EQ(kept.exitCode, 0) << kept.err;
     EXPECT_EQ(kept.err.find("textures as drawings"), std::string::npos) << kept.err;
 }
+
+// replay --stats tells the same per frame, as the run's counts stand at its end: the fixture
+// uploads its textures in frame 1, so every frame shows them all.
+TEST(DrawingsReport, ReplayStatsCountThemPerFrame)
+{
+    const ProcessResult stats =
+        runProcess({nprglCommand(), "replay", fixture("textured"), "--stats"},
+                   {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""}, {"NPRGL_PRESET", ""}});
+    ASSERT_EQ(stats.exitCode, 0) << stats.err;
+    for (const char* frame : {"1", "2", "3"}) {
+        EXPECT_TRUE(std::regex_search(
+            stats.out, std::regex(std::string("frame ") + frame +
+                                  ": textures as drawings: [1-9][0-9]* abstracted; left as the "
+                                  "program's: 0 of unknown content, 0 changing, 0 too large\n")))
+            << stats.out;
+    }
+    const ProcessResult kept =
+        runProcess({nprglCommand(), "replay", fixture("textured"), "--stats", "--set",
+                    "toon.texture_detail=1"},
+                   {{"NPRGL_STYLE", ""}, {"NPRGL_CONFIG", ""}, {"NPRGL_PRESET", ""}});
+    ASSERT_EQ(kept.exitCode, 0) << kept.err;
+    EXPECT_EQ(kept.out.find("textures as drawings"), std::string::npos) << kept.out;
+}
