@@ -171,7 +171,7 @@ bool Replayer::run(const capture::CaptureReader& reader, const ReplayOptions& op
     for (size_t i = 0; ok && i < frames.size(); ++i) {
         if (frames[i].contextId != contextId) continue;
         if (!options.frames.empty() && frames[i].frameNumber > options.frames.last()) break;
-        // Two read-backs per 2D draw: only in the frames asked for.
+        // A read-back per 2D draw: only in the frames asked for.
         OverlayContrast::setPaused(!options.frames.empty() &&
                                    !options.frames.contains(frames[i].frameNumber));
         if (!reader.readFrame(i, calls, error)) {
