@@ -1,5 +1,7 @@
 #include "common/FrameFidelity.h"
 
+#include "common/SrgbLinear.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -8,12 +10,6 @@
 namespace nprgl {
 
 namespace {
-
-float linear(uint8_t c)
-{
-    const float s = float(c) / 255.0f;
-    return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
-}
 
 float labF(float t)
 {
@@ -58,13 +54,7 @@ float hueDistance(float x, float y)
 
 Lab Lab::fromSrgb(const uint8_t* rgb)
 {
-    // A table: a frame has millions of pixels and only 256 values per channel.
-    static const std::array<float, 256> kLinear = [] {
-        std::array<float, 256> t{};
-        for (int i = 0; i < 256; ++i) t[size_t(i)] = linear(uint8_t(i));
-        return t;
-    }();
-    const float r = kLinear[rgb[0]], g = kLinear[rgb[1]], b = kLinear[rgb[2]];
+    const float r = srgbLinear(rgb[0]), g = srgbLinear(rgb[1]), b = srgbLinear(rgb[2]);
     const float x = (0.4124564f * r + 0.3575761f * g + 0.1804375f * b) / 0.95047f;
     const float y = 0.2126729f * r + 0.7151522f * g + 0.0721750f * b;
     const float z = (0.0193339f * r + 0.1191920f * g + 0.9503041f * b) / 1.08883f;

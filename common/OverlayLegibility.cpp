@@ -1,29 +1,15 @@
 // OverlayLegibility: a 2D draw's contrast, the --overlays line format, and the rule.
 #include "common/OverlayLegibility.h"
 
+#include "common/SrgbLinear.h"
+
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 namespace nprgl {
 
 namespace {
-
-// sRGB component to linear light, by 8-bit value.
-const std::array<double, 256>& linearTable()
-{
-    static const std::array<double, 256> table = [] {
-        std::array<double, 256> t{};
-        for (int i = 0; i < 256; ++i) {
-            const double c = i / 255.0;
-            t[size_t(i)] = c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-        }
-        return t;
-    }();
-    return table;
-}
 
 bool changed(const uint8_t* a, const uint8_t* b)
 {
@@ -37,8 +23,8 @@ bool changed(const uint8_t* a, const uint8_t* b)
 
 double OverlayLegibility::luminance(const uint8_t* rgb)
 {
-    const auto& t = linearTable();
-    return 0.2126 * t[rgb[0]] + 0.7152 * t[rgb[1]] + 0.0722 * t[rgb[2]];
+    return 0.2126 * srgbLinear(rgb[0]) + 0.7152 * srgbLinear(rgb[1]) +
+           0.0722 * srgbLinear(rgb[2]);
 }
 
 float OverlayLegibility::ratio(double l1, double l2)
